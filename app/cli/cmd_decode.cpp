@@ -1,0 +1,214 @@
+// gnss-cli decode | epochs | stats: read a log (or standard input) through the decoder.
+#include "cli_args.h"
+#include "cli_commands.h"
+#include "core/stream_decoder.h"
+#include "input_reader.h"
+#include "state/epoch_assembler.h"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+namespace gnss::cli {
+namespace {
+
+// Buffered standard output: one fwrite per 64 KiB, not per line.
+class Output {
+public:
+    ~Output() { flush(); }
+    std::string &buffer() { return buf_; }
+    void lineDone() {
+        buf_.push_back('\n');
+        if (buf_.size() > (1 << 16)) flush();
+    }
+    void flush() {
+        if (!buf_.empty()) std::fwrite(buf_.data(), 1, buf_.size(), stdout);
+        buf_.clear();
+    }
+
+private:
+    std::string buf_;
+};
+
+struct CommonOptions {
+    DecoderOptions decoder;
+    std::string input;
+    bool json = false;
+};
+
+bool parseCommon(const CliContext &ctx, int argc, char **argv, CommonOptions &out) {
+    Args args(argc, argv, 2, {"lenient", "json"});
+    if (!args.error().empty()) {
+        std::fprintf(stderr, "gnss-cli: %s\n", args.error().c_str());
+        return false;
+    }
+    out.decoder.dialect = args.option("dialect").value_or("auto");
+    if (out.decoder.dialect != "auto" && !ctx.registry.find(out.decoder.dialect)) {
+        std::string known;
+        for (const Dialect *d : ctx.registry.dialects()) known += " " + std::string(d->id);
+        std::fprintf(stderr, "gnss-cli: unknown dialect '%s' (known: auto%s)\n",
+                     out.decoder.dialect.c_str(), known.c_str());
+        return false;
+    }
+    out.decoder.lenient = args.flag("lenient");
+    for (const auto &alias : args.options("alias")) {
+        const auto eq = alias.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == alias.size()) {
+            std::fprintf(stderr, "gnss-cli: --alias takes NEW=CANONICAL, e.g. PXYZW=PNMRX\n");
+            return false;
+        }
+        out.decoder.addressAliases.emplace_back(alias.substr(0, eq), alias.substr(eq + 1));
+    }
+    out.json = args.flag("json");
+    if (args.positionals().size() > 1) {
+        std::fprintf(stderr, "gnss-cli: one input file at most (or - for standard input)\n");
+        return false;
+    }
+    out.input = args.positionals().empty() ? "-" : args.positionals().front();
+    return true;
+}
+
+bool run(const CommonOptions &opt, StreamDecoder &dec, StreamDecoder::Handler handler) {
+    std::string error;
+    const bool ok = readInput(opt.input, [&](std::string_view chunk) { dec.feed(chunk, handler); },
+                              error);
+    dec.finish();
+    if (!ok) std::fprintf(stderr, "gnss-cli: %s\n", error.c_str());
+    return ok;
+}
+
+} // namespace
+
+int cmdDecode(const CliContext &ctx, int argc, char **argv) {
+    CommonOptions opt;
+    if (!parseCommon(ctx, argc, argv, opt)) return 2;
+    StreamDecoder dec(ctx.registry, opt.decoder);
+    Output out;
+    const bool ok = run(opt, dec, [&](const SentenceEvent &ev) {
+        JsonWriter w(out.buffer());
+        const Sentence &s = ev.sentence;
+        w.beginObject().field("line", s.line()).field("address", s.address());
+        w.field("talker", s.talker()).field("type", s.type());
+        w.field("checksum", toString(s.checksum()));
+        if (ev.message) {
+            w.key("data");
+            ev.message->writeJson(w);
+        } else {
+            w.field("error", ev.error);
+        }
+        w.endObject();
+        out.lineDone();
+    });
+    return ok ? 0 : 1;
+}
+
+int cmdEpochs(const CliContext &ctx, int argc, char **argv) {
+    CommonOptions opt;
+    if (!parseCommon(ctx, argc, argv, opt)) return 2;
+    StreamDecoder dec(ctx.registry, opt.decoder);
+    EpochAssembler assembler(dec.dialect());
+    Output out;
+    auto onEpoch = [&](const Epoch &e) {
+        JsonWriter w(out.buffer());
+        e.writeJson(w);
+        out.lineDone();
+    };
+    const bool ok = run(opt, dec, [&](const SentenceEvent &ev) {
+        if (!ev.message) return;
+        assembler.setDialect(dec.dialect());
+        assembler.add(ev.sentence, *ev.message, onEpoch);
+    });
+    assembler.flush(onEpoch);
+    return ok ? 0 : 1;
+}
+
+int cmdStats(const CliContext &ctx, int argc, char **argv) {
+    CommonOptions opt;
+    if (!parseCommon(ctx, argc, argv, opt)) return 2;
+    StreamDecoder dec(ctx.registry, opt.decoder);
+    EpochAssembler assembler(dec.dialect());
+    std::uint64_t epochs = 0;
+    auto onEpoch = [&](const Epoch &) { ++epochs; };
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool ok = run(opt, dec, [&](const SentenceEvent &ev) {
+        if (!ev.message) return;
+        assembler.setDialect(dec.dialect());
+        assembler.add(ev.sentence, *ev.message, onEpoch);
+    });
+    assembler.flush(onEpoch);
+    const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    const FramerStats &fs = dec.framerStats();
+    std::uint64_t sentences = 0, decoded = 0, errors = 0, unknown = 0, bad = 0, missing = 0,
+                  rejected = 0;
+    for (const auto &a : dec.addressStats()) {
+        sentences += a.sentences;
+        decoded += a.decoded;
+        errors += a.decodeErrors;
+        unknown += a.unknown;
+        bad += a.checksumBad;
+        missing += a.checksumMissing;
+        rejected += a.rejected;
+    }
+    const double mb = static_cast<double>(fs.bytesIn) / 1e6;
+    std::string o;
+    if (opt.json) {
+        JsonWriter w(o);
+        w.beginObject().field("input", opt.input);
+        w.field("dialect", dec.dialect() ? dec.dialect()->id : std::string_view("unknown"));
+        w.field("bytes", fs.bytesIn).field("bytes_skipped", fs.bytesSkipped);
+        w.field("sentences", sentences).field("decoded", decoded).field("decode_errors", errors);
+        w.field("unknown", unknown).field("checksum_bad", bad).field("checksum_missing", missing);
+        w.field("rejected", rejected).field("truncated", fs.truncated);
+        w.field("too_long", fs.tooLong).field("binary_aborted", fs.binaryAborted);
+        w.field("epochs", epochs).field("seconds", seconds);
+        w.field("mb_per_s", seconds > 0 ? mb / seconds : 0.0);
+        w.key("addresses").beginArray();
+        for (const auto &a : dec.addressStats()) {
+            w.beginObject().field("address", a.address).field("sentences", a.sentences);
+            w.field("decoded", a.decoded).field("decode_errors", a.decodeErrors);
+            w.field("unknown", a.unknown).field("checksum_bad", a.checksumBad);
+            w.field("checksum_missing", a.checksumMissing).field("rejected", a.rejected);
+            w.endObject();
+        }
+        w.endArray().endObject();
+        o += '\n';
+    } else {
+        char line[256];
+        std::snprintf(line, sizeof line, "%-12s %10s %10s %8s %8s %8s %8s\n", "address",
+                      "sentences", "decoded", "errors", "unknown", "cs-bad", "cs-miss");
+        o += line;
+        for (const auto &a : dec.addressStats()) {
+            std::snprintf(line, sizeof line, "%-12s %10llu %10llu %8llu %8llu %8llu %8llu\n",
+                          a.address.c_str(), (unsigned long long)a.sentences,
+                          (unsigned long long)a.decoded, (unsigned long long)a.decodeErrors,
+                          (unsigned long long)a.unknown, (unsigned long long)a.checksumBad,
+                          (unsigned long long)a.checksumMissing);
+            o += line;
+        }
+        std::snprintf(line, sizeof line, "%-12s %10llu %10llu %8llu %8llu %8llu %8llu\n", "total",
+                      (unsigned long long)sentences, (unsigned long long)decoded,
+                      (unsigned long long)errors, (unsigned long long)unknown,
+                      (unsigned long long)bad, (unsigned long long)missing);
+        o += line;
+        std::snprintf(line, sizeof line,
+                      "\ndialect: %s\nbytes: %llu (skipped %llu)\nlines truncated: %llu, too long: "
+                      "%llu, binary aborted: %llu\nrejected by checksum policy: %llu\nepochs: "
+                      "%llu\n",
+                      dec.dialect() ? std::string(dec.dialect()->id).c_str() : "unknown",
+                      (unsigned long long)fs.bytesIn, (unsigned long long)fs.bytesSkipped,
+                      (unsigned long long)fs.truncated, (unsigned long long)fs.tooLong,
+                      (unsigned long long)fs.binaryAborted, (unsigned long long)rejected,
+                      (unsigned long long)epochs);
+        o += line;
+        std::snprintf(line, sizeof line, "time: %.3f s (%.0f MB/s, %.0f sentences/s)\n", seconds,
+                      seconds > 0 ? mb / seconds : 0.0,
+                      seconds > 0 ? static_cast<double>(sentences) / seconds : 0.0);
+        o += line;
+    }
+    std::fwrite(o.data(), 1, o.size(), stdout);
+    return ok ? 0 : 1;
+}
+
+} // namespace gnss::cli

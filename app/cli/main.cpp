@@ -1,0 +1,47 @@
+// gnss-cli: headless GNSS Workbench. See docs/cli.md.
+#include "cli_commands.h"
+
+#include <cstdio>
+#include <cstring>
+#include <string_view>
+
+namespace {
+
+struct Command {
+    std::string_view name;
+    int (*run)(const gnss::cli::CliContext &, int, char **);
+    std::string_view synopsis;
+};
+
+constexpr Command kCommands[] = {
+        {"decode", gnss::cli::cmdDecode,
+         "decode [--dialect D] [--lenient] [FILE|-]   one JSON object per sentence"},
+        {"epochs", gnss::cli::cmdEpochs,
+         "epochs [--dialect D] [--lenient] [FILE|-]   one JSON object per navigation epoch"},
+        {"stats", gnss::cli::cmdStats,
+         "stats [--dialect D] [--lenient] [--json] [FILE|-]   vet a log: counts per address"},
+};
+
+void usage(std::FILE *f) {
+    std::fprintf(f, "usage: gnss-cli COMMAND [OPTIONS]\n\ncommands:\n");
+    for (const auto &c : kCommands)
+        std::fprintf(f, "  %.*s\n", static_cast<int>(c.synopsis.size()), c.synopsis.data());
+    std::fprintf(f, "\nD: auto (default), nvs, geostar, nemerix, nmea\n"
+                    "--alias NEW=PNMRX reads a renamed Nemerix prefix. See docs/cli.md.\n");
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+    if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+        usage(argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
+    const gnss::cli::CliContext ctx{registry};
+    for (const auto &c : kCommands)
+        if (c.name == argv[1]) return c.run(ctx, argc, argv);
+    std::fprintf(stderr, "gnss-cli: unknown command '%s'\n\n", argv[1]);
+    usage(stderr);
+    return 2;
+}

@@ -1,0 +1,91 @@
+#include "startup_options.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+namespace gnss::app {
+
+std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments, QString &error) {
+    QCommandLineParser p;
+    p.setApplicationDescription(QCoreApplication::translate(
+            "StartupOptions", "Configure and monitor GNSS receivers."));
+    p.addHelpOption();
+    p.addVersionOption();
+    const QCommandLineOption port({"p", "port"},
+                                  QCoreApplication::translate("StartupOptions", "Serial port."),
+                                  "port");
+    const QCommandLineOption baud({"b", "baud"},
+                                  QCoreApplication::translate("StartupOptions",
+                                                              "Baud rate (default: auto)."),
+                                  "baud");
+    const QCommandLineOption tcp("tcp",
+                                 QCoreApplication::translate("StartupOptions",
+                                                             "TCP source HOST:PORT."),
+                                 "host:port");
+    const QCommandLineOption replay("replay",
+                                    QCoreApplication::translate("StartupOptions",
+                                                                "Replay a recorded log."),
+                                    "file");
+    const QCommandLineOption sim("sim",
+                                 QCoreApplication::translate(
+                                         "StartupOptions",
+                                         "Built-in simulated receiver: nvs, geostar, nemerix, nmea."),
+                                 "dialect");
+    const QCommandLineOption shot("screenshot",
+                                  QCoreApplication::translate(
+                                          "StartupOptions", "Save an image of the window and quit."),
+                                  "file");
+    const QCommandLineOption quit("quit-after",
+                                  QCoreApplication::translate("StartupOptions",
+                                                              "Quit after this many seconds."),
+                                  "seconds");
+    p.addOptions({port, baud, tcp, replay, sim, shot, quit});
+    if (!p.parse(arguments)) {
+        error = p.errorText();
+        return std::nullopt;
+    }
+    if (p.isSet("help")) p.showHelp(0);
+    if (p.isSet("version")) p.showVersion();
+
+    StartupOptions o;
+    o.port = p.value(port);
+    o.tcp = p.value(tcp);
+    o.replay = p.value(replay);
+    o.sim = p.value(sim);
+    o.screenshot = p.value(shot);
+    if (p.isSet(baud)) {
+        bool ok = false;
+        o.baud = p.value(baud).toInt(&ok);
+        if (!ok || o.baud <= 0) {
+            error = QCoreApplication::translate("StartupOptions", "Invalid baud rate: %1")
+                            .arg(p.value(baud));
+            return std::nullopt;
+        }
+    }
+    if (p.isSet(quit)) {
+        bool ok = false;
+        o.quitAfter = p.value(quit).toDouble(&ok);
+        if (!ok || o.quitAfter < 0) {
+            error = QCoreApplication::translate("StartupOptions", "Invalid --quit-after: %1")
+                            .arg(p.value(quit));
+            return std::nullopt;
+        }
+    }
+    static const QStringList kSims{"nvs", "geostar", "nemerix", "nmea"};
+    if (!o.sim.isEmpty() && !kSims.contains(o.sim)) {
+        error = QCoreApplication::translate("StartupOptions",
+                                            "Unknown simulated receiver '%1' (use %2)")
+                        .arg(o.sim, kSims.join(", "));
+        return std::nullopt;
+    }
+    const int sources = int(!o.port.isEmpty()) + int(!o.tcp.isEmpty()) + int(!o.replay.isEmpty()) +
+                        int(!o.sim.isEmpty());
+    if (sources > 1) {
+        error = QCoreApplication::translate(
+                "StartupOptions", "Give one source at most: --port, --tcp, --replay or --sim.");
+        return std::nullopt;
+    }
+    return o;
+}
+
+} // namespace gnss::app

@@ -1,0 +1,135 @@
+#pragma once
+// Dialect: everything the program knows about one receiver family, as one constant record.
+//
+// A new receiver family is one folder (its messages, decoders, encoders, schema, reply rules)
+// plus one line in protocol/dialects.cpp. Nothing else names vendors: not the decoder, not the
+// views (DESIGN.md).
+#include "fix_type.h"
+#include "function_ref.h"
+#include "message.h"
+#include "satellite.h"
+#include "sentence.h"
+#include "settings_schema.h"
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gnss {
+
+struct Dialect;
+
+// Passed to every decode function.
+class DecodeContext {
+public:
+    using Emit = FunctionRef<void(const Message &)>;
+    DecodeContext(const Dialect *dialect, Emit emit) : dialect_(dialect), emit_(emit) {}
+
+    // The dialect in force (chosen, or detected so far); nullptr when none is known yet.
+    const Dialect *dialect() const { return dialect_; }
+    // Satellite numbering, with the dialect's override where it has one.
+    SatelliteRef mapSatellite(Constellation system, int id) const;
+    // Hands the decoded message to the caller (valid only during the call).
+    void emit(const Message &m) { emit_(m); }
+
+    // Why decoding failed (set by the decode function when it returns false).
+    std::string error;
+
+private:
+    const Dialect *dialect_;
+    Emit emit_;
+};
+
+// Decodes one sentence; calls ctx.emit() with the message and returns true, or sets ctx.error
+// and returns false. Must not throw.
+using DecodeFn = bool (*)(const Sentence &, DecodeContext &);
+
+enum class AddressMatch : std::uint8_t {
+    Whole, // the whole address: "PNVGRTK", "GPSGG", "PNMRX110"
+    Type,  // talker + this type: "GGA" matches GPGGA, GNGGA, GLGGA, ...
+    Query, // "$ttllQ,..." (any 5-character address ending in Q)
+};
+
+// One row of a dialect's sentence table: a new sentence costs one row plus its decode function.
+struct SentenceRule {
+    std::string_view address;
+    AddressMatch match;
+    DecodeFn decode;
+    std::string_view description;
+};
+
+// ---- Command replies, for the command queue -------------------------------------------------
+
+enum class ReplyVerdict : std::uint8_t {
+    NotMine,  // this sentence does not answer the command
+    Partial,  // part of the answer; keep waiting (multi-sentence replies)
+    Accepted, // the receiver took the command
+    Refused,  // the receiver answered, and said no
+};
+
+// State kept by the queue across the sentences of one reply.
+struct ReplyProgress {
+    int received = 0; // sentences of the answer seen so far
+    int expected = 0; // set by the rule when the answer says how many will come
+};
+
+enum class CommandEffect : std::uint8_t {
+    None,
+    ChangesBaud,     // the port speed changes after the reply
+    ResetsReceiver,  // the receiver restarts (fix sequence starts again)
+    ChangesProtocol, // the receiver leaves NMEA (e.g. switches to a binary protocol)
+    ChangesOutput,   // the output list/rate changes
+};
+
+struct ReplyRule {
+    // Which commands the rule covers: the command's address (and, when not empty, its first
+    // field: "GPSGG" + "RQUERY"). An empty firstField covers every command with that address.
+    std::string_view commandAddress;
+    std::string_view firstField;
+    // Classifies a received sentence against the command that was sent; nullptr means the
+    // receiver sends no reply (the command counts as sent once written).
+    ReplyVerdict (*classify)(const Sentence &command, const Sentence &reply,
+                             ReplyProgress &progress);
+    int timeoutMs = 1000;
+    int retries = 2;
+    CommandEffect effect = CommandEffect::None;
+    std::string_view description; // what the reply looks like, for users and docs
+};
+
+// ---- The dialect record ---------------------------------------------------------------------
+
+struct Dialect {
+    std::string_view id;          // "nvs", "geostar", "nemerix", "nmea"
+    std::string_view displayName; // "NVS NV08C-RTK"
+    std::span<const SentenceRule> rules;
+
+    // Whether a sentence without checksum is acceptable (Nemerix makes it optional).
+    bool checksumOptional = false;
+    // The vendor's meanings of GGA quality; nullptr = standard NMEA.
+    FixType (*ggaQuality)(int quality) = nullptr;
+    // Satellite numbering override; nullptr = standard NMEA.
+    SatelliteRef (*mapSatellite)(Constellation system, int id) = nullptr;
+
+    // Settings and commands.
+    std::span<const SettingDef> settings;
+    std::span<const ReplyRule> replyRules;
+    // Sentences that set the given settings (validated first: nothing is built on error).
+    EncodeResult (*encodeSettings)(std::span<const KeyValue> values) = nullptr;
+    // Sentences that read the given settings back.
+    EncodeResult (*encodeQueries)(std::span<const std::string> keys) = nullptr;
+    // Setting values carried by a decoded reply (read-back), appended to `out`.
+    void (*extractSettings)(const Message &reply, std::vector<KeyValue> &out) = nullptr;
+
+    // Probe for active detection: a command the receiver answers with its identity.
+    std::string_view probeCommand;
+    // Command names the console offers to complete ("PNVGRTK", "GPSGG,RQUERY", ...).
+    std::span<const std::string_view> commandNames;
+    // Default serial speed of the receiver.
+    int defaultBaud = 0;
+};
+
+// The standard sentence table (GGA, RMC, GSA, GSV, ...), used by every dialect.
+std::span<const SentenceRule> standardSentenceRules();
+
+} // namespace gnss

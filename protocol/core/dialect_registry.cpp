@@ -1,0 +1,49 @@
+#include "dialect_registry.h"
+
+namespace gnss {
+
+SatelliteRef DecodeContext::mapSatellite(Constellation system, int id) const {
+    if (dialect_ && dialect_->mapSatellite) return dialect_->mapSatellite(system, id);
+    return mapSatelliteId(system, id);
+}
+
+DialectRegistry::DialectRegistry(std::vector<const Dialect *> dialects)
+    : dialects_(std::move(dialects)) {
+    for (const auto &r : standardSentenceRules()) {
+        if (r.match == AddressMatch::Type) types_.emplace(r.address, Match{&r, nullptr});
+        if (r.match == AddressMatch::Query) query_ = Match{&r, nullptr};
+    }
+    for (const Dialect *d : dialects_) {
+        for (const auto &r : d->rules) {
+            if (r.match == AddressMatch::Whole) whole_.emplace(r.address, Match{&r, d});
+            if (r.match == AddressMatch::Type) types_.emplace(r.address, Match{&r, d});
+        }
+    }
+}
+
+const Dialect *DialectRegistry::find(std::string_view id) const {
+    for (const Dialect *d : dialects_)
+        if (d->id == id) return d;
+    return nullptr;
+}
+
+DialectRegistry::Match DialectRegistry::lookup(std::string_view address,
+                                               const Dialect *preferred) const {
+    if (preferred) {
+        for (const auto &r : preferred->rules)
+            if (r.match == AddressMatch::Whole && r.address == address) return {&r, preferred};
+    }
+    if (auto it = whole_.find(address); it != whole_.end()) return it->second;
+    if (address.size() >= 3 && address.front() != 'P') {
+        const std::string_view type = address.substr(2);
+        if (preferred) {
+            for (const auto &r : preferred->rules)
+                if (r.match == AddressMatch::Type && r.address == type) return {&r, preferred};
+        }
+        if (auto it = types_.find(type); it != types_.end()) return it->second;
+    }
+    if (address.size() == 5 && address[4] == 'Q' && address.front() != 'P') return query_;
+    return {};
+}
+
+} // namespace gnss

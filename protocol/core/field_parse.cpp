@@ -1,0 +1,171 @@
+#include "field_parse.h"
+
+#include <cstdio>
+
+namespace gnss {
+namespace {
+
+constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9, 1e10,
+                             1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19};
+
+inline bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+// Parses "[+-]digits[.digits]" into an integer mantissa and a count of decimals.
+// Returns false on anything else (or more than 18 significant digits).
+inline bool parseDecimal(std::string_view s, bool &neg, std::uint64_t &mant, int &decimals,
+                         std::uint64_t &intPart) {
+    std::size_t i = 0;
+    neg = false;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) {
+        neg = s[i] == '-';
+        ++i;
+    }
+    mant = 0;
+    decimals = 0;
+    int digits = 0;
+    bool any = false;
+    for (; i < s.size() && isDigit(s[i]); ++i) {
+        if (++digits > 18) return false;
+        mant = mant * 10 + static_cast<std::uint64_t>(s[i] - '0');
+        any = true;
+    }
+    intPart = mant;
+    if (i < s.size() && s[i] == '.') {
+        ++i;
+        for (; i < s.size() && isDigit(s[i]); ++i) {
+            if (digits >= 18) continue; // extra precision beyond double's: ignore
+            ++digits;
+            mant = mant * 10 + static_cast<std::uint64_t>(s[i] - '0');
+            ++decimals;
+            any = true;
+        }
+    }
+    return any && i == s.size();
+}
+
+} // namespace
+
+bool parseReal(std::string_view s, double &out) {
+    bool neg;
+    std::uint64_t mant, intPart;
+    int dec;
+    if (!parseDecimal(s, neg, mant, dec, intPart)) return false;
+    double v = static_cast<double>(mant) / kPow10[dec];
+    out = neg ? -v : v;
+    return true;
+}
+
+bool parseInt(std::string_view s, std::int64_t &out) {
+    std::size_t i = 0;
+    bool neg = false;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) {
+        neg = s[i] == '-';
+        ++i;
+    }
+    if (i == s.size() || s.size() - i > 18) return false;
+    std::int64_t v = 0;
+    for (; i < s.size(); ++i) {
+        if (!isDigit(s[i])) return false;
+        v = v * 10 + (s[i] - '0');
+    }
+    out = neg ? -v : v;
+    return true;
+}
+
+bool parseHex(std::string_view s, std::uint64_t &out) {
+    if (s.empty() || s.size() > 16) return false;
+    std::uint64_t v = 0;
+    for (char c : s) {
+        int d;
+        if (c >= '0' && c <= '9')
+            d = c - '0';
+        else if (c >= 'A' && c <= 'F')
+            d = c - 'A' + 10;
+        else if (c >= 'a' && c <= 'f')
+            d = c - 'a' + 10;
+        else
+            return false;
+        v = (v << 4) | static_cast<std::uint64_t>(d);
+    }
+    out = v;
+    return true;
+}
+
+bool parseDegreesMinutes(std::string_view s, int maxDegrees, double &out) {
+    bool neg;
+    std::uint64_t mant, intPart;
+    int dec;
+    if (!parseDecimal(s, neg, mant, dec, intPart) || neg) return false;
+    const std::uint64_t degrees = intPart / 100;
+    // Minutes = (intPart % 100) + fraction, computed from the exact mantissa.
+    const std::uint64_t scale = static_cast<std::uint64_t>(kPow10[dec]);
+    const std::uint64_t minutesScaled = mant - degrees * 100 * scale;
+    const double minutes = static_cast<double>(minutesScaled) / kPow10[dec];
+    if (minutes >= 60.0 || degrees > static_cast<std::uint64_t>(maxDegrees)) return false;
+    out = static_cast<double>(degrees) + minutes / 60.0;
+    if (out > maxDegrees) return false;
+    return true;
+}
+
+bool parseTimeOfDay(std::string_view s, TimeOfDay &out) {
+    if (s.size() < 6) return false;
+    for (int i = 0; i < 6; ++i)
+        if (!isDigit(s[i])) return false;
+    const int h = (s[0] - '0') * 10 + (s[1] - '0');
+    const int m = (s[2] - '0') * 10 + (s[3] - '0');
+    const int sec = (s[4] - '0') * 10 + (s[5] - '0');
+    if (h > 23 || m > 59 || sec > 60) return false;
+    std::int64_t frac = 0;
+    int dec = 0;
+    if (s.size() > 6) {
+        if (s[6] != '.') return false;
+        for (std::size_t i = 7; i < s.size(); ++i) {
+            if (!isDigit(s[i])) return false;
+            if (dec < 9) {
+                frac = frac * 10 + (s[i] - '0');
+                ++dec;
+            }
+        }
+    }
+    static constexpr std::int64_t kScale[] = {1000000000, 100000000, 10000000, 1000000, 100000,
+                                              10000,      1000,      100,      10,      1};
+    out.nanos = ((h * 60LL + m) * 60LL + sec) * 1'000'000'000LL + frac * kScale[dec];
+    out.decimals = static_cast<std::uint8_t>(dec);
+    return true;
+}
+
+bool parseDateDdMmYy(std::string_view s, Date &out) {
+    if (s.size() != 6) return false;
+    for (char c : s)
+        if (!isDigit(c)) return false;
+    const int d = (s[0] - '0') * 10 + (s[1] - '0');
+    const int mo = (s[2] - '0') * 10 + (s[3] - '0');
+    const int y = (s[4] - '0') * 10 + (s[5] - '0');
+    if (d < 1 || d > 31 || mo < 1 || mo > 12) return false;
+    out.day = d;
+    out.month = mo;
+    out.year = y >= 80 ? 1900 + y : 2000 + y;
+    return true;
+}
+
+std::string TimeOfDay::toString(int minDecimals) const {
+    const int dec = decimals > minDecimals ? decimals : minDecimals;
+    char buf[40];
+    const std::int64_t secNanos = nanos % 60'000'000'000LL;
+    const long long whole = secNanos / 1'000'000'000LL;
+    long long frac = secNanos % 1'000'000'000LL;
+    for (int i = dec; i < 9; ++i) frac /= 10;
+    if (dec > 0)
+        std::snprintf(buf, sizeof buf, "%02d:%02d:%02lld.%0*lld", hour(), minute(), whole, dec, frac);
+    else
+        std::snprintf(buf, sizeof buf, "%02d:%02d:%02lld", hour(), minute(), whole);
+    return buf;
+}
+
+std::string Date::toString() const {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%04d-%02d-%02d", year, month, day);
+    return buf;
+}
+
+} // namespace gnss

@@ -1,0 +1,57 @@
+#pragma once
+// FieldReader: typed access to a sentence's fields for decoders.
+//
+// Empty fields read as std::nullopt; a field that is present but malformed records an error
+// (the first one wins) and also reads as std::nullopt, so a decoder reads every field straight
+// through and checks ok() once at the end. Nothing throws.
+#include "field_parse.h"
+#include "sentence.h"
+
+#include <optional>
+#include <string>
+
+namespace gnss {
+
+class FieldReader {
+public:
+    explicit FieldReader(const Sentence &s) : s_(s) {}
+
+    const Sentence &sentence() const { return s_; }
+    std::size_t count() const { return s_.fieldCount(); }
+    std::string_view text(std::size_t i) const { return s_.field(i); }
+    bool empty(std::size_t i) const { return s_.field(i).empty(); }
+
+    std::optional<double> real(std::size_t i, const char *name);
+    std::optional<int> integer(std::size_t i, const char *name);
+    std::optional<std::int64_t> integer64(std::size_t i, const char *name);
+    std::optional<std::uint64_t> hex(std::size_t i, const char *name);
+    // A single character (status, mode, unit); a longer field is an error.
+    std::optional<char> letter(std::size_t i, const char *name);
+    // Field i holds ddmm.mmmm, field i+1 the hemisphere: signed decimal degrees.
+    std::optional<double> latitude(std::size_t i, const char *name);
+    std::optional<double> longitude(std::size_t i, const char *name);
+    std::optional<TimeOfDay> time(std::size_t i, const char *name);
+    std::optional<Date> date(std::size_t i, const char *name);
+    std::optional<std::string_view> str(std::size_t i) const {
+        auto t = s_.field(i);
+        return t.empty() ? std::nullopt : std::optional<std::string_view>(t);
+    }
+
+    // Records an error unless the sentence has at least n fields after the address.
+    bool require(std::size_t n);
+    // Records an error for field i.
+    void fail(std::size_t i, const char *name, const char *what);
+    // Records a sentence-level error.
+    void failSentence(std::string message);
+
+    bool ok() const { return error_.empty(); }
+    const std::string &error() const { return error_; }
+
+private:
+    std::optional<double> coordinate(std::size_t i, const char *name, int maxDeg, char pos,
+                                     char neg);
+    const Sentence &s_;
+    std::string error_;
+};
+
+} // namespace gnss

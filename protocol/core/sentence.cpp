@@ -1,0 +1,160 @@
+#include "sentence.h"
+
+#include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace gnss {
+namespace {
+
+int hexValue(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    return -1;
+}
+
+} // namespace
+
+std::string_view toString(ChecksumStatus s) {
+    switch (s) {
+    case ChecksumStatus::Ok: return "ok";
+    case ChecksumStatus::Bad: return "bad";
+    case ChecksumStatus::Missing: return "missing";
+    }
+    return "missing";
+}
+
+std::uint8_t nmeaChecksum(std::string_view body) {
+    const char *p = body.data();
+    std::size_t n = body.size();
+    std::uint64_t acc = 0;
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        std::uint64_t w;
+        std::memcpy(&w, p + i, 8);
+        acc ^= w;
+    }
+    acc ^= acc >> 32;
+    acc ^= acc >> 16;
+    acc ^= acc >> 8;
+    auto sum = static_cast<std::uint8_t>(acc);
+    for (; i < n; ++i) sum ^= static_cast<std::uint8_t>(p[i]);
+    return sum;
+}
+
+std::string_view Sentence::talker() const {
+    if (proprietary()) return address_.substr(0, 1);
+    return address_.substr(0, address_.size() >= 2 ? 2 : address_.size());
+}
+
+std::string_view Sentence::type() const {
+    if (proprietary()) return address_.substr(1);
+    return address_.size() > 2 ? address_.substr(2) : std::string_view{};
+}
+
+bool Sentence::parse(std::string_view line) {
+    line_ = line;
+    error_ = nullptr;
+    fieldCount_ = 0;
+    placeholder_ = false;
+    address_ = {};
+    if (line.size() < 2 || (line.front() != '$' && line.front() != '!')) {
+        body_ = {};
+        error_ = "not a sentence";
+        return false;
+    }
+
+    // Checksum: the last '*' and what follows it.
+    std::string_view text = line.substr(1);
+    const std::size_t star = text.rfind('*');
+    if (star == std::string_view::npos) {
+        body_ = text;
+        checksumStatus_ = ChecksumStatus::Missing;
+    } else {
+        body_ = text.substr(0, star);
+        std::string_view cs = text.substr(star + 1);
+        while (!cs.empty() && cs.back() == ' ') cs.remove_suffix(1);
+        const int hi = cs.size() == 2 ? hexValue(cs[0]) : -1;
+        const int lo = cs.size() == 2 ? hexValue(cs[1]) : -1;
+        if (hi >= 0 && lo >= 0) {
+            declared_ = static_cast<std::uint8_t>(hi * 16 + lo);
+            checksumStatus_ = ChecksumStatus::Ok; // compared below
+        } else if (cs.size() <= 2) {
+            // "*", "*xx", "*XX": a placeholder where a checksum would be (Nemerix examples).
+            checksumStatus_ = ChecksumStatus::Missing;
+            placeholder_ = true;
+        } else {
+            checksumStatus_ = ChecksumStatus::Bad;
+            declared_ = 0;
+        }
+    }
+
+    // One pass over the body: XOR for the checksum and the comma positions.
+    const char *p = body_.data();
+    const std::size_t n = body_.size();
+    if (n > 65000) {
+        error_ = "sentence too long";
+        return false;
+    }
+    std::size_t commas[kMaxFields + 2];
+    std::size_t ncommas = 0;
+    bool overflow = false;
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    const __m128i comma = _mm_set1_epi8(',');
+    __m128i xacc = _mm_setzero_si128();
+    for (; i + 16 <= n; i += 16) {
+        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i *>(p + i));
+        xacc = _mm_xor_si128(xacc, v);
+        unsigned mask = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, comma)));
+        while (mask) {
+            if (ncommas >= kMaxFields) {
+                overflow = true;
+                break;
+            }
+            commas[ncommas++] = i + static_cast<std::size_t>(__builtin_ctz(mask));
+            mask &= mask - 1;
+        }
+    }
+    alignas(16) std::uint8_t lanes[16];
+    _mm_store_si128(reinterpret_cast<__m128i *>(lanes), xacc);
+    std::uint8_t sum = 0;
+    for (std::uint8_t b : lanes) sum ^= b;
+#else
+    std::uint8_t sum = 0;
+#endif
+    for (; i < n; ++i) {
+        sum ^= static_cast<std::uint8_t>(p[i]);
+        if (p[i] == ',') {
+            if (ncommas >= kMaxFields) {
+                overflow = true;
+                continue;
+            }
+            commas[ncommas++] = i;
+        }
+    }
+    computed_ = sum;
+    if (checksumStatus_ == ChecksumStatus::Ok && declared_ != computed_)
+        checksumStatus_ = ChecksumStatus::Bad;
+
+    if (overflow) {
+        error_ = "too many fields";
+        return false;
+    }
+    const std::size_t addrEnd = ncommas ? commas[0] : n;
+    address_ = body_.substr(0, addrEnd);
+    while (!address_.empty() && address_.back() == ' ') address_.remove_suffix(1);
+    if (address_.empty()) {
+        error_ = "empty address";
+        return false;
+    }
+    fieldCount_ = ncommas;
+    for (std::size_t k = 0; k < ncommas; ++k) start_[k] = static_cast<std::uint16_t>(commas[k] + 1);
+    start_[ncommas] = static_cast<std::uint16_t>(n + 1);
+    return true;
+}
+
+} // namespace gnss

@@ -1,0 +1,85 @@
+#pragma once
+// Sentence: one framed line split into address and fields, with its checksum checked.
+//
+//   $GPGGA,123519,4807.038,N,...,*47
+//   ^ start   ^ fields (after the address)  ^ checksum
+//
+// Parsing never allocates and never throws: fields are offsets into the line, which the caller
+// keeps alive. Leading and trailing blanks of a field are trimmed on access (Nemerix and the
+// GeoStar spec print blanks after commas).
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace gnss {
+
+enum class ChecksumStatus : std::uint8_t { Ok, Bad, Missing };
+
+std::string_view toString(ChecksumStatus s);
+
+// XOR of every byte of `body` (the text between the start character and '*').
+std::uint8_t nmeaChecksum(std::string_view body);
+
+class Sentence {
+public:
+    static constexpr std::size_t kMaxFields = 255;
+
+    // Parses `line` (from '$' or '!' to before the terminator). Returns false when the line is
+    // not a sentence at all (no address, too many fields); `error()` then says why.
+    bool parse(std::string_view line);
+
+    std::string_view line() const { return line_; }
+    char start() const { return line_.empty() ? '\0' : line_.front(); }
+    // Text between the start character and '*' (what the checksum covers).
+    std::string_view body() const { return body_; }
+
+    // Address as received ("GPGGA", "PNVGRTK", "GPSGG").
+    std::string_view address() const { return address_; }
+    // Standard address: talker = first two characters, type = the rest ("GP" + "GGA").
+    // Proprietary address: talker "P", type = the rest ("P" + "NVGRTK").
+    std::string_view talker() const;
+    std::string_view type() const;
+    bool proprietary() const { return !address_.empty() && address_.front() == 'P'; }
+
+    ChecksumStatus checksum() const { return checksumStatus_; }
+    std::uint8_t declaredChecksum() const { return declared_; }
+    std::uint8_t computedChecksum() const { return computed_; }
+    // The checksum text was a placeholder ("*xx", "*XX", "*") rather than absent.
+    bool checksumPlaceholder() const { return placeholder_; }
+
+    // Fields after the address, 0-based. field(i) past the end is an empty view.
+    std::size_t fieldCount() const { return fieldCount_; }
+    std::string_view field(std::size_t i) const {
+        if (i >= fieldCount_) return {};
+        return trim(body_.substr(start_[i], start_[i + 1] - start_[i] - 1));
+    }
+    // Untrimmed text of a field, for the few places where inner blanks matter.
+    std::string_view rawField(std::size_t i) const {
+        if (i >= fieldCount_) return {};
+        return body_.substr(start_[i], start_[i + 1] - start_[i] - 1);
+    }
+
+    const char *error() const { return error_; }
+
+private:
+    static std::string_view trim(std::string_view s) {
+        while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+        while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
+        return s;
+    }
+
+    std::string_view line_;
+    std::string_view body_;
+    std::string_view address_;
+    const char *error_ = nullptr;
+    std::size_t fieldCount_ = 0;
+    ChecksumStatus checksumStatus_ = ChecksumStatus::Missing;
+    std::uint8_t declared_ = 0;
+    std::uint8_t computed_ = 0;
+    bool placeholder_ = false;
+    // start_[i] = offset in body_ of field i; start_[fieldCount_] = body_.size() + 1.
+    // Deliberately not initialised: parse() writes what it uses.
+    std::uint16_t start_[kMaxFields + 1];
+};
+
+} // namespace gnss

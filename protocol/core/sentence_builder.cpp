@@ -1,0 +1,73 @@
+#include "sentence_builder.h"
+
+#include "framer.h"
+#include "sentence.h"
+
+#include <cstdio>
+
+namespace gnss {
+
+std::string buildSentence(std::string_view body, char start) {
+    static const char hex[] = "0123456789ABCDEF";
+    std::string s;
+    s.reserve(body.size() + 4);
+    s.push_back(start);
+    s.append(body);
+    const std::uint8_t cs = nmeaChecksum(body);
+    s.push_back('*');
+    s.push_back(hex[cs >> 4]);
+    s.push_back(hex[cs & 15]);
+    return s;
+}
+
+std::string completeSentence(std::string_view typed, std::string &error) {
+    while (!typed.empty() && (typed.back() == '\r' || typed.back() == '\n' || typed.back() == ' '))
+        typed.remove_suffix(1);
+    while (!typed.empty() && typed.front() == ' ') typed.remove_prefix(1);
+    char start = '$';
+    if (!typed.empty() && (typed.front() == '$' || typed.front() == '!')) {
+        start = typed.front();
+        typed.remove_prefix(1);
+    }
+    // Drop a checksum the user typed: we always compute our own.
+    const auto star = typed.rfind('*');
+    if (star != std::string_view::npos && typed.size() - star <= 3) typed = typed.substr(0, star);
+    if (typed.empty()) {
+        error = "empty sentence";
+        return {};
+    }
+    for (char c : typed) {
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F ||
+            c == '$' || c == '!' || c == '*') {
+            error = "character not allowed in a sentence: '";
+            error += c;
+            error += "'";
+            return {};
+        }
+    }
+    if (typed.size() + 4 > Framer::kMaxLine) {
+        error = "sentence too long";
+        return {};
+    }
+    const auto comma = typed.find(',');
+    if ((comma == std::string_view::npos ? typed.size() : comma) == 0) {
+        error = "sentence has no address";
+        return {};
+    }
+    return buildSentence(typed, start);
+}
+
+std::string formatFixed(double v, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    std::string s(buf);
+    if (s == "-0" || s.rfind("-0.", 0) == 0) { // avoid "-0.000"
+        bool allZero = true;
+        for (char c : s)
+            if (c >= '1' && c <= '9') allZero = false;
+        if (allZero) s.erase(0, 1);
+    }
+    return s;
+}
+
+} // namespace gnss

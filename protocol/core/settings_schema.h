@@ -1,0 +1,71 @@
+#pragma once
+// Settings schema: every configurable parameter of a receiver, as data.
+//
+// One table per dialect is the single source of truth that the settings forms, `gnss-cli schema`,
+// `gnss-cli encode`, configuration profiles and the simulator all read.
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gnss {
+
+enum class SettingType {
+    Bool,        // "0"/"1" (or the dialect's ON/OFF)
+    Integer,     // min/max apply
+    Real,        // min/max apply
+    Enum,        // one of options[].value
+    Text,        // free text (station ids, names)
+    Coordinates, // several reals separated by ',' (BASEXYZ x,y,z; BASEBLH lat,lon,h)
+    List,        // a list of items separated by ';' (output message lists, station lists)
+};
+std::string_view toString(SettingType t);
+
+enum class SettingAccess {
+    ReadWrite, // can be queried and set
+    WriteOnly, // the receiver cannot report it: shown as "unknown (write-only)"
+    ReadOnly,  // reported but not settable
+};
+std::string_view toString(SettingAccess a);
+
+struct SettingOption {
+    std::string_view value; // what is sent ("1", "GPS", "ON")
+    std::string_view label; // what the user reads
+};
+
+struct SettingDef {
+    std::string_view key;   // stable key, ends with the spec's own name: "rtk.MODE"
+    std::string_view label; // short label
+    std::string_view group; // settings page: "RTK engine", "Ports", ...
+    SettingType type = SettingType::Integer;
+    std::string_view unit; // "Hz", "deg", "m", "s", "" if none
+    std::optional<double> min;
+    std::optional<double> max;
+    std::span<const SettingOption> options;
+    std::string_view defaultValue; // as text; empty when the spec gives none
+    std::string_view help;         // from the spec
+    SettingAccess access = SettingAccess::ReadWrite;
+    std::string_view readBack; // how it is read back: the query and where the value is
+    std::string_view write;    // how it is written: the command template
+};
+
+struct KeyValue {
+    std::string key;
+    std::string value;
+};
+
+// What an encoder produced: sentences to send in order, or why nothing may be sent.
+struct EncodeResult {
+    std::vector<std::string> sentences;
+    std::string error; // names the parameter and the accepted range when a value is refused
+    bool ok() const { return error.empty(); }
+};
+
+const SettingDef *findSetting(std::span<const SettingDef> schema, std::string_view key);
+
+// Checks `value` against the setting's type, range and options. Returns an empty string when
+// valid, else a message naming the parameter and what it accepts.
+std::string validateSetting(const SettingDef &def, std::string_view value);
+
+} // namespace gnss

@@ -1,0 +1,177 @@
+#include "stream_decoder.h"
+
+#include <cstring>
+
+namespace gnss {
+namespace {
+
+constexpr std::size_t kMaxTrackedAddresses = 4096;
+
+// Packs an address of up to 8 characters into a cache key (0 = not cacheable).
+inline std::uint64_t packAddress(std::string_view a) {
+    if (a.empty() || a.size() > 8) return 0;
+    std::uint64_t k = 0;
+    std::memcpy(&k, a.data(), a.size());
+    return k;
+}
+
+inline std::size_t hashKey(std::uint64_t k) {
+    k ^= k >> 29;
+    k *= 0xbf58476d1ce4e5b9ULL;
+    k ^= k >> 32;
+    return static_cast<std::size_t>(k);
+}
+
+const char *hexByte(std::uint8_t v, char *buf) {
+    static const char hex[] = "0123456789ABCDEF";
+    buf[0] = hex[v >> 4];
+    buf[1] = hex[v & 15];
+    buf[2] = '\0';
+    return buf;
+}
+
+} // namespace
+
+StreamDecoder::StreamDecoder(const DialectRegistry &registry, DecoderOptions options)
+    : registry_(registry), options_(std::move(options)) {
+    if (options_.dialect != "auto" && !options_.dialect.empty()) {
+        dialect_ = registry_.find(options_.dialect);
+        autoDetect_ = false;
+    }
+}
+
+void StreamDecoder::setDialect(const Dialect *d) {
+    dialect_ = d;
+    autoDetect_ = d == nullptr;
+    cache_ = {};
+    cacheUsed_ = 0;
+}
+
+std::uint32_t StreamDecoder::statsIndexFor(std::string_view address) {
+    auto it = statsByAddress_.find(std::string(address));
+    if (it != statsByAddress_.end()) return it->second;
+    if (stats_.size() >= kMaxTrackedAddresses) {
+        // A stream of garbage addresses must not grow memory without bound.
+        auto other = statsByAddress_.find("(other)");
+        if (other != statsByAddress_.end()) return other->second;
+        address = "(other)";
+    }
+    const auto idx = static_cast<std::uint32_t>(stats_.size());
+    stats_.push_back(AddressStats{std::string(address)});
+    statsByAddress_.emplace(std::string(address), idx);
+    return idx;
+}
+
+StreamDecoder::Resolved StreamDecoder::resolveSlow(std::string_view address) {
+    std::string_view lookupAddress = address;
+    for (const auto &[alias, canonical] : options_.addressAliases) {
+        if (address.size() >= alias.size() && address.substr(0, alias.size()) == alias) {
+            aliasBuffer_ = canonical;
+            aliasBuffer_.append(address.substr(alias.size()));
+            lookupAddress = aliasBuffer_;
+            break;
+        }
+    }
+    return {registry_.lookup(lookupAddress, dialect_), statsIndexFor(address)};
+}
+
+StreamDecoder::Resolved StreamDecoder::resolve(std::string_view address) {
+    const std::uint64_t key = packAddress(address);
+    if (key == 0) return resolveSlow(address);
+    std::size_t slot = hashKey(key) & (cache_.size() - 1);
+    for (std::size_t probe = 0; probe < cache_.size(); ++probe) {
+        CacheEntry &e = cache_[slot];
+        if (!e.used) {
+            Resolved r = resolveSlow(address);
+            if (cacheUsed_ < cache_.size() * 3 / 4) {
+                e.used = true;
+                e.key = key;
+                e.match = r.match;
+                e.statsIndex = r.statsIndex;
+                ++cacheUsed_;
+            }
+            return r;
+        }
+        if (e.key == key) return {e.match, e.statsIndex};
+        slot = (slot + 1) & (cache_.size() - 1);
+    }
+    return resolveSlow(address);
+}
+
+bool StreamDecoder::checksumAcceptable(const Sentence &s, const Dialect *ruleDialect) const {
+    switch (s.checksum()) {
+    case ChecksumStatus::Ok: return true;
+    case ChecksumStatus::Bad: return options_.lenient;
+    case ChecksumStatus::Missing:
+        return options_.lenient || (ruleDialect && ruleDialect->checksumOptional) ||
+               (dialect_ && dialect_->checksumOptional);
+    }
+    return false;
+}
+
+void StreamDecoder::feed(std::string_view bytes, Handler handler) {
+    framer_.feed(bytes, [&](std::string_view line) { decodeLine(line, handler); });
+}
+
+void StreamDecoder::decodeLine(std::string_view line, Handler handler) {
+    Sentence s;
+    if (!s.parse(line)) {
+        ++malformed_;
+        AddressStats &st = stats_[statsIndexFor("(malformed)")];
+        ++st.sentences;
+        ++st.decodeErrors;
+        handler(SentenceEvent{s, nullptr, s.error(), nullptr});
+        return;
+    }
+    const Resolved r = resolve(s.address());
+    AddressStats &st = stats_[r.statsIndex];
+    ++st.sentences;
+    if (s.checksum() == ChecksumStatus::Bad) ++st.checksumBad;
+    if (s.checksum() == ChecksumStatus::Missing) ++st.checksumMissing;
+
+    if (!r.match.rule) {
+        ++st.unknown;
+        handler(SentenceEvent{s, nullptr, "unknown sentence", nullptr});
+        return;
+    }
+    if (!checksumAcceptable(s, r.match.dialect)) {
+        ++st.rejected;
+        char a[3], b[3];
+        if (s.checksum() == ChecksumStatus::Bad) {
+            error_ = "checksum mismatch: sent ";
+            error_ += s.checksumPlaceholder() ? "?" : hexByte(s.declaredChecksum(), a);
+            error_ += ", computed ";
+            error_ += hexByte(s.computedChecksum(), b);
+        } else {
+            error_ = "checksum missing";
+        }
+        handler(SentenceEvent{s, nullptr, error_, r.match.dialect});
+        return;
+    }
+
+    const Dialect *decodeDialect = dialect_ ? dialect_ : r.match.dialect;
+    bool emitted = false;
+    auto onMessage = [&](const Message &m) {
+        emitted = true;
+        ++st.decoded;
+        handler(SentenceEvent{s, &m, {}, r.match.dialect});
+    };
+    DecodeContext ctx(decodeDialect, onMessage); // FunctionRef: the lambda must outlive ctx
+    const bool ok = r.match.rule->decode(s, ctx);
+    if (!ok) {
+        ++st.decodeErrors;
+        handler(SentenceEvent{s, nullptr, ctx.error.empty() ? "malformed" : ctx.error,
+                              r.match.dialect});
+        return;
+    }
+    (void)emitted;
+    // Auto detection: the first vendor sentence that decodes names the dialect.
+    if (autoDetect_ && !dialect_ && r.match.dialect && r.match.rule->match == AddressMatch::Whole &&
+        s.checksum() != ChecksumStatus::Bad) {
+        dialect_ = r.match.dialect;
+        cache_ = {};
+        cacheUsed_ = 0;
+    }
+}
+
+} // namespace gnss

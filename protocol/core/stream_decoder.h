@@ -1,0 +1,103 @@
+#pragma once
+// StreamDecoder: bytes in, decoded sentences out, everything counted.
+//
+//   bytes → Framer → Sentence::parse → checksum policy → DialectRegistry::lookup → decode
+//
+// Never throws and never stops: every line ends up either decoded or reported with the reason
+// (unknown address, checksum bad or missing, malformed field), and counted per address.
+#include "dialect_registry.h"
+#include "framer.h"
+#include "function_ref.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace gnss {
+
+struct DecoderOptions {
+    // "auto" (recognised from the stream's proprietary sentences) or a dialect id.
+    std::string dialect = "auto";
+    // Decode sentences whose checksum is bad or missing, and mark them.
+    bool lenient = false;
+    // Renamed address prefixes: {"PXYZW", "PNMRX"} reads $PXYZW110 as $PNMRX110.
+    std::vector<std::pair<std::string, std::string>> addressAliases;
+};
+
+struct AddressStats {
+    std::string address;
+    std::uint64_t sentences = 0;       // lines with this address
+    std::uint64_t decoded = 0;         // decoded into a message
+    std::uint64_t decodeErrors = 0;    // known sentence, malformed content
+    std::uint64_t unknown = 0;         // no decoder for this address
+    std::uint64_t checksumBad = 0;     // checksum present and wrong
+    std::uint64_t checksumMissing = 0; // no checksum
+    std::uint64_t rejected = 0;        // not decoded because of the checksum policy
+};
+
+struct SentenceEvent {
+    const Sentence &sentence;
+    const Message *message = nullptr; // decoded value, or nullptr
+    std::string_view error;           // why not decoded (empty when decoded)
+    const Dialect *dialect = nullptr; // dialect of the rule that matched (nullptr: standard)
+};
+
+class StreamDecoder {
+public:
+    using Handler = FunctionRef<void(const SentenceEvent &)>;
+
+    StreamDecoder(const DialectRegistry &registry, DecoderOptions options = {});
+
+    // Feeds raw bytes from the receiver.
+    void feed(std::string_view bytes, Handler handler);
+    // End of stream (counts a dangling partial sentence).
+    void finish() { framer_.finish(); }
+    // Decodes one already-framed line (no terminator).
+    void decodeLine(std::string_view line, Handler handler);
+
+    const FramerStats &framerStats() const { return framer_.stats(); }
+    // Per-address counters, in order of first appearance.
+    const std::vector<AddressStats> &addressStats() const { return stats_; }
+    std::uint64_t malformed() const { return malformed_; } // lines that are not sentences
+
+    // The dialect in force: chosen, or detected (auto); nullptr while none is known.
+    const Dialect *dialect() const { return dialect_; }
+    const DialectRegistry &registry() const { return registry_; }
+    const DecoderOptions &options() const { return options_; }
+    // Forces a dialect (e.g. after active detection); nullptr returns to auto detection.
+    void setDialect(const Dialect *d);
+
+private:
+    struct CacheEntry {
+        std::uint64_t key = 0;
+        DialectRegistry::Match match;
+        std::uint32_t statsIndex = 0;
+        bool used = false;
+    };
+    struct Resolved {
+        DialectRegistry::Match match;
+        std::uint32_t statsIndex;
+    };
+    Resolved resolve(std::string_view address);
+    Resolved resolveSlow(std::string_view address);
+    std::uint32_t statsIndexFor(std::string_view address);
+    bool checksumAcceptable(const Sentence &s, const Dialect *ruleDialect) const;
+
+    const DialectRegistry &registry_;
+    DecoderOptions options_;
+    Framer framer_;
+    const Dialect *dialect_ = nullptr;
+    bool autoDetect_ = true;
+    std::vector<AddressStats> stats_;
+    std::unordered_map<std::string, std::uint32_t> statsByAddress_;
+    std::array<CacheEntry, 256> cache_{};
+    std::size_t cacheUsed_ = 0;
+    std::uint64_t malformed_ = 0;
+    std::string aliasBuffer_;
+    std::string error_;
+};
+
+} // namespace gnss

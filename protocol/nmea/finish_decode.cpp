@@ -1,0 +1,14 @@
+#include "nmea_messages.h"
+
+namespace gnss::nmea {
+
+bool finishDecode(FieldReader &r, DecodeContext &ctx, const Message &m) {
+    if (!r.ok()) {
+        ctx.error = r.error();
+        return false;
+    }
+    ctx.emit(m);
+    return true;
+}
+
+} // namespace gnss::nmea

@@ -1,0 +1,46 @@
+// GGA: Global Positioning System fix data (NMEA 0183 4.11 §6.3).
+//
+//   $--GGA,hhmmss.ss,llll.ll,a,yyyyy.yy,a,x,xx,x.x,x.x,M,x.x,M,x.x,xxxx*hh
+//          0 time    1 lat  2  3 lon  4  5 quality
+//                                         6 sats used, 7 HDOP, 8 altitude MSL, 9 M,
+//                                         10 geoid separation, 11 M, 12 DGPS age, 13 station
+#include "nmea_messages.h"
+
+namespace gnss::nmea {
+
+const MessageType Gga::kType{"GGA"};
+
+bool decodeGga(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    Gga m;
+    if (r.require(6)) {
+        m.time = r.time(0, "time");
+        m.lat = r.latitude(1, "latitude");
+        m.lon = r.longitude(3, "longitude");
+        m.quality = r.integer(5, "quality");
+        m.satsUsed = r.integer(6, "satellites used");
+        m.hdop = r.real(7, "HDOP");
+        m.altMsl = r.real(8, "altitude");
+        m.geoidSep = r.real(10, "geoid separation");
+        m.dgpsAge = r.real(12, "DGPS age");
+        m.dgpsStation = r.integer(13, "DGPS station");
+    }
+    return finishDecode(r, ctx, m);
+}
+
+void Gga::writeJson(JsonWriter &w) const {
+    w.beginObject()
+            .field("time", time)
+            .field("lat", lat)
+            .field("lon", lon)
+            .field("quality", quality)
+            .field("sats_used", satsUsed)
+            .field("hdop", hdop)
+            .field("alt_msl", altMsl)
+            .field("geoid_sep", geoidSep)
+            .field("dgps_age", dgpsAge)
+            .field("dgps_station", dgpsStation)
+            .endObject();
+}
+
+} // namespace gnss::nmea

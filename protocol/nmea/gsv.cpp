@@ -1,0 +1,75 @@
+// GSV: GNSS satellites in view (NMEA 0183 4.11 §6.3).
+//
+//   $--GSV,x,x,xx,xx,xx,xxx,xx,....,xx,xx,xxx,xx,h*hh
+//          0 total sentences, 1 sentence number, 2 satellites in view,
+//          then per satellite: id, elevation (deg, may be negative), azimuth (deg), SNR (dB-Hz),
+//          up to four per sentence, then the signal id (4.10+).
+// The constellation comes from the talker (GP, GL, GA, GB/BD, GQ, GI); GN and GP fall back to
+// the 2.x numbering ranges (see core/satellite.h).
+#include "nmea_messages.h"
+
+namespace gnss::nmea {
+
+const MessageType Gsv::kType{"GSV"};
+
+bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    Gsv m;
+    if (r.require(3)) {
+        m.total = r.integer(0, "total sentences");
+        m.index = r.integer(1, "sentence number");
+        m.inView = r.integer(2, "satellites in view");
+        m.system = constellationOfTalker(s.talker());
+        std::size_t n = r.count();
+        if (n > 3 && (n - 3) % 4 == 1) {
+            m.signalId = r.integer(n - 1, "signal id");
+            --n;
+        }
+        for (std::size_t i = 3; i < n; i += 4) {
+            if (r.empty(i)) continue; // padding slot
+            auto id = r.integer(i, "satellite id");
+            if (!id) continue;
+            if (m.satelliteCount == Gsv::kMaxSatellites) {
+                r.failSentence("too many satellites in one GSV sentence");
+                break;
+            }
+            GsvSatellite &sv = m.satellites[m.satelliteCount++];
+            sv.id = *id;
+            sv.sat = ctx.mapSatellite(m.system, *id);
+            sv.elevation = r.integer(i + 1, "elevation");
+            sv.azimuth = r.integer(i + 2, "azimuth");
+            sv.snr = r.integer(i + 3, "SNR");
+            if (sv.elevation && (*sv.elevation < -90 || *sv.elevation > 90))
+                r.fail(i + 1, "elevation", "out of range");
+            if (sv.azimuth && (*sv.azimuth < 0 || *sv.azimuth > 360))
+                r.fail(i + 2, "azimuth", "out of range");
+        }
+        if (m.total && m.index && (*m.index < 1 || *m.index > *m.total))
+            r.failSentence("sentence number outside 1.." + std::to_string(*m.total));
+    }
+    return finishDecode(r, ctx, m);
+}
+
+void Gsv::writeJson(JsonWriter &w) const {
+    w.beginObject()
+            .field("total", total)
+            .field("index", index)
+            .field("in_view", inView)
+            .field("signal_id", signalId)
+            .key("satellites")
+            .beginArray();
+    for (std::size_t i = 0; i < satelliteCount; ++i) {
+        const GsvSatellite &sv = satellites[i];
+        w.beginObject()
+                .field("system", toString(sv.sat.system))
+                .field("prn", sv.sat.prn)
+                .field("id", sv.id)
+                .field("elevation", sv.elevation)
+                .field("azimuth", sv.azimuth)
+                .field("snr", sv.snr)
+                .endObject();
+    }
+    w.endArray().endObject();
+}
+
+} // namespace gnss::nmea

@@ -1,0 +1,43 @@
+// VTG: course over ground and ground speed (NMEA 0183 4.11 §6.3).
+//
+//   $--VTG,x.x,T,x.x,M,x.x,N,x.x,K,a*hh
+//          0 COG true, 1 T, 2 COG magnetic, 3 M, 4 SOG knots, 5 N, 6 SOG km/h, 7 K, 8 mode
+// NMEA 1.x form without the unit letters: $--VTG,x.x,x.x,x.x,x.x (true, magnetic, knots, km/h).
+#include "nmea_messages.h"
+
+namespace gnss::nmea {
+
+const MessageType Vtg::kType{"VTG"};
+
+bool decodeVtg(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    Vtg m;
+    if (r.require(4)) {
+        const bool withUnits = r.text(1) == "T" || r.count() >= 8;
+        if (withUnits) {
+            m.cogTrue = r.real(0, "course true");
+            m.cogMagnetic = r.real(2, "course magnetic");
+            m.sogKnots = r.real(4, "speed knots");
+            m.sogKmh = r.real(6, "speed km/h");
+            m.mode = r.letter(8, "mode");
+        } else {
+            m.cogTrue = r.real(0, "course true");
+            m.cogMagnetic = r.real(1, "course magnetic");
+            m.sogKnots = r.real(2, "speed knots");
+            m.sogKmh = r.real(3, "speed km/h");
+        }
+    }
+    return finishDecode(r, ctx, m);
+}
+
+void Vtg::writeJson(JsonWriter &w) const {
+    w.beginObject()
+            .field("cog_true", cogTrue)
+            .field("cog_magnetic", cogMagnetic)
+            .field("sog_knots", sogKnots)
+            .field("sog_kmh", sogKmh)
+            .field("mode", mode)
+            .endObject();
+}
+
+} // namespace gnss::nmea

@@ -1,0 +1,39 @@
+// ZDA: time and date (NMEA 0183 4.11 §6.3).
+//
+//   $--ZDA,hhmmss.ss,xx,xx,xxxx,xx,xx*hh
+//          0 time, 1 day, 2 month, 3 year, 4 local zone hours, 5 local zone minutes
+#include "nmea_messages.h"
+
+namespace gnss::nmea {
+
+const MessageType Zda::kType{"ZDA"};
+
+bool decodeZda(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    Zda m;
+    if (r.require(4)) {
+        m.time = r.time(0, "time");
+        auto d = r.integer(1, "day");
+        auto mo = r.integer(2, "month");
+        auto y = r.integer(3, "year");
+        if (d && mo && y) {
+            if (*d < 1 || *d > 31) r.fail(1, "day", "out of range");
+            if (*mo < 1 || *mo > 12) r.fail(2, "month", "out of range");
+            m.date = Date{*y, *mo, *d};
+        }
+        m.tzHours = r.integer(4, "zone hours");
+        m.tzMinutes = r.integer(5, "zone minutes");
+    }
+    return finishDecode(r, ctx, m);
+}
+
+void Zda::writeJson(JsonWriter &w) const {
+    w.beginObject()
+            .field("time", time)
+            .field("date", date)
+            .field("tz_hours", tzHours)
+            .field("tz_minutes", tzMinutes)
+            .endObject();
+}
+
+} // namespace gnss::nmea

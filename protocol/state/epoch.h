@@ -1,0 +1,47 @@
+#pragma once
+// Epoch: the receiver's state at one navigation fix time, assembled from the sentences of that
+// epoch (GGA/RMC/GNS/GLL/ZDA for time and position, GSA for DOPs and used satellites, GSV groups
+// for the sky).
+#include "core/field_types.h"
+#include "core/fix_type.h"
+#include "core/json_writer.h"
+#include "core/satellite.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gnss {
+
+struct SatelliteInView {
+    SatelliteRef sat;
+    int signalId = 0; // NMEA 4.10+ signal id; 0 when the receiver does not say
+    std::optional<int> elevation, azimuth, snr;
+    bool used = false;
+};
+
+struct Epoch {
+    std::optional<TimeOfDay> time;
+    std::optional<Date> date;
+    FixType fix = FixType::None;
+    std::string fixNote; // vendor nuance shown beside the badge ("GeoPath")
+    std::optional<double> lat, lon;
+    std::optional<double> altMsl, geoidSep;
+    std::optional<double> sogKnots, cog;
+    std::optional<double> pdop, hdop, vdop;
+    std::optional<int> satsUsed;
+    std::optional<double> dgpsAge;
+    std::optional<int> dgpsStation;
+    std::vector<SatelliteInView> satellites;
+    int sentences = 0; // sentences that contributed
+
+    std::optional<double> altEllipsoid() const {
+        if (altMsl && geoidSep) return *altMsl + *geoidSep;
+        return std::nullopt;
+    }
+    // ISO 8601 UTC ("2018-05-31T15:35:56.000Z") when the date is known, else "hh:mm:ss.sss".
+    std::string timeText() const;
+    void writeJson(JsonWriter &w) const;
+};
+
+} // namespace gnss

@@ -1,0 +1,199 @@
+#include "epoch_assembler.h"
+
+#include "nmea/nmea_messages.h"
+
+#include <algorithm>
+
+namespace gnss {
+namespace {
+
+constexpr std::uint64_t kGroupExpiryEpochs = 60;
+
+int modeRank(char c) {
+    switch (c) {
+    case 'R': return 7;
+    case 'F': return 6;
+    case 'P':
+    case 'D': return 5;
+    case 'A': return 4;
+    case 'E': return 3;
+    case 'M': return 2;
+    case 'S': return 1;
+    default: return 0;
+    }
+}
+
+// The best of a GNS mode string's per-system letters.
+char bestMode(std::string_view mode) {
+    char best = 'N';
+    for (char c : mode)
+        if (modeRank(c) > modeRank(best)) best = c;
+    return best;
+}
+
+} // namespace
+
+FixType EpochAssembler::fixFromQuality(int q) const {
+    if (dialect_ && dialect_->ggaQuality) return dialect_->ggaQuality(q);
+    return fixTypeFromGgaQuality(q);
+}
+
+void EpochAssembler::startEpochIfTimeChanged(const std::optional<TimeOfDay> &t, Callback onEpoch) {
+    if (!t) return;
+    if (current_.time && !(*current_.time == *t)) emit(onEpoch);
+    if (!current_.time) current_.time = t;
+}
+
+void EpochAssembler::emit(Callback onEpoch) {
+    if (!hasContent_) return;
+    Epoch &e = current_;
+    if (!e.date) e.date = lastDate_;
+
+    // Fix type: GGA quality, else GNS mode, else RMC mode/status, else GSA; GSA refines 2D/3D.
+    if (ggaQuality_) {
+        e.fix = fixFromQuality(*ggaQuality_);
+    } else if (!gnsMode_.empty()) {
+        e.fix = fixTypeFromModeIndicator(bestMode(gnsMode_));
+    } else if (rmcStatus_ == 'V') {
+        e.fix = FixType::None;
+    } else if (rmcMode_) {
+        e.fix = fixTypeFromModeIndicator(*rmcMode_);
+    } else if (rmcStatus_ == 'A') {
+        e.fix = FixType::Fix3D;
+    } else if (gsaFix_) {
+        e.fix = *gsaFix_ >= 3 ? FixType::Fix3D : *gsaFix_ == 2 ? FixType::Fix2D : FixType::None;
+    }
+    if (e.fix == FixType::Fix3D && gsaFix_ == 2) e.fix = FixType::Fix2D;
+    if (e.fix == FixType::None) e.fixNote.clear();
+
+    // Sky: every committed group, marked with this epoch's used satellites.
+    e.satellites.clear();
+    for (auto it = groups_.begin(); it != groups_.end();) {
+        if (epochs_ - it->second.refreshedEpoch > kGroupExpiryEpochs) {
+            it = groups_.erase(it);
+            continue;
+        }
+        for (SatelliteInView sv : it->second.satellites) {
+            sv.used = std::find(used_.begin(), used_.end(), sv.sat) != used_.end();
+            e.satellites.push_back(sv);
+        }
+        ++it;
+    }
+    if (!e.satsUsed && usedThisEpoch_) e.satsUsed = static_cast<int>(used_.size());
+
+    onEpoch(e);
+    ++epochs_;
+
+    current_ = Epoch{};
+    hasContent_ = false;
+    usedThisEpoch_ = false;
+    ggaQuality_.reset();
+    gsaFix_.reset();
+    rmcMode_.reset();
+    rmcStatus_.reset();
+    gnsMode_.clear();
+}
+
+void EpochAssembler::flush(Callback onEpoch) { emit(onEpoch); }
+
+void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) {
+    using namespace nmea;
+    if (const auto *g = message_cast<Gga>(m)) {
+        startEpochIfTimeChanged(g->time, onEpoch);
+        if (g->lat) current_.lat = g->lat;
+        if (g->lon) current_.lon = g->lon;
+        current_.altMsl = g->altMsl;
+        current_.geoidSep = g->geoidSep;
+        current_.hdop = g->hdop ? g->hdop : current_.hdop;
+        current_.satsUsed = g->satsUsed;
+        current_.dgpsAge = g->dgpsAge;
+        current_.dgpsStation = g->dgpsStation;
+        ggaQuality_ = g->quality;
+    } else if (const auto *r = message_cast<Rmc>(m)) {
+        startEpochIfTimeChanged(r->time, onEpoch);
+        if (!current_.lat && r->lat) current_.lat = r->lat;
+        if (!current_.lon && r->lon) current_.lon = r->lon;
+        current_.sogKnots = r->sogKnots;
+        current_.cog = r->cog;
+        if (r->date) current_.date = lastDate_ = r->date;
+        rmcMode_ = r->mode;
+        rmcStatus_ = r->status;
+    } else if (const auto *n = message_cast<Gns>(m)) {
+        startEpochIfTimeChanged(n->time, onEpoch);
+        // Subsidiary per-system GNS sentences (after a GN one) carry no position: only the
+        // main sentence counts.
+        if ((n->lat && n->lon) || s.talker() == "GN") {
+            if (!current_.lat) current_.lat = n->lat;
+            if (!current_.lon) current_.lon = n->lon;
+            if (!current_.altMsl) current_.altMsl = n->altMsl;
+            if (!current_.geoidSep) current_.geoidSep = n->geoidSep;
+            if (!current_.satsUsed) current_.satsUsed = n->satsUsed;
+            if (!current_.hdop) current_.hdop = n->hdop;
+            gnsMode_ = std::string(n->mode);
+        }
+    } else if (const auto *l = message_cast<Gll>(m)) {
+        startEpochIfTimeChanged(l->time, onEpoch);
+        if (!current_.lat && l->lat && l->status != 'V') current_.lat = l->lat;
+        if (!current_.lon && l->lon && l->status != 'V') current_.lon = l->lon;
+        if (!rmcStatus_ && l->status) rmcStatus_ = l->status;
+        if (!rmcMode_ && l->mode) rmcMode_ = l->mode;
+    } else if (const auto *z = message_cast<Zda>(m)) {
+        startEpochIfTimeChanged(z->time, onEpoch);
+        if (z->date) current_.date = lastDate_ = z->date;
+    } else if (const auto *v = message_cast<Vtg>(m)) {
+        if (!current_.sogKnots) current_.sogKnots = v->sogKnots;
+        if (!current_.cog) current_.cog = v->cogTrue;
+    } else if (const auto *a = message_cast<Gsa>(m)) {
+        if (!usedThisEpoch_) used_.clear();
+        usedThisEpoch_ = true;
+        for (std::size_t i = 0; i < a->idCount; ++i) used_.push_back(a->satellites[i]);
+        if (a->fix && (!gsaFix_ || *a->fix > *gsaFix_)) gsaFix_ = a->fix;
+        if (!current_.pdop) current_.pdop = a->pdop;
+        if (!current_.hdop) current_.hdop = a->hdop;
+        if (!current_.vdop) current_.vdop = a->vdop;
+    } else if (const auto *g = message_cast<Gsv>(m)) {
+        std::string key(s.talker());
+        key += '/';
+        key += std::to_string(g->signalId.value_or(0));
+        GsvGroup &grp = groups_[key];
+        const int total = g->total.value_or(1);
+        const int index = g->index.value_or(1);
+        if (index == 1) {
+            if (!grp.pending.empty() || grp.nextIndex > 1) ++incompleteGroups_;
+            grp.pending.clear();
+            grp.expectedTotal = total;
+            grp.nextIndex = 1;
+        }
+        if (index != grp.nextIndex || total != grp.expectedTotal) {
+            // A part is missing or out of order: drop the whole group.
+            ++incompleteGroups_;
+            grp.pending.clear();
+            grp.nextIndex = 0;
+        } else {
+            for (std::size_t i = 0; i < g->satelliteCount; ++i) {
+                const GsvSatellite &sv = g->satellites[i];
+                SatelliteInView out;
+                out.sat = sv.sat;
+                out.signalId = g->signalId.value_or(0);
+                out.elevation = sv.elevation;
+                out.azimuth = sv.azimuth;
+                out.snr = sv.snr;
+                grp.pending.push_back(out);
+            }
+            if (index == total) {
+                grp.satellites.swap(grp.pending);
+                grp.pending.clear();
+                grp.nextIndex = 0;
+                grp.refreshedEpoch = epochs_;
+            } else {
+                ++grp.nextIndex;
+            }
+        }
+    } else {
+        return; // not an epoch message: nothing to count
+    }
+    ++current_.sentences;
+    hasContent_ = true;
+}
+
+} // namespace gnss

@@ -1,0 +1,59 @@
+#pragma once
+// EpochAssembler: decoded messages in, one Epoch per navigation epoch out.
+//
+// An epoch ends when a sentence carrying a different fix time arrives (or at flush()). Sentences
+// without a time (GSA, GSV) belong to the epoch in progress. The sky carries over between epochs:
+// each GSV group (talker + signal id) replaces its own satellites only when it arrives whole, so a
+// multi-part group is applied whole or not at all; groups not refreshed for a while expire.
+#include "core/dialect.h"
+#include "core/function_ref.h"
+#include "epoch.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gnss {
+
+class EpochAssembler {
+public:
+    using Callback = FunctionRef<void(const Epoch &)>;
+
+    explicit EpochAssembler(const Dialect *dialect = nullptr) : dialect_(dialect) {}
+    void setDialect(const Dialect *d) { dialect_ = d; }
+
+    // Adds one decoded message; calls onEpoch when it closes the epoch in progress.
+    void add(const Sentence &s, const Message &m, Callback onEpoch);
+    // Emits the epoch in progress, if it holds anything.
+    void flush(Callback onEpoch);
+
+    std::uint64_t epochs() const { return epochs_; }
+    std::uint64_t incompleteGsvGroups() const { return incompleteGroups_; }
+
+private:
+    struct GsvGroup {
+        std::vector<SatelliteInView> satellites; // committed
+        std::vector<SatelliteInView> pending;    // being assembled
+        int expectedTotal = 0;
+        int nextIndex = 0;
+        std::uint64_t refreshedEpoch = 0;
+    };
+    void startEpochIfTimeChanged(const std::optional<TimeOfDay> &t, Callback onEpoch);
+    void emit(Callback onEpoch);
+    FixType fixFromQuality(int q) const;
+
+    const Dialect *dialect_;
+    Epoch current_;
+    bool hasContent_ = false;
+    std::map<std::string, GsvGroup> groups_; // key: talker + '/' + signal id
+    std::vector<SatelliteRef> used_;         // used in fix, from this epoch's GSA (or the last)
+    bool usedThisEpoch_ = false;
+    std::optional<Date> lastDate_;
+    std::optional<int> ggaQuality_, gsaFix_;
+    std::optional<char> rmcMode_, rmcStatus_;
+    std::string gnsMode_;
+    std::uint64_t epochs_ = 0;
+    std::uint64_t incompleteGroups_ = 0;
+};
+
+} // namespace gnss

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# GNSS Workbench quick start for a fresh Debian 12 machine.
+#   ./quickstart.sh run   install what is missing, build, start gnss-workbench (simulated receiver)
+#   ./quickstart.sh test  install what is missing, build, run the whole test suite headless
+# Idempotent: packages already installed are not touched and the build is incremental.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+mode=${1:-run}
+shift || true
+preset=${GNSS_PRESET:-dev}
+[ "${CI:-}" = "true" ] && preset=ci
+
+packages=(
+  build-essential cmake ninja-build pkg-config
+  qt6-base-dev qt6-base-dev-tools libqt6serialport6-dev libqt6charts6-dev
+  qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n
+  libgl-dev
+  libbenchmark-dev fonts-dejavu-core
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "Installing: ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset" --parallel "$(nproc)"
+
+case "$mode" in
+  run)
+    exec "build/$preset/app/gui/gnss-workbench" "$@"
+    ;;
+  test)
+    export QT_QPA_PLATFORM=offscreen
+    ctest --preset "$preset" "$@"
+    ;;
+  *)
+    echo "usage: $0 run|test" >&2
+    exit 2
+    ;;
+esac
