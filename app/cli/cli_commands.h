@@ -14,5 +14,7 @@ struct CliContext {
 int cmdDecode(const CliContext &ctx, int argc, char **argv);
 int cmdEpochs(const CliContext &ctx, int argc, char **argv);
 int cmdStats(const CliContext &ctx, int argc, char **argv);
+int cmdSchema(const CliContext &ctx, int argc, char **argv);
+int cmdEncode(const CliContext &ctx, int argc, char **argv);
 
 } // namespace gnss::cli

@@ -20,6 +20,9 @@ constexpr Command kCommands[] = {
          "epochs [--dialect D] [--lenient] [FILE|-]   one JSON object per navigation epoch"},
         {"stats", gnss::cli::cmdStats,
          "stats [--dialect D] [--lenient] [--json] [FILE|-]   vet a log: counts per address"},
+        {"schema", gnss::cli::cmdSchema, "schema DIALECT   the dialect's settings schema as JSON"},
+        {"encode", gnss::cli::cmdEncode,
+         "encode DIALECT KEY=VALUE... | encode DIALECT --query KEY...   sentences to send"},
 };
 
 void usage(std::FILE *f) {

@@ -1,0 +1,106 @@
+// gnss-cli schema DIALECT | encode DIALECT KEY=VALUE... | encode DIALECT --query KEY...
+// Generic over every dialect's settings schema and encoders: no vendor is named here.
+#include "cli_args.h"
+#include "cli_commands.h"
+#include "core/json_writer.h"
+
+#include <cstdio>
+#include <string>
+
+namespace gnss::cli {
+namespace {
+
+const Dialect *dialectArg(const CliContext &ctx, const std::vector<std::string> &pos) {
+    if (pos.empty()) {
+        std::fprintf(stderr, "gnss-cli: name a dialect (nvs, geostar, nemerix, nmea)\n");
+        return nullptr;
+    }
+    const Dialect *d = ctx.registry.find(pos.front());
+    if (!d) {
+        std::string known;
+        for (const Dialect *k : ctx.registry.dialects()) known += " " + std::string(k->id);
+        std::fprintf(stderr, "gnss-cli: unknown dialect '%s' (known:%s)\n", pos.front().c_str(),
+                     known.c_str());
+    }
+    return d;
+}
+
+void writeSetting(JsonWriter &w, const SettingDef &s) {
+    w.beginObject().field("key", s.key).field("label", s.label).field("group", s.group);
+    w.field("type", toString(s.type)).field("default", s.defaultValue).field("unit", s.unit);
+    if (s.min) w.field("min", *s.min);
+    if (s.max) w.field("max", *s.max);
+    if (!s.options.empty()) {
+        w.key("options").beginArray();
+        for (const auto &o : s.options)
+            w.beginObject().field("value", o.value).field("label", o.label).endObject();
+        w.endArray();
+    }
+    w.field("access", toString(s.access)).field("read_back", s.readBack).field("write", s.write);
+    w.field("help", s.help).endObject();
+}
+
+} // namespace
+
+int cmdSchema(const CliContext &ctx, int argc, char **argv) {
+    Args args(argc, argv, 2, {});
+    const Dialect *d = dialectArg(ctx, args.positionals());
+    if (!d) return 2;
+    std::string out;
+    JsonWriter w(out);
+    w.beginArray();
+    for (const auto &s : d->settings) writeSetting(w, s);
+    w.endArray();
+    out += '\n';
+    std::fwrite(out.data(), 1, out.size(), stdout);
+    return 0;
+}
+
+int cmdEncode(const CliContext &ctx, int argc, char **argv) {
+    Args args(argc, argv, 2, {"query"});
+    if (!args.error().empty()) {
+        std::fprintf(stderr, "gnss-cli: %s\n", args.error().c_str());
+        return 2;
+    }
+    const Dialect *d = dialectArg(ctx, args.positionals());
+    if (!d) return 2;
+    std::vector<std::string> rest(args.positionals().begin() + 1, args.positionals().end());
+    if (rest.empty()) {
+        std::fprintf(stderr, "gnss-cli: encode %s needs KEY=VALUE... or --query KEY...\n",
+                     std::string(d->id).c_str());
+        return 2;
+    }
+    EncodeResult result;
+    if (args.flag("query")) {
+        if (!d->encodeQueries) {
+            std::fprintf(stderr, "gnss-cli: the %s dialect has no settings to read back\n",
+                         std::string(d->id).c_str());
+            return 2;
+        }
+        result = d->encodeQueries(rest);
+    } else {
+        if (!d->encodeSettings) {
+            std::fprintf(stderr, "gnss-cli: the %s dialect has no settings to write\n",
+                         std::string(d->id).c_str());
+            return 2;
+        }
+        std::vector<KeyValue> values;
+        for (const auto &kv : rest) {
+            const auto eq = kv.find('=');
+            if (eq == std::string::npos || eq == 0) {
+                std::fprintf(stderr, "gnss-cli: expected KEY=VALUE, got '%s'\n", kv.c_str());
+                return 2;
+            }
+            values.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
+        }
+        result = d->encodeSettings(values);
+    }
+    if (!result.ok()) {
+        std::fprintf(stderr, "gnss-cli: %s\n", result.error.c_str());
+        return 1;
+    }
+    for (const auto &s : result.sentences) std::printf("%s\n", s.c_str());
+    return 0;
+}
+
+} // namespace gnss::cli
