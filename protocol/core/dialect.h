@@ -31,7 +31,12 @@ public:
     // Satellite numbering, with the dialect's override where it has one.
     SatelliteRef mapSatellite(Constellation system, int id) const;
     // Hands the decoded message to the caller (valid only during the call).
+    void deliver(const Message &m) { emit_(m); }
+#pragma push_macro("emit") // Qt defines `emit` as an empty macro
+#undef emit
+    // Old name of deliver(), kept while code moves over; unusable where Qt's macro is defined.
     void emit(const Message &m) { emit_(m); }
+#pragma pop_macro("emit")
 
     // Why decoding failed (set by the decode function when it returns false).
     std::string error;

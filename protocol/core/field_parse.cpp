@@ -114,7 +114,7 @@ bool parseTimeOfDay(std::string_view s, TimeOfDay &out) {
     const int h = (s[0] - '0') * 10 + (s[1] - '0');
     const int m = (s[2] - '0') * 10 + (s[3] - '0');
     const int sec = (s[4] - '0') * 10 + (s[5] - '0');
-    if (h > 23 || m > 59 || sec > 60) return false;
+    if (h > 23 || m > 59 || sec > 60 || (sec == 60 && (h != 23 || m != 59))) return false; // leap second only at 23:59:60
     std::int64_t frac = 0;
     int dec = 0;
     if (s.size() > 6) {
@@ -150,15 +150,18 @@ bool parseDateDdMmYy(std::string_view s, Date &out) {
 
 std::string TimeOfDay::toString(int minDecimals) const {
     const int dec = decimals > minDecimals ? decimals : minDecimals;
-    char buf[40];
-    const std::int64_t secNanos = nanos % 60'000'000'000LL;
+    char buf[48];
+    // A leap second (23:59:60) is stored past the end of the day.
+    const bool leap = nanos >= 86'400'000'000'000LL;
+    const std::int64_t secNanos = leap ? nanos - 86'340'000'000'000LL : nanos % 60'000'000'000LL;
+    const int hh = leap ? 23 : hour(), mm = leap ? 59 : minute();
     const long long whole = secNanos / 1'000'000'000LL;
     long long frac = secNanos % 1'000'000'000LL;
     for (int i = dec; i < 9; ++i) frac /= 10;
     if (dec > 0)
-        std::snprintf(buf, sizeof buf, "%02d:%02d:%02lld.%0*lld", hour(), minute(), whole, dec, frac);
+        std::snprintf(buf, sizeof buf, "%02d:%02d:%02lld.%0*lld", hh, mm, whole, dec, frac);
     else
-        std::snprintf(buf, sizeof buf, "%02d:%02d:%02lld", hour(), minute(), whole);
+        std::snprintf(buf, sizeof buf, "%02d:%02d:%02lld", hh, mm, whole);
     return buf;
 }
 

@@ -24,9 +24,16 @@ bool decodeGns(const Sentence &s, DecodeContext &ctx) {
         m.hdop = r.real(7, "HDOP");
         m.altMsl = r.real(8, "altitude");
         m.geoidSep = r.real(9, "geoid separation");
-        m.dgpsAge = r.real(10, "DGPS age");
-        m.dgpsStation = r.integer(11, "DGPS station");
-        m.navStatus = r.letter(12, "navigational status");
+        // 4.10 adds the navigational status after the station id. Some receivers (GeoS-5 before
+        // its 2022 revision) print it with one differential field fewer: the status is the last
+        // field whenever that field is a single letter.
+        const std::size_t n = r.count();
+        const auto last = r.text(n - 1);
+        const bool statusLast = n >= 12 && last.size() == 1 && last[0] >= 'A' && last[0] <= 'Z';
+        const std::size_t end = statusLast ? n - 1 : n;
+        if (10 < end) m.dgpsAge = r.real(10, "DGPS age");
+        if (11 < end) m.dgpsStation = r.integer(11, "DGPS station");
+        if (statusLast) m.navStatus = last[0];
     }
     return finishDecode(r, ctx, m);
 }

@@ -19,14 +19,21 @@ bool decodeRmc(const Sentence &s, DecodeContext &ctx) {
         m.lon = r.longitude(4, "longitude");
         m.sogKnots = r.real(6, "speed");
         m.cog = r.real(7, "course");
-        m.date = r.date(8, "date");
-        m.magVar = r.real(9, "magnetic variation");
+        // Fields after the course are anchored at the end when a receiver prints extra empty
+        // fields before the date (GeoS-5's no-fix RMC has two): date, variation, E/W, mode and,
+        // in 4.10, the navigational status.
+        const std::size_t n = r.count();
+        const bool has410Status = n >= 13 && r.text(n - 1).size() == 1 && r.text(n - 2).size() == 1;
+        const std::size_t standardCount = has410Status ? 13 : 12;
+        const std::size_t shift = (n > standardCount && r.empty(8)) ? n - standardCount : 0;
+        m.date = r.date(8 + shift, "date");
+        m.magVar = r.real(9 + shift, "magnetic variation");
         if (m.magVar) {
-            auto ew = r.letter(10, "variation direction");
+            auto ew = r.letter(10 + shift, "variation direction");
             if (ew == 'W') *m.magVar = -*m.magVar;
         }
-        m.mode = r.letter(11, "mode");
-        m.navStatus = r.letter(12, "navigational status");
+        m.mode = r.letter(11 + shift, "mode");
+        m.navStatus = r.letter(12 + shift, "navigational status");
     }
     return finishDecode(r, ctx, m);
 }

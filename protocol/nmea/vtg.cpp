@@ -13,13 +13,21 @@ bool decodeVtg(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     Vtg m;
     if (r.require(4)) {
-        const bool withUnits = r.text(1) == "T" || r.count() >= 8;
-        if (withUnits) {
-            m.cogTrue = r.real(0, "course true");
-            m.cogMagnetic = r.real(2, "course magnetic");
-            m.sogKnots = r.real(4, "speed knots");
-            m.sogKmh = r.real(6, "speed km/h");
-            m.mode = r.letter(8, "mode");
+        if (r.text(1) == "T") {
+            // Each value is followed by its unit letter; find values by their units, since
+            // receivers drop the empty ones (GeoS-5 prints no 'M' after an empty magnetic course).
+            const std::size_t n = r.count();
+            for (std::size_t i = 1; i < n; ++i) {
+                const auto u = r.text(i);
+                if (u == "T") m.cogTrue = r.real(i - 1, "course true");
+                else if (u == "M") m.cogMagnetic = r.real(i - 1, "course magnetic");
+                else if (u == "N") m.sogKnots = r.real(i - 1, "speed knots");
+                else if (u == "K") {
+                    m.sogKmh = r.real(i - 1, "speed km/h");
+                    m.mode = r.letter(i + 1, "mode");
+                    break;
+                }
+            }
         } else {
             m.cogTrue = r.real(0, "course true");
             m.cogMagnetic = r.real(1, "course magnetic");

@@ -69,6 +69,10 @@ void EpochAssembler::emit(Callback onEpoch) {
     // Sky: every committed group, marked with this epoch's used satellites.
     e.satellites.clear();
     for (auto it = groups_.begin(); it != groups_.end();) {
+        // A group's parts belong to one epoch: parts still pending now will never complete.
+        if (!it->second.pending.empty() || it->second.nextIndex > 1) ++incompleteGroups_;
+        it->second.pending.clear();
+        it->second.nextIndex = 0;
         if (epochs_ - it->second.refreshedEpoch > kGroupExpiryEpochs) {
             it = groups_.erase(it);
             continue;

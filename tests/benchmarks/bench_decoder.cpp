@@ -1,0 +1,78 @@
+// Decoder throughput on a generated 10 Hz multi-constellation log of at least 100 MB: a full
+// decode (framer, checksum, every field of every sentence, epoch assembly) against a
+// checksum-only pass. Prints MB/s and sentences/s.
+#include "log_generator.h"
+
+#include "core/framer.h"
+#include "core/sentence.h"
+#include "core/stream_decoder.h"
+#include "dialects.h"
+#include "state/epoch_assembler.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+const std::string &log100MB() {
+    static const std::string log = [] {
+        std::string s;
+        s.reserve(105'000'000);
+        gnss::bench::generateLog(s, 100'000'000);
+        return s;
+    }();
+    return log;
+}
+
+constexpr std::size_t kChunk = 1 << 20;
+
+void BM_FullDecode(benchmark::State &state) {
+    const std::string &log = log100MB();
+    const gnss::DialectRegistry reg = gnss::makeBuiltinRegistry();
+    std::uint64_t sentences = 0, epochs = 0;
+    for (auto _ : state) {
+        gnss::StreamDecoder dec(reg);
+        gnss::EpochAssembler assembler;
+        auto onEpoch = [&](const gnss::Epoch &) { ++epochs; };
+        auto onSentence = [&](const gnss::SentenceEvent &ev) {
+            ++sentences;
+            if (ev.message) assembler.add(ev.sentence, *ev.message, onEpoch);
+        };
+        for (std::size_t pos = 0; pos < log.size(); pos += kChunk)
+            dec.feed(std::string_view(log).substr(pos, kChunk), onSentence);
+        dec.finish();
+        assembler.flush(onEpoch);
+    }
+    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
+    state.counters["sentences/s"] =
+            benchmark::Counter(static_cast<double>(sentences), benchmark::Counter::kIsRate);
+    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                                                benchmark::Counter::kIsRate);
+    state.counters["log_MB"] = static_cast<double>(log.size()) / 1e6;
+}
+BENCHMARK(BM_FullDecode)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
+
+void BM_ChecksumOnly(benchmark::State &state) {
+    const std::string &log = log100MB();
+    std::uint64_t sentences = 0, ok = 0;
+    for (auto _ : state) {
+        gnss::Framer framer;
+        auto onLine = [&](std::string_view line) {
+            ++sentences;
+            const auto star = line.rfind('*');
+            if (star != std::string_view::npos && gnss::nmeaChecksum(line.substr(1, star - 1)) != 0) ++ok;
+        };
+        for (std::size_t pos = 0; pos < log.size(); pos += kChunk)
+            framer.feed(std::string_view(log).substr(pos, kChunk), onLine);
+    }
+    benchmark::DoNotOptimize(ok);
+    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
+    state.counters["sentences/s"] =
+            benchmark::Counter(static_cast<double>(sentences), benchmark::Counter::kIsRate);
+    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                                                benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ChecksumOnly)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
+
+} // namespace
+
+BENCHMARK_MAIN();

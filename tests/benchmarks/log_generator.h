@@ -1,0 +1,12 @@
+#pragma once
+// Generates a realistic 10 Hz multi-constellation NMEA 4.11 log (GPS, GLONASS, Galileo, BeiDou;
+// RMC, GGA, GSA per system, GSV per system and signal, VTG, ZDA, GST) for benchmarks.
+#include <cstddef>
+#include <string>
+
+namespace gnss::bench {
+
+// Appends epochs until `out` holds at least `bytes` bytes.
+void generateLog(std::string &out, std::size_t bytes);
+
+} // namespace gnss::bench
