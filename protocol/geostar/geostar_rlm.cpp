@@ -1,0 +1,69 @@
+// RLM: Galileo return link message (GeoS-5 NMEA v4.0, section 3.10). Not in the core: NMEA 0183
+// has no RLM; GeoStar sends it under the GP talker.
+//
+//   $GPRLM,hhhhhhhhhhhhhhh,hhmmss.ss,h,h--h*hh
+//          0 beacon 15HEX ID (COSPAS-SARSAT), 1 time, 2 message code (one hex digit),
+//          3 parameters: 4 hex digits (16 bits, short message) or 24 (96 bits, long message)
+//   $GPRLM,123456789ABCD12,000128.00,3,333344445555666677778888*64
+// Message codes: 0 reserved, 1 acknowledgement, 2 command, 3 message, 4-E reserved, F test.
+#include "geostar_messages.h"
+#include "nmea/nmea_messages.h"
+
+namespace gnss::geostar {
+
+const MessageType Rlm::kType{"RLM"};
+
+namespace {
+
+bool allHex(std::string_view s) {
+    for (char c : s)
+        if (!((c >= '0' && c <= '9') || (c >= 'A' && c <= 'F') || (c >= 'a' && c <= 'f')))
+            return false;
+    return true;
+}
+
+} // namespace
+
+bool decodeRlm(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    Rlm m;
+    if (r.require(4)) {
+        m.beaconId = r.text(0);
+        if (m.beaconId.size() != 15 || !allHex(m.beaconId))
+            r.fail(0, "beacon id", "not 15 hex digits");
+        m.time = r.time(1, "time");
+        const std::string_view code = r.text(2);
+        if (code.size() != 1 || !allHex(code))
+            r.fail(2, "message code", "not one hex digit");
+        else
+            m.messageCode = static_cast<int>(*r.hex(2, "message code"));
+        m.parameters = r.text(3);
+        if ((m.parameters.size() != 4 && m.parameters.size() != 24) || !allHex(m.parameters))
+            r.fail(3, "parameters", "not 4 or 24 hex digits");
+    }
+    return nmea::finishDecode(r, ctx, m);
+}
+
+std::string_view Rlm::serviceName() const {
+    if (!messageCode) return {};
+    switch (*messageCode) {
+    case 1: return "acknowledgement";
+    case 2: return "command";
+    case 3: return "message";
+    case 15: return "test";
+    default: return "reserved";
+    }
+}
+
+void Rlm::writeJson(JsonWriter &w) const {
+    w.beginObject()
+            .field("beacon_id", beaconId)
+            .field("time", time)
+            .field("message_code", messageCode)
+            .field("service", serviceName())
+            .field("parameters", parameters)
+            .field("length", std::string_view(parameters.size() == 24 ? "long" : "short"))
+            .endObject();
+}
+
+} // namespace gnss::geostar

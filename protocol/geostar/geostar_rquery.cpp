@@ -1,0 +1,70 @@
+// RQUERY: firmware version, telemetry and configuration (GeoS-5 NMEA v4.0, section 3.11).
+//
+//   $GPSGG,RQUERY,GEOS-5,V.x.xxx,ddmmyy,xxxxxxxx,xxxxxxxx,xxxxxxxx*hh
+//          0      1 name 2 firmware 3 firmware date
+//                                          4 status word (table 7)
+//                                                   5 configuration register #1 (table 8)
+//                                                            6 configuration register #2 (table 9)
+// Example (ERRATA.md; the spec prints the address as $GPGSGG):
+//   $GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C
+#include "geostar_messages.h"
+#include "nmea/nmea_messages.h"
+
+namespace gnss::geostar {
+
+const MessageType Rquery::kType{"GPSGG,RQUERY"};
+
+namespace {
+
+std::optional<std::uint32_t> word(FieldReader &r, std::size_t i, const char *name) {
+    if (r.text(i).size() > 8) {
+        r.fail(i, name, "longer than 8 hex digits");
+        return std::nullopt;
+    }
+    auto v = r.hex(i, name);
+    if (!v) return std::nullopt;
+    return static_cast<std::uint32_t>(*v);
+}
+
+} // namespace
+
+bool decodeRquery(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    Rquery m;
+    if (r.require(7)) {
+        m.receiverName = r.text(1);
+        m.firmware = r.text(2);
+        m.firmwareVersion = m.firmware;
+        if (m.firmwareVersion.substr(0, 2) == "V." || m.firmwareVersion.substr(0, 2) == "v.")
+            m.firmwareVersion.remove_prefix(2);
+        m.firmwareDate = r.date(3, "firmware date");
+        const auto status = word(r, 4, "status word");
+        const auto cfg1 = word(r, 5, "configuration register 1");
+        const auto cfg2 = word(r, 6, "configuration register 2");
+        if (!status || !cfg1 || !cfg2) {
+            if (r.ok()) r.failSentence("RQUERY reply needs three hex words");
+        } else {
+            m.status = StatusWord::decode(*status);
+            m.config1 = ConfigRegister1::decode(*cfg1);
+            m.config2 = ConfigRegister2::decode(*cfg2);
+        }
+    }
+    return nmea::finishDecode(r, ctx, m);
+}
+
+void Rquery::writeJson(JsonWriter &w) const {
+    w.beginObject()
+            .field("receiver_name", receiverName)
+            .field("firmware", firmware)
+            .field("firmware_version", firmwareVersion)
+            .field("firmware_date", firmwareDate);
+    w.key("status");
+    status.writeJson(w);
+    w.key("config1");
+    config1.writeJson(w);
+    w.key("config2");
+    config2.writeJson(w);
+    w.endObject();
+}
+
+} // namespace gnss::geostar

@@ -1,0 +1,334 @@
+// GeoS-5 settings schema (section 4 commands; read back from RQUERY 3.11 / NQUERY 3.12).
+// The spec gives no factory defaults, so defaultValue stays empty.
+#include "geostar_schema.h"
+
+#include "core/field_parse.h"
+#include "geostar_commands.h"
+#include "geostar_messages.h"
+
+#include <algorithm>
+
+namespace gnss::geostar {
+namespace {
+
+using A = SettingAccess;
+using T = SettingType;
+
+constexpr SettingOption kBaud[] = {
+        {"4800", "4800"},     {"9600", "9600"},     {"19200", "19200"},
+        {"38400", "38400"},   {"57600", "57600"},   {"115200", "115200"},
+        {"230400", "230400"}, {"460800", "460800"}, {"921600", "921600"}};
+constexpr SettingOption kStop[] = {{"1", "1 stop bit"}, {"2", "2 stop bits"}};
+constexpr SettingOption kNmea[] = {{"2", "NMEA v2.x"}, {"4", "NMEA v4.10"}};
+constexpr SettingOption kRate[] = {{"1", "1 Hz"}, {"2", "2 Hz"}, {"5", "5 Hz"}, {"10", "10 Hz"}};
+constexpr SettingOption kDatum[] = {
+        {"W84", "WGS-84"},
+        {"P90", "PZ-90.11"},
+        {"999", "user-defined (reported by RQUERY; cannot be selected by an NMEA command)"}};
+constexpr SettingOption kGnss[] = {
+        {"GPS", "GPS only"}, {"GLN", "GLONASS only"}, {"MIX", "GLONASS+GPS+Galileo"}};
+constexpr SettingOption kStart[] = {
+        {"cold", "cold start"}, {"warm", "warm start"}, {"hot", "hot start"}};
+constexpr SettingOption kSave[] = {{"1", "save almanacs to flash"}};
+constexpr SettingOption kSwprot[] = {{"binary", "switch the port to the binary protocol"}};
+
+#define GEOSTAR_OUTPUT(MSG, LABEL, HELP, FIELD)                                                    \
+    SettingDef {                                                                                   \
+        .key = "output." MSG, .label = LABEL, .group = "Output messages", .type = T::Bool,         \
+        .help = HELP, .access = A::ReadWrite,                                                      \
+        .readBack = "NQUERY reply, field " FIELD " (" MSG " rate code; 0 = off, 1/2/3/R = on)",    \
+        .write = "$GPSGG," MSG " ON / $GPSGG," MSG "OFF"                                           \
+    }
+
+constexpr SettingDef kSchema[] = {
+        GEOSTAR_OUTPUT("GGA", "GGA/GNS output", "GGA, and GNS in v4.10 (4.10)", "4"),
+        GEOSTAR_OUTPUT("GLL", "GLL output", "Geographic position (4.11)", "5"),
+        GEOSTAR_OUTPUT("GSA", "GSA output", "DOP and active satellites (4.12)", "6"),
+        GEOSTAR_OUTPUT("GSV", "GSV output", "Satellites in view (4.13)", "7"),
+        GEOSTAR_OUTPUT("RMC", "RMC output", "Recommended minimum data (4.14)", "8"),
+        GEOSTAR_OUTPUT("VTG", "VTG output", "Course and speed (4.15)", "9"),
+        GEOSTAR_OUTPUT("ZDA", "ZDA output", "Time and date (4.16)", "11"),
+        GEOSTAR_OUTPUT("DTM", "DTM output", "Datum (4.17)", "12"),
+        GEOSTAR_OUTPUT("RLM", "RLM output", "Galileo return link message (4.18)", "13"),
+        {.key = "output.NMEAV",
+         .label = "NMEA version",
+         .group = "Output messages",
+         .type = T::Enum,
+         .options = kNmea,
+         .help = "NMEA 0183 standard of the output: v2.x or v4.10 (4.19)",
+         .readBack = "NQUERY reply, field 3 (2 = v2.x, 4 = v4.10)",
+         .write = "$GPSGG,NMEAV2 / $GPSGG,NMEAV4"},
+        {.key = "output.RATE",
+         .label = "Output rate",
+         .group = "Output messages",
+         .type = T::Enum,
+         .unit = "Hz",
+         .options = kRate,
+         .help = "Navigation output rate (4.20)",
+         .readBack = "NQUERY reply, field 2 (0 = 10 Hz, 1 = 5 Hz, 2 = 2 Hz, 3 = 1 Hz); also "
+                     "RQUERY configuration register 1 bits 19:18",
+         .write = "$GPSGG,RATE01 / RATE02 / RATE05 / RATE10"},
+        {.key = "power.PSM",
+         .label = "Power saving",
+         .group = "Power",
+         .type = T::Bool,
+         .help = "Power saving modes on/off; in FIX-BY-REQUEST sleep, PSM ON wakes the receiver "
+                 "(4.21). Read back inferred from table 8 bit 24 (power saving modes enabled).",
+         .readBack = "RQUERY reply, configuration register 1 bit 24",
+         .write = "$GPSGG,PSM ON / $GPSGG,PSMOFF"},
+        {.key = "nav.ELEV",
+         .label = "Elevation mask",
+         .group = "Navigation",
+         .type = T::Integer,
+         .unit = "deg",
+         .min = 5,
+         .max = 15,
+         .help = "Satellites below the mask are not used in the solution (4.22)",
+         .access = A::WriteOnly,
+         .readBack = "not reported by RQUERY or NQUERY",
+         .write = "$GPSGG,ELEVnn (nn = 05..15)"},
+        {.key = "nav.DAT",
+         .label = "Datum",
+         .group = "Navigation",
+         .type = T::Enum,
+         .options = kDatum,
+         .help = "Coordinate system of the navigation output (4.23)",
+         .readBack = "RQUERY reply, configuration register 2 bits 15:14 (0 = WGS-84, "
+                     "1 = PZ-90.11, 2 = user-defined)",
+         .write = "$GPSGG,DATW84 / $GPSGG,DATP90"},
+        {.key = "nav.NVS",
+         .label = "Constellations",
+         .group = "Navigation",
+         .type = T::Enum,
+         .options = kGnss,
+         .help = "GNSS used: GPS only, GLONASS only or GLONASS+GPS+Galileo (4.24)",
+         .readBack = "RQUERY reply, configuration register 1 bits 2:0 (Galileo, GPS, GLONASS in "
+                     "use)",
+         .write = "$GPSGG,NVSGPS / NVSGLN / NVSMIX"},
+        {.key = "port.BDR",
+         .label = "Baud rate",
+         .group = "Port",
+         .type = T::Enum,
+         .unit = "bit/s",
+         .options = kBaud,
+         .help = "Serial port speed; takes effect after the command (4.8)",
+         .access = A::WriteOnly,
+         .readBack = "not reported (NQUERY gives the port number only)",
+         .write = "$GPSGG,BDR004 / 009 / 019 / 038 / 057 / 115 / 230 / 460 / 921"},
+        {.key = "port.STOP",
+         .label = "Stop bits",
+         .group = "Port",
+         .type = T::Enum,
+         .options = kStop,
+         .help = "Serial port stop bits (4.9)",
+         .access = A::WriteOnly,
+         .readBack = "not reported by RQUERY or NQUERY",
+         .write = "$GPSGG,STOP01 / $GPSGG,STOP02"},
+        {.key = "action.START",
+         .label = "Restart",
+         .group = "Actions",
+         .type = T::Enum,
+         .options = kStart,
+         .help = "Cold, warm or hot start (4.3-4.5)",
+         .access = A::WriteOnly,
+         .readBack = "an action: nothing to read back",
+         .write = "$GPSGG,CSTART / WSTART / HSTART"},
+        {.key = "action.SAVEFL",
+         .label = "Save almanacs",
+         .group = "Actions",
+         .type = T::Enum,
+         .options = kSave,
+         .help = "Save almanacs to flash (4.2)",
+         .access = A::WriteOnly,
+         .readBack = "an action: nothing to read back (RQUERY status bit 30 shows a write in "
+                     "progress)",
+         .write = "$GPSGG,SAVEFL"},
+        {.key = "action.SWPROT",
+         .label = "Binary protocol",
+         .group = "Actions",
+         .type = T::Enum,
+         .options = kSwprot,
+         .help = "Switch the port from NMEA to the binary protocol (4.1)",
+         .access = A::WriteOnly,
+         .readBack = "an action: nothing to read back",
+         .write = "$GPSGG,SWPROT"},
+};
+
+#undef GEOSTAR_OUTPUT
+
+std::string lower(std::string_view s) {
+    std::string r(s);
+    for (char &c : r)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    return r;
+}
+
+// What the user typed → the value of the command table ("ON" → "1", "05" → "5").
+std::string normalise(const SettingDef &d, std::string_view value) {
+    if (d.type == T::Bool) {
+        const std::string l = lower(value);
+        if (l == "on" || l == "true" || l == "yes") return "1";
+        if (l == "off" || l == "false" || l == "no") return "0";
+    }
+    if (d.type == T::Integer) {
+        std::int64_t v;
+        if (parseInt(value, v)) return std::to_string(v);
+    }
+    return std::string(value);
+}
+
+std::string unknownKey(std::string_view key) {
+    std::string known;
+    for (const auto &d : kSchema) known += (known.empty() ? "" : ", ") + std::string(d.key);
+    return "unknown setting '" + std::string(key) + "' (geostar settings: " + known + ")";
+}
+
+int effectOrder(CommandEffect e) {
+    switch (e) {
+    case CommandEffect::None:
+    case CommandEffect::ChangesOutput: return 0;
+    case CommandEffect::ResetsReceiver: return 2;
+    case CommandEffect::ChangesBaud: return 3;
+    case CommandEffect::ChangesProtocol: return 4;
+    }
+    return 0;
+}
+
+bool plan(std::span<const KeyValue> values, std::vector<const CommandDef *> &out,
+          std::string &error) {
+    for (const auto &kv : values) {
+        const SettingDef *d = findSetting(kSchema, kv.key);
+        if (!d) {
+            error = unknownKey(kv.key);
+            return false;
+        }
+        const std::string v = normalise(*d, kv.value);
+        if (std::string e = validateSetting(*d, v); !e.empty()) {
+            error = e;
+            return false;
+        }
+        const CommandDef *c = findCommandFor(d->key, v);
+        if (!c) {
+            error = std::string(d->key) + ": '" + v +
+                    "' is reported by the receiver but cannot be set with an NMEA command";
+            return false;
+        }
+        out.push_back(c);
+    }
+    std::stable_sort(out.begin(), out.end(), [](const CommandDef *a, const CommandDef *b) {
+        return effectOrder(a->effect) < effectOrder(b->effect);
+    });
+    return true;
+}
+
+void addUnique(std::vector<std::string> &v, std::string s) {
+    if (std::find(v.begin(), v.end(), s) == v.end()) v.push_back(std::move(s));
+}
+
+// The query a setting is read back with: the readBack text starts with its name.
+std::string_view queryOf(const SettingDef &d) {
+    if (d.access == A::WriteOnly) return {};
+    if (d.readBack.starts_with("NQUERY")) return "NQUERY";
+    if (d.readBack.starts_with("RQUERY")) return "RQUERY";
+    return {};
+}
+
+} // namespace
+
+std::span<const SettingDef> settingsSchema() {
+    return kSchema;
+}
+
+EncodeResult encodeSettingCommands(std::span<const KeyValue> values) {
+    EncodeResult r;
+    std::vector<const CommandDef *> planned;
+    if (!plan(values, planned, r.error)) return r;
+    for (const CommandDef *c : planned) r.sentences.push_back(encodeCommand(*c));
+    return r;
+}
+
+EncodeResult encodeSettings(std::span<const KeyValue> values) {
+    EncodeResult r;
+    std::vector<const CommandDef *> planned;
+    if (!plan(values, planned, r.error)) return r;
+    // Commands, then the confirming queries, then whatever resets / re-speeds / leaves NMEA
+    // (after those a query would not be answered on the same terms).
+    std::vector<std::string> confirm;
+    for (const CommandDef *c : planned)
+        if (!c->confirmedBy.empty()) addUnique(confirm, std::string(c->confirmedBy));
+    bool confirmed = false;
+    for (const CommandDef *c : planned) {
+        if (!confirmed && effectOrder(c->effect) > 0) {
+            for (const auto &q : confirm) r.sentences.push_back(encodeCommand(*findCommand(q)));
+            confirmed = true;
+        }
+        r.sentences.push_back(encodeCommand(*c));
+    }
+    if (!confirmed)
+        for (const auto &q : confirm) r.sentences.push_back(encodeCommand(*findCommand(q)));
+    return r;
+}
+
+EncodeResult encodeQueries(std::span<const std::string> keys) {
+    EncodeResult r;
+    std::vector<std::string> queries;
+    for (const auto &k : keys) {
+        if (k == "all") {
+            addUnique(queries, "RQUERY");
+            addUnique(queries, "NQUERY");
+            continue;
+        }
+        if (k == "RQUERY" || k == "NQUERY") {
+            addUnique(queries, k);
+            continue;
+        }
+        const SettingDef *d = findSetting(kSchema, k);
+        if (!d) {
+            r.error = unknownKey(k);
+            return r;
+        }
+        const std::string_view q = queryOf(*d);
+        if (q.empty()) {
+            r.error = std::string(d->key) + " is write-only: the GeoS-5 does not report it (" +
+                      std::string(d->readBack) + ")";
+            return r;
+        }
+        addUnique(queries, std::string(q));
+    }
+    for (const auto &q : queries) r.sentences.push_back(encodeCommand(*findCommand(q)));
+    return r;
+}
+
+void extractSettings(const Message &reply, std::vector<KeyValue> &out) {
+    if (const auto *n = message_cast<Nquery>(reply)) {
+        if (n->rateCode && rateCodeToHz(*n->rateCode))
+            out.push_back({"output.RATE", std::to_string(rateCodeToHz(*n->rateCode))});
+        if (n->nmeaVersion == 2 || n->nmeaVersion == 4)
+            out.push_back({"output.NMEAV", std::to_string(*n->nmeaVersion)});
+        for (std::size_t i = 0; i < n->codeCount; ++i) {
+            if (Nquery::kNames[i].empty() || !n->codes[i]) continue;
+            out.push_back(
+                    {"output." + std::string(Nquery::kNames[i]), n->codes[i] == '0' ? "0" : "1"});
+        }
+        return;
+    }
+    if (const auto *q = message_cast<Rquery>(reply)) {
+        const ConfigRegister1 &c1 = q->config1;
+        if (c1.rateHz) out.push_back({"output.RATE", std::to_string(c1.rateHz)});
+        out.push_back({"power.PSM", c1.powerSavingEnabled ? "1" : "0"});
+        switch (q->config2.datumCode) {
+        case 0: out.push_back({"nav.DAT", "W84"}); break;
+        case 1: out.push_back({"nav.DAT", "P90"}); break;
+        case 2: out.push_back({"nav.DAT", "999"}); break;
+        default: break;
+        }
+        if (c1.glonass && c1.gps && c1.galileo)
+            out.push_back({"nav.NVS", "MIX"});
+        else if (c1.gps && !c1.glonass && !c1.galileo)
+            out.push_back({"nav.NVS", "GPS"});
+        else if (c1.glonass && !c1.gps && !c1.galileo)
+            out.push_back({"nav.NVS", "GLN"});
+    }
+}
+
+} // namespace gnss::geostar
