@@ -1,0 +1,37 @@
+// The Nemerix VT002 dialect record.
+#include "nemerix_dialect.h"
+
+#include "nemerix_dialect_parts.h"
+
+namespace gnss::nemerix {
+
+namespace {
+constexpr std::string_view kCommandNames[] = {
+        "PNMRX100", "PNMRX101", "PNMRX103", "PNMRX104", "PNMRX106",
+        "PNMRX107", "PNMRX108", "PNMRX110", "PNMRX111", "PNMRX112",
+        "PNMRX113", "PNMRX300", "PNMRX600", "PNMRX601", "PNMRX603",
+};
+} // namespace
+
+const Dialect &dialect() {
+    static const Dialect d{
+            .id = "nemerix",
+            .displayName = "Nemerix VT002",
+            .rules = sentenceRules(),
+            // The checksum is optional on every sentence (Appendix C, "General NMEA Format").
+            .checksumOptional = true,
+            .settings = settingsSchema(),
+            .replyRules = replyRules(),
+            .encodeSettings = encodeSettings,
+            .encodeQueries = encodeQueries,
+            .extractSettings = extractSettings,
+            // PNMRX600 with its real checksum (the spec prints *00).
+            .probeCommand = "$PNMRX600*6F",
+            .commandNames = kCommandNames,
+            // "9600 baud rate, 8 bits data, 1 start, 1 stop, no parity" (2.1.8).
+            .defaultBaud = 9600,
+    };
+    return d;
+}
+
+} // namespace gnss::nemerix

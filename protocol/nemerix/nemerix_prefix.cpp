@@ -1,0 +1,62 @@
+// The address prefix of outgoing commands, and the helpers every encoder ends with.
+#include "core/sentence_builder.h"
+#include "nemerix_commands.h"
+
+namespace gnss::nemerix {
+
+bool finishDecode(FieldReader &r, DecodeContext &ctx, const Message &m) {
+    if (!r.ok()) {
+        ctx.error = r.error();
+        return false;
+    }
+    ctx.emit(m);
+    return true;
+}
+
+std::string checkPrefix(std::string_view prefix) {
+    bool ok = prefix.size() >= 2 && prefix.size() <= 9 && prefix.front() == 'P';
+    for (char c : prefix)
+        if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) ok = false;
+    if (ok) return {};
+    return "prefix: '" + std::string(prefix) +
+           "' is not usable; accepted: 'P' followed by 1 to 8 upper-case letters or digits "
+           "(default PNMRX)";
+}
+
+std::string applyPrefix(std::string_view sentence, std::string_view prefix) {
+    if (!checkPrefix(prefix).empty()) return {};
+    if (sentence.size() < 6 || sentence.substr(0, 6) != "$PNMRX") return std::string(sentence);
+    std::string_view body = sentence.substr(6);
+    const auto star = body.rfind('*');
+    if (star != std::string_view::npos) body = body.substr(0, star);
+    std::string renamed(prefix);
+    renamed.append(body);
+    return buildSentence(renamed);
+}
+
+EncodeResult buildCommand(std::string_view number, std::string_view fields,
+                          std::string_view prefix) {
+    EncodeResult r;
+    r.error = checkPrefix(prefix);
+    if (!r.ok()) return r;
+    std::string body(prefix);
+    body.append(number);
+    body.append(fields);
+    r.sentences.push_back(buildSentence(body));
+    return r;
+}
+
+EncodeResult encodeStopCore(std::string_view prefix) {
+    return buildCommand("113", {}, prefix);
+}
+EncodeResult encodeVersionQuery(std::string_view prefix) {
+    return buildCommand("600", {}, prefix);
+}
+EncodeResult encodeIspMode(std::string_view prefix) {
+    return buildCommand("601", {}, prefix);
+}
+EncodeResult encodeSettingsQuery(std::string_view prefix) {
+    return buildCommand("603", {}, prefix);
+}
+
+} // namespace gnss::nemerix

@@ -1,0 +1,67 @@
+// PNMRX100: set serial port mode.
+//
+//   $PNMRX100,p,bbbbbb,y*hh
+//             0 protocol (0 NMEA, 1 Nemerix binary), 1 baud, 2 parity (0 none, 1 odd, 2 even)
+//   $PNMRX100,0,4800,0*48   4800 bps, no parity
+#include "nemerix_commands.h"
+
+namespace gnss::nemerix {
+
+const MessageType SerialPort::kType{"PNMRX100"};
+
+namespace {
+constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600};
+bool knownBaud(int b) {
+    for (int k : kBauds)
+        if (k == b) return true;
+    return false;
+}
+} // namespace
+
+bool decodeSerialPort(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    SerialPort m;
+    m.protocol = r.integer(0, "protocol");
+    m.baud = r.integer(1, "baud");
+    m.parity = r.integer(2, "parity");
+    if (m.protocol && (*m.protocol < 0 || *m.protocol > 1)) r.fail(0, "protocol", "not 0 or 1");
+    if (m.baud && !knownBaud(*m.baud)) r.fail(1, "baud", "not a supported speed");
+    if (m.parity && (*m.parity < 0 || *m.parity > 2)) r.fail(2, "parity", "not 0, 1 or 2");
+    return finishDecode(r, ctx, m);
+}
+
+void SerialPort::writeJson(JsonWriter &w) const {
+    const char *parities[] = {"none", "odd", "even"};
+    w.beginObject().field("protocol", protocol);
+    w.key("protocol_name");
+    if (protocol)
+        w.value(*protocol == 0 ? "NMEA" : "Nemerix binary");
+    else
+        w.null();
+    w.field("baud", baud).field("parity", parity).key("parity_name");
+    if (parity && *parity >= 0 && *parity <= 2)
+        w.value(parities[*parity]);
+    else
+        w.null();
+    w.endObject();
+}
+
+EncodeResult encodeSerialPort(int protocol, int baud, int parity, std::string_view prefix) {
+    EncodeResult r;
+    if (protocol < 0 || protocol > 1)
+        r.error = "protocol: " + std::to_string(protocol) +
+                  " is out of range; accepted: 0 (NMEA) or 1 (Nemerix binary)";
+    else if (!knownBaud(baud))
+        r.error = "baud: " + std::to_string(baud) +
+                  " is not supported; accepted: 1200, 2400, 4800, 9600, 19200, 38400, 57600";
+    else if (parity < 0 || parity > 2)
+        r.error = "parity: " + std::to_string(parity) +
+                  " is out of range; accepted: 0 (none), 1 (odd), 2 (even)";
+    if (!r.ok()) return r;
+    return buildCommand("100",
+                        "," + std::to_string(protocol) + "," + std::to_string(baud) + "," +
+                                std::to_string(parity),
+                        prefix);
+}
+
+} // namespace gnss::nemerix

@@ -1,0 +1,263 @@
+// Settings as commands: schema values → PNMRX commands, and PNMRX603 reports → values.
+//
+// Values are validated against the schema first (nothing is built when one is refused), then
+// grouped so that each command is sent once: PNMRX106 (datum), PNMRX110 (every fix mask in one
+// sentence), PNMRX101 (channel count), PNMRX112 (power), PNMRX108 (sequence) before PNMRX103
+// (rates, which override the sequence's defaults), PNMRX107, and PNMRX100 last, since the port
+// speed changes right after it.
+#include "core/field_parse.h"
+#include "core/sentence_builder.h"
+#include "nemerix_commands.h"
+#include "nemerix_dialect_parts.h"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace gnss::nemerix {
+
+namespace {
+
+struct Values {
+    std::map<std::string, std::string> byKey; // canonical key → value
+    bool has(const char *k) const { return byKey.count(k) != 0; }
+    const std::string &get(const char *k) const { return byKey.at(k); }
+    std::optional<int> integer(const char *k) const {
+        std::int64_t v;
+        if (!has(k) || !parseInt(get(k), v)) return std::nullopt;
+        return static_cast<int>(v);
+    }
+    std::optional<double> real(const char *k) const {
+        double v;
+        if (!has(k) || !parseReal(get(k), v)) return std::nullopt;
+        return v;
+    }
+};
+
+bool append(EncodeResult &out, EncodeResult part) {
+    if (!part.ok()) {
+        out.error = part.error;
+        return false;
+    }
+    for (auto &s : part.sentences) out.sentences.push_back(std::move(s));
+    return true;
+}
+
+std::vector<std::string> splitList(const std::string &v) {
+    std::vector<std::string> out;
+    std::string cur;
+    for (char c : v) {
+        if (c == ';' || c == ',') {
+            if (!cur.empty()) out.push_back(cur);
+            cur.clear();
+        } else if (c != ' ') {
+            cur.push_back(c);
+        }
+    }
+    if (!cur.empty()) out.push_back(cur);
+    return out;
+}
+
+struct MaskKey {
+    const char *key;
+    int id;
+};
+constexpr MaskKey kMaskKeys[] = {
+        {"fix.timeZone", 0},   {"fix.maxPdop", 1},      {"fix.maxHdop", 2},      {"fix.maxVdop", 3},
+        {"fix.minSnr", 4},     {"fix.minElevation", 5}, {"fix.noiseFloor", 6},   {"nav.mode", 7},
+        {"fix.altitude2d", 8}, {"nav.dynamics", 9},     {"fix.maxAltitude", 10},
+};
+
+} // namespace
+
+EncodeResult encodeSettings(std::span<const KeyValue> values) {
+    EncodeResult out;
+    const auto schema = settingsSchema();
+    Values v;
+    for (const auto &kv : values) {
+        const SettingDef *def = findSetting(schema, kv.key);
+        if (!def) {
+            out.error = kv.key + ": unknown setting of the nemerix dialect";
+            return out;
+        }
+        out.error = validateSetting(*def, kv.value);
+        if (!out.ok()) return out;
+        v.byKey[std::string(def->key)] = kv.value;
+    }
+    // Checks the generic validation cannot make.
+    if (v.has("fix.timeZone") && !parseTimeZone(v.get("fix.timeZone"))) {
+        out.error = "fix.timeZone: '" + v.get("fix.timeZone") +
+                    "' is not accepted; accepted: h:m with hours -13..13 and minutes 0..59";
+        return out;
+    }
+    if (auto d = v.integer("datum.mapDatum"); d && *d > 218 && *d != 500) {
+        out.error = "datum.mapDatum: " + std::to_string(*d) +
+                    " is out of range; accepted: 0..218 (internal table) or 500 (user defined)";
+        return out;
+    }
+
+    // PNMRX106
+    const bool anyDatum = v.has("datum.correction") || v.has("datum.mapDatum") ||
+                          v.has("datum.dx") || v.has("datum.dy") || v.has("datum.dz") ||
+                          v.has("datum.inverseFlattening") || v.has("datum.semiMajorAxis");
+    if (anyDatum) {
+        if (!v.has("datum.mapDatum")) {
+            out.error = "datum.mapDatum: required with any datum.* setting; accepted: 0..218 or "
+                        "500";
+            return out;
+        }
+        DatumParams p;
+        p.correction = v.integer("datum.correction").value_or(0);
+        p.datum = *v.integer("datum.mapDatum");
+        p.dx = v.integer("datum.dx");
+        p.dy = v.integer("datum.dy");
+        p.dz = v.integer("datum.dz");
+        p.inverseFlattening = v.real("datum.inverseFlattening");
+        p.semiMajorAxis = v.real("datum.semiMajorAxis");
+        if (!append(out, encodeDatum(p))) return out;
+    }
+
+    // PNMRX110
+    std::vector<FixMaskItem> masks;
+    for (const auto &m : kMaskKeys)
+        if (v.has(m.key)) masks.push_back({m.id, v.get(m.key)});
+    if (!masks.empty() && !append(out, encodeFixSettings(masks))) return out;
+
+    // PNMRX101
+    if (v.has("nav.channels")) {
+        NavInitParams p;
+        p.channels = v.integer("nav.channels");
+        if (!append(out, encodeNavInit(p))) return out;
+    }
+
+    // PNMRX112
+    if (v.has("power.mode") || v.has("power.offPeriod")) {
+        const int mode = v.integer("power.mode").value_or(1);
+        const auto off = v.integer("power.offPeriod");
+        if (mode == 0 && off) {
+            out.error = "power.offPeriod: only used with power.mode=1 (LDCM1)";
+            return out;
+        }
+        if (!append(out, encodePowerMode(mode, off))) return out;
+    }
+
+    // PNMRX108, then PNMRX103
+    if (v.has("output.sequence")) {
+        const auto ids = splitList(v.get("output.sequence"));
+        if (!append(out, encodeNmeaSequence(ids))) {
+            out.error = "output." + out.error;
+            return out;
+        }
+    }
+    std::vector<RateItem> rates;
+    for (const char *id : {"GGA", "GLL", "GSA", "GSV", "RMC", "VTG", "ZDA"}) {
+        const std::string key = std::string("rate.") + id;
+        if (v.has(key.c_str())) rates.push_back({id, *v.integer(key.c_str())});
+    }
+    if (!rates.empty() && !append(out, encodeNmeaRates(rates))) return out;
+
+    // PNMRX107
+    std::vector<RateItem> modes;
+    for (const char *id : {"300", "301", "302", "303", "304"}) {
+        const std::string key = std::string("nmrx.") + id;
+        if (v.has(key.c_str())) modes.push_back({id, *v.integer(key.c_str())});
+    }
+    if (!modes.empty() && !append(out, encodeNemerixRates(modes))) return out;
+
+    // PNMRX100, last
+    if (v.has("serial.protocol") || v.has("serial.baud") || v.has("serial.parity")) {
+        if (!v.has("serial.baud")) {
+            out.error = "serial.baud: required with serial.protocol / serial.parity (PNMRX100 "
+                        "sends all three); accepted: 1200, 2400, 4800, 9600, 19200, 38400, 57600";
+            return out;
+        }
+        if (!append(out, encodeSerialPort(v.integer("serial.protocol").value_or(0),
+                                          *v.integer("serial.baud"),
+                                          v.integer("serial.parity").value_or(0))))
+            return out;
+    }
+    if (out.sentences.empty() && out.ok()) out.error = "no setting given";
+    if (!out.ok()) out.sentences.clear();
+    return out;
+}
+
+EncodeResult encodeQueries(std::span<const std::string> keys) {
+    EncodeResult out;
+    const auto schema = settingsSchema();
+    for (const auto &k : keys) {
+        const SettingDef *def = findSetting(schema, k);
+        if (!def) {
+            out.error = k + ": unknown setting of the nemerix dialect";
+            return out;
+        }
+        if (def->access == SettingAccess::WriteOnly) {
+            out.error = std::string(def->key) +
+                        ": write-only, the receiver cannot report it (not in PNMRX603)";
+            return out;
+        }
+    }
+    if (keys.empty()) {
+        out.error = "no setting given";
+        return out;
+    }
+    // One PNMRX603 request reports every readable setting (messages 0 to 4).
+    out.sentences.push_back(buildSentence("PNMRX603"));
+    return out;
+}
+
+namespace {
+std::string shortNumber(double d) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", d);
+    return buf;
+}
+} // namespace
+
+void extractSettings(const Message &reply, std::vector<KeyValue> &out) {
+    const auto *m = message_cast<SettingsReport>(reply);
+    if (!m) return;
+    auto put = [&](const char *key, std::string value) { out.push_back({key, std::move(value)}); };
+    switch (m->number) {
+    case 0: {
+        static const char *keys[] = {"rate.GGA", "rate.GLL", "rate.GSA", "rate.GSV",
+                                     "rate.RMC", "rate.VTG", "rate.ZDA"};
+        for (std::size_t i = 0; i < 7; ++i)
+            if (m->delay[i]) put(keys[i], std::to_string(*m->delay[i]));
+        break;
+    }
+    case 1:
+        if (m->tzHours && m->tzMinutes) {
+            const bool neg = *m->tzHours < 0 || *m->tzMinutes < 0;
+            put("fix.timeZone", std::string(neg ? "-" : "") +
+                                        std::to_string(std::abs(*m->tzHours)) + ":" +
+                                        std::to_string(std::abs(*m->tzMinutes)));
+        }
+        break;
+    case 2:
+        if (m->maxPdop) put("fix.maxPdop", shortNumber(*m->maxPdop));
+        if (m->maxHdop) put("fix.maxHdop", shortNumber(*m->maxHdop));
+        if (m->minCno) put("fix.minSnr", shortNumber(std::round(*m->minCno)));
+        if (m->minElevation) put("fix.minElevation", shortNumber(std::round(*m->minElevation)));
+        if (m->maxTm) put("nav.channels", std::to_string(*m->maxTm));
+        break;
+    case 3:
+        if (m->noiseFloor) put("fix.noiseFloor", std::to_string(*m->noiseFloor));
+        if (m->defaultAltitude) put("fix.altitude2d", std::to_string(*m->defaultAltitude));
+        break;
+    case 4:
+        if (m->correction) put("datum.correction", std::to_string(*m->correction));
+        if (m->datum) put("datum.mapDatum", std::to_string(*m->datum));
+        if (m->dx) put("datum.dx", std::to_string(*m->dx));
+        if (m->dy) put("datum.dy", std::to_string(*m->dy));
+        if (m->dz) put("datum.dz", std::to_string(*m->dz));
+        if (m->iflatRaw)
+            put("datum.inverseFlattening",
+                shortNumber(290.0 + static_cast<double>(*m->iflatRaw) / 1e6));
+        if (m->majorARaw)
+            put("datum.semiMajorAxis",
+                formatFixed(6370000.0 + static_cast<double>(*m->majorARaw) / 1000.0, 3));
+        break;
+    }
+}
+
+} // namespace gnss::nemerix

@@ -1,0 +1,78 @@
+// PNMRX600 (software version), PNMRX601 (ISP mode), PNMRX602 (flash content version).
+//
+//   $PNMRX600*6F        request (the spec prints *00, which is not its checksum)
+//   $PNMRX600,...*hh    the receiver's report; the spec gives no field layout: kept as sent
+//   $PNMRX601*6E        enter ISP (in-system programming) mode: the receiver leaves NMEA
+//   $PNMRX602,...*hh    flash content version report, fields as sent
+#include "nemerix_commands.h"
+
+namespace gnss::nemerix {
+
+const MessageType PlainCommand::kIspType{"PNMRX601"};
+const MessageType PlainCommand::kVersionQueryType{"PNMRX600 request"};
+const MessageType VersionReport::kSoftwareType{"PNMRX600"};
+const MessageType VersionReport::kFlashType{"PNMRX602"};
+
+namespace {
+
+bool hasFields(const Sentence &s) {
+    for (std::size_t i = 0; i < s.fieldCount(); ++i)
+        if (!s.field(i).empty()) return true;
+    return false;
+}
+
+bool decodeReport(const Sentence &s, DecodeContext &ctx, const MessageType &type) {
+    FieldReader r(s);
+    VersionReport m(type);
+    for (std::size_t i = 0; i < r.count(); ++i) {
+        if (m.count == VersionReport::kMax) {
+            r.failSentence("too many fields");
+            break;
+        }
+        m.fieldsText[m.count++] = r.text(i);
+    }
+    return finishDecode(r, ctx, m);
+}
+
+} // namespace
+
+bool decodeSoftwareVersion(const Sentence &s, DecodeContext &ctx) {
+    if (!hasFields(s)) {
+        FieldReader r(s);
+        PlainCommand m(PlainCommand::kVersionQueryType);
+        return finishDecode(r, ctx, m);
+    }
+    return decodeReport(s, ctx, VersionReport::kSoftwareType);
+}
+
+bool decodeFlashVersion(const Sentence &s, DecodeContext &ctx) {
+    return decodeReport(s, ctx, VersionReport::kFlashType);
+}
+
+bool decodeIsp(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    PlainCommand m(PlainCommand::kIspType);
+    return finishDecode(r, ctx, m);
+}
+
+void PlainCommand::writeJson(JsonWriter &w) const {
+    w.beginObject().field("command", type->name);
+    const char *what = type == &kStopCoreType       ? "stop GPS core activities"
+                       : type == &kIspType          ? "enter ISP mode"
+                       : type == &kVersionQueryType ? "report software version"
+                                                    : "report settings";
+    w.field("meaning", what).endObject();
+}
+
+void VersionReport::writeJson(JsonWriter &w) const {
+    std::string joined;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i) joined += ',';
+        joined.append(fieldsText[i]);
+    }
+    w.beginObject().field("version", std::string_view(joined)).key("fields").beginArray();
+    for (std::size_t i = 0; i < count; ++i) w.value(fieldsText[i]);
+    w.endArray().endObject();
+}
+
+} // namespace gnss::nemerix
