@@ -9,6 +9,26 @@
 namespace gnss {
 
 bool parseReal(std::string_view s, double &out);
+
+// Inline fast path for the most common field: a short optionally signed decimal integer
+// ("08", "-2", "115200"). Returns false for anything else, including values beyond 9 digits.
+inline bool parseSmallInt(std::string_view s, int &out) {
+    std::size_t i = 0;
+    bool neg = false;
+    if (!s.empty() && (s[0] == '-' || s[0] == '+')) {
+        neg = s[0] == '-';
+        i = 1;
+    }
+    if (i == s.size() || s.size() - i > 9) return false;
+    int v = 0;
+    for (; i < s.size(); ++i) {
+        const unsigned d = static_cast<unsigned char>(s[i]) - '0';
+        if (d > 9) return false;
+        v = v * 10 + static_cast<int>(d);
+    }
+    out = neg ? -v : v;
+    return true;
+}
 bool parseInt(std::string_view s, std::int64_t &out);
 bool parseHex(std::string_view s, std::uint64_t &out);
 // NMEA "ddmm.mmmm" / "dddmm.mmmm" → degrees (unsigned); maxDegrees is 90 or 180.

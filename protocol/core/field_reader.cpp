@@ -28,17 +28,6 @@ bool FieldReader::require(std::size_t n) {
     return false;
 }
 
-std::optional<double> FieldReader::real(std::size_t i, const char *name) {
-    auto t = s_.field(i);
-    if (t.empty()) return std::nullopt;
-    double v;
-    if (!parseReal(t, v)) {
-        fail(i, name, "not a number");
-        return std::nullopt;
-    }
-    return v;
-}
-
 std::optional<std::int64_t> FieldReader::integer64(std::size_t i, const char *name) {
     auto t = s_.field(i);
     if (t.empty()) return std::nullopt;
@@ -50,7 +39,7 @@ std::optional<std::int64_t> FieldReader::integer64(std::size_t i, const char *na
     return v;
 }
 
-std::optional<int> FieldReader::integer(std::size_t i, const char *name) {
+std::optional<int> FieldReader::integerSlow(std::size_t i, const char *name) {
     auto v = integer64(i, name);
     if (!v) return std::nullopt;
     if (*v < INT_MIN || *v > INT_MAX) {

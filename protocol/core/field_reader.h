@@ -21,8 +21,21 @@ public:
     std::string_view text(std::size_t i) const { return s_.field(i); }
     bool empty(std::size_t i) const { return s_.field(i).empty(); }
 
-    std::optional<double> real(std::size_t i, const char *name);
-    std::optional<int> integer(std::size_t i, const char *name);
+    std::optional<double> real(std::size_t i, const char *name) {
+        const auto t = s_.field(i);
+        if (t.empty()) return std::nullopt;
+        double v;
+        if (parseReal(t, v)) return v;
+        fail(i, name, "not a number");
+        return std::nullopt;
+    }
+    std::optional<int> integer(std::size_t i, const char *name) {
+        const auto t = s_.field(i);
+        if (t.empty()) return std::nullopt;
+        int v;
+        if (parseSmallInt(t, v)) return v; // hot path: inline, no error bookkeeping
+        return integerSlow(i, name);
+    }
     std::optional<std::int64_t> integer64(std::size_t i, const char *name);
     std::optional<std::uint64_t> hex(std::size_t i, const char *name);
     // A single character (status, mode, unit); a longer field is an error.
@@ -48,6 +61,7 @@ public:
     const std::string &error() const { return error_; }
 
 private:
+    std::optional<int> integerSlow(std::size_t i, const char *name);
     std::optional<double> coordinate(std::size_t i, const char *name, int maxDeg, char pos,
                                      char neg);
     const Sentence &s_;

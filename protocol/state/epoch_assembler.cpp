@@ -70,25 +70,29 @@ void EpochAssembler::emit(Callback onEpoch) {
     e.satellites.clear();
     for (auto it = groups_.begin(); it != groups_.end();) {
         // A group's parts belong to one epoch: parts still pending now will never complete.
-        if (!it->second.pending.empty() || it->second.nextIndex > 1) ++incompleteGroups_;
-        it->second.pending.clear();
-        it->second.nextIndex = 0;
-        if (epochs_ - it->second.refreshedEpoch > kGroupExpiryEpochs) {
+        if (!it->pending.empty() || it->nextIndex > 1) ++incompleteGroups_;
+        it->pending.clear();
+        it->nextIndex = 0;
+        if (epochs_ - it->refreshedEpoch > kGroupExpiryEpochs) {
             it = groups_.erase(it);
             continue;
         }
-        for (SatelliteInView sv : it->second.satellites) {
-            sv.used = std::find(used_.begin(), used_.end(), sv.sat) != used_.end();
+        for (SatelliteInView sv : it->satellites) {
+            sv.used = isUsed(sv.sat);
             e.satellites.push_back(sv);
         }
         ++it;
     }
-    if (!e.satsUsed && usedThisEpoch_) e.satsUsed = static_cast<int>(used_.size());
+    if (!e.satsUsed && usedThisEpoch_) e.satsUsed = usedCount_;
 
     onEpoch(e);
     ++epochs_;
 
+    // Start afresh, keeping the satellite list's storage.
+    std::vector<SatelliteInView> keep = std::move(current_.satellites);
+    keep.clear();
     current_ = Epoch{};
+    current_.satellites = std::move(keep);
     hasContent_ = false;
     usedThisEpoch_ = false;
     ggaQuality_.reset();
@@ -99,6 +103,15 @@ void EpochAssembler::emit(Callback onEpoch) {
 }
 
 void EpochAssembler::flush(Callback onEpoch) { emit(onEpoch); }
+
+EpochAssembler::GsvGroup &EpochAssembler::group(std::uint32_t key) {
+    for (auto &g : groups_)
+        if (g.key == key) return g;
+    groups_.emplace_back();
+    groups_.back().key = key;
+    groups_.back().refreshedEpoch = epochs_;
+    return groups_.back();
+}
 
 void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) {
     using namespace nmea;
@@ -148,18 +161,26 @@ void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) 
         if (!current_.sogKnots) current_.sogKnots = v->sogKnots;
         if (!current_.cog) current_.cog = v->cogTrue;
     } else if (const auto *a = message_cast<Gsa>(m)) {
-        if (!usedThisEpoch_) used_.clear();
+        if (!usedThisEpoch_) {
+            used_.reset();
+            usedCount_ = 0;
+        }
         usedThisEpoch_ = true;
-        for (std::size_t i = 0; i < a->idCount; ++i) used_.push_back(a->satellites[i]);
+        for (std::size_t i = 0; i < a->idCount; ++i) {
+            if (!isUsed(a->satellites[i])) ++usedCount_;
+            markUsed(a->satellites[i]);
+        }
         if (a->fix && (!gsaFix_ || *a->fix > *gsaFix_)) gsaFix_ = a->fix;
         if (!current_.pdop) current_.pdop = a->pdop;
         if (!current_.hdop) current_.hdop = a->hdop;
         if (!current_.vdop) current_.vdop = a->vdop;
     } else if (const auto *g = message_cast<Gsv>(m)) {
-        std::string key(s.talker());
-        key += '/';
-        key += std::to_string(g->signalId.value_or(0));
-        GsvGroup &grp = groups_[key];
+        const auto t = s.talker();
+        const std::uint32_t key = (static_cast<std::uint32_t>(static_cast<unsigned char>(t[0])) << 24) |
+                                  (static_cast<std::uint32_t>(static_cast<unsigned char>(t.size() > 1 ? t[1] : 0))
+                                   << 16) |
+                                  static_cast<std::uint32_t>(g->signalId.value_or(0) & 0xFFFF);
+        GsvGroup &grp = group(key);
         const int total = g->total.value_or(1);
         const int index = g->index.value_or(1);
         if (index == 1) {

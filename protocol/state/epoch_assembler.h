@@ -9,7 +9,8 @@
 #include "core/function_ref.h"
 #include "epoch.h"
 
-#include <map>
+#include <array>
+#include <bitset>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ public:
 
 private:
     struct GsvGroup {
+        std::uint32_t key = 0;                   // talker (2 chars) and signal id
         std::vector<SatelliteInView> satellites; // committed
         std::vector<SatelliteInView> pending;    // being assembled
         int expectedTotal = 0;
@@ -45,8 +47,17 @@ private:
     const Dialect *dialect_;
     Epoch current_;
     bool hasContent_ = false;
-    std::map<std::string, GsvGroup> groups_; // key: talker + '/' + signal id
-    std::vector<SatelliteRef> used_;         // used in fix, from this epoch's GSA (or the last)
+    GsvGroup &group(std::uint32_t key);
+    void markUsed(SatelliteRef s) {
+        if (s.prn >= 0 && s.prn < 256) used_.set(static_cast<std::size_t>(s.system) * 256 + s.prn);
+    }
+    bool isUsed(SatelliteRef s) const {
+        return s.prn >= 0 && s.prn < 256 && used_.test(static_cast<std::size_t>(s.system) * 256 + s.prn);
+    }
+
+    std::vector<GsvGroup> groups_; // a handful (one per talker and signal): linear search wins
+    std::bitset<8 * 256> used_;    // used in fix, from this epoch's GSA (or the last), by system/PRN
+    int usedCount_ = 0;
     bool usedThisEpoch_ = false;
     std::optional<Date> lastDate_;
     std::optional<int> ggaQuality_, gsaFix_;
