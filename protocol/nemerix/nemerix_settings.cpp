@@ -70,7 +70,8 @@ constexpr MaskKey kMaskKeys[] = {
 
 } // namespace
 
-EncodeResult encodeSettings(std::span<const KeyValue> values) {
+namespace {
+EncodeResult encodeSettingsUnchecked(std::span<const KeyValue> values) {
     EncodeResult out;
     const auto schema = settingsSchema();
     Values v;
@@ -177,7 +178,13 @@ EncodeResult encodeSettings(std::span<const KeyValue> values) {
             return out;
     }
     if (out.sentences.empty() && out.ok()) out.error = "no setting given";
-    if (!out.ok()) out.sentences.clear();
+    return out;
+}
+} // namespace
+
+EncodeResult encodeSettings(std::span<const KeyValue> values) {
+    EncodeResult out = encodeSettingsUnchecked(values);
+    if (!out.ok()) out.sentences.clear(); // a refused value: nothing at all is sent
     return out;
 }
 
