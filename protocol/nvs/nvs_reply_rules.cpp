@@ -30,16 +30,21 @@ V classifyQuery(const Sentence &command, const Sentence &reply, ReplyProgress &)
     return V::NotMine;
 }
 
-// The reply is the same sentence (with the settings now in force).
-V classifyEcho(const Sentence &command, const Sentence &reply, ReplyProgress &) {
-    return reply.address() == command.address() && reply.fieldCount() > 0 ? V::Accepted
-                                                                          : V::NotMine;
-}
-
 bool sameNumber(std::string_view a, std::string_view b) {
     double x, y;
     if (parseReal(a, x) && parseReal(b, y)) return std::fabs(x - y) <= 1e-9 * (1 + std::fabs(x));
     return a == b;
+}
+
+// The reply is the same sentence with the settings now in force (PNVGNME, PNVGPPS): a field the
+// command set that comes back with another value was not taken. Empty command fields (PNVGPPS
+// "unchanged") match anything.
+V classifyEcho(const Sentence &command, const Sentence &reply, ReplyProgress &) {
+    if (reply.address() != command.address() || reply.fieldCount() == 0) return V::NotMine;
+    for (std::size_t i = 0; i < command.fieldCount(); ++i)
+        if (!command.field(i).empty() && !sameNumber(command.field(i), reply.field(i)))
+            return V::Refused;
+    return V::Accepted;
 }
 
 V classifyRza(const Sentence &command, const Sentence &reply, ReplyProgress &) {
@@ -122,7 +127,7 @@ constexpr ReplyRule kRules[] = {
          "$PNVGVER,NVS,<RTK|RTA>,<RTK FW>,CSM24,<CSM FW>"},
         {"GPGPQ", "", classifyQuery, 1000, 2, CommandEffect::None,
          "the sentence named in the query ($GPGPQ,PNVGTST -> $PNVGTST,...)"},
-        {"PNVGNME", "", classifyEcho, 1000, 2, CommandEffect::None,
+        {"PNVGNME", "", classifyEcho, 1000, 2, CommandEffect::ChangesOutput,
          "$PNVGNME with the new settings; the receiver then switches to them"},
         {"PNVGRST", "", nullptr, 1000, 0, CommandEffect::ResetsReceiver,
          "no reply: the receiver restarts (F cold, W warm)"},

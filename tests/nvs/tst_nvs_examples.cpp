@@ -9,6 +9,7 @@
 #include <QTest>
 
 #include <map>
+#include <random>
 
 using gnss::test::decodeOne;
 
@@ -113,6 +114,7 @@ private slots:
     void nvsGgaQualityMeanings();
     void malformedSentencesAreRefusedNotCrashing_data();
     void malformedSentencesAreRefusedNotCrashing();
+    void randomFieldsNeverCrashAnyDecoder();
 };
 
 void TstNvsExamples::everySpecExampleDecodesToTheSpecValues_data() {
@@ -231,6 +233,33 @@ void TstNvsExamples::malformedSentencesAreRefusedNotCrashing() {
     const auto d = decodeOne("$" + body + "*" + hex, nvsOptions());
     QVERIFY(!d.ok);
     QVERIFY(!d.error.isEmpty());
+}
+
+void TstNvsExamples::randomFieldsNeverCrashAnyDecoder() {
+    // Fields drawn from what NVS sentences contain (numbers, letters, names, blanks, empties);
+    // every decoder must answer with a message or an error, never crash or hang.
+    const char *pool[] = {"",      "0",      "1",       "-1",        "4",
+                          "0003",  "0.0720", "OK",      "MODE",      "ADD",
+                          "SHOW",  "REMOVE", "CLEAR",   "PORT",      "N",
+                          "E",     "R",      "x",       "145505.20", "99999999999999999999",
+                          "1e308", " 2 ",    "BASEXYZ", "PNVGTST",   "ANT",
+                          "ID",    "-0.040"};
+    std::mt19937 rng(20170501);
+    int decoded = 0, refused = 0;
+    for (const auto &rule : gnss::nvs::dialect().rules) {
+        for (int n = 0; n < 300; ++n) {
+            std::string body(rule.address);
+            const int fields = static_cast<int>(rng() % 16);
+            for (int f = 0; f < fields; ++f)
+                body += "," + std::string(pool[rng() % std::size(pool)]);
+            char hex[3];
+            std::snprintf(hex, sizeof hex, "%02X", gnss::nmeaChecksum(body));
+            const auto d = decodeOne(QString::fromStdString("$" + body + "*" + hex), nvsOptions());
+            QVERIFY(d.ok || !d.error.isEmpty());
+            (d.ok ? decoded : refused)++;
+        }
+    }
+    QVERIFY(decoded > 0 && refused > 0);
 }
 
 QTEST_APPLESS_MAIN(TstNvsExamples)

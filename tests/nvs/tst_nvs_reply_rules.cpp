@@ -67,6 +67,10 @@ void TstNvsReplyRules::replyRulesClassifyTheSpecReplies_data() {
                                     << "$PNVGPPS,P,S,U,1,1000,D,0*62" << V::Accepted;
     QTest::newRow("PPS read back") << "$PNVGPPS,,,,,,,"
                                    << "$PNVGPPS,P,S,U,1,1000,D,0*62" << V::Accepted;
+    QTest::newRow("PPS value not taken") << "$PNVGPPS,,,,,500,,"
+                                         << "$PNVGPPS,P,S,U,1,1000,D,0*62" << V::Refused;
+    QTest::newRow("NME value not taken") << "$PNVGNME,6,9,1"
+                                         << "$PNVGNME,2,7,1" << V::Refused;
     QTest::newRow("CFG W confirmed") << "$PNVGCFG,W"
                                      << "$PNVGCFG,W" << V::Accepted;
     QTest::newRow("RTK base spec reply")
@@ -146,6 +150,7 @@ void TstNvsReplyRules::commandsWithoutReplyAndTheirEffects() {
             {"$PNVGRZA,1,115200,1", true, CommandEffect::ChangesBaud},
             {"$PNVGCFG,R", true, CommandEffect::ResetsReceiver},
             {"$PNVGCFG,W", true, CommandEffect::None},
+            {"$PNVGNME,2,7,1", true, CommandEffect::ChangesOutput},
     };
     for (const auto &row : rows) {
         const std::string line = complete(row.command);
