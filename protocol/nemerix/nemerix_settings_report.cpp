@@ -61,6 +61,10 @@ bool decodeSettingsReport(const Sentence &s, DecodeContext &ctx) {
         m.numBlocks = word(10, "num_blocks");
         m.tzHours = r.integer(11, "local zone hours");
         m.tzMinutes = r.integer(12, "local zone minutes");
+        if (m.tzHours && (*m.tzHours < -13 || *m.tzHours > 13))
+            r.fail(11, "local zone hours", "out of range -13..13");
+        if (m.tzMinutes && (*m.tzMinutes < -59 || *m.tzMinutes > 59))
+            r.fail(12, "local zone minutes", "out of range -59..59");
         break;
     }
     case 2:

@@ -116,6 +116,7 @@ private slots:
     void renamedPrefixDecodesThroughAlias();
     void standardSentencesAsTheVt002SendsThem();
     void garbageNeverCrashes();
+    void randomFieldsNeverCrash();
 };
 
 void TestNemerixExamples::everySpecExampleDecodes_data() {
@@ -277,6 +278,36 @@ void TestNemerixExamples::garbageNeverCrashes() {
         QVERIFY2(!d.ok, l);
         QVERIFY2(!d.error.isEmpty(), l);
     }
+}
+
+void TestNemerixExamples::randomFieldsNeverCrash() {
+    // Every PNMRX address with random field counts and tokens: decoded or refused, never a crash.
+    const char *numbers[] = {"100", "101", "103", "104", "106", "107", "108", "110", "111", "112",
+                             "113", "300", "301", "302", "303", "304", "600", "601", "602", "603"};
+    const char *tokens[] = {"",         " ",
+                            "0",        "1",
+                            "3",        "-1",
+                            "FFFFFFFF", "ffffffffffffffffff",
+                            "-",        ":",
+                            "1:",       "-2:0",
+                            "GGA",      "ALL",
+                            "300",      "1.5",
+                            "x",        "99999999999999999999",
+                            "4",        "500",
+                            "COLD",     "7FFFFF"};
+    quint32 seed = 12345;
+    auto next = [&seed] { return seed = seed * 1664525u + 1013904223u; };
+    int decoded = 0;
+    for (int i = 0; i < 20000; ++i) {
+        QString line = QString("$PNMRX") + numbers[next() % std::size(numbers)];
+        const int n = static_cast<int>(next() % 20);
+        for (int f = 0; f < n; ++f)
+            line += QString(",") + tokens[(next() >> 8) % std::size(tokens)];
+        const auto d = decodeOne(line, nemerix(true));
+        QVERIFY(d.ok || !d.error.isEmpty());
+        decoded += d.ok;
+    }
+    QVERIFY(decoded > 0);
 }
 
 QTEST_APPLESS_MAIN(TestNemerixExamples)
