@@ -58,8 +58,7 @@ const std::map<std::string, const char *> &expectedValues() {
             {"$PNVGIDL,4,4,0043,0.0720*52",
              R"({"kind":"item","count":4,"index":4,"station_id":43,"icb":0.072})"},
             {"$PNVGTME,128,40327.564756284*49", R"({"counter":128,"tow":40327.564756284})"},
-            {"$PNVGTMU,128,081248.547824228*61",
-             R"({"counter":128,"time":"08:12:48.547824228"})"},
+            {"$PNVGTMU,128,081248.547824228*61", R"({"counter":128,"time":"08:12:48.547824228"})"},
             {"$PNVGTMC,145505.28,4724.5118287,N,00937.6956032,E,4,17,0.7,403.995,M,47.848,M,2.2,"
              "0002*4D",
              R"({"time":"14:55:05.280","quality":4,"sats_used":17,"hdop":0.7,"alt_msl":403.995,
@@ -193,24 +192,23 @@ void TstNvsExamples::rtkReplyMixesSetAndQueriedParameters() {
     std::snprintf(hex, sizeof hex, "%02X", gnss::nmeaChecksum(body));
     const auto d = decodeOne(QString::fromStdString("$" + body + "*" + hex), nvsOptions());
     QVERIFY2(d.ok, qPrintable(d.error));
-    compareSubset(d.data["params"].toObject(),
-                  parse(R"({"PVTRATE":10,"MODE":null,"SNR":null,
-                            "BASEBLH":[5546.1234,"N","03739.1234","E",150.5]})"));
+    compareSubset(d.data["params"].toObject(), parse(R"({"PVTRATE":10,"MODE":null,"SNR":null,
+                            "BASEBLH":[5546.1234,"N",3739.1234,"E",150.5]})"));
 }
 
 void TstNvsExamples::nvsGgaQualityMeanings() {
     const auto &d = gnss::nvs::dialect();
     QVERIFY(d.ggaQuality);
-    QCOMPARE(d.ggaQuality(0), gnss::FixType::None);
-    QCOMPARE(d.ggaQuality(1), gnss::FixType::Fix3D);
-    QCOMPARE(d.ggaQuality(2), gnss::FixType::Dgnss);
-    QCOMPARE(d.ggaQuality(4), gnss::FixType::RtkFixed);
-    QCOMPARE(d.ggaQuality(5), gnss::FixType::RtkFloat);
-    QCOMPARE(d.ggaQuality(6), gnss::FixType::Estimated);
+    QCOMPARE(int(d.ggaQuality(0)), int(gnss::FixType::None));
+    QCOMPARE(int(d.ggaQuality(1)), int(gnss::FixType::Fix3D));
+    QCOMPARE(int(d.ggaQuality(2)), int(gnss::FixType::Dgnss));
+    QCOMPARE(int(d.ggaQuality(4)), int(gnss::FixType::RtkFixed));
+    QCOMPARE(int(d.ggaQuality(5)), int(gnss::FixType::RtkFloat));
+    QCOMPARE(int(d.ggaQuality(6)), int(gnss::FixType::Estimated));
     // Mode indicators R/F/E of RMC, VTG and the PNVG sentences.
-    QCOMPARE(gnss::fixTypeFromModeIndicator('R'), gnss::FixType::RtkFixed);
-    QCOMPARE(gnss::fixTypeFromModeIndicator('F'), gnss::FixType::RtkFloat);
-    QCOMPARE(gnss::fixTypeFromModeIndicator('E'), gnss::FixType::Estimated);
+    QCOMPARE(int(gnss::fixTypeFromModeIndicator('R')), int(gnss::FixType::RtkFixed));
+    QCOMPARE(int(gnss::fixTypeFromModeIndicator('F')), int(gnss::FixType::RtkFloat));
+    QCOMPARE(int(gnss::fixTypeFromModeIndicator('E')), int(gnss::FixType::Estimated));
 }
 
 void TstNvsExamples::malformedSentencesAreRefusedNotCrashing_data() {

@@ -1,0 +1,29 @@
+// Helpers shared by the NVS decoders.
+#include "core/field_parse.h"
+#include "nvs_messages.h"
+
+namespace gnss::nvs {
+
+bool finish(FieldReader &r, DecodeContext &ctx, const Message &m) {
+    if (!r.ok()) {
+        ctx.error = r.error();
+        return false;
+    }
+    ctx.deliver(m);
+    return true;
+}
+
+void writeValue(JsonWriter &w, std::string_view text) {
+    std::int64_t i;
+    double d;
+    if (text.empty())
+        w.null();
+    else if (parseInt(text, i))
+        w.value(i);
+    else if (parseReal(text, d))
+        w.value(d);
+    else
+        w.value(text);
+}
+
+} // namespace gnss::nvs

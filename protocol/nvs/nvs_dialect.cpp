@@ -1,0 +1,47 @@
+// The NVS NV08C-RTK dialect record: sentences, settings, commands and replies as one constant.
+#include "nvs_dialect.h"
+
+#include "nvs_messages.h"
+#include "nvs_reply_rules.h"
+#include "nvs_schema.h"
+
+namespace gnss::nvs {
+
+FixType ggaQuality(int quality) {
+    switch (quality) {
+    case 0: return FixType::None;
+    case 1: return FixType::Fix3D; // autonomous (GSA refines 2D/3D)
+    case 2: return FixType::Dgnss;
+    case 4: return FixType::RtkFixed;
+    case 5: return FixType::RtkFloat;
+    case 6: return FixType::Estimated;
+    default: return fixTypeFromGgaQuality(quality); // not used by NVS
+    }
+}
+
+namespace {
+constexpr std::string_view kCommands[] = {
+        "PNVGVER", "PNVGNME", "PNVGRST", "PNVGRZA", "PNVGRZB",
+        "PNVGCFG", "PNVGPPS", "PNVGRTK", "PNVGIDL", "GPGPQ",
+};
+} // namespace
+
+const Dialect &dialect() {
+    static const Dialect d{
+            .id = "nvs",
+            .displayName = "NVS NV08C-RTK",
+            .rules = sentenceRules(),
+            .ggaQuality = ggaQuality,
+            .settings = settingsSchema(),
+            .replyRules = replyRules(),
+            .encodeSettings = encodeSettings,
+            .encodeQueries = encodeQueries,
+            .extractSettings = extractSettings,
+            .probeCommand = "$PNVGVER*4E",
+            .commandNames = kCommands,
+            .defaultBaud = 115200, // Table 1 / section 1.1
+    };
+    return d;
+}
+
+} // namespace gnss::nvs

@@ -1,0 +1,43 @@
+// 4.22 PNVGDOP: dilutions of precision of the calculated position. (The spec's field table
+// names the address PNVGSDH, a copy-paste typo: the example shows PNVGDOP. ERRATA.md.)
+//
+//   $PNVGDOP,hhmmss.ss,x.x,x.x,x.x,x.x,x.x,x.x,x.x,a*hh
+//            0 time, 1 GDOP, 2 PDOP, 3 HDOP, 4 VDOP, 5 TDOP, 6 nDOP, 7 eDOP, 8 mode
+#include "nvs_messages.h"
+
+namespace gnss::nvs {
+
+const MessageType Dop::kType{"PNVGDOP"};
+
+bool decodeDop(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    Dop m;
+    if (r.require(9)) {
+        m.time = r.time(0, "time");
+        m.gdop = r.real(1, "GDOP");
+        m.pdop = r.real(2, "PDOP");
+        m.hdop = r.real(3, "HDOP");
+        m.vdop = r.real(4, "VDOP");
+        m.tdop = r.real(5, "TDOP");
+        m.ndop = r.real(6, "nDOP");
+        m.edop = r.real(7, "eDOP");
+        m.mode = r.letter(8, "mode");
+    }
+    return finish(r, ctx, m);
+}
+
+void Dop::writeJson(JsonWriter &w) const {
+    w.beginObject()
+            .field("time", time)
+            .field("gdop", gdop)
+            .field("pdop", pdop)
+            .field("hdop", hdop)
+            .field("vdop", vdop)
+            .field("tdop", tdop)
+            .field("ndop", ndop)
+            .field("edop", edop)
+            .field("mode", mode)
+            .endObject();
+}
+
+} // namespace gnss::nvs

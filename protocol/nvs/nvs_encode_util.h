@@ -1,0 +1,27 @@
+#pragma once
+// Private helpers of the NVS encoders: validation against the schema and result building.
+#include "nvs_encoders.h"
+#include "nvs_schema.h"
+
+#include "core/sentence_builder.h"
+
+#include <string>
+#include <string_view>
+
+namespace gnss::nvs {
+
+// Validates `value` against the schema row `key` (empty string when valid).
+std::string checkSetting(std::string_view key, std::string_view value);
+// "<name>: <v> is out of range; accepted: <min>..<max>" when v is outside [min, max].
+std::string checkRange(std::string_view name, long long v, long long min, long long max);
+// "<name>: '<c>' is not one of: <accepted>" when c is not in `accepted`.
+std::string checkLetter(std::string_view name, char c, std::string_view accepted);
+
+inline EncodeResult refuse(std::string error) {
+    return {{}, std::move(error)};
+}
+inline EncodeResult built(std::string_view body) {
+    return {{buildSentence(body)}, {}};
+}
+
+} // namespace gnss::nvs

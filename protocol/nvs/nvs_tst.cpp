@@ -1,0 +1,44 @@
+// 4.7 PNVGTST: internal test results, sent at start-up or on request ($GPGPQ,PNVGTST*21).
+//
+//   $PNVGTST,sx,cx[,sx,cx]...*hh
+//            name/result pairs: ID = device ID (decimal), ANT = antenna (0 active antenna
+//            connected, 1 no antenna, 2 short circuit)
+#include "nvs_messages.h"
+
+namespace gnss::nvs {
+
+const MessageType Tst::kType{"PNVGTST"};
+
+bool decodeTst(const Sentence &s, DecodeContext &ctx) {
+    FieldReader r(s);
+    Tst m;
+    if (r.require(2)) {
+        for (std::size_t i = 0; i < s.fieldCount(); i += 2) {
+            const auto name = r.text(i);
+            const auto result = r.text(i + 1);
+            if (name.empty() && result.empty() && i + 1 >= s.fieldCount()) break;
+            m.tests.push_back({name, result});
+            if (name == "ID") m.deviceId = r.integer64(i + 1, "device ID");
+            if (name == "ANT") m.antenna = r.integer(i + 1, "antenna test");
+        }
+    }
+    return finish(r, ctx, m);
+}
+
+void Tst::writeJson(JsonWriter &w) const {
+    w.beginObject().key("tests").beginArray();
+    for (const auto &t : tests)
+        w.beginObject().field("name", t.name).field("result", t.result).endObject();
+    w.endArray();
+    w.field("device_id", deviceId).field("antenna", antenna);
+    std::string_view antennaText;
+    if (antenna) {
+        antennaText = *antenna == 0   ? "active antenna connected"
+                      : *antenna == 1 ? "no antenna"
+                      : *antenna == 2 ? "short circuit"
+                                      : "unknown";
+    }
+    w.field("antenna_status", antennaText).endObject();
+}
+
+} // namespace gnss::nvs
