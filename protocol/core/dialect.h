@@ -119,6 +119,11 @@ struct Dialect {
     bool checksumOptional = false;
     // The vendor's meanings of GGA quality; nullptr = standard NMEA.
     FixType (*ggaQuality)(int quality) = nullptr;
+    // The vendor's meanings of RMC/GNS/GLL mode letters; nullptr = standard NMEA.
+    FixType (*modeIndicator)(char mode) = nullptr;
+    // A note shown beside the fix badge for a vendor's kind of fix ("GeoPath"), from the GGA
+    // quality (-1 when none) and the best mode letter ('\0' when none); nullptr = no notes.
+    std::string_view (*fixNote)(int ggaQuality, char mode) = nullptr;
     // Satellite numbering override; nullptr = standard NMEA.
     SatelliteRef (*mapSatellite)(Constellation system, int id) = nullptr;
 
