@@ -116,6 +116,22 @@ private slots:
         QCOMPARE(int(epochs[0].fix), fix);
     }
 
+    void vendorFixKindsCarryTheirNote() {
+        // GeoS-5: GGA quality 9 and mode letter G are GeoPath, shown as 3D with a note.
+        auto epochs = epochsOf({"GPGGA,040717.00,5550.610226,N,03732.250730,E,9,18,0.6,00187.429,M,0014.442,M,,"},
+                               "geostar");
+        QCOMPARE(int(epochs[0].fix), int(FixType::Fix3D));
+        QCOMPARE(QString::fromStdString(epochs[0].fixNote), QString("GeoPath"));
+        epochs = epochsOf({"GNRMC,102014.00,A,5550.608252,N,03732.248871,E,000.00000,092.9,300518,,,G,V"}, "geostar");
+        QCOMPARE(int(epochs[0].fix), int(FixType::Fix3D));
+        QCOMPARE(QString::fromStdString(epochs[0].fixNote), QString("GeoPath"));
+        // Quality 7 is a fixed (manual) position there.
+        epochs = epochsOf({"GPGGA,040717.00,5550.610226,N,03732.250730,E,7,18,0.6,00187.429,M,0014.442,M,,"},
+                          "geostar");
+        QCOMPARE(int(epochs[0].fix), int(FixType::Manual));
+        QVERIFY(epochs[0].fixNote.empty());
+    }
+
     void timeWithoutDateStaysTimeOfDay() {
         const auto epochs = epochsOf({"GPGGA,235959.50,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,"});
         QCOMPARE(QString::fromStdString(epochs[0].timeText()), QString("23:59:59.500"));

@@ -24,12 +24,16 @@ struct Dialect;
 class DecodeContext {
 public:
     using Emit = FunctionRef<void(const Message &)>;
-    DecodeContext(const Dialect *dialect, Emit emit) : dialect_(dialect), emit_(emit) {}
+    DecodeContext(const Dialect *dialect, Emit emit);
 
     // The dialect in force (chosen, or detected so far); nullptr when none is known yet.
     const Dialect *dialect() const { return dialect_; }
     // Satellite numbering, with the dialect's override where it has one.
-    SatelliteRef mapSatellite(Constellation system, int id) const;
+    SatelliteRef mapSatellite(Constellation system, int id) const {
+        if (dialectMapsSatellites_) return mapSatelliteByDialect(system, id);
+        if (system == Constellation::Gps && id >= 1 && id <= 32) return {system, id}; // hot path
+        return mapSatelliteId(system, id);
+    }
     // Hands the decoded message to the caller (valid only during the call).
     void deliver(const Message &m) { emit_(m); }
 #pragma push_macro("emit") // Qt defines `emit` as an empty macro
@@ -42,7 +46,9 @@ public:
     std::string error;
 
 private:
+    SatelliteRef mapSatelliteByDialect(Constellation system, int id) const;
     const Dialect *dialect_;
+    bool dialectMapsSatellites_ = false;
     Emit emit_;
 };
 
@@ -113,6 +119,11 @@ struct Dialect {
     bool checksumOptional = false;
     // The vendor's meanings of GGA quality; nullptr = standard NMEA.
     FixType (*ggaQuality)(int quality) = nullptr;
+    // The vendor's meanings of RMC/GNS/GLL mode letters; nullptr = standard NMEA.
+    FixType (*modeIndicator)(char mode) = nullptr;
+    // A note shown beside the fix badge for a vendor's kind of fix ("GeoPath"), from the GGA
+    // quality (-1 when none) and the best mode letter ('\0' when none); nullptr = no notes.
+    std::string_view (*fixNote)(int ggaQuality, char mode) = nullptr;
     // Satellite numbering override; nullptr = standard NMEA.
     SatelliteRef (*mapSatellite)(Constellation system, int id) = nullptr;
 

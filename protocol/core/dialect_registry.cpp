@@ -2,9 +2,11 @@
 
 namespace gnss {
 
-SatelliteRef DecodeContext::mapSatellite(Constellation system, int id) const {
-    if (dialect_ && dialect_->mapSatellite) return dialect_->mapSatellite(system, id);
-    return mapSatelliteId(system, id);
+DecodeContext::DecodeContext(const Dialect *dialect, Emit emit)
+    : dialect_(dialect), dialectMapsSatellites_(dialect && dialect->mapSatellite), emit_(emit) {}
+
+SatelliteRef DecodeContext::mapSatelliteByDialect(Constellation system, int id) const {
+    return dialect_->mapSatellite(system, id);
 }
 
 DialectRegistry::DialectRegistry(std::vector<const Dialect *> dialects)

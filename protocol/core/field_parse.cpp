@@ -46,6 +46,30 @@ inline bool parseDecimal(std::string_view s, bool &neg, std::uint64_t &mant, int
 } // namespace
 
 bool parseReal(std::string_view s, double &out) {
+    // Fast path: unsigned "digits[.digits]" with at most 15 significant digits, the form of
+    // nearly every real field (DOPs, altitudes, speeds); exact to the last digit.
+    {
+        const char *p = s.data();
+        const std::size_t n = s.size();
+        std::size_t i = 0;
+        std::uint64_t mant = 0;
+        int dec = -1;
+        for (; i < n && i < 16; ++i) {
+            const unsigned d = static_cast<unsigned char>(p[i]) - '0';
+            if (d <= 9) {
+                mant = mant * 10 + d;
+                if (dec >= 0) ++dec;
+            } else if (p[i] == '.' && dec < 0) {
+                dec = 0;
+            } else {
+                break;
+            }
+        }
+        if (i == n && n > 0 && !(n == 1 && dec == 0)) {
+            out = dec > 0 ? static_cast<double>(mant) / kPow10[dec] : static_cast<double>(mant);
+            return true;
+        }
+    }
     bool neg;
     std::uint64_t mant, intPart;
     int dec;

@@ -13,20 +13,29 @@ bool parseReal(std::string_view s, double &out);
 // Inline fast path for the most common field: a short optionally signed decimal integer
 // ("08", "-2", "115200"). Returns false for anything else, including values beyond 9 digits.
 inline bool parseSmallInt(std::string_view s, int &out) {
-    std::size_t i = 0;
-    bool neg = false;
-    if (!s.empty() && (s[0] == '-' || s[0] == '+')) {
-        neg = s[0] == '-';
-        i = 1;
+    const char *p = s.data();
+    const std::size_t n = s.size();
+    if (n == 0 || n > 10) return false;
+    unsigned d = static_cast<unsigned char>(*p) - '0';
+    if (d <= 9) { // common case: no sign
+        if (n > 9) return false;
+        int v = static_cast<int>(d);
+        for (std::size_t i = 1; i < n; ++i) {
+            d = static_cast<unsigned char>(p[i]) - '0';
+            if (d > 9) return false;
+            v = v * 10 + static_cast<int>(d);
+        }
+        out = v;
+        return true;
     }
-    if (i == s.size() || s.size() - i > 9) return false;
+    if ((*p != '-' && *p != '+') || n == 1) return false;
     int v = 0;
-    for (; i < s.size(); ++i) {
-        const unsigned d = static_cast<unsigned char>(s[i]) - '0';
+    for (std::size_t i = 1; i < n; ++i) {
+        d = static_cast<unsigned char>(p[i]) - '0';
         if (d > 9) return false;
         v = v * 10 + static_cast<int>(d);
     }
-    out = neg ? -v : v;
+    out = *p == '-' ? -v : v;
     return true;
 }
 bool parseInt(std::string_view s, std::int64_t &out);

@@ -21,7 +21,7 @@ public:
     std::string_view text(std::size_t i) const { return s_.field(i); }
     bool empty(std::size_t i) const { return s_.field(i).empty(); }
 
-    std::optional<double> real(std::size_t i, const char *name) {
+    [[gnu::always_inline]] std::optional<double> real(std::size_t i, const char *name) {
         const auto t = s_.field(i);
         if (t.empty()) return std::nullopt;
         double v;
@@ -29,7 +29,7 @@ public:
         fail(i, name, "not a number");
         return std::nullopt;
     }
-    std::optional<int> integer(std::size_t i, const char *name) {
+    [[gnu::always_inline]] std::optional<int> integer(std::size_t i, const char *name) {
         const auto t = s_.field(i);
         if (t.empty()) return std::nullopt;
         int v;

@@ -99,44 +99,60 @@ bool Sentence::parse(std::string_view line) {
         error_ = "sentence too long";
         return false;
     }
-    std::size_t commas[kMaxFields + 2];
+    // Field starts are written straight into start_: start_[k] = offset after comma k. The
+    // capacity check runs once per 16-byte block while far from the limit.
     std::size_t ncommas = 0;
     bool overflow = false;
     std::size_t i = 0;
+    auto addComma = [&](std::size_t pos) {
+        if (ncommas >= kMaxFields) {
+            overflow = true;
+            return;
+        }
+        start_[ncommas++] = static_cast<std::uint16_t>(pos + 1);
+    };
 #if defined(__SSE2__)
     const __m128i comma = _mm_set1_epi8(',');
+    const __m128i blankByte = _mm_set1_epi8(0x20);
     __m128i xacc = _mm_setzero_si128();
+    __m128i blanks = _mm_setzero_si128();
     for (; i + 16 <= n; i += 16) {
         const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i *>(p + i));
         xacc = _mm_xor_si128(xacc, v);
+        blanks = _mm_or_si128(blanks, _mm_cmpeq_epi8(v, blankByte));
         unsigned mask = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, comma)));
-        while (mask) {
-            if (ncommas >= kMaxFields) {
-                overflow = true;
-                break;
+        if (ncommas + 16 <= kMaxFields) {
+            while (mask) {
+                start_[ncommas++] = static_cast<std::uint16_t>(i + 1 + __builtin_ctz(mask));
+                mask &= mask - 1;
             }
-            commas[ncommas++] = i + static_cast<std::size_t>(__builtin_ctz(mask));
-            mask &= mask - 1;
+        } else {
+            for (; mask; mask &= mask - 1) addComma(i + static_cast<std::size_t>(__builtin_ctz(mask)));
         }
     }
     alignas(16) std::uint8_t lanes[16];
     _mm_store_si128(reinterpret_cast<__m128i *>(lanes), xacc);
-    std::uint8_t sum = 0;
-    for (std::uint8_t b : lanes) sum ^= b;
+    std::uint64_t lo, hi;
+    std::memcpy(&lo, lanes, 8);
+    std::memcpy(&hi, lanes + 8, 8);
+    std::uint64_t folded = lo ^ hi;
+    folded ^= folded >> 32;
+    folded ^= folded >> 16;
+    folded ^= folded >> 8;
+    std::uint8_t sum = static_cast<std::uint8_t>(folded);
+    bool blank = _mm_movemask_epi8(blanks) != 0;
 #else
     std::uint8_t sum = 0;
+    bool blank = false;
 #endif
     for (; i < n; ++i) {
-        sum ^= static_cast<std::uint8_t>(p[i]);
-        if (p[i] == ',') {
-            if (ncommas >= kMaxFields) {
-                overflow = true;
-                continue;
-            }
-            commas[ncommas++] = i;
-        }
+        const char c = p[i];
+        sum ^= static_cast<std::uint8_t>(c);
+        blank |= c == ' ';
+        if (c == ',') addComma(i);
     }
     computed_ = sum;
+    hasBlank_ = blank;
     if (checksumStatus_ == ChecksumStatus::Ok && declared_ != computed_)
         checksumStatus_ = ChecksumStatus::Bad;
 
@@ -144,15 +160,15 @@ bool Sentence::parse(std::string_view line) {
         error_ = "too many fields";
         return false;
     }
-    const std::size_t addrEnd = ncommas ? commas[0] : n;
+    const std::size_t addrEnd = ncommas ? start_[0] - 1u : n;
     address_ = body_.substr(0, addrEnd);
     while (!address_.empty() && address_.back() == ' ') address_.remove_suffix(1);
     if (address_.empty()) {
         error_ = "empty address";
         return false;
     }
+    // start_[0] is the address's end: fields begin after it.
     fieldCount_ = ncommas;
-    for (std::size_t k = 0; k < ncommas; ++k) start_[k] = static_cast<std::uint16_t>(commas[k] + 1);
     start_[ncommas] = static_cast<std::uint16_t>(n + 1);
     return true;
 }

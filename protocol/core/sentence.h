@@ -51,7 +51,8 @@ public:
     std::size_t fieldCount() const { return fieldCount_; }
     std::string_view field(std::size_t i) const {
         if (i >= fieldCount_) return {};
-        return trim(body_.substr(start_[i], start_[i + 1] - start_[i] - 1));
+        const std::string_view f(body_.data() + start_[i], start_[i + 1] - start_[i] - 1u);
+        return hasBlank_ ? trim(f) : f; // most sentences have no blank at all: skip trimming
     }
     // Untrimmed text of a field, for the few places where inner blanks matter.
     std::string_view rawField(std::size_t i) const {
@@ -77,6 +78,7 @@ private:
     std::uint8_t declared_ = 0;
     std::uint8_t computed_ = 0;
     bool placeholder_ = false;
+    bool hasBlank_ = false;
     // start_[i] = offset in body_ of field i; start_[fieldCount_] = body_.size() + 1.
     // Deliberately not initialised: parse() writes what it uses.
     std::uint16_t start_[kMaxFields + 1];

@@ -42,6 +42,8 @@ const Dialect &dialect() {
             .rules = kRules,
             .checksumOptional = false, // "the checksum is sent in every message" (section 2)
             .ggaQuality = ggaQuality,
+            .modeIndicator = modeIndicator,
+            .fixNote = fixNote,
             .mapSatellite = mapSatellite,
             .settings = settingsSchema(),
             .replyRules = replyRules(),

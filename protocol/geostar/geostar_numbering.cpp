@@ -25,4 +25,12 @@ FixType ggaQuality(int quality) {
     }
 }
 
+FixType modeIndicator(char mode) {
+    return mode == 'G' ? FixType::Fix3D : fixTypeFromModeIndicator(mode);
+}
+
+std::string_view fixNote(int ggaQuality, char mode) {
+    return ggaQuality == 9 || mode == 'G' ? std::string_view("GeoPath") : std::string_view();
+}
+
 } // namespace gnss::geostar

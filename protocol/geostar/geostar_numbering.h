@@ -3,6 +3,8 @@
 #include "core/fix_type.h"
 #include "core/satellite.h"
 
+#include <string_view>
+
 namespace gnss::geostar {
 
 // v2.x under the GP talker: 1-32 GPS, 33-64 SBAS (PRN = id + 87), 65-88 GLONASS (slot = id - 64),
@@ -16,5 +18,11 @@ SatelliteRef mapSatellite(Constellation system, int id);
 // 5 float RTK, 6 extrapolated, 7 fixed coordinates (manual / base station), 9 GeoPath
 // (GeoS-5MP; a 3D fix, shown with the note "GeoPath").
 FixType ggaQuality(int quality);
+
+// Mode letters of GLL/GNS/RMC (table 6): the standard ones plus G, GeoPath (shown as 3D).
+FixType modeIndicator(char mode);
+
+// "GeoPath" for GGA quality 9 or mode letter G (UI.md: shown as 3D with a "GeoPath" note).
+std::string_view fixNote(int ggaQuality, char mode);
 
 } // namespace gnss::geostar

@@ -9,7 +9,8 @@ namespace {
 
 constexpr std::uint64_t kGroupExpiryEpochs = 60;
 
-int modeRank(char c) {
+// Standard mode letters, best first.
+int standardModeRank(char c) {
     switch (c) {
     case 'R': return 7;
     case 'F': return 6;
@@ -23,15 +24,28 @@ int modeRank(char c) {
     }
 }
 
+} // namespace
+
+int EpochAssembler::modeRank(char c) const {
+    const int r = standardModeRank(c);
+    // A vendor letter that means a fix ranks with autonomous ('A').
+    if (r == 0 && dialect_ && dialect_->modeIndicator && dialect_->modeIndicator(c) != FixType::None)
+        return standardModeRank('A');
+    return r;
+}
+
 // The best of a GNS mode string's per-system letters.
-char bestMode(std::string_view mode) {
+char EpochAssembler::bestMode(std::string_view modes) const {
     char best = 'N';
-    for (char c : mode)
+    for (char c : modes)
         if (modeRank(c) > modeRank(best)) best = c;
     return best;
 }
 
-} // namespace
+FixType EpochAssembler::fixFromMode(char mode) const {
+    if (dialect_ && dialect_->modeIndicator) return dialect_->modeIndicator(mode);
+    return fixTypeFromModeIndicator(mode);
+}
 
 FixType EpochAssembler::fixFromQuality(int q) const {
     if (dialect_ && dialect_->ggaQuality) return dialect_->ggaQuality(q);
@@ -53,18 +67,21 @@ void EpochAssembler::emit(Callback onEpoch) {
     if (ggaQuality_) {
         e.fix = fixFromQuality(*ggaQuality_);
     } else if (!gnsMode_.empty()) {
-        e.fix = fixTypeFromModeIndicator(bestMode(gnsMode_));
+        e.fix = fixFromMode(bestMode(gnsMode_));
     } else if (rmcStatus_ == 'V') {
         e.fix = FixType::None;
     } else if (rmcMode_) {
-        e.fix = fixTypeFromModeIndicator(*rmcMode_);
+        e.fix = fixFromMode(*rmcMode_);
     } else if (rmcStatus_ == 'A') {
         e.fix = FixType::Fix3D;
     } else if (gsaFix_) {
         e.fix = *gsaFix_ >= 3 ? FixType::Fix3D : *gsaFix_ == 2 ? FixType::Fix2D : FixType::None;
     }
     if (e.fix == FixType::Fix3D && gsaFix_ == 2) e.fix = FixType::Fix2D;
-    if (e.fix == FixType::None) e.fixNote.clear();
+    if (dialect_ && dialect_->fixNote && e.fix != FixType::None) {
+        const char mode = !gnsMode_.empty() ? bestMode(gnsMode_) : rmcMode_.value_or('\0');
+        e.fixNote = std::string(dialect_->fixNote(ggaQuality_.value_or(-1), mode));
+    }
 
     // Sky: every committed group, marked with this epoch's used satellites.
     e.satellites.clear();

@@ -43,6 +43,9 @@ private:
     void startEpochIfTimeChanged(const std::optional<TimeOfDay> &t, Callback onEpoch);
     void emit(Callback onEpoch);
     FixType fixFromQuality(int q) const;
+    FixType fixFromMode(char mode) const;
+    int modeRank(char mode) const;
+    char bestMode(std::string_view modes) const;
 
     const Dialect *dialect_;
     Epoch current_;
