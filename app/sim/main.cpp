@@ -1,0 +1,227 @@
+// gnss-sim: a simulated GNSS receiver (protocol/sim) behind a pseudo-terminal, a TCP port or
+// stdin/stdout. One thread, one poll() loop: read the host's bytes, advance simulated time by
+// the elapsed real time x --speed, write what the receiver sent.
+//
+// On a pseudo-terminal the line speed the other side sets (tcsetattr on the slave, which the
+// master sees with tcgetattr) is handed to the receiver: while it differs from the receiver's
+// baud the receiver sends garbage and ignores input, as a UART at the wrong speed would.
+#include "sim_args.h"
+
+#include <arpa/inet.h>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <termios.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <string>
+
+using namespace gnss;
+
+namespace {
+
+volatile std::sig_atomic_t g_stop = 0;
+void onSignal(int) {
+    g_stop = 1;
+}
+
+double monotonicSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return static_cast<double>(ts.tv_sec) + ts.tv_nsec / 1e9;
+}
+
+int baudOf(speed_t s) {
+    switch (s) {
+    case B300: return 300;
+    case B600: return 600;
+    case B1200: return 1200;
+    case B2400: return 2400;
+    case B4800: return 4800;
+    case B9600: return 9600;
+    case B19200: return 19200;
+    case B38400: return 38400;
+    case B57600: return 57600;
+    case B115200: return 115200;
+    case B230400: return 230400;
+    case B460800: return 460800;
+    case B921600: return 921600;
+    default: return 0;
+    }
+}
+
+speed_t speedOf(int baud) {
+    switch (baud) {
+    case 4800: return B4800;
+    case 9600: return B9600;
+    case 19200: return B19200;
+    case 38400: return B38400;
+    case 57600: return B57600;
+    case 115200: return B115200;
+    case 230400: return B230400;
+    case 460800: return B460800;
+    case 921600: return B921600;
+    default: return B9600;
+    }
+}
+
+void setNonBlocking(int fd) {
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK);
+}
+
+// Whether stdin is /dev/null (then "until stdin closes" would end at once: ignore it).
+bool stdinIsDevNull() {
+    struct stat in {
+    }, dn{};
+    if (fstat(STDIN_FILENO, &in) != 0 || stat("/dev/null", &dn) != 0) return false;
+    return S_ISCHR(in.st_mode) && in.st_rdev == dn.st_rdev;
+}
+
+// Writes as much as the peer takes; keeps the rest (bounded: a peer that never reads loses the
+// oldest output, as a receiver's full UART buffer would).
+void flushTo(int fd, std::string &buffer) {
+    while (!buffer.empty()) {
+        const ssize_t n = ::write(fd, buffer.data(), buffer.size());
+        if (n <= 0) break;
+        buffer.erase(0, static_cast<std::size_t>(n));
+    }
+    if (buffer.size() > 65536) buffer.erase(0, buffer.size() - 65536);
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+    simapp::SimArgs args;
+    std::string error;
+    bool help = false;
+    if (!simapp::parseSimArgs(argc, argv, args, error, help)) {
+        std::fprintf(stderr, "gnss-sim: %s\n%s", error.c_str(), simapp::kUsage);
+        return 2;
+    }
+    if (help) {
+        std::fputs(simapp::kUsage, stdout);
+        return 0;
+    }
+    auto rx = sim::makeReceiver(args.dialect, args.options);
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    std::signal(SIGPIPE, SIG_IGN);
+
+    int ioFd = -1;     // where the receiver's bytes go and commands come from
+    int listenFd = -1; // TCP only
+    bool isPty = false;
+    if (args.transport == simapp::Transport::Pty) {
+        ioFd = posix_openpt(O_RDWR | O_NOCTTY);
+        if (ioFd < 0 || grantpt(ioFd) != 0 || unlockpt(ioFd) != 0) {
+            std::perror("gnss-sim: pseudo-terminal");
+            return 1;
+        }
+        const char *name = ptsname(ioFd);
+        // Raw line at the receiver's speed, until the other side sets its own.
+        const int slave = ::open(name, O_RDWR | O_NOCTTY);
+        if (slave >= 0) {
+            termios t{};
+            tcgetattr(slave, &t);
+            cfmakeraw(&t);
+            cfsetispeed(&t, speedOf(rx->baud()));
+            cfsetospeed(&t, speedOf(rx->baud()));
+            tcsetattr(slave, TCSANOW, &t);
+            ::close(slave);
+        }
+        setNonBlocking(ioFd);
+        isPty = true;
+        std::printf("%s\n", name);
+        std::fflush(stdout);
+    } else if (args.transport == simapp::Transport::Tcp) {
+        listenFd = ::socket(AF_INET, SOCK_STREAM, 0);
+        int one = 1;
+        setsockopt(listenFd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+        sockaddr_in addr{};
+        addr.sin_family = AF_INET;
+        addr.sin_port = htons(static_cast<std::uint16_t>(args.tcpPort));
+        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        if (::bind(listenFd, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 ||
+            ::listen(listenFd, 1) != 0) {
+            std::perror("gnss-sim: listen");
+            return 1;
+        }
+        setNonBlocking(listenFd);
+        std::printf("127.0.0.1:%d\n", args.tcpPort);
+        std::fflush(stdout);
+    } else {
+        ioFd = STDOUT_FILENO;
+    }
+
+    const bool watchStdin = args.transport == simapp::Transport::Stdout || !stdinIsDevNull();
+    std::string outBuffer;
+    double last = monotonicSeconds();
+    char buf[4096];
+    while (!g_stop) {
+        pollfd fds[3];
+        int n = 0;
+        int stdinIdx = -1, ioIdx = -1, listenIdx = -1;
+        if (watchStdin) fds[stdinIdx = n++] = {STDIN_FILENO, POLLIN, 0};
+        if (ioFd >= 0 && ioFd != STDOUT_FILENO) fds[ioIdx = n++] = {ioFd, POLLIN, 0};
+        if (listenFd >= 0) fds[listenIdx = n++] = {listenFd, POLLIN, 0};
+        ::poll(fds, static_cast<nfds_t>(n), 10);
+
+        if (stdinIdx >= 0 && (fds[stdinIdx].revents & (POLLIN | POLLHUP))) {
+            const ssize_t r = ::read(STDIN_FILENO, buf, sizeof buf);
+            if (r <= 0) break; // standard input closed: stop
+            if (args.transport == simapp::Transport::Stdout)
+                rx->receive(std::string_view(buf, static_cast<std::size_t>(r)));
+        }
+        bool peerPresent = ioFd >= 0;
+        if (listenIdx >= 0 && (fds[listenIdx].revents & POLLIN)) {
+            const int c = ::accept(listenFd, nullptr, nullptr);
+            if (c >= 0) {
+                if (ioFd >= 0) ::close(ioFd);
+                ioFd = c;
+                setNonBlocking(ioFd);
+                outBuffer.clear();
+            }
+        }
+        if (ioIdx >= 0) {
+            if (fds[ioIdx].revents & POLLIN) {
+                const ssize_t r = ::read(ioFd, buf, sizeof buf);
+                if (r > 0)
+                    rx->receive(std::string_view(buf, static_cast<std::size_t>(r)));
+                else if (!isPty && r == 0) { // TCP client left
+                    ::close(ioFd);
+                    ioFd = -1;
+                }
+            }
+            // A pseudo-terminal master reports POLLHUP while nobody has the slave open: the
+            // receiver keeps running, its output goes nowhere (no stale backlog for the next
+            // program that opens the device).
+            if (isPty && (fds[ioIdx].revents & POLLHUP)) peerPresent = false;
+        }
+        if (isPty) {
+            termios t{};
+            if (tcgetattr(ioFd, &t) == 0) rx->setLineBaud(baudOf(cfgetospeed(&t)));
+        }
+
+        const double now = monotonicSeconds();
+        rx->advance((now - last) * args.speed);
+        last = now;
+        std::string out = rx->takeOutput();
+        if (peerPresent && ioFd >= 0) {
+            outBuffer += out;
+            flushTo(ioFd, outBuffer);
+        } else {
+            outBuffer.clear();
+        }
+        if (rx->hungUp()) break; // the hang-up fault: drop the line
+    }
+    if (ioFd >= 0 && ioFd != STDOUT_FILENO) ::close(ioFd);
+    if (listenFd >= 0) ::close(listenFd);
+    return 0;
+}

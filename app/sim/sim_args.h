@@ -1,0 +1,24 @@
+#pragma once
+// gnss-sim's command line, parsed apart from main() so it stays small and readable.
+#include "receiver.h"
+
+#include <string>
+
+namespace gnss::simapp {
+
+enum class Transport { Pty, Tcp, Stdout };
+
+struct SimArgs {
+    std::string dialect;
+    Transport transport = Transport::Pty;
+    int tcpPort = 0;
+    double speed = 1.0;
+    sim::SimOptions options;
+};
+
+extern const char *const kUsage;
+
+// Returns false with `error` set on a bad command line; `help` set when --help was asked.
+bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error, bool &help);
+
+} // namespace gnss::simapp

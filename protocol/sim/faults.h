@@ -1,0 +1,41 @@
+#pragma once
+// Faults the simulator injects on request, for reliability tests of everything that reads a
+// receiver (`gnss-sim --faults badcs=0.05,truncate=0.01,binary=0.2,silence=3@10,
+// noreply=PNVGRTK,slowreply=800,hangup=30`).
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gnss::sim {
+
+struct FaultSpec {
+    double badChecksum = 0;  // probability that a sentence's checksum is wrong
+    double truncate = 0;     // probability that a sentence is cut short (no terminator)
+    double binary = 0;       // probability per epoch of an RTCM3-like frame between sentences
+    double silenceFor = 0;   // seconds of silence ...
+    double silenceAt = -1;   // ... starting at this simulated time (-1: none)
+    double silenceEvery = 0; // and again every this many seconds (0: once)
+    // Commands whose replies never come: a command's address ("PNVGRTK") or its first field
+    // ("RQUERY" for $GPSGG,RQUERY). Several are joined with '+': noreply=PNVGRTK+PNVGCFG.
+    std::vector<std::string> noReply;
+    double slowReplyMs = 0;  // replies come this late (simulated milliseconds)
+    double hangupAfter = -1; // the line drops after this many simulated seconds (-1: never)
+
+    bool any() const;
+    bool silentAt(double time) const;
+    bool replySuppressed(std::string_view address, std::string_view firstField) const;
+};
+
+// Parses "key=value,key=value". Empty text → no faults. On error returns nullopt and sets
+// `error` naming the option and what it accepts.
+std::optional<FaultSpec> parseFaults(std::string_view spec, std::string &error);
+
+// An RTCM3 frame (0xD3, 10-bit length, payload starting with a 12-bit message number, CRC-24Q)
+// with random payload: what a receiver's port carries when RTCM output shares it.
+std::string rtcm3Frame(std::mt19937 &rng, int messageNumber, int payloadLength);
+std::uint32_t crc24q(std::string_view bytes);
+
+} // namespace gnss::sim

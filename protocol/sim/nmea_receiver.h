@@ -1,0 +1,26 @@
+#pragma once
+// NmeaReceiver: a plain NMEA-0183 4.11 receiver (GPS, GLONASS, Galileo, BeiDou, SBAS) with the
+// usual default output (GGA, GSA, GSV, RMC, VTG, ZDA at 1 Hz, 9600 baud) that answers standard
+// queries ($--GPQ,GGA) with the sentence asked for.
+#include "receiver.h"
+#include "standard_output.h"
+
+namespace gnss::sim {
+
+class NmeaReceiver : public Receiver {
+public:
+    explicit NmeaReceiver(const SimOptions &options = {});
+    static constexpr int kDefaultBaud = 9600;
+
+protected:
+    void onCommand(const Sentence &s, const Message *decoded, std::string_view error) override;
+    void onEpoch(const SkySnapshot &snap) override;
+    void onReset(ResetKind) override {}
+
+private:
+    // The sentence(s) of this type for the current epoch; empty when the type is not produced.
+    std::vector<std::string> sentencesOf(std::string_view type, const SkySnapshot &snap) const;
+    StandardStyle style_;
+};
+
+} // namespace gnss::sim

@@ -1,0 +1,209 @@
+#include "receiver.h"
+
+#include "dialects.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gnss::sim {
+
+namespace {
+
+// Times to first fix by restart kind (seconds): short enough for tests, long enough to see.
+double ttffOf(ResetKind k) {
+    switch (k) {
+    case ResetKind::PowerCycle: return 3.0;
+    case ResetKind::Hot: return 2.0;
+    case ResetKind::Warm: return 6.0;
+    case ResetKind::Cold: return 15.0;
+    }
+    return 3.0;
+}
+
+DecoderOptions decoderOptionsFor(const Dialect &d) {
+    DecoderOptions o;
+    o.dialect = std::string(d.id);
+    return o;
+}
+
+} // namespace
+
+Receiver::Receiver(const Dialect &dialect, int defaultBaud, const SimOptions &options)
+    : dialect_(dialect), options_(options), registry_(makeBuiltinRegistry()),
+      decoder_(registry_, decoderOptionsFor(dialect)), sky_(options.seed, options.observer),
+      faultRng_(options.seed ^ 0x5EED5EEDu), defaultBaud_(defaultBaud),
+      baud_(options.baud > 0 ? options.baud : defaultBaud), ttff_(ttffOf(ResetKind::PowerCycle)) {
+    // The first epoch comes one interval after power-on, like a receiver that just booted.
+    nextEpoch_ = 0;
+}
+
+Receiver::~Receiver() = default;
+
+void Receiver::receive(std::string_view bytes) {
+    if (hungUp_ || baudMismatch()) return;
+    decoder_.feed(bytes, [this](const SentenceEvent &ev) {
+        onCommand(ev.sentence, ev.message, ev.error);
+    });
+}
+
+void Receiver::advance(double seconds) {
+    const double end = now_ + std::max(0.0, seconds);
+    while (!hungUp_) {
+        double next = nextEpoch_;
+        for (const Pending &p : pending_) next = std::min(next, p.at);
+        if (next > end) break;
+        now_ = std::max(now_, next);
+        if (options_.faults.hangupAfter >= 0 && now_ >= options_.faults.hangupAfter) break;
+        flushDue();
+        if (nextEpoch_ <= now_) runEpoch();
+    }
+    now_ = end;
+    if (options_.faults.hangupAfter >= 0 && now_ >= options_.faults.hangupAfter) hungUp_ = true;
+    flushDue();
+}
+
+std::string Receiver::takeOutput() {
+    std::string s;
+    s.swap(out_);
+    return s;
+}
+
+FixKind Receiver::fixAfter(double seconds) const {
+    return seconds >= ttff_ ? FixKind::Autonomous : FixKind::None;
+}
+
+void Receiver::reset(ResetKind kind) {
+    ttff_ = ttffOf(kind);
+    trackingSince_ = now_;
+    lastFix_ = FixKind::None;
+    pending_.erase(std::remove_if(pending_.begin(), pending_.end(),
+                                  [](const Pending &p) { return p.thenBaud == 0; }),
+                   pending_.end());
+    onReset(kind);
+    rescheduleEpochs();
+}
+
+void Receiver::rescheduleEpochs() {
+    const double dt = epochInterval();
+    // Next multiple of the interval strictly after now (epochs are aligned to the time grid).
+    nextEpoch_ = (std::floor(now_ / dt + 1e-9) + 1) * dt;
+}
+
+void Receiver::runEpoch() {
+    const double dt = epochInterval();
+    const FixKind want = fixAfter(now_ - trackingSince_);
+    last_ = sky_.update(now_, useMask(), want, trackingSince_);
+    lastFix_ = last_.fix;
+    if (options_.faults.binary > 0) {
+        std::uniform_real_distribution<double> u(0, 1);
+        if (u(faultRng_) < options_.faults.binary) {
+            static const int kNumbers[] = {1005, 1077, 1087, 1097, 1127, 1230};
+            std::uniform_int_distribution<int> pick(0, 5), len(20, 180);
+            const std::string frame =
+                    rtcm3Frame(faultRng_, kNumbers[pick(faultRng_)], len(faultRng_));
+            if (!options_.faults.silentAt(now_)) write(frame);
+        }
+    }
+    onEpoch(last_);
+    nextEpoch_ = (std::floor(now_ / dt + 1e-9) + 1) * dt;
+}
+
+void Receiver::flushDue() {
+    // In order of time, then of arrival (stable).
+    std::stable_sort(pending_.begin(), pending_.end(),
+                     [](const Pending &a, const Pending &b) { return a.at < b.at; });
+    while (!pending_.empty() && pending_.front().at <= now_ + 1e-9) {
+        Pending p = std::move(pending_.front());
+        pending_.erase(pending_.begin());
+        if (!p.text.empty()) write(p.text + "\r\n");
+        if (p.thenBaud > 0) baud_ = p.thenBaud;
+    }
+}
+
+void Receiver::send(const std::string &sentence) {
+    if (hungUp_ || options_.faults.silentAt(now_)) return;
+    std::string line = sentence;
+    const FaultSpec &f = options_.faults;
+    std::uniform_real_distribution<double> u(0, 1);
+    if (f.badChecksum > 0 && u(faultRng_) < f.badChecksum && line.size() >= 3 &&
+        line[line.size() - 3] == '*') {
+        // Flip one bit of the checksum's low digit: still hex, never the right value.
+        char &c = line.back();
+        c = c == '0' ? '1' : (c == 'F' ? 'E' : static_cast<char>(c == '9' ? 'A' : c + 1));
+    }
+    if (f.truncate > 0 && u(faultRng_) < f.truncate && line.size() > 8) {
+        std::uniform_int_distribution<std::size_t> cut(4, line.size() - 4);
+        write(line.substr(0, cut(faultRng_))); // no terminator: the next '$' cuts it
+        return;
+    }
+    write(line + "\r\n");
+}
+
+void Receiver::reply(const Sentence &command, const std::string &sentence, int thenBaud) {
+    const FaultSpec &f = options_.faults;
+    const bool suppressed = f.replySuppressed(command.address(), command.field(0));
+    if (suppressed && thenBaud == 0) return;
+    const double at = now_ + f.slowReplyMs / 1000.0;
+    pending_.push_back({at, suppressed ? std::string() : sentence, thenBaud});
+    flushDue();
+}
+
+void Receiver::write(std::string bytes) {
+    if (hungUp_) return;
+    if (baudMismatch()) {
+        // What a UART at another speed makes of these bytes: about as many bytes as the ratio
+        // of the speeds, framing garbage with no '$' in it.
+        const double ratio = static_cast<double>(lineBaud_) / baud_;
+        const auto n = static_cast<std::size_t>(std::max(1.0, std::round(bytes.size() * ratio)));
+        out_ += garble(n);
+        return;
+    }
+    out_ += bytes;
+}
+
+std::string Receiver::garble(std::size_t n) {
+    std::string g;
+    g.reserve(n);
+    std::uniform_int_distribution<int> byte(0, 255);
+    for (std::size_t i = 0; i < n; ++i) {
+        int b = byte(faultRng_);
+        // Mostly high-bit and framing-error bytes (0x00, 0x80, 0xF8, 0xFF), never a sentence start.
+        if (b < 0x80 && (b & 3) != 0) b |= 0x80;
+        if (b == '$' || b == '!' || b == '\n' || b == '\r') b = 0xFF;
+        g.push_back(static_cast<char>(b));
+    }
+    return g;
+}
+
+double Receiver::utcSecondOfDay() const {
+    return std::fmod(kStartSecondOfDay + now_, 86400.0);
+}
+
+Date Receiver::utcDate() const {
+    // Days after 2024-03-15 (enough for simulations of days or weeks).
+    int days = static_cast<int>(std::floor((kStartSecondOfDay + now_) / 86400.0));
+    Date d{2024, 3, 15};
+    static const int kMonthDays[] = {31, 29, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31}; // 2024
+    while (days-- > 0) {
+        if (++d.day > kMonthDays[(d.month - 1) % 12]) {
+            d.day = 1;
+            if (++d.month > 12) {
+                d.month = 1;
+                ++d.year;
+            }
+        }
+    }
+    return d;
+}
+
+double Receiver::gpsTimeOfWeek() const {
+    // 2024-03-15 is a Friday (day 5 of the GPS week); GPS week 2305.
+    return std::fmod(5 * 86400.0 + kStartSecondOfDay + now_ + kLeapSeconds, 604800.0);
+}
+
+int Receiver::gpsWeek() const {
+    return 2305 +
+           static_cast<int>((5 * 86400.0 + kStartSecondOfDay + now_ + kLeapSeconds) / 604800.0);
+}
+
+} // namespace gnss::sim

@@ -1,0 +1,162 @@
+#pragma once
+// Receiver: one simulated GNSS receiver, driven from outside. Plain C++, no threads, no clock:
+// whoever runs it (gnss-sim over a pseudo-terminal/TCP/stdout, a QIODevice in the link layer, a
+// test) feeds the host's bytes in, advances simulated time and takes the receiver's bytes out:
+//
+//     auto rx = sim::makeReceiver("nvs", options);
+//     rx->receive("$PNVGRTK,PVTRATE,10*..\r\n");
+//     rx->advance(0.25);
+//     std::string bytes = rx->takeOutput();
+//
+// Each dialect's subclass (nmea_receiver.cpp, nvs_receiver.cpp, ...) holds the spec's behaviour:
+// default output list, rates and baud; how each command is answered; what is saved to flash.
+// Commands are read with the dialect's own decoders (gnss::StreamDecoder) and replies built with
+// its encoders, so the simulator and the rest of the program cannot disagree on syntax.
+#include "core/dialect.h"
+#include "core/dialect_registry.h"
+#include "core/field_types.h"
+#include "core/stream_decoder.h"
+#include "faults.h"
+#include "sky_model.h"
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gnss::sim {
+
+struct SimOptions {
+    std::uint32_t seed = 1;
+    int baud = 0; // starting baud; 0 = the receiver's default
+    FaultSpec faults;
+    Observer observer;
+};
+
+enum class ResetKind : std::uint8_t {
+    PowerCycle, // settings reload from flash, warm start
+    Cold,       // command: cold start (almanac/ephemeris dropped), settings kept
+    Warm,       // command: warm start, settings kept
+    Hot,        // command: hot start, settings kept
+};
+
+class Receiver {
+public:
+    virtual ~Receiver();
+    Receiver(const Receiver &) = delete;
+    Receiver &operator=(const Receiver &) = delete;
+
+    // Bytes from the host. Ignored while the line speed differs from the receiver's (a UART at
+    // the wrong speed reads garbage) and after a hang-up.
+    void receive(std::string_view bytes);
+    // Runs the receiver for `seconds` of simulated time (epochs, delayed replies, baud switches).
+    void advance(double seconds);
+    // Everything the receiver sent since the last call.
+    std::string takeOutput();
+
+    // The receiver's current baud, and the speed the host set on its side of the line
+    // (0 = unknown/not a serial line: never garbled). While they differ, output is garbled
+    // and input ignored.
+    int baud() const { return baud_; }
+    void setLineBaud(int baud) { lineBaud_ = baud; }
+    int lineBaud() const { return lineBaud_; }
+    bool baudMismatch() const { return lineBaud_ > 0 && lineBaud_ != baud_; }
+
+    // The hang-up fault fired: the transport should close the line.
+    bool hungUp() const { return hungUp_; }
+    // Simulated seconds since start.
+    double time() const { return now_; }
+    // Simulated power cycle: settings come back from flash, the fix sequence restarts.
+    void powerCycle() { reset(ResetKind::PowerCycle); }
+
+    const Dialect &dialect() const { return dialect_; }
+    // Seconds between navigation epochs (PVT rate).
+    virtual double epochInterval() const { return 1.0; }
+    // The current fix (for tests and status displays).
+    FixKind currentFix() const { return lastFix_; }
+    const SkySnapshot &lastSnapshot() const { return last_; }
+
+    // UTC of the simulated start: 2024-03-15 10:00:00 (a Friday; GPS-UTC = 18 s).
+    static constexpr double kStartSecondOfDay = 10 * 3600.0;
+    static constexpr int kLeapSeconds = 18;
+
+protected:
+    Receiver(const Dialect &dialect, int defaultBaud, const SimOptions &options);
+
+    // One sentence received from the host (checksum accepted by the dialect's policy).
+    // `decoded` is the dialect's decoding, nullptr when it did not decode (`error` says why).
+    virtual void onCommand(const Sentence &s, const Message *decoded, std::string_view error) = 0;
+    // One navigation epoch: write the epoch's output with send().
+    virtual void onEpoch(const SkySnapshot &snap) = 0;
+    // Settings back to the saved copy (PowerCycle) and engine state cleared (all kinds).
+    virtual void onReset(ResetKind kind) = 0;
+    // Which satellites the receiver uses (from its settings).
+    virtual UseMask useMask() const { return {}; }
+    // The fix the engine has reached `seconds` after it started tracking (RTK receivers refine).
+    virtual FixKind fixAfter(double seconds) const;
+
+    // Restarts the engine (fix sequence): used by reset commands.
+    void reset(ResetKind kind);
+    // Sends an output sentence (CR LF added; faults applied).
+    void send(const std::string &sentence);
+    // Sends a reply to `command` (noreply/slowreply faults apply). `thenBaud` > 0 switches the
+    // receiver's baud once this reply is out (PNVGRZA, BDR...). Replies to one command keep
+    // their order.
+    void reply(const Sentence &command, const std::string &sentence, int thenBaud = 0);
+    // Changes the PVT rate: the next epoch is on the new grid.
+    void rescheduleEpochs();
+    // The time to first fix of the last reset kind, seconds.
+    double ttff() const { return ttff_; }
+    double sinceTracking() const { return now_ - trackingSince_; }
+
+    // Time helpers for output: UTC of the simulated time.
+    double utcSecondOfDay() const;
+    Date utcDate() const;
+    double gpsTimeOfWeek() const;
+    int gpsWeek() const;
+
+    std::mt19937 &random() { return sky_.random(); }
+    SkyModel &sky() { return sky_; }
+    const SimOptions &options() const { return options_; }
+    int defaultBaud() const { return defaultBaud_; }
+    void setBaudNow(int b) { baud_ = b; }
+
+private:
+    struct Pending {
+        double at;
+        std::string text;
+        int thenBaud;
+    };
+    void runEpoch();
+    void flushDue();
+    void write(std::string bytes);
+    std::string garble(std::size_t n);
+
+    const Dialect &dialect_;
+    SimOptions options_;
+    DialectRegistry registry_;
+    StreamDecoder decoder_;
+    SkyModel sky_;
+    std::mt19937 faultRng_;
+    int defaultBaud_;
+    int baud_;
+    int lineBaud_ = 0;
+    double now_ = 0;
+    double nextEpoch_ = 0;
+    double trackingSince_ = 0;
+    double ttff_ = 0;
+    bool hungUp_ = false;
+    FixKind lastFix_ = FixKind::None;
+    SkySnapshot last_;
+    std::vector<Pending> pending_;
+    std::string out_;
+};
+
+// The receiver for a dialect id ("nvs", "geostar", "nemerix", "nmea"); nullptr when unknown.
+std::unique_ptr<Receiver> makeReceiver(std::string_view dialect, const SimOptions &options = {});
+// Dialect ids the simulator knows.
+std::vector<std::string_view> simulatedDialects();
+
+} // namespace gnss::sim

@@ -1,0 +1,115 @@
+// End to end: gnss-sim on a pseudo-terminal, read and commanded through the real QSerialPort,
+// as the application and any serial program would. One receiver family per test function.
+#include "core/sentence.h"
+#include "core/sentence_builder.h"
+#include "sim_output.h"
+
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QSerialPort>
+#include <QTest>
+
+using namespace gnss;
+using gnss::test::summarize;
+
+namespace {
+
+class SimProcess {
+public:
+    explicit SimProcess(const QStringList &args) {
+        proc.setProgram(QStringLiteral(GNSS_SIM_PATH));
+        proc.setArguments(QStringList{"--pty"} + args);
+        proc.start();
+    }
+    ~SimProcess() {
+        port.close();
+        proc.terminate();
+        if (!proc.waitForFinished(3000)) proc.kill();
+    }
+    // Reads the device path (first line of stdout) and opens it at `baud`.
+    bool open(int baud) {
+        if (!proc.waitForStarted(5000)) return false;
+        QElapsedTimer t;
+        t.start();
+        while (!proc.canReadLine() && t.elapsed() < 5000) proc.waitForReadyRead(100);
+        device = QString::fromLocal8Bit(proc.readLine()).trimmed();
+        if (!device.startsWith("/dev/")) return false;
+        port.setPortName(device);
+        port.setBaudRate(baud);
+        return port.open(QIODevice::ReadWrite);
+    }
+    // Everything the port delivers within `ms` milliseconds.
+    std::string read(int ms) {
+        QByteArray all;
+        QElapsedTimer t;
+        t.start();
+        while (t.elapsed() < ms) {
+            if (port.waitForReadyRead(50)) all += port.readAll();
+        }
+        all += port.readAll();
+        return all.toStdString();
+    }
+    void send(const std::string &body) {
+        port.write(QByteArray::fromStdString(buildSentence(body) + "\r\n"));
+        port.waitForBytesWritten(1000);
+    }
+
+    QProcess proc;
+    QSerialPort port;
+    QString device;
+};
+
+} // namespace
+
+class TstSimPty : public QObject {
+    Q_OBJECT
+private slots:
+    void nmeaReceiverTalksOnThePrintedDevice() {
+        SimProcess sim({"--dialect", "nmea", "--seed", "3"});
+        QVERIFY2(sim.open(9600), qPrintable(sim.device + " " + sim.port.errorString()));
+        sim.read(1100); // skip what was already on its way
+        const auto s = summarize(sim.read(3000), "nmea");
+        QCOMPARE(s.checksumErrors, 0);
+        QCOMPARE(s.decodeErrors, 0);
+        const int gga = s.byType.count("GGA") ? s.byType.at("GGA") : 0;
+        QVERIFY2(gga >= 2 && gga <= 4, QByteArray::number(gga)); // 1 Hz
+        for (auto t : {"GGA", "GSA", "GSV", "RMC", "VTG", "ZDA"}) QVERIFY2(s.byType.count(t), t);
+        QVERIFY(!s.byType.count("GLL"));
+        sim.send("GPGPQ,GLL");
+        const auto answered = summarize(sim.read(600), "nmea");
+        QVERIFY(answered.byType.count("GLL"));
+    }
+    void aWrongLineSpeedReadsGarbageUntilItIsRight() {
+        SimProcess sim({"--dialect", "nmea"});
+        QVERIFY(sim.open(9600));
+        sim.port.setBaudRate(4800);
+        sim.read(300);
+        const std::string garbage = sim.read(1500);
+        QVERIFY(garbage.size() > 50);
+        QCOMPARE(summarize(garbage).lines.size(), std::size_t(0));
+        sim.port.setBaudRate(9600);
+        sim.read(300);
+        QVERIFY(summarize(sim.read(1500)).byType.count("GGA"));
+    }
+    void stdoutModeStopsWhenStdinCloses() {
+        QProcess p;
+        p.start(QStringLiteral(GNSS_SIM_PATH), {"--dialect", "nmea", "--stdout", "--speed", "10"});
+        QVERIFY(p.waitForStarted());
+        QTest::qWait(600);
+        p.closeWriteChannel();
+        QVERIFY(p.waitForFinished(3000));
+        QCOMPARE(p.exitCode(), 0);
+        const auto s = summarize(p.readAllStandardOutput().toStdString(), "nmea");
+        QVERIFY(s.byType.count("GGA") && s.checksumErrors == 0);
+    }
+    void badCommandLineIsRefused() {
+        QProcess p;
+        p.start(QStringLiteral(GNSS_SIM_PATH), {"--dialect", "nope"});
+        QVERIFY(p.waitForFinished(3000));
+        QCOMPARE(p.exitCode(), 2);
+        QVERIFY(p.readAllStandardError().contains("unknown dialect"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstSimPty)
+#include "tst_sim_pty.moc"
