@@ -1,6 +1,7 @@
 // gnss-cli decode | epochs | stats: read a log (or standard input) through the decoder.
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
 #include "input_reader.h"
 #include "state/epoch_assembler.h"
@@ -58,6 +59,20 @@ bool parseCommon(const CliContext &ctx, int argc, char **argv, CommonOptions &ou
             return false;
         }
         out.decoder.addressAliases.emplace_back(alias.substr(0, eq), alias.substr(eq + 1));
+    }
+    if (const auto prefix = args.option("prefix")) {
+        // --prefix NEW: the chosen dialect's renamable prefix was renamed to NEW on the receiver.
+        const Dialect *d = ctx.registry.find(out.decoder.dialect);
+        if (!d || d->renamablePrefix.empty()) {
+            std::fprintf(stderr, "gnss-cli: --prefix needs --dialect with a renamable prefix "
+                                 "(nemerix); use --alias NEW=CANONICAL otherwise\n");
+            return false;
+        }
+        if (const std::string err = checkAddressPrefix(*prefix); !err.empty()) {
+            std::fprintf(stderr, "gnss-cli: %s\n", err.c_str());
+            return false;
+        }
+        out.decoder.addressAliases.emplace_back(*prefix, std::string(d->renamablePrefix));
     }
     out.json = args.flag("json");
     if (args.positionals().size() > 1) {
