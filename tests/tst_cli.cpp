@@ -1,4 +1,6 @@
 // gnss-cli end to end: the real executable on files, its JSON, its exit codes.
+#include <QDir>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -108,6 +110,48 @@ private slots:
                 QCOMPARE(r.exitCode, 0);
             }
         }
+    }
+
+    void everyCaptureAndSpecExampleDecodesWithoutCrashing() {
+        QStringList inputs;
+        const QDir corpus(QStringLiteral(GNSS_SHARED_DIR "/corpus/gpsd"));
+        for (const auto &l : corpus.entryList({"*.log"}, QDir::Files)) inputs << corpus.filePath(l);
+        QFile examples(QStringLiteral(GNSS_SHARED_DIR "/specs/examples.tsv"));
+        QTemporaryDir dir;
+        if (examples.open(QIODevice::ReadOnly)) {
+            // Every example as printed and, for typos, as corrected, one per line.
+            QFile out(dir.filePath("examples.nmea"));
+            QVERIFY(out.open(QIODevice::WriteOnly));
+            examples.readLine();
+            while (!examples.atEnd()) {
+                const QList<QByteArray> cols = examples.readLine().trimmed().split('\t');
+                for (int c : {1, 5})
+                    if (cols.size() > c && !cols[c].isEmpty()) out.write(cols[c] + "\r\n");
+            }
+            out.close();
+            inputs << out.fileName();
+        }
+        if (inputs.isEmpty()) QSKIP("../shared not present");
+        for (const QString &in : inputs) {
+            for (const char *cmd : {"decode", "epochs", "stats"}) {
+                const Run r = cli({cmd, "--lenient", in});
+                QVERIFY2(r.status == QProcess::NormalExit && r.exitCode == 0,
+                         qPrintable(QString("%1 %2: %3").arg(cmd, in, QString::fromUtf8(r.err))));
+            }
+        }
+    }
+
+    void renamedPrefixIsUsedOnOutputAndAcceptedOnInput() {
+        Run r = cli({"encode", "nemerix", "--prefix", "PXYZW", "--query", "rate.GGA"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out.trimmed(), QByteArray("$PXYZW603*69"));
+        const auto lines = jsonLines(cli({"decode", "--dialect", "nemerix", "--prefix", "PXYZW", "-"},
+                                         "$PXYZW600*xx\r\n")
+                                             .out);
+        QCOMPARE(lines.size(), 1);
+        QVERIFY(lines[0].contains("data"));
+        QCOMPARE(cli({"encode", "nemerix", "--prefix", "pxyzw", "rate.GGA=1"}).exitCode, 2);
+        QCOMPARE(cli({"encode", "nvs", "--prefix", "PXYZW", "MODE=1"}).exitCode, 2);
     }
 
     void usageErrorsExitWithTwo() {

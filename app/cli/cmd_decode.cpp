@@ -1,9 +1,15 @@
 // gnss-cli decode | epochs | stats: read a log (or standard input) through the decoder.
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
 #include "input_reader.h"
 #include "state/epoch_assembler.h"
+#include "state/log_scan.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <thread>
 
 #include <chrono>
 #include <cstdio>
@@ -58,6 +64,20 @@ bool parseCommon(const CliContext &ctx, int argc, char **argv, CommonOptions &ou
             return false;
         }
         out.decoder.addressAliases.emplace_back(alias.substr(0, eq), alias.substr(eq + 1));
+    }
+    if (const auto prefix = args.option("prefix")) {
+        // --prefix NEW: the chosen dialect's renamable prefix was renamed to NEW on the receiver.
+        const Dialect *d = ctx.registry.find(out.decoder.dialect);
+        if (!d || d->renamablePrefix.empty()) {
+            std::fprintf(stderr, "gnss-cli: --prefix needs --dialect with a renamable prefix "
+                                 "(nemerix); use --alias NEW=CANONICAL otherwise\n");
+            return false;
+        }
+        if (const std::string err = checkAddressPrefix(*prefix); !err.empty()) {
+            std::fprintf(stderr, "gnss-cli: %s\n", err.c_str());
+            return false;
+        }
+        out.decoder.addressAliases.emplace_back(*prefix, std::string(d->renamablePrefix));
     }
     out.json = args.flag("json");
     if (args.positionals().size() > 1) {
@@ -125,19 +145,48 @@ int cmdEpochs(const CliContext &ctx, int argc, char **argv) {
 int cmdStats(const CliContext &ctx, int argc, char **argv) {
     CommonOptions opt;
     if (!parseCommon(ctx, argc, argv, opt)) return 2;
-    StreamDecoder dec(ctx.registry, opt.decoder);
-    EpochAssembler assembler(dec.dialect());
-    std::uint64_t epochs = 0;
-    auto onEpoch = [&](const Epoch &) { ++epochs; };
+    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    if (const auto t = Args(argc, argv, 2, {"lenient", "json"}).option("threads")) {
+        threads = static_cast<unsigned>(std::strtoul(t->c_str(), nullptr, 10));
+        if (threads == 0 || threads > 64) {
+            std::fprintf(stderr, "gnss-cli: --threads takes 1 to 64\n");
+            return 2;
+        }
+    }
     const auto t0 = std::chrono::steady_clock::now();
-    const bool ok = run(opt, dec, [&](const SentenceEvent &ev) {
-        if (!ev.message) return;
-        assembler.setDialect(dec.dialect());
-        assembler.add(ev.sentence, *ev.message, onEpoch);
-    });
-    assembler.flush(onEpoch);
+    LogScanResult scan;
+    bool ok = true;
+    const MappedFile mapped(opt.input);
+    if (!mapped.error().empty()) {
+        std::fprintf(stderr, "gnss-cli: %s\n", mapped.error().c_str());
+        ok = false;
+    } else if (mapped.ok()) {
+        // A regular file: decode it on every core (same counts as reading it front to back).
+        scan = scanLog(mapped.data(), ctx.registry, opt.decoder, threads);
+    } else {
+        // A pipe or a terminal: one decoder, as the bytes come.
+        StreamDecoder dec(ctx.registry, opt.decoder);
+        EpochAssembler assembler(dec.dialect());
+        auto onEpoch = [&](const Epoch &) { ++scan.epochs; };
+        ok = run(opt, dec, [&](const SentenceEvent &ev) {
+            if (!ev.message) return;
+            assembler.setDialect(dec.dialect());
+            assembler.add(ev.sentence, *ev.message, onEpoch);
+        });
+        assembler.flush(onEpoch);
+        scan.framer = dec.framerStats();
+        scan.addresses = dec.addressStats();
+        scan.dialect = dec.dialect();
+    }
     const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::uint64_t epochs = scan.epochs;
+    struct {
+        const FramerStats &framerStats() const { return s.framer; }
+        const std::vector<AddressStats> &addressStats() const { return s.addresses; }
+        const Dialect *dialect() const { return s.dialect; }
+        const LogScanResult &s;
+    } dec{scan};
 
     const FramerStats &fs = dec.framerStats();
     std::uint64_t sentences = 0, decoded = 0, errors = 0, unknown = 0, bad = 0, missing = 0,
@@ -162,7 +211,7 @@ int cmdStats(const CliContext &ctx, int argc, char **argv) {
         w.field("unknown", unknown).field("checksum_bad", bad).field("checksum_missing", missing);
         w.field("rejected", rejected).field("truncated", fs.truncated);
         w.field("too_long", fs.tooLong).field("binary_aborted", fs.binaryAborted);
-        w.field("epochs", epochs).field("seconds", seconds);
+        w.field("epochs", epochs).field("seconds", seconds).field("threads", scan.segments);
         w.field("mb_per_s", seconds > 0 ? mb / seconds : 0.0);
         w.key("addresses").beginArray();
         for (const auto &a : dec.addressStats()) {
@@ -202,9 +251,10 @@ int cmdStats(const CliContext &ctx, int argc, char **argv) {
                       (unsigned long long)fs.binaryAborted, (unsigned long long)rejected,
                       (unsigned long long)epochs);
         o += line;
-        std::snprintf(line, sizeof line, "time: %.3f s (%.0f MB/s, %.0f sentences/s)\n", seconds,
-                      seconds > 0 ? mb / seconds : 0.0,
-                      seconds > 0 ? static_cast<double>(sentences) / seconds : 0.0);
+        std::snprintf(line, sizeof line, "time: %.3f s (%.0f MB/s, %.0f sentences/s, %u thread%s)\n",
+                      seconds, seconds > 0 ? mb / seconds : 0.0,
+                      seconds > 0 ? static_cast<double>(sentences) / seconds : 0.0, scan.segments,
+                      scan.segments == 1 ? "" : "s");
         o += line;
     }
     std::fwrite(o.data(), 1, o.size(), stdout);

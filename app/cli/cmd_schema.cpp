@@ -3,6 +3,7 @@
 #include "cli_args.h"
 #include "cli_commands.h"
 #include "core/json_writer.h"
+#include "core/sentence_builder.h"
 
 #include <cstdio>
 #include <string>
@@ -64,6 +65,17 @@ int cmdEncode(const CliContext &ctx, int argc, char **argv) {
     }
     const Dialect *d = dialectArg(ctx, args.positionals());
     if (!d) return 2;
+    if (const auto prefix = args.option("prefix")) {
+        if (d->renamablePrefix.empty()) {
+            std::fprintf(stderr, "gnss-cli: the %s dialect has no renamable prefix\n",
+                         std::string(d->id).c_str());
+            return 2;
+        }
+        if (const std::string err = checkAddressPrefix(*prefix); !err.empty()) {
+            std::fprintf(stderr, "gnss-cli: %s\n", err.c_str());
+            return 2;
+        }
+    }
     std::vector<std::string> rest(args.positionals().begin() + 1, args.positionals().end());
     if (rest.empty()) {
         std::fprintf(stderr, "gnss-cli: encode %s needs KEY=VALUE... or --query KEY...\n",
@@ -99,7 +111,12 @@ int cmdEncode(const CliContext &ctx, int argc, char **argv) {
         std::fprintf(stderr, "gnss-cli: %s\n", result.error.c_str());
         return 1;
     }
-    for (const auto &s : result.sentences) std::printf("%s\n", s.c_str());
+    const auto prefix = args.option("prefix");
+    for (const auto &s : result.sentences) {
+        const std::string out =
+                prefix ? renameAddressPrefix(s, d->renamablePrefix, *prefix) : s;
+        std::printf("%s\n", out.c_str());
+    }
     return 0;
 }
 

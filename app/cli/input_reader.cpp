@@ -5,6 +5,11 @@
 #include <cstring>
 #include <memory>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace gnss::cli {
 
 bool readInput(const std::string &path, FunctionRef<void(std::string_view)> onChunk,
@@ -31,6 +36,35 @@ bool readInput(const std::string &path, FunctionRef<void(std::string_view)> onCh
     }
     if (!useStdin) std::fclose(f);
     return ok;
+}
+
+MappedFile::MappedFile(const std::string &path) {
+    if (path.empty() || path == "-") return;
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    if (fd < 0) {
+        error_ = path + ": " + std::strerror(errno);
+        return;
+    }
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
+        size_ = static_cast<std::size_t>(st.st_size);
+        if (size_ == 0) {
+            mappedEmpty_ = true;
+        } else {
+            void *p = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
+            if (p == MAP_FAILED) {
+                size_ = 0;
+            } else {
+                data_ = p;
+                ::madvise(p, size_, MADV_SEQUENTIAL);
+            }
+        }
+    }
+    ::close(fd);
+}
+
+MappedFile::~MappedFile() {
+    if (data_) ::munmap(data_, size_);
 }
 
 } // namespace gnss::cli

@@ -30,7 +30,8 @@ void usage(std::FILE *f) {
     for (const auto &c : kCommands)
         std::fprintf(f, "  %.*s\n", static_cast<int>(c.synopsis.size()), c.synopsis.data());
     std::fprintf(f, "\nD: auto (default), nvs, geostar, nemerix, nmea\n"
-                    "--alias NEW=PNMRX reads a renamed Nemerix prefix. See docs/cli.md.\n");
+                    "--alias NEW=PNMRX reads a renamed prefix; with --dialect nemerix, --prefix NEW reads\n"
+                    "and (encode) writes it. See docs/cli.md.\n");
 }
 
 } // namespace

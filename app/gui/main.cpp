@@ -1,8 +1,12 @@
 // gnss-workbench: the GUI entry point.
 #include "main_window.h"
 #include "startup_options.h"
+#include "style/app_icon.h"
 
 #include <QApplication>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QTranslator>
 #include <QPixmap>
 #include <QTimer>
 #include <cstdio>
@@ -13,6 +17,13 @@ int main(int argc, char **argv) {
     QApplication::setOrganizationName("GNSS Workbench");
     QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
 
+    // The interface in the user's language where we have it (translations/), Qt's own strings too.
+    QTranslator qtTranslator, appTranslator;
+    if (qtTranslator.load(QLocale(), "qtbase", "_", QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QApplication::installTranslator(&qtTranslator);
+    if (appTranslator.load(QLocale(), "gnss-workbench", "_", ":/i18n"))
+        QApplication::installTranslator(&appTranslator);
+
     QString error;
     const auto options = gnss::app::parseStartupOptions(QApplication::arguments(), error);
     if (!options) {
@@ -20,6 +31,7 @@ int main(int argc, char **argv) {
         return 2;
     }
 
+    QApplication::setWindowIcon(gnss::style::appIcon());
     gnss::app::MainWindow window;
     window.show();
 

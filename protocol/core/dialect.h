@@ -36,11 +36,6 @@ public:
     }
     // Hands the decoded message to the caller (valid only during the call).
     void deliver(const Message &m) { emit_(m); }
-#pragma push_macro("emit") // Qt defines `emit` as an empty macro
-#undef emit
-    // Old name of deliver(), kept while code moves over; unusable where Qt's macro is defined.
-    void emit(const Message &m) { emit_(m); }
-#pragma pop_macro("emit")
 
     // Why decoding failed (set by the decode function when it returns false).
     std::string error;
@@ -143,6 +138,8 @@ struct Dialect {
     std::span<const std::string_view> commandNames;
     // Default serial speed of the receiver.
     int defaultBaud = 0;
+    // A proprietary prefix the user may rename on the receiver ("PNMRX"); empty when fixed.
+    std::string_view renamablePrefix;
 };
 
 // The standard sentence table (GGA, RMC, GSA, GSV, ...), used by every dialect.

@@ -57,6 +57,27 @@ std::string completeSentence(std::string_view typed, std::string &error) {
     return buildSentence(typed, start);
 }
 
+std::string checkAddressPrefix(std::string_view prefix) {
+    bool ok = prefix.size() >= 2 && prefix.size() <= 9 && prefix.front() == 'P';
+    for (char c : prefix)
+        if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) ok = false;
+    if (ok) return {};
+    return "prefix '" + std::string(prefix) +
+           "' is not usable: 'P' followed by 1 to 8 upper-case letters or digits";
+}
+
+std::string renameAddressPrefix(std::string_view sentence, std::string_view from,
+                                std::string_view to) {
+    if (sentence.size() < from.size() + 1 || sentence.substr(1, from.size()) != from)
+        return std::string(sentence);
+    std::string_view rest = sentence.substr(1 + from.size());
+    const auto star = rest.rfind('*');
+    if (star != std::string_view::npos) rest = rest.substr(0, star);
+    std::string body(to);
+    body.append(rest);
+    return buildSentence(body, sentence.front());
+}
+
 std::string formatFixed(double v, int decimals) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*f", decimals, v);

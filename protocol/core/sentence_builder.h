@@ -14,6 +14,15 @@ std::string buildSentence(std::string_view body, char start = '$');
 // sentence (empty, non-printable characters, too long).
 std::string completeSentence(std::string_view typed, std::string &error);
 
+// A proprietary prefix a user may configure: 'P' followed by 1 to 8 upper-case letters or
+// digits. Returns an empty string when valid, else why not.
+std::string checkAddressPrefix(std::string_view prefix);
+
+// "$PNMRX110,0*hh" with from "PNMRX" and to "PXYZW" → "$PXYZW110,0*hh" (checksum recomputed).
+// Sentences not starting with `from` are returned unchanged.
+std::string renameAddressPrefix(std::string_view sentence, std::string_view from,
+                                std::string_view to);
+
 // Decimal formatting for encoders: fixed decimals, no locale, no exponent.
 std::string formatFixed(double v, int decimals);
 

@@ -30,6 +30,8 @@ const Dialect &dialect() {
             .commandNames = kCommandNames,
             // "9600 baud rate, 8 bits data, 1 start, 1 stop, no parity" (2.1.8).
             .defaultBaud = 9600,
+            // "The PNMRX part may be replaced by a configured alternative" (Extensions spec).
+            .renamablePrefix = "PNMRX",
     };
     return d;
 }

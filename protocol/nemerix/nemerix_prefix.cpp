@@ -9,7 +9,7 @@ bool finishDecode(FieldReader &r, DecodeContext &ctx, const Message &m) {
         ctx.error = r.error();
         return false;
     }
-    ctx.emit(m);
+    ctx.deliver(m);
     return true;
 }
 

@@ -8,6 +8,9 @@
 #include "core/stream_decoder.h"
 #include "dialects.h"
 #include "state/epoch_assembler.h"
+#include "state/log_scan.h"
+
+#include <thread>
 
 #include <benchmark/benchmark.h>
 
@@ -50,6 +53,64 @@ void BM_FullDecode(benchmark::State &state) {
     state.counters["log_MB"] = static_cast<double>(log.size()) / 1e6;
 }
 BENCHMARK(BM_FullDecode)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
+
+// The same full decode on every core (what `gnss-cli stats` does with a file): scanLog cuts the
+// log at line ends and merges the counts exactly.
+void BM_FullDecodeAllCores(benchmark::State &state) {
+    const std::string &log = log100MB();
+    const gnss::DialectRegistry reg = gnss::makeBuiltinRegistry();
+    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    std::uint64_t sentences = 0;
+    for (auto _ : state) {
+        const gnss::LogScanResult r = gnss::scanLog(log, reg, {}, threads);
+        sentences += r.framer.sentences;
+    }
+    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
+    state.counters["sentences/s"] =
+            benchmark::Counter(static_cast<double>(sentences), benchmark::Counter::kIsRate);
+    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                                                benchmark::Counter::kIsRate);
+    state.counters["threads"] = threads;
+}
+BENCHMARK(BM_FullDecodeAllCores)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
+
+// Stages, to see where the time goes: framing + sentence parsing (checksum, field split), and
+// the full decode without epoch assembly.
+void BM_FrameAndParse(benchmark::State &state) {
+    const std::string &log = log100MB();
+    std::uint64_t fields = 0;
+    for (auto _ : state) {
+        gnss::Framer framer;
+        auto onLine = [&](std::string_view line) {
+            gnss::Sentence s;
+            if (s.parse(line)) fields += s.fieldCount();
+        };
+        for (std::size_t pos = 0; pos < log.size(); pos += kChunk)
+            framer.feed(std::string_view(log).substr(pos, kChunk), onLine);
+    }
+    benchmark::DoNotOptimize(fields);
+    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
+    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                                                benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FrameAndParse)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
+
+void BM_DecodeWithoutEpochs(benchmark::State &state) {
+    const std::string &log = log100MB();
+    const gnss::DialectRegistry reg = gnss::makeBuiltinRegistry();
+    std::uint64_t decoded = 0;
+    for (auto _ : state) {
+        gnss::StreamDecoder dec(reg);
+        auto onSentence = [&](const gnss::SentenceEvent &ev) { decoded += ev.message != nullptr; };
+        for (std::size_t pos = 0; pos < log.size(); pos += kChunk)
+            dec.feed(std::string_view(log).substr(pos, kChunk), onSentence);
+    }
+    benchmark::DoNotOptimize(decoded);
+    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
+    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                                                benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DecodeWithoutEpochs)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 
 void BM_ChecksumOnly(benchmark::State &state) {
     const std::string &log = log100MB();

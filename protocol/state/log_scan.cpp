@@ -1,0 +1,181 @@
+#include "log_scan.h"
+
+#include "epoch_assembler.h"
+
+#include <thread>
+#include <unordered_map>
+
+namespace gnss {
+namespace {
+
+constexpr std::size_t kNoDetection = static_cast<std::size_t>(-1);
+
+struct SegmentRun {
+    FramerStats framer;
+    std::vector<AddressStats> addresses;
+    std::uint64_t epochs = 0;
+    bool hasFirst = false;
+    std::optional<TimeOfDay> firstEpochTime, lastEpochTime;
+    const Dialect *initialDialect = nullptr;
+    const Dialect *finalDialect = nullptr;
+    std::size_t detectLineStart = kNoDetection; // where auto detection named the dialect
+};
+
+SegmentRun runSegment(std::string_view seg, const DialectRegistry &registry,
+                      const DecoderOptions &options, const Dialect *forced) {
+    StreamDecoder dec(registry, options);
+    if (forced) dec.setDialect(forced);
+    EpochAssembler assembler(dec.dialect());
+    SegmentRun r;
+    r.initialDialect = dec.dialect();
+    auto onEpoch = [&](const Epoch &e) {
+        ++r.epochs;
+        if (!r.hasFirst) {
+            r.hasFirst = true;
+            r.firstEpochTime = e.time;
+        }
+        r.lastEpochTime = e.time;
+    };
+    const Dialect *seen = dec.dialect();
+    // One feed of the whole segment: every line is a view into `seg`, so its offset is known.
+    dec.feed(seg, [&](const SentenceEvent &ev) {
+        if (dec.dialect() != seen) {
+            if (r.detectLineStart == kNoDetection)
+                r.detectLineStart = static_cast<std::size_t>(ev.sentence.line().data() - seg.data());
+            seen = dec.dialect();
+        }
+        if (ev.message) {
+            assembler.setDialect(dec.dialect());
+            assembler.add(ev.sentence, *ev.message, onEpoch);
+        }
+    });
+    dec.finish();
+    assembler.flush(onEpoch);
+    r.framer = dec.framerStats();
+    r.addresses = dec.addressStats();
+    r.finalDialect = dec.dialect();
+    return r;
+}
+
+void addAddressStats(std::vector<AddressStats> &into, const std::vector<AddressStats> &from,
+                     int sign) {
+    std::unordered_map<std::string, std::size_t> index;
+    for (std::size_t i = 0; i < into.size(); ++i) index.emplace(into[i].address, i);
+    for (const auto &a : from) {
+        auto it = index.find(a.address);
+        if (it == index.end()) {
+            it = index.emplace(a.address, into.size()).first;
+            into.push_back(AddressStats{a.address});
+        }
+        AddressStats &t = into[it->second];
+        auto add = [sign](std::uint64_t &x, std::uint64_t y) { x = sign > 0 ? x + y : x - y; };
+        add(t.sentences, a.sentences);
+        add(t.decoded, a.decoded);
+        add(t.decodeErrors, a.decodeErrors);
+        add(t.unknown, a.unknown);
+        add(t.checksumBad, a.checksumBad);
+        add(t.checksumMissing, a.checksumMissing);
+        add(t.rejected, a.rejected);
+    }
+}
+
+void addFramerStats(FramerStats &into, const FramerStats &f) {
+    into.bytesIn += f.bytesIn;
+    into.bytesSkipped += f.bytesSkipped;
+    into.sentences += f.sentences;
+    into.truncated += f.truncated;
+    into.tooLong += f.tooLong;
+    into.binaryAborted += f.binaryAborted;
+}
+
+bool sameCounts(const SegmentRun &a, const SegmentRun &b) {
+    if (a.epochs != b.epochs || a.hasFirst != b.hasFirst || a.addresses.size() != b.addresses.size())
+        return false;
+    if (a.firstEpochTime.has_value() != b.firstEpochTime.has_value() ||
+        (a.firstEpochTime && !(*a.firstEpochTime == *b.firstEpochTime)))
+        return false;
+    for (std::size_t i = 0; i < a.addresses.size(); ++i) {
+        const AddressStats &x = a.addresses[i], &y = b.addresses[i];
+        if (x.address != y.address || x.decoded != y.decoded || x.decodeErrors != y.decodeErrors ||
+            x.unknown != y.unknown || x.rejected != y.rejected)
+            return false;
+    }
+    return true;
+}
+
+// Segment boundaries: just after a '\n' near each equal share of the log.
+std::vector<std::string_view> cut(std::string_view log, unsigned pieces) {
+    std::vector<std::string_view> out;
+    std::size_t start = 0;
+    for (unsigned k = 1; k < pieces; ++k) {
+        std::size_t target = log.size() / pieces * k;
+        if (target <= start) continue;
+        const std::size_t nl = log.find('\n', target);
+        if (nl == std::string_view::npos) break;
+        out.push_back(log.substr(start, nl + 1 - start));
+        start = nl + 1;
+    }
+    out.push_back(log.substr(start));
+    return out;
+}
+
+} // namespace
+
+LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
+                      const DecoderOptions &options, unsigned threads, std::size_t minSegmentBytes) {
+    if (threads == 0) threads = 1;
+    const std::size_t bySize = std::max<std::size_t>(1, log.size() / std::max<std::size_t>(1, minSegmentBytes));
+    const unsigned pieces = static_cast<unsigned>(std::min<std::size_t>(threads, bySize));
+    const std::vector<std::string_view> segs = cut(log, pieces);
+
+    std::vector<SegmentRun> runs(segs.size());
+    {
+        std::vector<std::thread> workers;
+        for (std::size_t k = 1; k < segs.size(); ++k)
+            workers.emplace_back([&, k] { runs[k] = runSegment(segs[k], registry, options, nullptr); });
+        runs[0] = runSegment(segs[0], registry, options, nullptr);
+        for (auto &w : workers) w.join();
+    }
+
+    LogScanResult result;
+    result.segments = static_cast<unsigned>(segs.size());
+    const Dialect *inForce = runs[0].finalDialect;
+    addFramerStats(result.framer, runs[0].framer);
+    addAddressStats(result.addresses, runs[0].addresses, +1);
+    result.epochs = runs[0].epochs;
+    std::optional<TimeOfDay> lastTime = runs[0].lastEpochTime;
+    bool haveLast = runs[0].hasFirst;
+
+    for (std::size_t k = 1; k < segs.size(); ++k) {
+        SegmentRun &r = runs[k];
+        if (inForce && r.initialDialect != inForce) {
+            // Read front to back, this segment would have started with `inForce` known.
+            if (r.detectLineStart == kNoDetection || r.finalDialect != inForce) {
+                r = runSegment(segs[k], registry, options, inForce);
+            } else if (r.detectLineStart > 0) {
+                // Did knowing the dialect change anything before this segment named it? Usually
+                // not (it matters for optional checksums and vendor readings of standard
+                // sentences); when it did, decode the whole segment again as it was meant.
+                const std::string_view prefix = segs[k].substr(0, r.detectLineStart);
+                const SegmentRun asRun = runSegment(prefix, registry, options, nullptr);
+                const SegmentRun asMeant = runSegment(prefix, registry, options, inForce);
+                if (!sameCounts(asRun, asMeant)) r = runSegment(segs[k], registry, options, inForce);
+            }
+        }
+        addFramerStats(result.framer, r.framer);
+        addAddressStats(result.addresses, r.addresses, +1);
+        result.epochs += r.epochs;
+        // The epoch in progress at the cut was counted by both sides.
+        if (haveLast && r.hasFirst && lastTime && r.firstEpochTime && *lastTime == *r.firstEpochTime)
+            --result.epochs;
+        if (r.hasFirst) {
+            lastTime = r.lastEpochTime;
+            haveLast = true;
+        }
+        if (!inForce) inForce = r.finalDialect;
+    }
+    result.dialect = inForce;
+    return result;
+}
+
+} // namespace gnss

@@ -1,0 +1,117 @@
+// scanLog: decoding a log on several threads counts exactly what one decoder reading it front to
+// back counts — including dialect detection and epochs cut at a segment boundary.
+#include "core/sentence_builder.h"
+#include "core/stream_decoder.h"
+#include "dialects.h"
+#include "state/epoch_assembler.h"
+#include "state/log_scan.h"
+
+#include <QTest>
+#include <random>
+
+using namespace gnss;
+
+namespace {
+
+LogScanResult sequential(std::string_view log, const DialectRegistry &reg, const DecoderOptions &o) {
+    StreamDecoder dec(reg, o);
+    EpochAssembler assembler;
+    LogScanResult r;
+    auto onEpoch = [&](const Epoch &) { ++r.epochs; };
+    // Odd-sized chunks on purpose: chunking must not matter either.
+    for (std::size_t pos = 0; pos < log.size(); pos += 777)
+        dec.feed(log.substr(pos, 777), [&](const SentenceEvent &ev) {
+            if (!ev.message) return;
+            assembler.setDialect(dec.dialect());
+            assembler.add(ev.sentence, *ev.message, onEpoch);
+        });
+    dec.finish();
+    assembler.flush(onEpoch);
+    r.framer = dec.framerStats();
+    r.addresses = dec.addressStats();
+    r.dialect = dec.dialect();
+    return r;
+}
+
+void expectSame(const LogScanResult &a, const LogScanResult &b) {
+    QCOMPARE(a.framer.bytesIn, b.framer.bytesIn);
+    QCOMPARE(a.framer.bytesSkipped, b.framer.bytesSkipped);
+    QCOMPARE(a.framer.sentences, b.framer.sentences);
+    QCOMPARE(a.framer.truncated, b.framer.truncated);
+    QCOMPARE(a.framer.tooLong, b.framer.tooLong);
+    QCOMPARE(a.epochs, b.epochs);
+    QCOMPARE(a.dialect, b.dialect);
+    QCOMPARE(a.addresses.size(), b.addresses.size());
+    for (std::size_t i = 0; i < a.addresses.size(); ++i) {
+        QCOMPARE(a.addresses[i].address, b.addresses[i].address);
+        QCOMPARE(a.addresses[i].sentences, b.addresses[i].sentences);
+        QCOMPARE(a.addresses[i].decoded, b.addresses[i].decoded);
+        QCOMPARE(a.addresses[i].decodeErrors, b.addresses[i].decodeErrors);
+        QCOMPARE(a.addresses[i].unknown, b.addresses[i].unknown);
+        QCOMPARE(a.addresses[i].checksumBad, b.addresses[i].checksumBad);
+        QCOMPARE(a.addresses[i].checksumMissing, b.addresses[i].checksumMissing);
+        QCOMPARE(a.addresses[i].rejected, b.addresses[i].rejected);
+    }
+}
+
+// A 1 Hz log with noise, bad checksums, sentences without checksum and, from `vendorFrom`
+// on, a vendor sentence that names the dialect.
+std::string makeLog(int epochs, int vendorFrom, const std::string &vendorSentence) {
+    std::mt19937 rng(99);
+    std::string s;
+    for (int e = 0; e < epochs; ++e) {
+        char t[16];
+        std::snprintf(t, sizeof t, "%02d%02d%02d.00", e / 3600 % 24, e / 60 % 60, e % 60);
+        s += buildSentence(std::string("GPGGA,") + t + ",4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,") + "\r\n";
+        s += buildSentence("GPGSV,2,1,05,01,40,083,46,02,17,308,41,03,07,344,39,04,22,228,45") + "\r\n";
+        if (e % 5 != 3) s += buildSentence("GPGSV,2,2,05,05,10,010,") + "\r\n";
+        s += std::string("$GPRMC,") + t + ",A,4807.038,N,01131.000,E,0.1,90.0,230394,,,A\r\n"; // no checksum
+        if (e % 7 == 0) s += "$GPGSA,A,3,01,02,03,,,,,,,,,,1.8,0.9,1.5*00\r\n";                // bad checksum
+        if (e % 11 == 0) s += "\xD3\x00\x05\x01\x02\x03\x04\x05\x06\x07";                     // binary
+        if (e >= vendorFrom && e % 4 == 0) s += vendorSentence + "\r\n";
+        (void)rng;
+    }
+    return s;
+}
+
+} // namespace
+
+class TestLogScan : public QObject {
+    Q_OBJECT
+private slots:
+    void parallelCountsEqualSequential_data() {
+        QTest::addColumn<int>("vendorFrom");
+        QTest::addColumn<QString>("vendor");
+        QTest::addColumn<QString>("dialect");
+        QTest::newRow("plain NMEA") << 100000 << "" << "auto";
+        QTest::newRow("Nemerix named early") << 0 << "$PNMRX600*6F" << "auto";
+        QTest::newRow("Nemerix named late") << 2500 << "$PNMRX600*6F" << "auto";
+        QTest::newRow("NVS named early") << 0 << "$PNVGVER*4E" << "auto";
+        QTest::newRow("GeoStar once at start") << 0 << "$GPSGG,RQUERY*70" << "auto";
+        QTest::newRow("dialect given") << 100000 << "" << "nemerix";
+        QTest::newRow("lenient") << 100000 << "" << "lenient";
+    }
+    void parallelCountsEqualSequential() {
+        QFETCH(int, vendorFrom);
+        QFETCH(QString, vendor);
+        QFETCH(QString, dialect);
+        const DialectRegistry reg = makeBuiltinRegistry();
+        std::string log = makeLog(3000, vendorFrom, vendor.toStdString());
+        if (vendor.contains("RQUERY")) log = vendor.toStdString() + "\r\n" + makeLog(3000, 100000, "");
+        DecoderOptions o;
+        if (dialect == "lenient")
+            o.lenient = true;
+        else
+            o.dialect = dialect.toStdString();
+        const LogScanResult seq = sequential(log, reg, o);
+        QVERIFY(seq.epochs > 2900);
+        for (unsigned threads : {1u, 2u, 3u, 7u}) {
+            const LogScanResult par = scanLog(log, reg, o, threads, 1000);
+            QCOMPARE(par.segments, threads);
+            expectSame(par, seq);
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestLogScan)
+#include "tst_log_scan.moc"
