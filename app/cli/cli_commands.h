@@ -16,5 +16,11 @@ int cmdEpochs(const CliContext &ctx, int argc, char **argv);
 int cmdStats(const CliContext &ctx, int argc, char **argv);
 int cmdSchema(const CliContext &ctx, int argc, char **argv);
 int cmdEncode(const CliContext &ctx, int argc, char **argv);
+// Link commands (cmd_link.cpp): live receivers over serial/TCP, replay, recording.
+int cmdPorts(const CliContext &ctx, int argc, char **argv);
+int cmdProbe(const CliContext &ctx, int argc, char **argv);
+int cmdMonitor(const CliContext &ctx, int argc, char **argv);
+int cmdRecord(const CliContext &ctx, int argc, char **argv);
+int cmdSend(const CliContext &ctx, int argc, char **argv);
 
 } // namespace gnss::cli

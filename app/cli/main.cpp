@@ -23,6 +23,15 @@ constexpr Command kCommands[] = {
         {"schema", gnss::cli::cmdSchema, "schema DIALECT   the dialect's settings schema as JSON"},
         {"encode", gnss::cli::cmdEncode,
          "encode DIALECT KEY=VALUE... | encode DIALECT --query KEY...   sentences to send"},
+        {"ports", gnss::cli::cmdPorts, "ports   serial ports, one JSON object each"},
+        {"probe", gnss::cli::cmdProbe,
+         "probe --port P [--baud B]   detect baud, dialect, model and firmware (JSON)"},
+        {"monitor", gnss::cli::cmdMonitor,
+         "monitor --port P|--tcp H:P|--replay FILE [--epochs] [--duration S]   live decode"},
+        {"record", gnss::cli::cmdRecord,
+         "record --port P|--tcp H:P --out FILE [--duration S]   FILE + FILE.idx"},
+        {"send", gnss::cli::cmdSend,
+         "send --port P|--tcp H:P [--baud B] SENTENCE...   replies and outcome per command"},
 };
 
 void usage(std::FILE *f) {

@@ -39,7 +39,7 @@ bool isStandardQuery(const Sentence &s) {
 
 } // namespace
 
-QString toString(CommandOutcome outcome) {
+QString outcomeName(CommandOutcome outcome) {
     const char *text = "";
     switch (outcome) {
     case CommandOutcome::Accepted:

@@ -36,7 +36,7 @@ enum class CommandOutcome {
     Failed,    // could not be written, or the follow-up (baud switch) failed: see `detail`
 };
 
-QString toString(CommandOutcome outcome);
+QString outcomeName(CommandOutcome outcome);
 
 struct CommandOptions {
     int timeoutMs = -1; // -1: the rule's
