@@ -1,0 +1,48 @@
+#pragma once
+// gnss-sim on a pseudo-terminal, for end-to-end link tests: starts it, reads the device path it
+// prints, stops it at the end. Tests QSKIP when gnss-sim is not built or lacks the dialect.
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QStringList>
+
+namespace gnss::link::test {
+
+inline QString simPath() {
+#ifdef GNSS_SIM_PATH
+    return QStringLiteral(GNSS_SIM_PATH);
+#else
+    return {};
+#endif
+}
+
+class SimProcess {
+public:
+    explicit SimProcess(const QStringList &args) {
+        proc.setProgram(simPath());
+        proc.setArguments(QStringList{"--pty"} + args);
+        proc.start();
+        if (!proc.waitForStarted(5000)) return;
+        QElapsedTimer t;
+        t.start();
+        while (!proc.canReadLine() && t.elapsed() < 5000 && proc.state() == QProcess::Running)
+            proc.waitForReadyRead(100);
+        device = QString::fromLocal8Bit(proc.readLine()).trimmed();
+        if (!device.startsWith("/dev/")) {
+            error = QString::fromLocal8Bit(proc.readAllStandardError());
+            device.clear();
+        }
+    }
+    ~SimProcess() { stop(); }
+    void stop() {
+        if (proc.state() == QProcess::NotRunning) return;
+        proc.terminate();
+        if (!proc.waitForFinished(3000)) proc.kill();
+    }
+    bool ok() const { return !device.isEmpty(); }
+
+    QProcess proc;
+    QString device;
+    QString error;
+};
+
+} // namespace gnss::link::test

@@ -1,0 +1,110 @@
+// gnss-cli's link commands end to end against gnss-sim on pseudo-terminals: probe finds each
+// simulated receiver at a baud it is not told, send reports outcomes (and refuses a malformed
+// sentence before sending anything), record + monitor --replay give back what was received.
+#include "sim_process.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using gnss::link::test::SimProcess;
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QByteArray out, err;
+};
+
+Run cli(const QStringList &args, int timeoutMs = 30000) {
+    QProcess p;
+    p.start(QStringLiteral(GNSS_CLI_PATH), args);
+    p.waitForFinished(timeoutMs);
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
+            p.readAllStandardError()};
+}
+
+#define REQUIRE_SIM(sim)                                                                           \
+    do {                                                                                           \
+        if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");                 \
+        if (!(sim).ok()) QSKIP(qPrintable("gnss-sim did not start: " + (sim).error));              \
+    } while (0)
+
+} // namespace
+
+class TstLinkCli : public QObject {
+    Q_OBJECT
+private slots:
+    void probeFindsEachReceiverAtAnUnknownBaud_data() {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<int>("baud");
+        QTest::newRow("nvs") << "nvs" << 57600;
+        QTest::newRow("geostar") << "geostar" << 19200;
+        QTest::newRow("nemerix") << "nemerix" << 4800;
+        QTest::newRow("nmea") << "nmea" << 38400;
+    }
+    void probeFindsEachReceiverAtAnUnknownBaud() {
+        QFETCH(QString, dialect);
+        QFETCH(int, baud);
+        SimProcess sim({"--dialect", dialect, "--baud", QString::number(baud)});
+        REQUIRE_SIM(sim);
+        const Run r = cli({"probe", "--port", sim.device});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(o.value("baud").toInt(), baud);
+        QCOMPARE(o.value("dialect").toString(), dialect);
+        if (dialect != "nmea") QVERIFY2(!o.value("firmware").toString().isEmpty(), r.out);
+    }
+
+    void malformedSentenceIsRefusedBeforeAnythingIsSent() {
+        const Run r = cli({"send", "--port", "/dev/null-no-such-port", "PNVGVER", "PN$VG"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("nothing was sent"), r.err.constData());
+        QVERIFY(!r.err.contains("Cannot open")); // the port was never opened
+    }
+
+    void sendPrintsRepliesAndOutcomes() {
+        SimProcess sim({"--dialect", "nvs"});
+        REQUIRE_SIM(sim);
+        const Run r = cli({"send", "--port", sim.device, "--baud", "115200", "PNVGVER",
+                           "$PNVGRTK,PVTRATE,99"});
+        QCOMPARE(r.exitCode, 1); // one refused
+        const QList<QByteArray> lines = r.out.trimmed().split('\n');
+        QCOMPARE(lines.size(), 2);
+        const QJsonObject first = QJsonDocument::fromJson(lines[0]).object();
+        QCOMPARE(first.value("sentence").toString(), QStringLiteral("$PNVGVER*4E"));
+        QCOMPARE(first.value("outcome").toString(), QStringLiteral("accepted"));
+        QVERIFY(first.value("replies").toArray().first().toString().startsWith("$PNVGVER,NVS"));
+        QCOMPARE(QJsonDocument::fromJson(lines[1]).object().value("outcome").toString(),
+                 QStringLiteral("refused"));
+        QVERIFY(r.err.contains("< $PNVGVER,NVS"));
+    }
+
+    void recordThenReplayGivesBackTheSameSentences() {
+        SimProcess sim({"--dialect", "nmea"});
+        REQUIRE_SIM(sim);
+        QTemporaryDir dir;
+        const QString log = dir.filePath("run.nmea");
+        const Run rec = cli({"record", "--port", sim.device, "--out", log, "--duration", "2.5"});
+        QVERIFY2(rec.exitCode == 0, rec.err.constData());
+        QFile f(log);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray bytes = f.readAll();
+        QVERIFY(bytes.size() > 300);
+        QVERIFY(QFile::exists(log + ".idx"));
+
+        const Run decoded = cli({"decode", log});
+        const Run replayed = cli({"monitor", "--replay", log, "--fast"});
+        QVERIFY2(replayed.exitCode == 0, replayed.err.constData());
+        QCOMPARE(replayed.out, decoded.out);
+        const Run epochs = cli({"monitor", "--replay", log, "--fast", "--epochs"});
+        QVERIFY(epochs.out.count('\n') >= 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TstLinkCli)
+#include "tst_link_cli.moc"

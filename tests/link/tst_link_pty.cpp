@@ -1,0 +1,215 @@
+// End to end: the link layer against gnss-sim on pseudo-terminals, through the real QSerialPort.
+// Baud detection from every rate, vendor detection per dialect, command outcomes (accepted,
+// refused, timed out via the simulator's faults), a baud change round trip, reconnect after the
+// simulator hangs up and comes back (same device path, now a new pseudo-terminal), recording
+// byte-exact.
+#include "baud_detector.h"
+#include "command_queue.h"
+#include "connection.h"
+#include "dialects.h"
+#include "recording.h"
+#include "serial_transport.h"
+#include "sim_process.h"
+#include "vendor_detector.h"
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace gnss;
+using namespace gnss::link;
+using gnss::link::test::SimProcess;
+
+namespace gnss::link {
+char *toString(CommandOutcome o) {
+    return qstrdup(qPrintable(outcomeName(o)));
+}
+} // namespace gnss::link
+
+namespace {
+
+const DialectRegistry &registry() {
+    static const DialectRegistry r = makeBuiltinRegistry();
+    return r;
+}
+
+#define REQUIRE_SIM(sim)                                                                           \
+    do {                                                                                           \
+        if (test::simPath().isEmpty()) QSKIP("gnss-sim is not built");                             \
+        if (!(sim).ok()) QSKIP(qPrintable("gnss-sim did not start: " + (sim).error));              \
+    } while (0)
+
+SerialSettings at(const QString &device, int baud) {
+    SerialSettings s;
+    s.portName = device;
+    s.baud = baud;
+    return s;
+}
+
+// Runs the queue until it has `n` results.
+bool waitForHistory(CommandQueue &q, int n, int ms) {
+    return QTest::qWaitFor([&] { return q.history().size() >= n; }, ms);
+}
+
+} // namespace
+
+class TstLinkPty : public QObject {
+    Q_OBJECT
+private slots:
+    void baudDetectionFindsTheReceiverAtEveryRate_data() {
+        QTest::addColumn<int>("rate");
+        for (int r : {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600})
+            QTest::newRow(qPrintable(QString::number(r))) << r;
+    }
+    void baudDetectionFindsTheReceiverAtEveryRate() {
+        QFETCH(int, rate);
+        SimProcess sim({"--dialect", "nvs", "--baud", QString::number(rate), "--seed", "2"});
+        REQUIRE_SIM(sim);
+        SerialTransport port(at(sim.device, 9600));
+        QVERIFY2(port.open(), qPrintable(port.errorString()));
+        BaudDetector d(&port);
+        d.setListenMs(500); // NVS: 5 Hz
+        QSignalSpy finished(&d, &BaudDetector::finished);
+        d.start();
+        QVERIFY(finished.wait(20000));
+        QVERIFY2(d.result().found, qPrintable(d.result().error));
+        QCOMPARE(d.result().baud, rate);
+        QCOMPARE(port.baud(), rate);
+    }
+
+    void vendorDetectionNamesEachDialect_data() {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<QString>("model");
+        for (const char *d : {"nvs", "geostar", "nemerix", "nmea"})
+            QTest::newRow(d) << d << QString();
+    }
+    void vendorDetectionNamesEachDialect() {
+        QFETCH(QString, dialect);
+        SimProcess sim({"--dialect", dialect, "--baud", "38400"});
+        REQUIRE_SIM(sim);
+        SerialTransport port(at(sim.device, 38400));
+        QVERIFY2(port.open(), qPrintable(port.errorString()));
+        VendorDetector v(&port, registry());
+        QSignalSpy finished(&v, &VendorDetector::finished);
+        v.start();
+        QVERIFY(finished.wait(10000));
+        const VendorIdentity &id = v.result();
+        QVERIFY2(id.found, qPrintable(id.error));
+        QCOMPARE(id.dialect, dialect);
+        if (dialect != "nmea") { // a plain NMEA receiver has no identity sentence
+            QVERIFY2(!id.reply.isEmpty(), qPrintable(id.method));
+            QVERIFY2(!id.firmware.isEmpty(), qPrintable(id.replyJson));
+        }
+    }
+
+    void commandOutcomesThroughTheSimulator() {
+        SimProcess sim({"--dialect", "nvs", "--faults", "noreply=PNVGCFG"});
+        REQUIRE_SIM(sim);
+        SerialTransport port(at(sim.device, 115200));
+        QVERIFY2(port.open(), qPrintable(port.errorString()));
+        CommandQueue q(&port);
+        q.setDialect(registry().find("nvs"));
+        q.enqueue("PNVGVER");
+        q.enqueue("PNVGRTK,PVTRATE,99"); // out of range: the reply carries the rate in force
+        CommandOptions quick;
+        quick.timeoutMs = 300;
+        quick.retries = 1;
+        q.enqueue("PNVGCFG,W", quick); // the simulator's fault: never answered
+        QVERIFY(waitForHistory(q, 3, 10000));
+        QCOMPARE(q.history()[0].outcome, CommandOutcome::Accepted);
+        QVERIFY(q.history()[0].replies.first().startsWith("$PNVGVER,NVS"));
+        QCOMPARE(q.history()[1].outcome, CommandOutcome::Refused);
+        QVERIFY2(q.history()[1].detail.contains("PNVGRTK"), qPrintable(q.history()[1].detail));
+        QCOMPARE(q.history()[2].outcome, CommandOutcome::TimedOut);
+        QCOMPARE(q.history()[2].attempts, 2);
+    }
+
+    void baudChangeRoundTrip() {
+        SimProcess sim({"--dialect", "nvs"});
+        REQUIRE_SIM(sim);
+        SerialTransport port(at(sim.device, 115200));
+        QVERIFY2(port.open(), qPrintable(port.errorString()));
+        CommandQueue q(&port);
+        q.setDialect(registry().find("nvs"));
+        q.enqueue("PNVGRZA,1,38400,1");
+        QVERIFY(waitForHistory(q, 1, 10000));
+        QCOMPARE(q.history()[0].outcome, CommandOutcome::Accepted);
+        QCOMPARE(q.history()[0].baudAfter, 38400);
+        QCOMPARE(port.baud(), 38400);
+        // Commands work at the new speed, and the way back works too.
+        q.enqueue("PNVGVER");
+        q.enqueue("PNVGRZA,1,115200,1");
+        QVERIFY(waitForHistory(q, 3, 10000));
+        QCOMPARE(q.history()[1].outcome, CommandOutcome::Accepted);
+        QCOMPARE(q.history()[2].outcome, CommandOutcome::Accepted);
+        QCOMPARE(port.baud(), 115200);
+    }
+
+    void reconnectAfterTheSimulatorHangsUpAndComesBack() {
+        QTemporaryDir dir;
+        const QString link = dir.filePath("ttyGNSS"); // a stable name for a changing device
+        SimProcess first({"--dialect", "nmea", "--faults", "hangup=2"});
+        REQUIRE_SIM(first);
+        QVERIFY(QFile::link(first.device, link));
+
+        Connection conn(std::make_unique<SerialTransport>(at(link, 9600)), registry());
+        const QString log = dir.filePath("run.nmea");
+        QVERIFY(conn.startRecording(log));
+        QByteArray received;
+        connect(conn.transport(), &Transport::bytesReceived,
+                [&](const QByteArray &b) { received += b; });
+        QSignalSpy lost(&conn, &Connection::linkLost), back(&conn, &Connection::linkRestored);
+        QVERIFY(conn.open());
+        QVERIFY2(lost.wait(8000), "the hang-up was not noticed");
+        QVERIFY(conn.isReconnecting());
+        const qsizetype before = received.size();
+        QVERIFY(before > 0);
+
+        QTest::qWait(1500); // a couple of failed attempts while nothing is there
+        SimProcess second({"--dialect", "nmea", "--seed", "7"});
+        QVERIFY(second.ok());
+        QFile::remove(link);
+        QVERIFY(QFile::link(second.device, link));
+        QVERIFY2(back.wait(5000), "did not reconnect");
+        QTRY_VERIFY_WITH_TIMEOUT(received.size() > before + 200, 5000);
+        conn.close();
+        conn.stopRecording();
+
+        Recording r;
+        QString error;
+        QVERIFY2(loadRecording(log, r, error), qPrintable(error));
+        QCOMPARE(r.bytes, received); // bytes logged == bytes received, across the gap
+        int gaps = 0;
+        for (const auto &e : r.events) gaps += e.kind == RecordedEvent::Kind::Gap;
+        QCOMPARE(gaps, 2); // lost, back
+    }
+
+    void recordingIsByteExact() {
+        SimProcess sim({"--dialect", "nvs", "--faults", "binary=0.3,badcs=0.05"});
+        REQUIRE_SIM(sim);
+        QTemporaryDir dir;
+        Connection conn(std::make_unique<SerialTransport>(at(sim.device, 115200)), registry());
+        const QString log = dir.filePath("rec.nmea");
+        QVERIFY(conn.startRecording(log));
+        QByteArray received;
+        connect(conn.transport(), &Transport::bytesReceived,
+                [&](const QByteArray &b) { received += b; });
+        QVERIFY(conn.open());
+        conn.commands()->enqueue("PNVGVER");
+        QTest::qWait(2000);
+        conn.close();
+        conn.stopRecording();
+        Recording r;
+        QString error;
+        QVERIFY2(loadRecording(log, r, error), qPrintable(error));
+        QVERIFY(received.size() > 1000);
+        QCOMPARE(r.bytes, received);
+        QCOMPARE(qint64(conn.bytesReceived()), qint64(received.size()));
+        QCOMPARE(r.events.size(), std::size_t(1));
+        QCOMPARE(r.events[0].text, QStringLiteral("$PNVGVER*4E"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstLinkPty)
+#include "tst_link_pty.moc"
