@@ -116,7 +116,10 @@ void Receiver::flushDue() {
     while (!pending_.empty() && pending_.front().at <= now_ + 1e-9) {
         Pending p = std::move(pending_.front());
         pending_.erase(pending_.begin());
-        if (!p.text.empty()) write(p.text + "\r\n");
+        if (!p.text.empty()) {
+            takeLineTime(p.text.size() + 2, false);
+            write(p.text + "\r\n");
+        }
         if (p.thenBaud > 0) baud_ = p.thenBaud;
     }
 }
@@ -132,6 +135,7 @@ void Receiver::send(const std::string &sentence) {
         char &c = line.back();
         c = c == '0' ? '1' : (c == 'F' ? 'E' : static_cast<char>(c == '9' ? 'A' : c + 1));
     }
+    if (!takeLineTime(line.size() + 2, true)) return; // more than the line speed carries
     if (f.truncate > 0 && u(faultRng_) < f.truncate && line.size() > 8) {
         std::uniform_int_distribution<std::size_t> cut(4, line.size() - 4);
         write(line.substr(0, cut(faultRng_))); // no terminator: the next '$' cuts it
@@ -147,6 +151,18 @@ void Receiver::reply(const Sentence &command, const std::string &sentence, int t
     const double at = now_ + f.slowReplyMs / 1000.0;
     pending_.push_back({at, suppressed ? std::string() : sentence, thenBaud});
     flushDue();
+}
+
+bool Receiver::takeLineTime(std::size_t bytes, bool mayDrop) {
+    if (baud_ <= 0) return true;
+    const double cost = static_cast<double>(bytes) * 10.0 / baud_; // start + 8 data + stop
+    const double start = std::max(lineFreeAt_, now_);
+    if (mayDrop && start - now_ + cost > kTxBuffer * 10.0 / baud_) {
+        ++dropped_;
+        return false;
+    }
+    lineFreeAt_ = start + cost;
+    return true;
 }
 
 void Receiver::write(std::string bytes) {

@@ -64,6 +64,13 @@ public:
     int lineBaud() const { return lineBaud_; }
     bool baudMismatch() const { return lineBaud_ > 0 && lineBaud_ != baud_; }
 
+    // Output sentences dropped because the line speed could not carry them (bytes per second =
+    // baud / 10): the receiver's UART transmit buffer holds kTxBuffer bytes not yet on the
+    // line; a sentence that does not fit is dropped (replies are never dropped). A list that
+    // needs more than the line speed first fills the buffer, then loses sentences every epoch.
+    std::int64_t droppedSentences() const { return dropped_; }
+    static constexpr double kTxBuffer = 4096;
+
     // The hang-up fault fired: the transport should close the line.
     bool hungUp() const { return hungUp_; }
     // Simulated seconds since start.
@@ -132,6 +139,8 @@ private:
     void runEpoch();
     void flushDue();
     void write(std::string bytes);
+    // Takes the line time of `bytes`; false (nothing taken) when `mayDrop` and it does not fit.
+    bool takeLineTime(std::size_t bytes, bool mayDrop);
     std::string garble(std::size_t n);
 
     const Dialect &dialect_;
@@ -144,6 +153,8 @@ private:
     int baud_;
     int lineBaud_ = 0;
     double now_ = 0;
+    double lineFreeAt_ = 0; // when the UART has sent everything queued so far
+    std::int64_t dropped_ = 0;
     double nextEpoch_ = 0;
     double trackingSince_ = 0;
     double ttff_ = 0;
