@@ -7,6 +7,8 @@
 #include <QElapsedTimer>
 #include <QProcess>
 #include <QSerialPort>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QTest>
 
 using namespace gnss;
@@ -126,6 +128,139 @@ private slots:
         sim.port.setBaudRate(9600);
         sim.read(1100);
         QVERIFY(summarize(sim.read(1500), "nvs").byType.count("RMC"));
+    }
+    void geostarReceiverObeysItsCommandsOnThePort() {
+        SimProcess sim({"--dialect", "geostar", "--seed", "5"});
+        QVERIFY(sim.open(115200));
+        sim.read(300);
+        auto s = summarize(sim.read(2600), "geostar");
+        QCOMPARE(s.checksumErrors, 0);
+        QCOMPARE(s.decodeErrors, 0);
+        int gga = s.byType.count("GGA") ? s.byType.at("GGA") : 0;
+        QVERIFY2(gga >= 2 && gga <= 3, QByteArray::number(gga)); // 1 Hz
+        QVERIFY(s.byType.count("GSA") && s.byType.count("GSV") && s.byType.count("DTM"));
+        QVERIFY(!s.byType.count("RMC"));
+        // NQUERY answered with the output list; RMC ON and RATE05 change it.
+        sim.send("GPSGG,NQUERY");
+        s = summarize(sim.read(600), "geostar");
+        QVERIFY(!s.all("GPSGG").empty());
+        sim.send("GPSGG,RMC ON");
+        sim.send("GPSGG,RATE05");
+        sim.send("GPSGG,NMEAV4");
+        sim.read(600);
+        s = summarize(sim.read(2000), "geostar");
+        gga = s.byType.count("GGA") ? s.byType.at("GGA") : 0;
+        QVERIFY2(gga >= 8 && gga <= 11, QByteArray::number(gga)); // 5 Hz
+        QVERIFY(s.byAddress.count("GNRMC") && s.byAddress.count("GLGSV"));
+        // BDR009: no answer, the port switches; then only 9600 reads sentences.
+        sim.send("GPSGG,BDR009");
+        sim.read(300);
+        QCOMPARE(summarize(sim.read(1200), "geostar").lines.size(), std::size_t(0));
+        sim.port.setBaudRate(9600);
+        sim.read(600);
+        sim.send("GPSGG,RQUERY");
+        s = summarize(sim.read(1500), "geostar");
+        QVERIFY(s.byType.count("GGA"));
+        QVERIFY(!s.all("GPSGG").empty());
+    }
+    void nemerixReceiverObeysItsCommandsOnThePort() {
+        SimProcess sim({"--dialect", "nemerix", "--seed", "6"});
+        QVERIFY(sim.open(9600));
+        sim.read(300);
+        auto s = summarize(sim.read(3200), "nemerix");
+        QCOMPARE(s.checksumErrors, 0);
+        QCOMPARE(s.decodeErrors, 0);
+        const int gga = s.byType.count("GGA") ? s.byType.at("GGA") : 0;
+        QVERIFY2(gga >= 3 && gga <= 4, QByteArray::number(gga)); // 1 Hz
+        QVERIFY(s.byType.count("RMC") && s.byType.count("VTG") && !s.byType.count("ZDA"));
+        // Nemerix takes commands without a checksum too.
+        sim.port.write("$PNMRX103,ZDA,1,GGA,0\r\n");
+        sim.port.waitForBytesWritten(1000);
+        sim.read(1100);
+        s = summarize(sim.read(2100), "nemerix");
+        QVERIFY(s.byType.count("ZDA") && !s.byType.count("GGA"));
+        sim.send("PNMRX603");
+        s = summarize(sim.read(800), "nemerix");
+        QCOMPARE(s.all("PNMRX603").size(), std::size_t(5));
+        sim.send("PNMRX100,0,4800,0");
+        sim.read(300);
+        QCOMPARE(summarize(sim.read(1200), "nemerix").lines.size(), std::size_t(0));
+        sim.port.setBaudRate(4800);
+        sim.read(1100);
+        QVERIFY(summarize(sim.read(2100), "nemerix").byType.count("RMC"));
+    }
+    void tcpServesOneClientAtATime() {
+        quint16 port = 0;
+        {
+            QTcpServer probe; // a free port
+            QVERIFY(probe.listen(QHostAddress::LocalHost));
+            port = probe.serverPort();
+        }
+        QProcess p;
+        p.start(QStringLiteral(GNSS_SIM_PATH),
+                {"--dialect", "geostar", "--tcp", QString::number(port), "--speed", "5"});
+        QVERIFY(p.waitForStarted());
+        QVERIFY(p.waitForReadyRead(3000));
+        QCOMPARE(p.readLine().trimmed(), QByteArray("127.0.0.1:") + QByteArray::number(port));
+        QTcpSocket sock;
+        sock.connectToHost(QHostAddress::LocalHost, port);
+        QVERIFY(sock.waitForConnected(3000));
+        QByteArray got;
+        QElapsedTimer t;
+        t.start();
+        while (t.elapsed() < 1500)
+            if (sock.waitForReadyRead(100)) got += sock.readAll();
+        auto s = summarize(got.toStdString(), "geostar");
+        QVERIFY(s.byType.count("GGA") >= 1);
+        QCOMPARE(s.checksumErrors, 0);
+        sock.write(QByteArray::fromStdString(buildSentence("GPSGG,NQUERY") + "\r\n"));
+        got.clear();
+        t.restart();
+        while (t.elapsed() < 800)
+            if (sock.waitForReadyRead(100)) got += sock.readAll();
+        QVERIFY(got.contains("$GPSGG,NQUERY,1,"));
+        sock.disconnectFromHost();
+        p.terminate();
+        QVERIFY(p.waitForFinished(3000));
+    }
+    void hangupFaultDropsTheLine_data() {
+        QTest::addColumn<QString>("transport");
+        QTest::newRow("pty") << "pty";
+        QTest::newRow("tcp") << "tcp";
+    }
+    void hangupFaultDropsTheLine() {
+        QFETCH(QString, transport);
+        if (transport == "pty") {
+            SimProcess sim({"--dialect", "nemerix", "--faults", "hangup=1.5"});
+            QVERIFY(sim.open(9600));
+            QVERIFY(summarize(sim.read(1200), "nemerix").byType.count("GGA"));
+            QVERIFY(sim.proc.waitForFinished(3000)); // the simulator closes the line and ends
+            QCOMPARE(sim.proc.exitCode(), 0);
+            return;
+        }
+        quint16 port = 0;
+        {
+            QTcpServer probe;
+            QVERIFY(probe.listen(QHostAddress::LocalHost));
+            port = probe.serverPort();
+        }
+        QProcess p;
+        p.start(QStringLiteral(GNSS_SIM_PATH),
+                {"--dialect", "nmea", "--tcp", QString::number(port), "--faults", "hangup=1.5"});
+        QVERIFY(p.waitForStarted());
+        QVERIFY(p.waitForReadyRead(3000));
+        QTcpSocket sock;
+        sock.connectToHost(QHostAddress::LocalHost, port);
+        QVERIFY(sock.waitForConnected(3000));
+        QElapsedTimer t;
+        t.start();
+        QByteArray got;
+        while (sock.state() == QAbstractSocket::ConnectedState && t.elapsed() < 4000)
+            if (sock.waitForReadyRead(100)) got += sock.readAll();
+        QCOMPARE(sock.state(), QAbstractSocket::UnconnectedState); // the peer hung up
+        QVERIFY(t.elapsed() < 3000);
+        QVERIFY(got.contains("GGA"));
+        QVERIFY(p.waitForFinished(3000));
     }
     void stdoutModeStopsWhenStdinCloses() {
         QProcess p;
