@@ -5,6 +5,7 @@
 // On a pseudo-terminal the line speed the other side sets (tcsetattr on the slave, which the
 // master sees with tcgetattr) is handed to the receiver: while it differs from the receiver's
 // baud the receiver sends garbage and ignores input, as a UART at the wrong speed would.
+// SIGHUP power-cycles the simulated receiver (settings come back from its flash).
 #include "sim_args.h"
 
 #include <arpa/inet.h>
@@ -29,8 +30,12 @@ using namespace gnss;
 namespace {
 
 volatile std::sig_atomic_t g_stop = 0;
+volatile std::sig_atomic_t g_powerCycle = 0;
 void onSignal(int) {
     g_stop = 1;
+}
+void onHangupSignal(int) {
+    g_powerCycle = 1;
 }
 
 double monotonicSeconds() {
@@ -114,6 +119,7 @@ int main(int argc, char **argv) {
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
     std::signal(SIGPIPE, SIG_IGN);
+    std::signal(SIGHUP, onHangupSignal); // SIGHUP: simulated power cycle (settings from flash)
 
     int ioFd = -1;     // where the receiver's bytes go and commands come from
     int listenFd = -1; // TCP only
@@ -209,6 +215,10 @@ int main(int argc, char **argv) {
             if (tcgetattr(ioFd, &t) == 0) rx->setLineBaud(baudOf(cfgetospeed(&t)));
         }
 
+        if (g_powerCycle) {
+            g_powerCycle = 0;
+            rx->powerCycle();
+        }
         const double now = monotonicSeconds();
         rx->advance((now - last) * args.speed);
         last = now;

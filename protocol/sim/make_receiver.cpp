@@ -1,14 +1,16 @@
 // The simulator's receivers by dialect id: one line per receiver family.
 #include "nmea_receiver.h"
+#include "nvs_receiver.h"
 #include "receiver.h"
 
 namespace gnss::sim {
 
 std::vector<std::string_view> simulatedDialects() {
-    return {"nmea"};
+    return {"nvs", "nmea"};
 }
 
 std::unique_ptr<Receiver> makeReceiver(std::string_view dialect, const SimOptions &options) {
+    if (dialect == "nvs") return std::make_unique<NvsReceiver>(options);
     if (dialect == "nmea") return std::make_unique<NmeaReceiver>(options);
     return nullptr;
 }

@@ -51,7 +51,7 @@ void Receiver::advance(double seconds) {
     while (!hungUp_) {
         double next = nextEpoch_;
         for (const Pending &p : pending_) next = std::min(next, p.at);
-        if (next > end) break;
+        if (next > end + 1e-9) break; // (epoch grids are sums of 0.1, 0.2: allow rounding)
         now_ = std::max(now_, next);
         if (options_.faults.hangupAfter >= 0 && now_ >= options_.faults.hangupAfter) break;
         flushDue();
@@ -76,9 +76,10 @@ void Receiver::reset(ResetKind kind) {
     ttff_ = ttffOf(kind);
     trackingSince_ = now_;
     lastFix_ = FixKind::None;
-    pending_.erase(std::remove_if(pending_.begin(), pending_.end(),
-                                  [](const Pending &p) { return p.thenBaud == 0; }),
-                   pending_.end());
+    if (kind == ResetKind::PowerCycle) // a reply not yet out is lost with the power
+        pending_.erase(std::remove_if(pending_.begin(), pending_.end(),
+                                      [](const Pending &p) { return p.thenBaud == 0; }),
+                       pending_.end());
     onReset(kind);
     rescheduleEpochs();
 }

@@ -202,6 +202,9 @@ SkySnapshot SkyModel::update(double time, const UseMask &mask, FixKind fix, doub
         s.system = o.system;
         s.prn = o.prn;
         s.glonassChannel = o.glonassChannel;
+        if ((o.system == Constellation::Galileo && !mask.galileoHardware) ||
+            (o.system == Constellation::BeiDou && !mask.beidouHardware))
+            continue;
         look(o, time, s.elevation, s.azimuth);
         if (s.elevation <= 0) continue;
         const double sinEl = std::sin(s.elevation * kDeg);
@@ -256,6 +259,24 @@ SkySnapshot SkyModel::update(double time, const UseMask &mask, FixKind fix, doub
     snap.altMsl = observer_.altMsl + snap.errUp;
     snap.geoidSep = observer_.geoidSep;
     return snap;
+}
+
+void geodeticToEcef(double latDeg, double lonDeg, double height, double xyz[3]) {
+    Observer o;
+    o.latDeg = latDeg;
+    o.lonDeg = lonDeg;
+    o.altMsl = height;
+    o.geoidSep = 0;
+    ecefOfObserver(o, xyz[0], xyz[1], xyz[2]);
+}
+
+void offsetGeodetic(double &latDeg, double &lonDeg, double &height, double north, double east,
+                    double up) {
+    const double phi = latDeg * kDeg;
+    const double w = 1 - kWgsE2 * std::sin(phi) * std::sin(phi);
+    latDeg += north / (kWgsA * (1 - kWgsE2) / std::pow(w, 1.5)) / kDeg;
+    lonDeg += east / (kWgsA / std::sqrt(w) * std::cos(phi)) / kDeg;
+    height += up;
 }
 
 Dops computeDops(const std::vector<SimSatellite> &used) {

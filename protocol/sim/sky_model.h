@@ -48,6 +48,8 @@ struct Dops {
 // Which satellites the receiver may use (the receiver's settings).
 struct UseMask {
     bool gps = true, glonass = true, galileo = true, beidou = true, sbas = true;
+    // Systems the receiver's hardware cannot receive do not appear at all (not even in GSV).
+    bool galileoHardware = true, beidouHardware = true;
     double elevationMask = 5;    // degrees
     double snrMask = 0;          // dB-Hz
     bool sbasInSolution = false; // SBAS ranging (most receivers only use SBAS corrections)
@@ -105,6 +107,12 @@ private:
     std::mt19937 rng_;
     double errN_ = 0, errE_ = 0, errU_ = 0, lastTime_ = -1;
 };
+
+// WGS 84 geodetic (degrees, ellipsoidal height in metres) → ECEF metres.
+void geodeticToEcef(double latDeg, double lonDeg, double height, double xyz[3]);
+// Geodetic position `north`/`east`/`up` metres away from (latDeg, lonDeg, height).
+void offsetGeodetic(double &latDeg, double &lonDeg, double &height, double north, double east,
+                    double up);
 
 // Least-squares DOPs from unit line-of-sight vectors (el/az in degrees). Fewer than 4: 99.9.
 Dops computeDops(const std::vector<SimSatellite> &used);

@@ -91,6 +91,42 @@ private slots:
         sim.read(300);
         QVERIFY(summarize(sim.read(1500)).byType.count("GGA"));
     }
+    void nvsReceiverObeysItsCommandsOnThePort() {
+        SimProcess sim({"--dialect", "nvs", "--seed", "4"});
+        QVERIFY(sim.open(115200));
+        sim.read(500);
+        auto s = summarize(sim.read(2000), "nvs");
+        QCOMPARE(s.checksumErrors, 0);
+        QCOMPARE(s.decodeErrors, 0);
+        int gga = s.byType.count("GGA") ? s.byType.at("GGA") : 0;
+        QVERIFY2(gga >= 9 && gga <= 11, QByteArray::number(gga)); // 5 Hz
+        QVERIFY(s.byType.count("PNVGBSS") && s.byType.count("GSV"));
+        // PVT rate 1 Hz: answered, and the output slows down.
+        sim.send("PNVGRTK,PVTRATE,1");
+        s = summarize(sim.read(700), "nvs");
+        const auto rtk = s.all("PNVGRTK");
+        QVERIFY(!rtk.empty());
+        QCOMPARE(QString::fromStdString(rtk.front()),
+                 QString::fromStdString(buildSentence("PNVGRTK,PVTRATE,1")));
+        s = summarize(sim.read(3000), "nvs");
+        gga = s.byType.count("GGA") ? s.byType.at("GGA") : 0;
+        QVERIFY2(gga >= 2 && gga <= 4, QByteArray::number(gga));
+        // Output list: only RMC and PNVGDOP from now on.
+        sim.send("PNVGRZB");
+        sim.send("PNVGRZB,RMC,1,PNVGDOP,1");
+        sim.read(1200);
+        s = summarize(sim.read(2100), "nvs");
+        QVERIFY(!s.byType.count("GGA"));
+        QVERIFY(s.byType.count("RMC") && s.byType.count("PNVGDOP"));
+        // Baud change: the answer comes at 115200, then only 9600 reads sentences.
+        sim.send("PNVGRZA,0,9600,1");
+        s = summarize(sim.read(500), "nvs");
+        QVERIFY(!s.all("PNVGRZA").empty());
+        QCOMPARE(summarize(sim.read(1500), "nvs").lines.size(), std::size_t(0));
+        sim.port.setBaudRate(9600);
+        sim.read(1100);
+        QVERIFY(summarize(sim.read(1500), "nvs").byType.count("RMC"));
+    }
     void stdoutModeStopsWhenStdinCloses() {
         QProcess p;
         p.start(QStringLiteral(GNSS_SIM_PATH), {"--dialect", "nmea", "--stdout", "--speed", "10"});
