@@ -1,0 +1,119 @@
+#include "baud_detector.h"
+
+#include "core/sentence.h"
+#include "transport.h"
+
+#include <QStringList>
+
+namespace gnss::link {
+
+BaudDetector::BaudDetector(Transport *transport, QObject *parent)
+    : QObject(parent), transport_(transport) {
+    timer_.setSingleShot(true);
+}
+
+QList<int> BaudDetector::likelyRates(int current) {
+    // Receivers' defaults first (115200: NVS, GeoStar; 9600: NMEA, Nemerix), then the rest.
+    QList<int> rates{115200, 9600, 38400, 57600, 4800, 19200, 230400, 460800, 921600};
+    if (current > 0) {
+        rates.removeAll(current);
+        rates.prepend(current);
+    }
+    return rates;
+}
+
+void BaudDetector::start() {
+    result_ = {};
+    if (candidates_.isEmpty()) candidates_ = likelyRates(transport_ ? transport_->baud() : 0);
+    if (!transport_ || !transport_->isOpen() || transport_->baud() <= 0) {
+        result_.error = tr("Baud detection needs an open serial port");
+        emit finished(result_);
+        return;
+    }
+    running_ = true;
+    index_ = -1;
+    bytesConnection_ = connect(transport_, &Transport::bytesReceived, this, &BaudDetector::onBytes);
+    tryNext();
+}
+
+void BaudDetector::cancel() {
+    if (!running_) return;
+    result_.error = tr("Baud detection cancelled");
+    done(false);
+}
+
+void BaudDetector::tryNext() {
+    if (!running_) return;
+    if (++index_ >= candidates_.size()) return done(false);
+    const int baud = candidates_[index_];
+    result_.tried.push_back({baud, 0, 0, 0});
+    emit tryingRate(baud);
+    listening_ = false;
+    transport_->setBaud(baud);
+    // Bytes already on their way were sent at the old speed: let them pass, then drop them.
+    timer_.disconnect();
+    connect(&timer_, &QTimer::timeout, this, [this] {
+        if (!running_) return;
+        transport_->discardInput();
+        framer_.reset();
+        listening_ = true;
+        if (!probe_.isEmpty()) transport_->write(probe_ + "\r\n");
+        timer_.disconnect();
+        connect(&timer_, &QTimer::timeout, this, &BaudDetector::rateDone);
+        timer_.start(listenMs_);
+    });
+    timer_.start(settleMs_);
+}
+
+void BaudDetector::onBytes(const QByteArray &bytes) {
+    if (!running_ || !listening_ || result_.tried.empty()) return;
+    BaudAttempt &a = result_.tried.back();
+    a.bytes += bytes.size();
+    framer_.feed(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
+                 [&](std::string_view line) {
+                     Sentence s;
+                     if (s.parse(line) && s.checksum() == ChecksumStatus::Ok)
+                         ++a.validSentences;
+                     else
+                         ++a.badSentences;
+                 });
+    if (a.validSentences >= required_) {
+        timer_.stop();
+        result_.baud = a.baud;
+        done(true);
+    }
+}
+
+void BaudDetector::rateDone() {
+    tryNext();
+}
+
+void BaudDetector::done(bool found) {
+    running_ = false;
+    listening_ = false;
+    timer_.stop();
+    disconnect(bytesConnection_);
+    result_.found = found;
+    if (!found && result_.error.isEmpty()) {
+        QStringList rates;
+        qint64 bytes = 0;
+        for (const auto &a : result_.tried) {
+            rates << QString::number(a.baud);
+            bytes += a.bytes;
+        }
+        const QString list = rates.join(QStringLiteral(", "));
+        result_.error =
+                bytes == 0
+                        ? tr("No data at any rate (tried %1 baud): check the cable, the port and "
+                             "that the receiver is powered")
+                                  .arg(list)
+                        : tr("Data but never a valid sentence at %1 baud: wrong framing (data "
+                             "bits, parity, stop bits) or the receiver is not sending NMEA?")
+                                  .arg(list);
+        // Leave the port where it started.
+        if (transport_ && !result_.tried.empty()) transport_->setBaud(result_.tried.front().baud);
+    }
+    emit finished(result_);
+}
+
+} // namespace gnss::link

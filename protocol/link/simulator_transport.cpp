@@ -1,0 +1,66 @@
+#include "simulator_transport.h"
+
+#include "receiver.h"
+
+namespace gnss::link {
+
+SimulatorTransport::SimulatorTransport(QString dialect, std::uint32_t seed, int lineBaud,
+                                       QObject *parent)
+    : Transport(parent), dialect_(std::move(dialect)), seed_(seed), lineBaud_(lineBaud) {
+    timer_.setInterval(20);
+    connect(&timer_, &QTimer::timeout, this, &SimulatorTransport::tick);
+}
+
+SimulatorTransport::~SimulatorTransport() = default;
+
+bool SimulatorTransport::open() {
+    sim::SimOptions options;
+    options.seed = seed_;
+    receiver_ = sim::makeReceiver(dialect_.toStdString(), options);
+    if (!receiver_) {
+        fail(tr("The simulator has no receiver of dialect '%1'").arg(dialect_), false);
+        return false;
+    }
+    if (lineBaud_ <= 0) lineBaud_ = receiver_->baud();
+    receiver_->setLineBaud(lineBaud_);
+    clock_.start();
+    timer_.start();
+    setState(State::Open);
+    return true;
+}
+
+void SimulatorTransport::close() {
+    timer_.stop();
+    setState(State::Closed);
+}
+
+QString SimulatorTransport::description() const {
+    return tr("simulated %1 receiver at %2 baud").arg(dialect_).arg(lineBaud_);
+}
+
+bool SimulatorTransport::setBaud(int baud) {
+    lineBaud_ = baud;
+    if (receiver_) receiver_->setLineBaud(baud);
+    return true;
+}
+
+bool SimulatorTransport::writeBytes(const QByteArray &bytes) {
+    if (!receiver_) return false;
+    receiver_->receive(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    return true;
+}
+
+void SimulatorTransport::tick() {
+    if (!receiver_) return;
+    const qint64 ns = clock_.nsecsElapsed();
+    clock_.start();
+    receiver_->advance(static_cast<double>(ns) / 1e9 * speed_);
+    const std::string out = receiver_->takeOutput();
+    if (!out.empty()) emit bytesReceived(QByteArray::fromStdString(out));
+    if (receiver_->hungUp()) {
+        timer_.stop();
+        fail(tr("The simulated receiver hung up"), true);
+    }
+}
+
+} // namespace gnss::link

@@ -1,0 +1,63 @@
+#pragma once
+// Transport: one source of receiver bytes and sink of commands, whatever is behind it (serial
+// port, TCP socket, recorded log, built-in simulator). Everything above it (recorder, decoder,
+// command queue, detectors) talks to this interface only, so tests inject a fake.
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+
+namespace gnss::link {
+
+class Transport : public QObject {
+    Q_OBJECT
+public:
+    enum class State {
+        Closed, // not open (never opened, or closed on purpose)
+        Open,   // bytes flow
+        Lost,   // was open and went away (unplugged, peer hung up, I/O error)
+    };
+    Q_ENUM(State)
+
+    explicit Transport(QObject *parent = nullptr);
+    ~Transport() override;
+
+    // Opens the source. Returns false with errorString() set (and errorOccurred emitted).
+    virtual bool open() = 0;
+    virtual void close() = 0;
+    // Queues bytes for the receiver; returns false when they cannot be sent (closed, read-only).
+    // Bytes sent are also signalled (bytesSent), so a recorder sees every command.
+    bool write(const QByteArray &bytes);
+    // A short human-readable name: "/dev/ttyUSB0 at 115200 baud", "192.168.1.5:4001".
+    virtual QString description() const = 0;
+
+    // Line speed, for sources that have one (serial port, simulator); 0 = none.
+    virtual int baud() const { return 0; }
+    // Changes the line speed at once (the port stays open); false when the source has none.
+    virtual bool setBaud(int baud);
+    // Whether commands can be sent (a replayed log cannot).
+    virtual bool canWrite() const { return true; }
+    // Drops whatever was received but not delivered yet (after a baud switch).
+    virtual void discardInput() {}
+
+    State state() const { return state_; }
+    bool isOpen() const { return state_ == State::Open; }
+    QString errorString() const { return error_; }
+
+signals:
+    void bytesReceived(const QByteArray &bytes);
+    void bytesSent(const QByteArray &bytes);
+    void stateChanged(gnss::link::Transport::State state);
+    void errorOccurred(const QString &message);
+
+protected:
+    virtual bool writeBytes(const QByteArray &bytes) = 0;
+    void setState(State s);
+    // Records and signals an error; `lost` also moves an open transport to Lost.
+    void fail(const QString &message, bool lost);
+
+private:
+    State state_ = State::Closed;
+    QString error_;
+};
+
+} // namespace gnss::link

@@ -1,0 +1,150 @@
+// Recorder: the .nmea file holds exactly the bytes received (across a lost link and at
+// destruction), the index says when each chunk came, what was sent and where the gaps are, and
+// loadRecording reads it all back.
+#include "fake_transport.h"
+#include "recorder.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace gnss::link;
+using gnss::link::test::FakeTransport;
+
+namespace {
+
+QByteArray readAll(const QString &path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+} // namespace
+
+class TstRecorder : public QObject {
+    Q_OBJECT
+private slots:
+    void bytesLoggedEqualBytesReceivedAcrossALostLink() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.nmea");
+        qint64 now = 1710496800000; // 2024-03-15T10:00:00Z
+        FakeTransport link;
+        link.open();
+        QByteArray expected;
+        {
+            Recorder rec(nullptr, [&] { return now; });
+            QVERIFY(rec.open(path, link.description()));
+            rec.attach(&link);
+            const QByteArray a = "$GPGGA,100000.00,5540.0000,N,0373";
+            const QByteArray b =
+                    QByteArrayLiteral("0.0000,E,1,08,0.9,150.0,M,14.0,M,,*4C\r\n\x00\xd3\x01"
+                                      "binary");
+            link.feed(a);
+            now += 120;
+            link.feed(b);
+            link.write("$PNVGVER*4E\r\n");
+            now += 1000;
+            link.drop(QStringLiteral("unplugged"));
+            now += 2000;
+            link.open();
+            const QByteArray c = "\r\n$GPGGA,100003.00,,,,,0,00,,,M,,M,,*6B\r\n";
+            link.feed(c);
+            expected = a + b + c;
+            QCOMPARE(rec.bytesRecorded(), expected.size());
+            // No close(): the destructor flushes.
+        }
+        QCOMPARE(readAll(path), expected);
+        const QList<QByteArray> idx = readAll(path + ".idx").split('\n');
+        QVERIFY(idx[0].startsWith("# gnss-workbench recording index 1"));
+        QVERIFY(idx[1].startsWith("# started 2024-03-15T10:00:00.000Z from fake link"));
+        QCOMPARE(idx[2], QByteArray("R 1710496800000 0 33"));
+        QCOMPARE(idx[3], QByteArray("R 1710496800120 33 48"));
+        QCOMPARE(idx[4], QByteArray("S 1710496800120 81 $PNVGVER*4E"));
+        QCOMPARE(idx[5], QByteArray("G 1710496801120 81 link lost: unplugged"));
+        QCOMPARE(idx[6], QByteArray("G 1710496803120 81 link back: fake link"));
+        QCOMPARE(idx[7], QByteArray("R 1710496803120 81 41"));
+
+        Recording r;
+        QString error;
+        QVERIFY2(loadRecording(path, r, error), qPrintable(error));
+        QVERIFY(r.hasIndex);
+        QCOMPARE(r.bytes, expected);
+        QCOMPARE(r.chunks.size(), std::size_t(3));
+        QCOMPARE(r.chunks[2].offset, 81);
+        QCOMPARE(r.chunks[2].hostMs, 1710496803120);
+        QCOMPARE(r.events.size(), std::size_t(3));
+        QCOMPARE(r.events[0].kind, RecordedEvent::Kind::Sent);
+        QCOMPARE(r.events[0].text, QStringLiteral("$PNVGVER*4E"));
+        QCOMPARE(r.events[1].kind, RecordedEvent::Kind::Gap);
+    }
+
+    void appendContinuesTheSameFiles() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("a.nmea");
+        qint64 now = 1000;
+        {
+            Recorder rec(nullptr, [&] { return now; });
+            QVERIFY(rec.open(path));
+            rec.received("$A*41\r\n");
+        }
+        {
+            Recorder rec(nullptr, [&] { return now; });
+            QVERIFY(rec.open(path, {}, true));
+            rec.received("$B*42\r\n");
+        }
+        Recording r;
+        QString error;
+        QVERIFY2(loadRecording(path, r, error), qPrintable(error));
+        QCOMPARE(r.bytes, QByteArray("$A*41\r\n$B*42\r\n"));
+        QCOMPARE(r.chunks.size(), std::size_t(2));
+        QCOMPARE(r.chunks[1].offset, 7);
+    }
+
+    void bytesPastTheIndexAndATornLastLineAreKept() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("torn.nmea");
+        QFile d(path), i(path + ".idx");
+        QVERIFY(d.open(QIODevice::WriteOnly) && i.open(QIODevice::WriteOnly));
+        d.write("$A*41\r\n$B*42\r\n");
+        i.write("R 5000 0 7\nR 6000 7 7"); // the recorder died mid-line
+        d.close();
+        i.close();
+        Recording r;
+        QString error;
+        QVERIFY2(loadRecording(path, r, error), qPrintable(error));
+        QCOMPARE(r.chunks.size(), std::size_t(2));
+        QCOMPARE(r.chunks[1].offset, 7);
+        QCOMPARE(r.chunks[1].hostMs, 5000); // the last time known
+    }
+
+    void indexThatContradictsTheDataIsAnError() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("bad.nmea");
+        QFile d(path), i(path + ".idx");
+        QVERIFY(d.open(QIODevice::WriteOnly) && i.open(QIODevice::WriteOnly));
+        d.write("$A*41\r\n");
+        i.write("R 5000 0 70\n");
+        d.close();
+        i.close();
+        Recording r;
+        QString error;
+        QVERIFY(!loadRecording(path, r, error));
+        QVERIFY2(error.contains("line 1"), qPrintable(error));
+    }
+
+    void plainLogWithoutIndexLoads() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("plain.nmea");
+        QFile d(path);
+        QVERIFY(d.open(QIODevice::WriteOnly));
+        d.write("$A*41\r\n");
+        d.close();
+        Recording r;
+        QString error;
+        QVERIFY(loadRecording(path, r, error));
+        QVERIFY(!r.hasIndex);
+        QVERIFY(r.chunks.empty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TstRecorder)
+#include "tst_recorder.moc"

@@ -1,0 +1,171 @@
+// ReplayTransport: a recording played back byte-exact, at its recorded pace (host timestamps or
+// sentence times) times a speed factor, paused, stepped and sought.
+#include "core/sentence_builder.h"
+#include "recorder.h"
+#include "replay_transport.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace gnss;
+using namespace gnss::link;
+
+namespace {
+
+QByteArray line(const std::string &body) {
+    return QByteArray::fromStdString(buildSentence(body)) + "\r\n";
+}
+
+QByteArray epoch(int second) {
+    const std::string t = "1000" + std::string(second < 10 ? "0" : "") + std::to_string(second);
+    return line("GPGGA," + t + ".00,5540.0000,N,03730.0000,E,1,08,0.9,150.0,M,14.0,M,,") +
+           line("GPGSA,A,3,01,02,03,04,,,,,,,,,1.8,0.9,1.5") +
+           line("GPRMC," + t + ".00,A,5540.0000,N,03730.0000,E,0.0,0.0,150324,,,A");
+}
+
+// A recording of three chunks, 500 ms apart (host time), one command sent after the first.
+QString makeRecorded(const QTemporaryDir &dir) {
+    const QString path = dir.filePath("rec.nmea");
+    qint64 now = 1710496800000;
+    Recorder rec(nullptr, [&] { return now; });
+    rec.open(path);
+    rec.received(epoch(0));
+    rec.sent("$PNVGVER*4E\r\n");
+    now += 500;
+    rec.received(epoch(1));
+    now += 500;
+    rec.received(epoch(2));
+    return path;
+}
+
+// A plain NMEA log (no index): sentence times one second apart.
+QString makePlain(const QTemporaryDir &dir, int epochs) {
+    const QString path = dir.filePath("plain.nmea");
+    QFile f(path);
+    f.open(QIODevice::WriteOnly);
+    for (int i = 0; i < epochs; ++i) f.write(epoch(i));
+    return path;
+}
+
+struct Arrivals {
+    QByteArray bytes;
+    QList<qint64> at;
+    QElapsedTimer clock;
+    void attach(ReplayTransport &r) {
+        clock.start();
+        QObject::connect(&r, &Transport::bytesReceived, [this](const QByteArray &b) {
+            bytes += b;
+            at.append(clock.elapsed());
+        });
+    }
+};
+
+} // namespace
+
+class TstReplay : public QObject {
+    Q_OBJECT
+private slots:
+    void replayIsByteExactAndReportsSentCommands() {
+        QTemporaryDir dir;
+        const QString path = makeRecorded(dir);
+        ReplayTransport r(path, ReplayTransport::Timing::AsFast);
+        Arrivals got;
+        QList<RecordedEvent> events;
+        connect(&r, &ReplayTransport::recordedEvent,
+                [&](const RecordedEvent &e) { events.append(e); });
+        QSignalSpy finished(&r, &ReplayTransport::finished);
+        got.attach(r);
+        QVERIFY(r.open());
+        QVERIFY(finished.wait(2000));
+        QCOMPARE(got.bytes, epoch(0) + epoch(1) + epoch(2));
+        QCOMPARE(events.size(), 1);
+        QCOMPARE(events[0].text, QStringLiteral("$PNVGVER*4E"));
+        QVERIFY(!r.write("$PNVGVER*4E\r\n")); // a replay takes no commands
+    }
+
+    void hostTimestampsSetThePaceTimesTheSpeed() {
+        QTemporaryDir dir;
+        ReplayTransport r(makeRecorded(dir));
+        r.setSpeed(2);
+        Arrivals got;
+        got.attach(r);
+        QSignalSpy finished(&r, &ReplayTransport::finished);
+        QVERIFY(r.open());
+        QCOMPARE(r.timing(), ReplayTransport::Timing::HostTime);
+        QCOMPARE(r.duration(), 1.0);
+        QVERIFY(finished.wait(3000));
+        QCOMPARE(got.at.size(), 3);
+        // 0, 250, 500 ms at twice the speed (timer granularity: 10 ms; loaded machine: +100).
+        QVERIFY2(got.at[1] >= 230 && got.at[1] < 400, QByteArray::number(got.at[1]));
+        QVERIFY2(got.at[2] >= 480 && got.at[2] < 650, QByteArray::number(got.at[2]));
+    }
+
+    void sentenceTimesPaceAPlainLog() {
+        QTemporaryDir dir;
+        ReplayTransport r(makePlain(dir, 3));
+        r.setSpeed(4);
+        Arrivals got;
+        got.attach(r);
+        QSignalSpy finished(&r, &ReplayTransport::finished);
+        QVERIFY(r.open());
+        QCOMPARE(r.timing(), ReplayTransport::Timing::SentenceTime);
+        QCOMPARE(r.duration(), 2.0);
+        QVERIFY(finished.wait(3000));
+        // Each epoch's three sentences arrive together, 250 ms apart at four times the speed.
+        QCOMPARE(got.at.size(), 3);
+        QVERIFY(got.bytes.startsWith(epoch(0)));
+        QVERIFY2(got.at[2] >= 480 && got.at[2] < 650, QByteArray::number(got.at[2]));
+        QCOMPARE(got.bytes, epoch(0) + epoch(1) + epoch(2));
+    }
+
+    void pauseHoldsAndStepDeliversOneEpoch() {
+        QTemporaryDir dir;
+        ReplayTransport r(makePlain(dir, 5));
+        Arrivals got;
+        got.attach(r);
+        r.pause();
+        QVERIFY(r.open());
+        QTest::qWait(100);
+        QVERIFY(got.bytes.isEmpty());
+        QVERIFY(r.step());
+        QCOMPARE(got.bytes, epoch(0));
+        QVERIFY(r.step());
+        QCOMPARE(got.bytes, epoch(0) + epoch(1));
+        QCOMPARE(r.position(), 1.0);
+    }
+
+    void seekStartsAtTheFirstBytesAtOrAfterTheTime() {
+        QTemporaryDir dir;
+        ReplayTransport r(makePlain(dir, 5));
+        Arrivals got;
+        got.attach(r);
+        r.pause();
+        QVERIFY(r.open());
+        r.seek(3.0);
+        QVERIFY(r.step());
+        QCOMPARE(got.bytes, epoch(3));
+        r.seek(0.5); // between epochs: the next one
+        QVERIFY(r.step());
+        QCOMPARE(got.bytes, epoch(3) + epoch(1));
+        // Seeking back and playing fast gives the rest, byte-exact.
+        got.bytes.clear();
+        QSignalSpy finished(&r, &ReplayTransport::finished);
+        r.seek(2.0);
+        r.setSpeed(100);
+        r.resume();
+        QVERIFY(finished.wait(2000));
+        QCOMPARE(got.bytes, epoch(2) + epoch(3) + epoch(4));
+    }
+
+    void missingFileSaysWhich() {
+        ReplayTransport r(QStringLiteral("/nonexistent/x.nmea"));
+        QVERIFY(!r.open());
+        QVERIFY(r.errorString().contains("/nonexistent/x.nmea"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstReplay)
+#include "tst_replay.moc"
