@@ -7,9 +7,9 @@
 namespace gnss::ui {
 
 namespace {
-constexpr double kA = 6378137.0;               // WGS-84 semi-major axis
-constexpr double kF = 1.0 / 298.257223563;     // flattening
-constexpr double kE2 = kF * (2.0 - kF);        // first eccentricity squared
+constexpr double kA = 6378137.0;           // WGS-84 semi-major axis
+constexpr double kF = 1.0 / 298.257223563; // flattening
+constexpr double kE2 = kF * (2.0 - kF);    // first eccentricity squared
 constexpr double kDeg = std::numbers::pi / 180.0;
 } // namespace
 
@@ -50,7 +50,7 @@ void PositionScatter::toEastNorth(double lat0, double lon0, double lat, double l
                                   double &north) {
     const double s = std::sin(lat0 * kDeg);
     const double w = std::sqrt(1.0 - kE2 * s * s);
-    const double primeVertical = kA / w;                   // N
+    const double primeVertical = kA / w;                    // N
     const double meridian = kA * (1.0 - kE2) / (w * w * w); // M
     double dLon = lon - lon0;
     if (dLon > 180.0) dLon -= 360.0;

@@ -28,11 +28,11 @@ public:
     };
     struct Stats {
         std::size_t count = 0;
-        double centreLat = 0, centreLon = 0;      // degrees: the mean or the reference
-        double meanEast = 0, meanNorth = 0;       // mean offset from the centre (0 about the mean)
-        double sdEast = 0, sdNorth = 0;           // RMS about the centre
-        double cep50 = 0, cep95 = 0, drms2 = 0;   // metres
-        double maxError = 0;                      // largest horizontal distance
+        double centreLat = 0, centreLon = 0;    // degrees: the mean or the reference
+        double meanEast = 0, meanNorth = 0;     // mean offset from the centre (0 about the mean)
+        double sdEast = 0, sdNorth = 0;         // RMS about the centre
+        double cep50 = 0, cep95 = 0, drms2 = 0; // metres
+        double maxError = 0;                    // largest horizontal distance
     };
 
     explicit PositionScatter(std::size_t capacity = 3600) : capacity_(capacity) {}

@@ -15,6 +15,7 @@ ReceiverSession::ReceiverSession(const DialectRegistry &registry, SessionModels 
 
 void ReceiverSession::reset(const DecoderOptions &options) {
     decoder_ = std::make_unique<StreamDecoder>(registry_, options);
+    counterSource_ = nullptr;
     tracker_ = std::make_unique<StateTracker>(decoder_->dialect());
     lastDialect_ = decoder_->dialect();
     counters_ = {};
@@ -28,18 +29,24 @@ void ReceiverSession::reset(const DecoderOptions &options) {
 }
 
 void ReceiverSession::feed(const QByteArray &bytes) {
-    counters_.bytes += quint64(bytes.size());
-    if (models_.console) models_.console->appendRaw(bytes);
+    noteBytes(bytes);
     decoder_->feed(std::string_view(bytes.constData(), size_t(bytes.size())),
-                   [this](const SentenceEvent &ev) { onSentence(ev); });
-    if (decoder_->dialect() != lastDialect_) {
-        lastDialect_ = decoder_->dialect();
-        tracker_->setDialect(lastDialect_);
-        emit dialectChanged(lastDialect_);
-    }
+                   [this](const SentenceEvent &ev) { onSentence(ev, decoder_->dialect()); });
 }
 
-void ReceiverSession::onSentence(const SentenceEvent &ev) {
+void ReceiverSession::noteBytes(const QByteArray &bytes) {
+    counters_.bytes += quint64(bytes.size());
+    if (models_.console) models_.console->appendRaw(bytes);
+}
+
+void ReceiverSession::consume(const SentenceEvent &ev, const Dialect *dialect) { onSentence(ev, dialect); }
+
+void ReceiverSession::onSentence(const SentenceEvent &ev, const Dialect *dialect) {
+    if (dialect != lastDialect_) {
+        lastDialect_ = dialect;
+        tracker_->setDialect(dialect);
+        emit dialectChanged(dialect);
+    }
     ++counters_.sentences;
     const Sentence &s = ev.sentence;
     if (s.checksum() == ChecksumStatus::Bad) ++counters_.checksumErrors;
@@ -55,7 +62,6 @@ void ReceiverSession::onSentence(const SentenceEvent &ev) {
         models_.console->append(std::move(l));
     }
     if (!ev.message) return;
-    tracker_->setDialect(decoder_->dialect());
     tracker_->add(s, *ev.message, ev.dialect, [this](const ReceiverState &st) {
         const qint64 now = QDateTime::currentMSecsSinceEpoch();
         if (models_.satellites) models_.satellites->update(st.epoch, now);
@@ -79,7 +85,8 @@ void ReceiverSession::noteSent(const QByteArray &sentence) {
 void ReceiverSession::refresh() {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     if (models_.console) models_.console->flush();
-    if (models_.messages) models_.messages->refresh(decoder_->addressStats(), now);
+    if (models_.messages)
+        models_.messages->refresh((counterSource_ ? counterSource_ : decoder_.get())->addressStats(), now);
     if (now - lastRateMs_ >= 1000) {
         const double dt = double(now - lastRateMs_) / 1000.0;
         counters_.bytesPerSecond = double(counters_.bytes - bytesAtLastRate_) / dt;

@@ -42,14 +42,21 @@ public:
 
     // Starts over (new connection): decoder, state and models are reset.
     void reset(const DecoderOptions &options = {});
-    // Bytes received from the receiver.
+    // Bytes received from the receiver, decoded by the session's own decoder (replays in tests,
+    // or any source without a decoder of its own).
     void feed(const QByteArray &bytes);
+
+    // With a link that decodes itself (link::Connection): its raw bytes (hex view, byte rate)
+    // and each decoded sentence, and the decoder whose counters the statistics show.
+    void noteBytes(const QByteArray &bytes);
+    void consume(const SentenceEvent &ev, const Dialect *dialect);
+    void setCounterSource(const StreamDecoder *decoder) { counterSource_ = decoder; }
     // A command sent to the receiver (shown in the console as sent).
     void noteSent(const QByteArray &sentence);
     // Flushes batched console lines and counters now (the timer does it every 100 ms).
     void refresh();
 
-    const Dialect *dialect() const { return decoder_ ? decoder_->dialect() : nullptr; }
+    const Dialect *dialect() const { return lastDialect_; }
     const LinkCounters &counters() const { return counters_; }
     const StreamDecoder *decoder() const { return decoder_.get(); }
 
@@ -58,11 +65,12 @@ signals:
     void countersChanged();
 
 private:
-    void onSentence(const SentenceEvent &ev);
+    void onSentence(const SentenceEvent &ev, const Dialect *dialect);
 
     const DialectRegistry &registry_;
     SessionModels models_;
     std::unique_ptr<StreamDecoder> decoder_;
+    const StreamDecoder *counterSource_ = nullptr;
     std::unique_ptr<StateTracker> tracker_;
     const Dialect *lastDialect_ = nullptr;
     QTimer refreshTimer_;

@@ -130,7 +130,7 @@ QString TimeSeriesModel::key(Series s) {
     case SeriesCount: return {};
     default:
         return QStringLiteral("snr.") + QString::fromLatin1(toString(snrConstellation(s)).data(),
-                                                             toString(snrConstellation(s)).size());
+                                                            toString(snrConstellation(s)).size());
     }
 }
 

@@ -41,7 +41,17 @@ public:
         SeriesCount
     };
     // Series that share a unit share a chart.
-    enum Group : int { Satellites, Dop, Fix, Snr, Deviation, Baseline, Altitude, SpeedGroup, GroupCount };
+    enum Group : int {
+        Satellites,
+        Dop,
+        Fix,
+        Snr,
+        Deviation,
+        Baseline,
+        Altitude,
+        SpeedGroup,
+        GroupCount
+    };
 
     struct Sample {
         qint64 msecs; // host time of the epoch, ms since 1970 UTC

@@ -16,8 +16,8 @@
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTimer>
-#include <QValueAxis>
 #include <QVBoxLayout>
+#include <QValueAxis>
 
 #include <algorithm>
 #include <cmath>
@@ -60,7 +60,8 @@ bool checkedByDefault(TS::Series s) {
 
 // Points relative to the newest epoch (x in `unitMs` units, negative = older), reduced to each
 // bucket's min and max when there are more than `maxPoints`.
-QList<QPointF> toPoints(const std::deque<TS::Sample> &d, qint64 latest, double unitMs, int maxPoints) {
+QList<QPointF> toPoints(const std::deque<TS::Sample> &d, qint64 latest, double unitMs,
+                        int maxPoints) {
     QList<QPointF> out;
     const std::size_t n = d.size();
     auto pt = [&](const TS::Sample &s) { return QPointF((s.msecs - latest) / unitMs, s.value); };
@@ -167,9 +168,13 @@ void ChartsView::setCheckedSeries(const QStringList &keys) {
     redraw();
 }
 
-int ChartsView::windowMinutes() const { return window_->value(); }
+int ChartsView::windowMinutes() const {
+    return window_->value();
+}
 
-void ChartsView::setWindowMinutes(int minutes) { window_->setValue(minutes); }
+void ChartsView::setWindowMinutes(int minutes) {
+    window_->setValue(minutes);
+}
 
 ChartsView::GroupChart &ChartsView::ensureGroup(TS::Group g) {
     GroupChart &gc = groups_[g];

@@ -2,7 +2,7 @@
 
 #include "models/receiver_state_model.h"
 #include "style/gnss_style.h"
-#include "value_text.h"
+#include "value_format.h"
 
 #include <QCheckBox>
 #include <QGridLayout>
@@ -198,8 +198,9 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
     p.drawLine(b1, b2);
     p.drawLine(b1 + QPointF(0, -4), b1 + QPointF(0, 4));
     p.drawLine(b2 + QPointF(0, -4), b2 + QPointF(0, 4));
-    p.drawText(QRectF(b2.x() - std::max(barPx, double(fm.horizontalAdvance(bt))), b1.y() - fm.height() - 3,
-                      std::max(barPx, double(fm.horizontalAdvance(bt))), fm.height()),
+    p.drawText(QRectF(b2.x() - std::max(barPx, double(fm.horizontalAdvance(bt))),
+                      b1.y() - fm.height() - 3, std::max(barPx, double(fm.horizontalAdvance(bt))),
+                      fm.height()),
                Qt::AlignRight | Qt::AlignBottom, bt);
 }
 
@@ -240,7 +241,7 @@ DeviationView::DeviationView(ReceiverStateModel *model, QWidget *parent)
     auto *fig = new QGridLayout;
     auto add = [&](int col, const QString &name, const char *obj) {
         fig->addWidget(new QLabel(name + QLatin1Char(':')), 0, col * 2);
-        auto *v = new QLabel(text::dash());
+        auto *v = new QLabel(fmt::dash());
         v->setObjectName(QString::fromLatin1(obj));
         v->setTextInteractionFlags(Qt::TextSelectableByMouse);
         QFont f = v->font();
@@ -254,12 +255,12 @@ DeviationView::DeviationView(ReceiverStateModel *model, QWidget *parent)
     drms2_ = add(2, tr("2DRMS"), "deviation2drms");
     count_ = add(3, tr("Points"), "deviationCount");
     fig->addWidget(new QLabel(tr("Centre:")), 1, 0);
-    centre_ = new QLabel(text::dash());
+    centre_ = new QLabel(fmt::dash());
     centre_->setObjectName("deviationCentre");
     centre_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     fig->addWidget(centre_, 1, 1, 1, 3);
     fig->addWidget(new QLabel(tr("Mean offset:")), 1, 4);
-    offset_ = new QLabel(text::dash());
+    offset_ = new QLabel(fmt::dash());
     offset_->setObjectName("deviationMeanOffset");
     fig->addWidget(offset_, 1, 5, 1, 3);
     for (int c = 1; c < 8; c += 2) fig->setColumnStretch(c, 1);
@@ -285,9 +286,13 @@ DeviationView::DeviationView(ReceiverStateModel *model, QWidget *parent)
     refresh();
 }
 
-int DeviationView::capacity() const { return capacity_->value(); }
+int DeviationView::capacity() const {
+    return capacity_->value();
+}
 
-void DeviationView::setCapacity(int n) { capacity_->setValue(n); }
+void DeviationView::setCapacity(int n) {
+    capacity_->setValue(n);
+}
 
 void DeviationView::takeEpoch() {
     if (model_->epochCount() == 0) {
@@ -347,8 +352,9 @@ void DeviationView::applyReference() {
         if (lat && lon) {
             refStatus_->hide();
         } else {
-            refStatus_->setText(tr("Reference not used: type degrees such as 55.75123456 N and "
-                                   "37.61812345 E (or signed, -33.9 for south). Centred on the mean."));
+            refStatus_->setText(
+                    tr("Reference not used: type degrees such as 55.75123456 N and "
+                       "37.61812345 E (or signed, -33.9 for south). Centred on the mean."));
             refStatus_->show();
         }
     }
@@ -361,16 +367,18 @@ void DeviationView::refresh() {
     const auto &st = scatter_.stats();
     count_->setText(QString::number(st.count));
     if (st.count == 0) {
-        for (QLabel *l : {cep50_, cep95_, drms2_, offset_, centre_}) l->setText(text::dash());
+        for (QLabel *l : {cep50_, cep95_, drms2_, offset_, centre_}) l->setText(fmt::dash());
     } else {
         cep50_->setText(metres(st.cep50));
         cep95_->setText(metres(st.cep95));
         drms2_->setText(metres(st.drms2));
         centre_->setText((scatter_.hasReference() ? tr("reference %1, %2") : tr("mean %1, %2"))
-                                 .arg(text::latitude(st.centreLat), text::longitude(st.centreLon)));
-        offset_->setText(scatter_.hasReference()
-                                 ? tr("%1 east, %2 north").arg(metres(st.meanEast), metres(st.meanNorth))
-                                 : text::dash());
+                                 .arg(fmt::latitude(st.centreLat, false),
+                                      fmt::longitude(st.centreLon, false)));
+        offset_->setText(
+                scatter_.hasReference()
+                        ? tr("%1 east, %2 north").arg(metres(st.meanEast), metres(st.meanNorth))
+                        : fmt::dash());
     }
     canvas_->update();
 }

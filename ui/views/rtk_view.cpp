@@ -2,7 +2,7 @@
 
 #include "models/receiver_state_model.h"
 #include "style/gnss_style.h"
-#include "value_text.h"
+#include "value_format.h"
 
 #include <QDoubleSpinBox>
 #include <QGridLayout>
@@ -18,7 +18,15 @@ namespace gnss::ui {
 
 namespace {
 
-QString degreeUnit() { return QString(QChar(0x00B0)); }
+// Angles read "40.61°", no space before the degree sign.
+QString degrees(const std::optional<double> &v, int decimals) {
+    return v ? fmt::number(v, decimals) + QChar(0x00B0) : fmt::dash();
+}
+
+// Counters can pass an int's range; "—" when not sent.
+QString count(const std::optional<std::int64_t> &v) {
+    return v ? QString::number(*v) : fmt::dash();
+}
 
 QGroupBox *box(const QString &title, QGridLayout **grid) {
     auto *g = new QGroupBox(title);
@@ -46,7 +54,7 @@ RtkView::RtkView(ReceiverStateModel *model, QWidget *parent)
 
     // Mode badge and watchdog on top: what an engineer glances at.
     auto *top = new QHBoxLayout;
-    mode_ = new QLabel(text::dash());
+    mode_ = new QLabel(fmt::dash());
     mode_->setObjectName("rtkMode");
     mode_->setAlignment(Qt::AlignCenter);
     mode_->setMinimumWidth(110);
@@ -58,7 +66,7 @@ RtkView::RtkView(ReceiverStateModel *model, QWidget *parent)
     top->addWidget(new QLabel(tr("Mode:")));
     top->addWidget(mode_);
     top->addSpacing(16);
-    watchdog_ = new QLabel(text::dash());
+    watchdog_ = new QLabel(fmt::dash());
     watchdog_->setObjectName("rtkWatchdog");
     watchdog_->setFont(bf);
     top->addWidget(watchdog_);
@@ -142,7 +150,7 @@ RtkView::RtkView(ReceiverStateModel *model, QWidget *parent)
 QLabel *RtkView::addRow(QGridLayout *grid, const QString &name, const char *objectName) {
     const int row = grid->rowCount();
     grid->addWidget(new QLabel(name + QLatin1Char(':')), row, 0);
-    auto *value = new QLabel(text::dash());
+    auto *value = new QLabel(fmt::dash());
     value->setObjectName(QString::fromLatin1(objectName));
     value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     value->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -150,11 +158,17 @@ QLabel *RtkView::addRow(QGridLayout *grid, const QString &name, const char *obje
     return value;
 }
 
-double RtkView::correctionAgeThreshold() const { return threshold_->value(); }
+double RtkView::correctionAgeThreshold() const {
+    return threshold_->value();
+}
 
-void RtkView::setCorrectionAgeThreshold(double seconds) { threshold_->setValue(seconds); }
+void RtkView::setCorrectionAgeThreshold(double seconds) {
+    threshold_->setValue(seconds);
+}
 
-QColor RtkView::alarmColor() { return QColor(0xD3, 0x2F, 0x2F); }
+QColor RtkView::alarmColor() {
+    return QColor(0xD3, 0x2F, 0x2F);
+}
 
 void RtkView::poll() {
     if (model_->epochCount() != shownEpochs_) refresh();
@@ -188,47 +202,47 @@ void RtkView::refresh() {
         p.setColor(QPalette::WindowText, Qt::white);
         mode_->setPalette(p);
     } else {
-        mode_->setText(text::dash());
+        mode_->setText(fmt::dash());
         mode_->setPalette(QPalette()); // back to the theme's colours
     }
 
-    const QString m = tr("m"), ms = tr("m/s"), deg = degreeUnit();
-    rtcmTotal_->setText(text::integer(r.rtcmTotal));
-    rtcmOk_->setText(text::integer(r.rtcmOk));
-    rtcmErrors_->setText(text::integer(r.rtcmErrors));
-    baseDistance_->setText(text::number(r.baseDistance, 3, m));
-    baseId_->setText(r.baseStationId ? QString::number(*r.baseStationId) : text::dash());
-    correctionAge_->setText(text::number(r.correctionAge, 1, tr("s")));
+    const QString m = tr("m"), ms = tr("m/s");
+    rtcmTotal_->setText(count(r.rtcmTotal));
+    rtcmOk_->setText(count(r.rtcmOk));
+    rtcmErrors_->setText(count(r.rtcmErrors));
+    baseDistance_->setText(fmt::number(r.baseDistance, 3, m));
+    baseId_->setText(r.baseStationId ? QString::number(*r.baseStationId) : fmt::dash());
+    correctionAge_->setText(fmt::number(r.correctionAge, 1, tr("s")));
 
-    blNorth_->setText(text::number(r.baseToRover.north, 3, m));
-    blEast_->setText(text::number(r.baseToRover.east, 3, m));
-    blVertical_->setText(text::number(r.baseToRover.vertical, 3, m));
-    blLength_->setText(text::number(r.baseToRover.length, 3, m));
-    blCourse_->setText(text::number(r.baseToRover.course, 2, deg));
-    blPitch_->setText(text::number(r.baseToRover.pitch, 2, deg));
+    blNorth_->setText(fmt::number(r.baseToRover.north, 3, m));
+    blEast_->setText(fmt::number(r.baseToRover.east, 3, m));
+    blVertical_->setText(fmt::number(r.baseToRover.vertical, 3, m));
+    blLength_->setText(fmt::number(r.baseToRover.length, 3, m));
+    blCourse_->setText(degrees(r.baseToRover.course, 2));
+    blPitch_->setText(degrees(r.baseToRover.pitch, 2));
 
-    heading_->setText(text::number(r.heading ? r.heading : r.antennas.course, 2, deg));
-    antPitch_->setText(text::number(r.antennas.pitch, 2, deg));
-    antLength_->setText(text::number(r.antennas.length, 3, m));
-    antNorth_->setText(text::number(r.antennas.north, 3, m));
-    antEast_->setText(text::number(r.antennas.east, 3, m));
-    antVertical_->setText(text::number(r.antennas.vertical, 3, m));
+    heading_->setText(degrees(r.heading ? r.heading : r.antennas.course, 2));
+    antPitch_->setText(degrees(r.antennas.pitch, 2));
+    antLength_->setText(fmt::number(r.antennas.length, 3, m));
+    antNorth_->setText(fmt::number(r.antennas.north, 3, m));
+    antEast_->setText(fmt::number(r.antennas.east, 3, m));
+    antVertical_->setText(fmt::number(r.antennas.vertical, 3, m));
 
-    sdLat_->setText(text::number(r.sdLat, 3, m));
-    sdLon_->setText(text::number(r.sdLon, 3, m));
-    sdHeight_->setText(text::number(r.sdHeight, 3, m));
-    sdVelNorth_->setText(text::number(r.sdVelNorth, 3, ms));
-    sdVelEast_->setText(text::number(r.sdVelEast, 3, ms));
-    sdVelUp_->setText(text::number(r.sdVelUp, 3, ms));
-    sdHeading_->setText(text::number(r.sdHeading, 3, deg));
+    sdLat_->setText(fmt::number(r.sdLat, 3, m));
+    sdLon_->setText(fmt::number(r.sdLon, 3, m));
+    sdHeight_->setText(fmt::number(r.sdHeight, 3, m));
+    sdVelNorth_->setText(fmt::number(r.sdVelNorth, 3, ms));
+    sdVelEast_->setText(fmt::number(r.sdVelEast, 3, ms));
+    sdVelUp_->setText(fmt::number(r.sdVelUp, 3, ms));
+    sdHeading_->setText(degrees(r.sdHeading, 3));
 
-    gdop_->setText(text::number(r.gdop, 2));
-    pdop_->setText(text::number(r.pdop, 2));
-    hdop_->setText(text::number(r.hdop, 2));
-    vdop_->setText(text::number(r.vdop, 2));
-    tdop_->setText(text::number(r.tdop, 2));
-    ndop_->setText(text::number(r.ndop, 2));
-    edop_->setText(text::number(r.edop, 2));
+    gdop_->setText(fmt::number(r.gdop, 2));
+    pdop_->setText(fmt::number(r.pdop, 2));
+    hdop_->setText(fmt::number(r.hdop, 2));
+    vdop_->setText(fmt::number(r.vdop, 2));
+    tdop_->setText(fmt::number(r.tdop, 2));
+    ndop_->setText(fmt::number(r.ndop, 2));
+    edop_->setText(fmt::number(r.edop, 2));
 
     updateWatchdog(r.correctionAge);
 }
@@ -244,7 +258,7 @@ void RtkView::updateWatchdog(std::optional<double> age) {
     f.setBold(late);
     correctionAge_->setFont(f);
     if (!age)
-        watchdog_->setText(tr("Correction age: %1").arg(text::dash()));
+        watchdog_->setText(tr("Correction age: %1").arg(fmt::dash()));
     else if (late)
         watchdog_->setText(tr("Corrections too old: %1 s > %2 s")
                                    .arg(*age, 0, 'f', 1)
