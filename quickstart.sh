@@ -36,6 +36,8 @@ cmake --build --preset "$preset" --parallel "$(nproc)"
 
 case "$mode" in
   run)
+    # With no arguments, start on the built-in simulated NV08C-RTK.
+    [ $# -eq 0 ] && set -- --sim nvs
     exec "build/$preset/app/gui/gnss-workbench" "$@"
     ;;
   test)

@@ -1,20 +1,73 @@
-// The GUI shell: menus present, start-up options parsed and refused as they should be.
+// The main window: menus and docks present, start-up options, layout saved and restored, and the
+// built-in simulated receiver reaching every model through the real connection path.
+#include "connection_controller.h"
+#include "dialects.h"
 #include "main_window.h"
+#include "models/receiver_state_model.h"
+#include "models/satellite_model.h"
 #include "startup_options.h"
 
+#include <QDockWidget>
+#include <QLabel>
 #include <QMenuBar>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 using gnss::app::parseStartupOptions;
+using gnss::app::SourceSpec;
 
 class TestMainWindow : public QObject {
     Q_OBJECT
+    QTemporaryDir dir_;
+    gnss::DialectRegistry registry_ = gnss::makeBuiltinRegistry();
+
+    std::unique_ptr<QSettings> settings() {
+        return std::make_unique<QSettings>(dir_.filePath("settings.ini"), QSettings::IniFormat);
+    }
+
 private slots:
-    void mainWindowHasItsMenus() {
-        gnss::app::MainWindow w;
+    void mainWindowHasItsMenusAndDocks() {
+        auto s = settings();
+        gnss::app::MainWindow w(registry_, s.get());
         QStringList titles;
         for (QAction *a : w.menuBar()->actions()) titles << a->text().remove('&');
         QCOMPARE(titles, (QStringList{"File", "Receiver", "View", "Help"}));
+        for (const char *d : {"skyDock", "fixDock", "signalDock", "satellitesDock", "consoleDock", "statsDock", "infoDock"})
+            QVERIFY2(w.dock(d), d);
+    }
+
+    void simulatedReceiverReachesTheModels() {
+        auto s = settings();
+        gnss::app::MainWindow w(registry_, s.get());
+        w.show();
+        w.connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nvs"});
+        QTRY_VERIFY_WITH_TIMEOUT(w.stateModel()->epochCount() >= 3, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.satelliteModel()->rowCount() > 5, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.stateModel()->state().epoch.lat.has_value(), 20000);
+        QCOMPARE(w.controller()->state(), gnss::app::ConnectionController::State::Connected);
+        const auto *fixLabel = w.findChild<QLabel *>("statusFix");
+        QVERIFY(fixLabel);
+    }
+
+    void layoutAndLastConnectionAreRestored() {
+        {
+            auto s = settings();
+            gnss::app::MainWindow w(registry_, s.get());
+            w.show();
+            w.connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nmea"});
+            w.dock("consoleDock")->hide();
+            w.saveLayout();
+        }
+        auto s = settings();
+        QCOMPARE(s->value("connection/last").toString(), QString("sim:nmea"));
+        gnss::app::MainWindow w(registry_, s.get());
+        w.show();
+        QVERIFY(w.dock("consoleDock")->isHidden());
+        QVERIFY(w.dock("skyDock")->isVisible());
+        w.connectAtStart({}); // no source given: the last one
+        QCOMPARE(w.controller()->source().toString(), QString("sim:nmea"));
     }
 
     void startupOptionsParse() {
@@ -28,6 +81,8 @@ private slots:
         o = parseStartupOptions({"gnss-workbench", "--port", "/dev/ttyUSB0", "--baud", "115200"}, err);
         QVERIFY(o);
         QCOMPARE(o->baud, 115200);
+        QCOMPARE(SourceSpec::fromString("serial:/dev/ttyUSB0@115200").baud, 115200);
+        QCOMPARE(SourceSpec::fromString("tcp:localhost:5000").name, QString("localhost:5000"));
     }
 
     void badStartupOptionsAreRefused_data() {

@@ -1,4 +1,5 @@
 // gnss-workbench: the GUI entry point.
+#include "dialects.h"
 #include "main_window.h"
 #include "startup_options.h"
 #include "style/app_icon.h"
@@ -8,6 +9,7 @@
 #include <QLocale>
 #include <QTranslator>
 #include <QPixmap>
+#include <QSettings>
 #include <QTimer>
 #include <cstdio>
 
@@ -32,13 +34,23 @@ int main(int argc, char **argv) {
     }
 
     QApplication::setWindowIcon(gnss::style::appIcon());
-    gnss::app::MainWindow window;
+    const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
+    QSettings settings;
+    gnss::app::MainWindow window(registry, &settings);
     window.show();
+    using gnss::app::SourceSpec;
+    SourceSpec start;
+    if (!options->port.isEmpty()) start = {SourceSpec::Kind::Serial, options->port, options->baud};
+    else if (!options->tcp.isEmpty()) start = {SourceSpec::Kind::Tcp, options->tcp};
+    else if (!options->replay.isEmpty()) start = {SourceSpec::Kind::Replay, options->replay};
+    else if (!options->sim.isEmpty()) start = {SourceSpec::Kind::Simulator, options->sim};
+    window.connectAtStart(start);
 
     const double delay = options->quitAfter > 0 ? options->quitAfter : (options->screenshot.isEmpty() ? 0 : 1);
     if (delay > 0) {
         QTimer::singleShot(static_cast<int>(delay * 1000), &app, [&] {
             if (!options->screenshot.isEmpty()) {
+                window.saveLayout();
                 const QPixmap shot = window.grab();
                 if (!shot.save(options->screenshot)) {
                     std::fprintf(stderr, "gnss-workbench: cannot save %s\n",

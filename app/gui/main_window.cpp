@@ -1,60 +1,317 @@
 #include "main_window.h"
 
+#include "connection_bar.h"
+#include "connection_controller.h"
+#include "core/dialect_registry.h"
+#include "link/port_watcher.h"
+#include "models/console_model.h"
+#include "models/message_stats_model.h"
+#include "models/receiver_session.h"
+#include "models/receiver_state_model.h"
+#include "models/satellite_model.h"
+#include "style/gnss_style.h"
+#include "views/console_view.h"
+#include "views/fix_view.h"
+#include "views/message_stats_view.h"
+#include "views/receiver_info_view.h"
+#include "views/signal_levels_view.h"
+#include "views/sky_plot_view.h"
+
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
 #include <QFileDialog>
+#include <QHeaderView>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
+#include <QStyleFactory>
+#include <QTableView>
+#include <QTimer>
 
 namespace gnss::app {
 
-MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent) {
+MainWindow::MainWindow(const DialectRegistry &registry, QSettings *settings, QWidget *parent)
+    : QMainWindow(parent), registry_(registry), settings_(settings) {
     setWindowTitle(tr("GNSS Workbench"));
     setObjectName("MainWindow");
     setDockNestingEnabled(true);
+    setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks | GroupedDragging);
+    createModels();
+    ports_ = new link::PortWatcher({}, this);
+    ports_->start();
+    bar_ = new ConnectionBar(ports_, this);
+    addToolBar(Qt::TopToolBarArea, bar_);
+    createDocks();
     createMenus();
-    auto *state = new QLabel(tr("Not connected"), this);
-    state->setObjectName("connectionState");
-    statusBar()->addWidget(state);
-    resize(1280, 800);
+    createStatusBar();
+    connect(bar_, &ConnectionBar::connectRequested, this, [this](const SourceSpec &s) { controller_->connectTo(s); });
+    connect(bar_, &ConnectionBar::disconnectRequested, controller_, &ConnectionController::disconnectFromSource);
+    connect(controller_, &ConnectionController::stateChanged, this, [this] {
+        bar_->setConnected(controller_->state() != ConnectionController::State::Disconnected &&
+                           controller_->state() != ConnectionController::State::Failed);
+        updateStatus();
+    });
+    connect(controller_, &ConnectionController::commandFinished, this,
+            [this](const QString &summary, bool ok) { statusBar()->showMessage(ok ? summary : tr("Command: %1").arg(summary), 8000); });
+    auto *statusTimer = new QTimer(this);
+    statusTimer->setInterval(500);
+    connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
+    statusTimer->start();
+    resize(1400, 900);
+    defaultState_ = saveState();
+    restoreLayout();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createModels() {
+    stateModel_ = new ui::ReceiverStateModel(this);
+    satellites_ = new ui::SatelliteModel(this);
+    messages_ = new ui::MessageStatsModel(this);
+    console_ = new ui::ConsoleModel(this);
+    session_ = new ui::ReceiverSession(registry_, {stateModel_, satellites_, messages_, console_}, this);
+    controller_ = new ConnectionController(registry_, session_, this);
+}
+
+QDockWidget *MainWindow::addDock(QWidget *w, const QString &title, const QString &objectName,
+                                 Qt::DockWidgetArea area) {
+    auto *d = new QDockWidget(title, this);
+    d->setObjectName(objectName);
+    d->setWidget(w);
+    d->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    addDockWidget(area, d);
+    return d;
+}
+
+QDockWidget *MainWindow::dock(const QString &objectName) const { return findChild<QDockWidget *>(objectName); }
+
+void MainWindow::createDocks() {
+    sky_ = new ui::SkyPlotView(satellites_, this);
+    auto *skyDock = addDock(sky_, tr("Sky plot"), "skyDock", Qt::LeftDockWidgetArea);
+    auto *fixDock = addDock(new ui::FixView(stateModel_, this), tr("Fix and position"), "fixDock", Qt::RightDockWidgetArea);
+    auto *signalDock = addDock(new ui::SignalLevelsView(satellites_, this), tr("Signal levels"), "signalDock",
+                               Qt::BottomDockWidgetArea);
+    auto *table = new QTableView(this);
+    table->setObjectName("satelliteTable");
+    table->setModel(satellites_);
+    table->verticalHeader()->hide();
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    auto *satDock = addDock(table, tr("Satellites"), "satellitesDock", Qt::RightDockWidgetArea);
+    consoleView_ = new ui::ConsoleView(console_, this);
+    auto *consoleDock = addDock(consoleView_, tr("Console"), "consoleDock", Qt::BottomDockWidgetArea);
+    auto *statsDock = addDock(new ui::MessageStatsView(messages_, this), tr("Message statistics"), "statsDock",
+                              Qt::BottomDockWidgetArea);
+    auto *infoDock = addDock(new ui::ReceiverInfoView(stateModel_, this), tr("Receiver information"), "infoDock",
+                             Qt::RightDockWidgetArea);
+    tabifyDockWidget(fixDock, infoDock);
+    tabifyDockWidget(infoDock, satDock);
+    fixDock->raise();
+    tabifyDockWidget(consoleDock, statsDock);
+    consoleDock->raise();
+    splitDockWidget(skyDock, signalDock, Qt::Vertical);
+    connect(consoleView_, &ui::ConsoleView::sendRequested, this, [this](const QByteArray &s) {
+        QString why;
+        if (!controller_->send(s, &why)) statusBar()->showMessage(tr("Not sent: %1").arg(why), 8000);
+    });
+    connect(session_, &ui::ReceiverSession::dialectChanged, this, [this](const Dialect *d) {
+        QStringList names;
+        if (d)
+            for (auto n : d->commandNames) names << QString::fromLatin1(n.data(), int(n.size()));
+        consoleView_->setCommandNames(names);
+        if (d)
+            for (const auto &s : d->settings)
+                if (s.key.ends_with("ELEV") || s.key.ends_with("ELGPS") || s.key == "fix.minElevation") {
+                    // The elevation mask's default until the receiver reports its own.
+                    bool ok = false;
+                    const double v = QString::fromLatin1(s.defaultValue.data(), int(s.defaultValue.size())).toDouble(&ok);
+                    if (ok) sky_->setElevationMask(v);
+                }
+    });
 }
 
 void MainWindow::createMenus() {
     QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *open = file->addAction(tr("&Open Log..."), this, &MainWindow::openLog);
+    QAction *open = file->addAction(tr("&Open Log..."), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open Log"), {},
+                                                          tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
+        if (!path.isEmpty()) {
+            const SourceSpec s{SourceSpec::Kind::Replay, path};
+            bar_->select(s);
+            controller_->connectTo(s);
+        }
+    });
     open->setShortcut(QKeySequence::Open);
+    recordAction_ = file->addAction(tr("&Record..."));
+    recordAction_->setCheckable(true);
+    recordAction_->setShortcut(QKeySequence(tr("Ctrl+R")));
+    connect(recordAction_, &QAction::toggled, this, &MainWindow::toggleRecording);
     file->addSeparator();
-    QAction *quit = file->addAction(tr("&Quit"), qApp, &QApplication::closeAllWindows);
+    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
 
     QMenu *receiver = menuBar()->addMenu(tr("&Receiver"));
     receiver->setObjectName("receiverMenu");
-    receiver->addAction(tr("&Connect"))->setShortcut(QKeySequence(tr("Ctrl+K")));
-    receiver->addAction(tr("&Disconnect"))->setShortcut(QKeySequence(tr("Ctrl+Shift+K")));
+    receiver->addAction(tr("&Connect"), this, [this] { controller_->connectTo(bar_->selection()); })
+            ->setShortcut(QKeySequence(tr("Ctrl+K")));
+    receiver->addAction(tr("&Disconnect"), controller_, &ConnectionController::disconnectFromSource)
+            ->setShortcut(QKeySequence(tr("Ctrl+Shift+K")));
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     viewMenu_->setObjectName("viewMenu");
+    for (QDockWidget *d : findChildren<QDockWidget *>()) viewMenu_->addAction(d->toggleViewAction());
+    viewMenu_->addSeparator();
+    QAction *tracks = viewMenu_->addAction(tr("Sky plot &tracks"));
+    tracks->setCheckable(true);
+    connect(tracks, &QAction::toggled, sky_, &ui::SkyPlotView::setShowTracks);
+    viewMenu_->addAction(tr("&Reset layout"), this, [this] { restoreState(defaultState_); });
+    QMenu *theme = viewMenu_->addMenu(tr("T&heme"));
+    auto *group = new QActionGroup(this);
+    for (const auto &[id, label] : {std::pair{"system", QT_TR_NOOP("Follow the system")},
+                                    std::pair{"light", QT_TR_NOOP("Light")}, std::pair{"dark", QT_TR_NOOP("Dark")}}) {
+        QAction *a = theme->addAction(tr(label));
+        a->setCheckable(true);
+        a->setData(QString::fromLatin1(id));
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, a] { applyTheme(a->data().toString()); });
+        if (settings_ && settings_->value("view/theme", "system").toString() == QLatin1String(id)) a->setChecked(true);
+    }
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About GNSS Workbench"), this, &MainWindow::about);
+    help->addAction(tr("&About GNSS Workbench"), this, [this] {
+        QMessageBox::about(this, tr("About GNSS Workbench"),
+                           tr("<b>GNSS Workbench</b> %1<br>Configure and monitor NVS NV08C-RTK, GeoStar "
+                              "GeoS-5, Nemerix and NMEA-0183 receivers.")
+                                   .arg(QApplication::applicationVersion()));
+    });
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 }
 
-void MainWindow::openLog() {
-    const QString path = QFileDialog::getOpenFileName(
-            this, tr("Open Log"), QString(),
-            tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
-    if (!path.isEmpty()) emit openLogRequested(path);
+void MainWindow::createStatusBar() {
+    auto make = [this](const char *name) {
+        auto *l = new QLabel(this);
+        l->setObjectName(QString::fromLatin1(name));
+        statusBar()->addPermanentWidget(l);
+        return l;
+    };
+    stateLabel_ = new QLabel(this);
+    stateLabel_->setObjectName("connectionState");
+    statusBar()->addWidget(stateLabel_, 1);
+    dialectLabel_ = make("statusDialect");
+    rateLabel_ = make("statusRates");
+    errorLabel_ = make("statusChecksumErrors");
+    recordLabel_ = make("statusRecording");
+    fixLabel_ = make("statusFix");
+    fixLabel_->setAlignment(Qt::AlignCenter);
+    fixLabel_->setMinimumWidth(90);
+    updateStatus();
 }
 
-void MainWindow::about() {
-    QMessageBox::about(this, tr("About GNSS Workbench"),
-                       tr("<b>GNSS Workbench</b> %1<br>Configure and monitor NVS NV08C-RTK, "
-                          "GeoStar GeoS-5, Nemerix and NMEA-0183 receivers.")
-                               .arg(QApplication::applicationVersion()));
+void MainWindow::updateStatus() {
+    stateLabel_->setText(controller_->stateText());
+    const Dialect *d = session_->dialect();
+    const ReceiverIdentity &id = stateModel_->state().identity;
+    QString who = d ? QString::fromLatin1(d->displayName.data(), int(d->displayName.size())) : tr("dialect: —");
+    if (!id.model.empty()) who = QString::fromStdString(id.vendor + " " + id.model);
+    if (!id.firmware.empty()) who += tr(" (firmware %1)").arg(QString::fromStdString(id.firmware));
+    dialectLabel_->setText(who);
+    const auto &c = session_->counters();
+    rateLabel_->setText(tr("%1 B/s · %2 sentences/s").arg(qRound(c.bytesPerSecond)).arg(c.sentencesPerSecond, 0, 'f', 1));
+    errorLabel_->setText(tr("checksum errors: %1").arg(c.checksumErrors));
+    errorLabel_->setStyleSheet(c.checksumErrors ? QStringLiteral("color: #c62828;") : QString());
+    const bool rec = controller_->recording();
+    recordLabel_->setText(rec ? tr("● REC") : QString());
+    recordLabel_->setStyleSheet(rec ? QStringLiteral("color: #c62828; font-weight: bold;") : QString());
+    const bool any = stateModel_->epochCount() > 0;
+    const FixType fix = any ? stateModel_->state().epoch.fix : FixType::None;
+    fixLabel_->setText(any ? style::fixTypeLabel(fix) : tr("No fix"));
+    fixLabel_->setStyleSheet(QStringLiteral("background: %1; color: white; border-radius: 4px; padding: 1px 6px;")
+                                     .arg(style::fixTypeColor(fix).name()));
+}
+
+void MainWindow::toggleRecording(bool on) {
+    if (!on) {
+        controller_->stopRecording();
+        updateStatus();
+        return;
+    }
+    const QString path = QFileDialog::getSaveFileName(this, tr("Record to"), QStringLiteral("receiver.nmea"),
+                                                      tr("NMEA logs (*.nmea)"));
+    if (path.isEmpty() || !controller_->startRecording(path)) {
+        if (!path.isEmpty())
+            QMessageBox::warning(this, tr("Record"), tr("Cannot record to %1: connect to a receiver first, and "
+                                                        "check the folder is writable.")
+                                                             .arg(path));
+        QSignalBlocker block(recordAction_);
+        recordAction_->setChecked(false);
+    }
+    updateStatus();
+}
+
+void MainWindow::applyTheme(const QString &theme) {
+    if (settings_) settings_->setValue("view/theme", theme);
+    if (theme == QLatin1String("system")) {
+        QApplication::setPalette(QApplication::style()->standardPalette());
+        return;
+    }
+    QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+    QPalette p;
+    if (theme == QLatin1String("dark")) {
+        p.setColor(QPalette::Window, QColor(0x2b, 0x2d, 0x30));
+        p.setColor(QPalette::WindowText, QColor(0xe6, 0xe6, 0xe6));
+        p.setColor(QPalette::Base, QColor(0x1e, 0x1f, 0x22));
+        p.setColor(QPalette::AlternateBase, QColor(0x26, 0x28, 0x2b));
+        p.setColor(QPalette::Text, QColor(0xe6, 0xe6, 0xe6));
+        p.setColor(QPalette::Button, QColor(0x35, 0x37, 0x3b));
+        p.setColor(QPalette::ButtonText, QColor(0xe6, 0xe6, 0xe6));
+        p.setColor(QPalette::Highlight, QColor(0x00, 0x72, 0xB2));
+        p.setColor(QPalette::HighlightedText, Qt::white);
+        p.setColor(QPalette::Mid, QColor(0x6b, 0x6f, 0x75));
+        p.setColor(QPalette::Midlight, QColor(0x45, 0x48, 0x4d));
+        p.setColor(QPalette::PlaceholderText, QColor(0x9a, 0x9e, 0xa5));
+    } else {
+        p = QApplication::style()->standardPalette();
+    }
+    QApplication::setPalette(p);
+}
+
+void MainWindow::saveLayout() {
+    if (!settings_) return;
+    settings_->setValue("window/geometry", saveGeometry());
+    settings_->setValue("window/state", saveState());
+    settings_->setValue("view/skyTracks", sky_->showTracks());
+    settings_->setValue("console/history", consoleView_->history());
+    const SourceSpec s = controller_->source();
+    if (s.valid()) settings_->setValue("connection/last", s.toString());
+}
+
+void MainWindow::restoreLayout() {
+    if (!settings_) return;
+    restoreGeometry(settings_->value("window/geometry").toByteArray());
+    restoreState(settings_->value("window/state").toByteArray());
+    sky_->setShowTracks(settings_->value("view/skyTracks", false).toBool());
+    consoleView_->setHistory(settings_->value("console/history").toStringList());
+    const QString theme = settings_->value("view/theme", "system").toString();
+    if (theme != QLatin1String("system")) applyTheme(theme);
+}
+
+void MainWindow::connectAtStart(const SourceSpec &spec) {
+    SourceSpec s = spec;
+    if (!s.valid() && settings_) s = SourceSpec::fromString(settings_->value("connection/last").toString());
+    if (!s.valid()) s = SourceSpec{SourceSpec::Kind::Simulator, QStringLiteral("nvs")};
+    bar_->select(s);
+    controller_->connectTo(s);
+}
+
+void MainWindow::closeEvent(QCloseEvent *e) {
+    saveLayout();
+    controller_->disconnectFromSource(); // flushes a recording
+    QMainWindow::closeEvent(e);
 }
 
 } // namespace gnss::app

@@ -1,23 +1,84 @@
 #pragma once
-// MainWindow: menus, docks and the status bar. It wires; it does not decode or draw.
+// MainWindow: menus, docks, the connection bar and the status bar. It wires models, views and
+// the connection; it does not decode or draw.
+#include "source_spec.h"
+
 #include <QMainWindow>
 
+class QLabel;
+class QSettings;
+class QDockWidget;
+
+namespace gnss {
+class DialectRegistry;
+namespace link {
+class PortWatcher;
+}
+namespace ui {
+class ConsoleModel;
+class ConsoleView;
+class MessageStatsModel;
+class ReceiverSession;
+class ReceiverStateModel;
+class SatelliteModel;
+class SkyPlotView;
+} // namespace ui
+} // namespace gnss
+
 namespace gnss::app {
+
+class ConnectionBar;
+class ConnectionController;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    explicit MainWindow(QWidget *parent = nullptr);
+    // `settings` keeps the layout, the last connection and view options between runs.
+    MainWindow(const DialectRegistry &registry, QSettings *settings, QWidget *parent = nullptr);
+    ~MainWindow() override;
 
-signals:
-    void openLogRequested(const QString &path);
+    ConnectionController *controller() const { return controller_; }
+    ui::ReceiverStateModel *stateModel() const { return stateModel_; }
+    ui::SatelliteModel *satelliteModel() const { return satellites_; }
+    ui::ReceiverSession *session() const { return session_; }
+    QDockWidget *dock(const QString &objectName) const;
+
+    // Connects to `spec`, or (invalid spec) to the last source used, or to the simulated
+    // NV08C-RTK the first time.
+    void connectAtStart(const SourceSpec &spec);
+    void saveLayout();
+    void restoreLayout();
+
+protected:
+    void closeEvent(QCloseEvent *e) override;
 
 private:
+    void createModels();
+    void createDocks();
     void createMenus();
-    void openLog();
-    void about();
+    void createStatusBar();
+    QDockWidget *addDock(QWidget *w, const QString &title, const QString &objectName, Qt::DockWidgetArea area);
+    void updateStatus();
+    void applyTheme(const QString &theme);
+    void toggleRecording(bool on);
 
+    const DialectRegistry &registry_;
+    QSettings *settings_;
+    link::PortWatcher *ports_ = nullptr;
+    ui::ReceiverStateModel *stateModel_ = nullptr;
+    ui::SatelliteModel *satellites_ = nullptr;
+    ui::MessageStatsModel *messages_ = nullptr;
+    ui::ConsoleModel *console_ = nullptr;
+    ui::ReceiverSession *session_ = nullptr;
+    ConnectionController *controller_ = nullptr;
+    ConnectionBar *bar_ = nullptr;
+    ui::SkyPlotView *sky_ = nullptr;
+    ui::ConsoleView *consoleView_ = nullptr;
     QMenu *viewMenu_ = nullptr;
+    QAction *recordAction_ = nullptr;
+    QLabel *stateLabel_ = nullptr, *dialectLabel_ = nullptr, *rateLabel_ = nullptr, *errorLabel_ = nullptr,
+           *fixLabel_ = nullptr, *recordLabel_ = nullptr;
+    QByteArray defaultState_;
 };
 
 } // namespace gnss::app

@@ -19,6 +19,7 @@
 namespace gnss {
 
 struct Dialect;
+struct ReceiverState;
 
 // Passed to every decode function.
 class DecodeContext {
@@ -121,6 +122,10 @@ struct Dialect {
     std::string_view (*fixNote)(int ggaQuality, char mode) = nullptr;
     // Satellite numbering override; nullptr = standard NMEA.
     SatelliteRef (*mapSatellite)(Constellation system, int id) = nullptr;
+
+    // Translates one of the dialect's messages into the vendor-neutral receiver state (RTK
+    // status, attitude, time marks, identity, status reports); true when it used the message.
+    bool (*updateState)(const Message &m, ReceiverState &state) = nullptr;
 
     // Settings and commands.
     std::span<const SettingDef> settings;

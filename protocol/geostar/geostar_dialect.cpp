@@ -1,5 +1,6 @@
 // GeoStar GeoS-5: sentence table and the dialect record.
 #include "geostar_dialect.h"
+#include "geostar_state.h"
 
 #include "geostar_gns.h"
 #include "geostar_messages.h"
@@ -45,6 +46,7 @@ const Dialect &dialect() {
             .modeIndicator = modeIndicator,
             .fixNote = fixNote,
             .mapSatellite = mapSatellite,
+            .updateState = updateState,
             .settings = settingsSchema(),
             .replyRules = replyRules(),
             .encodeSettings = encodeSettings,

@@ -1,5 +1,6 @@
 // The Nemerix VT002 dialect record.
 #include "nemerix_dialect.h"
+#include "nemerix_state.h"
 
 #include "nemerix_dialect_parts.h"
 
@@ -20,6 +21,7 @@ const Dialect &dialect() {
             .rules = sentenceRules(),
             // The checksum is optional on every sentence (Appendix C, "General NMEA Format").
             .checksumOptional = true,
+            .updateState = updateState,
             .settings = settingsSchema(),
             .replyRules = replyRules(),
             .encodeSettings = encodeSettings,

@@ -1,5 +1,6 @@
 // The NVS NV08C-RTK dialect record: sentences, settings, commands and replies as one constant.
 #include "nvs_dialect.h"
+#include "nvs_state.h"
 
 #include "nvs_messages.h"
 #include "nvs_reply_rules.h"
@@ -32,6 +33,7 @@ const Dialect &dialect() {
             .displayName = "NVS NV08C-RTK",
             .rules = sentenceRules(),
             .ggaQuality = ggaQuality,
+            .updateState = updateState,
             .settings = settingsSchema(),
             .replyRules = replyRules(),
             .encodeSettings = encodeSettings,

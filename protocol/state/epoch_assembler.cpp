@@ -54,11 +54,11 @@ FixType EpochAssembler::fixFromQuality(int q) const {
 
 void EpochAssembler::startEpochIfTimeChanged(const std::optional<TimeOfDay> &t, Callback onEpoch) {
     if (!t) return;
-    if (current_.time && !(*current_.time == *t)) emit(onEpoch);
+    if (current_.time && !(*current_.time == *t)) closeEpoch(onEpoch);
     if (!current_.time) current_.time = t;
 }
 
-void EpochAssembler::emit(Callback onEpoch) {
+void EpochAssembler::closeEpoch(Callback onEpoch) {
     if (!hasContent_) return;
     Epoch &e = current_;
     if (!e.date) e.date = lastDate_;
@@ -119,7 +119,7 @@ void EpochAssembler::emit(Callback onEpoch) {
     gnsMode_.clear();
 }
 
-void EpochAssembler::flush(Callback onEpoch) { emit(onEpoch); }
+void EpochAssembler::flush(Callback onEpoch) { closeEpoch(onEpoch); }
 
 EpochAssembler::GsvGroup &EpochAssembler::group(std::uint32_t key) {
     for (auto &g : groups_)

@@ -41,7 +41,7 @@ private:
         std::uint64_t refreshedEpoch = 0;
     };
     void startEpochIfTimeChanged(const std::optional<TimeOfDay> &t, Callback onEpoch);
-    void emit(Callback onEpoch);
+    void closeEpoch(Callback onEpoch);
     FixType fixFromQuality(int q) const;
     FixType fixFromMode(char mode) const;
     int modeRank(char mode) const;

@@ -1,0 +1,123 @@
+#include "connection_bar.h"
+
+#include "link/port_watcher.h"
+
+#include <QComboBox>
+#include <QFileDialog>
+#include <QInputDialog>
+#include <QLabel>
+#include <QPushButton>
+
+namespace gnss::app {
+namespace {
+enum ItemRole { SpecRole = Qt::UserRole + 1 };
+constexpr int kBauds[] = {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600};
+} // namespace
+
+ConnectionBar::ConnectionBar(link::PortWatcher *ports, QWidget *parent)
+    : QToolBar(tr("Connection"), parent), ports_(ports) {
+    setObjectName("connectionBar");
+    addWidget(new QLabel(tr("Source "), this));
+    source_ = new QComboBox(this);
+    source_->setObjectName("sourceCombo");
+    source_->setMinimumContentsLength(28);
+    source_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    addWidget(source_);
+    addWidget(new QLabel(tr("  Baud "), this));
+    baud_ = new QComboBox(this);
+    baud_->setObjectName("baudCombo");
+    baud_->addItem(tr("auto"), 0);
+    for (int b : kBauds) baud_->addItem(QString::number(b), b);
+    addWidget(baud_);
+    button_ = new QPushButton(tr("Connect"), this);
+    button_->setObjectName("connectButton");
+    addWidget(button_);
+    connect(button_, &QPushButton::clicked, this, [this] {
+        if (connected_)
+            emit disconnectRequested();
+        else
+            emit connectRequested(selection());
+    });
+    connect(source_, &QComboBox::activated, this, [this](int i) {
+        const QString action = source_->itemData(i, SpecRole).toString();
+        if (action == QLatin1String("tcp?")) {
+            bool ok = false;
+            const QString hp = QInputDialog::getText(this, tr("TCP source"), tr("Host and port (HOST:PORT):"),
+                                                     QLineEdit::Normal, QStringLiteral("127.0.0.1:5000"), &ok);
+            if (ok && !hp.isEmpty()) extra_ = SourceSpec{SourceSpec::Kind::Tcp, hp};
+            rebuildSources();
+        } else if (action == QLatin1String("replay?")) {
+            const QString f = QFileDialog::getOpenFileName(this, tr("Open Log"), {},
+                                                           tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
+            if (!f.isEmpty()) extra_ = SourceSpec{SourceSpec::Kind::Replay, f};
+            rebuildSources();
+        }
+        baud_->setEnabled(selection().kind == SourceSpec::Kind::Serial);
+    });
+    if (ports_) connect(ports_, &link::PortWatcher::portsChanged, this, &ConnectionBar::rebuildSources);
+    rebuildSources();
+}
+
+void ConnectionBar::rebuildSources() {
+    const SourceSpec current = selection();
+    source_->clear();
+    if (ports_) {
+        for (const link::PortInfo &p : ports_->ports()) {
+            QString text = p.portName;
+            if (!p.description.isEmpty()) text += QStringLiteral(" — ") + p.description;
+            if (!p.usbId().isEmpty()) text += QStringLiteral(" [%1]").arg(p.usbId());
+            source_->addItem(text, SourceSpec{SourceSpec::Kind::Serial, p.systemLocation}.toString());
+            source_->setItemData(source_->count() - 1,
+                                 tr("%1\nManufacturer: %2\nSerial number: %3")
+                                         .arg(p.systemLocation, p.manufacturer, p.serialNumber),
+                                 Qt::ToolTipRole);
+        }
+    }
+    const struct {
+        const char *id;
+        const char *label;
+    } sims[] = {{"nvs", QT_TR_NOOP("Simulated NVS NV08C-RTK")},
+                {"geostar", QT_TR_NOOP("Simulated GeoStar GeoS-5")},
+                {"nemerix", QT_TR_NOOP("Simulated Nemerix VT002")},
+                {"nmea", QT_TR_NOOP("Simulated NMEA receiver")}};
+    for (const auto &s : sims)
+        source_->addItem(tr(s.label), SourceSpec{SourceSpec::Kind::Simulator, QString::fromLatin1(s.id)}.toString());
+    if (extra_.valid()) source_->addItem(extra_.displayName(), extra_.toString());
+    source_->addItem(tr("TCP…"), QStringLiteral("tcp?"));
+    source_->addItem(tr("Open log…"), QStringLiteral("replay?"));
+    select(extra_.valid() && (current.kind == SourceSpec::Kind::None) ? extra_ : current);
+}
+
+SourceSpec ConnectionBar::selection() const {
+    SourceSpec s = SourceSpec::fromString(source_->currentData().toString());
+    if (s.kind == SourceSpec::Kind::Serial) s.baud = baud_->currentData().toInt();
+    return s;
+}
+
+void ConnectionBar::select(const SourceSpec &spec) {
+    if (!spec.valid()) return;
+    SourceSpec key = spec;
+    if (key.kind == SourceSpec::Kind::Serial) key.baud = 0;
+    int i = source_->findData(key.toString());
+    if (i < 0 && (spec.kind == SourceSpec::Kind::Tcp || spec.kind == SourceSpec::Kind::Replay ||
+                  spec.kind == SourceSpec::Kind::Serial)) {
+        // Not listed (a TCP/replay source from the command line, or a port not present now).
+        source_->insertItem(0, spec.displayName(), key.toString());
+        i = 0;
+    }
+    if (i >= 0) source_->setCurrentIndex(i);
+    if (spec.kind == SourceSpec::Kind::Serial) {
+        const int b = baud_->findData(spec.baud);
+        baud_->setCurrentIndex(b >= 0 ? b : 0);
+    }
+    baud_->setEnabled(spec.kind == SourceSpec::Kind::Serial);
+}
+
+void ConnectionBar::setConnected(bool connected) {
+    connected_ = connected;
+    button_->setText(connected ? tr("Disconnect") : tr("Connect"));
+    source_->setEnabled(!connected);
+    baud_->setEnabled(!connected && selection().kind == SourceSpec::Kind::Serial);
+}
+
+} // namespace gnss::app

@@ -1,0 +1,41 @@
+#pragma once
+// ConnectionBar: where the data comes from — serial ports (refreshed by themselves when a device
+// is plugged or unplugged), the built-in simulated receivers, TCP, a log to replay — the baud
+// rate with "auto", and Connect / Disconnect.
+#include "source_spec.h"
+
+#include <QToolBar>
+
+class QComboBox;
+class QPushButton;
+
+namespace gnss::link {
+class PortWatcher;
+}
+
+namespace gnss::app {
+
+class ConnectionBar : public QToolBar {
+    Q_OBJECT
+public:
+    explicit ConnectionBar(link::PortWatcher *ports, QWidget *parent = nullptr);
+
+    SourceSpec selection() const;
+    void select(const SourceSpec &spec);
+    void setConnected(bool connected);
+
+signals:
+    void connectRequested(const gnss::app::SourceSpec &spec);
+    void disconnectRequested();
+
+private:
+    void rebuildSources();
+    link::PortWatcher *ports_;
+    QComboBox *source_;
+    QComboBox *baud_;
+    QPushButton *button_;
+    bool connected_ = false;
+    SourceSpec extra_; // a TCP or replay source chosen by the user
+};
+
+} // namespace gnss::app

@@ -1,0 +1,54 @@
+#include "source_spec.h"
+
+#include <QCoreApplication>
+
+namespace gnss::app {
+
+QString SourceSpec::toString() const {
+    switch (kind) {
+    case Kind::Serial: return QStringLiteral("serial:%1@%2").arg(name).arg(baud);
+    case Kind::Tcp: return QStringLiteral("tcp:%1").arg(name);
+    case Kind::Replay: return QStringLiteral("replay:%1").arg(name);
+    case Kind::Simulator: return QStringLiteral("sim:%1").arg(name);
+    case Kind::None: break;
+    }
+    return {};
+}
+
+SourceSpec SourceSpec::fromString(const QString &s) {
+    SourceSpec spec;
+    const int colon = s.indexOf(':');
+    if (colon < 0) return spec;
+    const QString kind = s.left(colon), rest = s.mid(colon + 1);
+    if (kind == QLatin1String("serial")) {
+        const int at = rest.lastIndexOf('@');
+        spec.kind = Kind::Serial;
+        spec.name = at < 0 ? rest : rest.left(at);
+        spec.baud = at < 0 ? 0 : rest.mid(at + 1).toInt();
+    } else if (kind == QLatin1String("tcp")) {
+        spec.kind = Kind::Tcp;
+        spec.name = rest;
+    } else if (kind == QLatin1String("replay")) {
+        spec.kind = Kind::Replay;
+        spec.name = rest;
+    } else if (kind == QLatin1String("sim")) {
+        spec.kind = Kind::Simulator;
+        spec.name = rest;
+    }
+    return spec;
+}
+
+QString SourceSpec::displayName() const {
+    auto tr = [](const char *t) { return QCoreApplication::translate("SourceSpec", t); };
+    switch (kind) {
+    case Kind::Serial:
+        return baud ? tr("%1 at %2 baud").arg(name).arg(baud) : tr("%1 (baud: auto)").arg(name);
+    case Kind::Tcp: return tr("TCP %1").arg(name);
+    case Kind::Replay: return tr("Replay %1").arg(name);
+    case Kind::Simulator: return tr("Simulated %1").arg(name);
+    case Kind::None: break;
+    }
+    return tr("No source");
+}
+
+} // namespace gnss::app

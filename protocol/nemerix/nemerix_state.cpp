@@ -1,0 +1,35 @@
+// Nemerix messages → the vendor-neutral receiver state: version reports and the settings report
+// (PNMRX603) shown as status reports.
+#include "nemerix_messages.h"
+#include "nemerix_state.h"
+#include "state/receiver_state.h"
+#include "state/report_json.h"
+
+namespace gnss::nemerix {
+
+bool updateState(const Message &m, ReceiverState &st) {
+    if (m.type == &VersionReport::kSoftwareType) {
+        const auto &v = static_cast<const VersionReport &>(m);
+        st.identity.vendor = "Nemerix";
+        if (st.identity.model.empty()) st.identity.model = "Nemerix receiver";
+        std::string fw;
+        for (std::size_t i = 0; i < v.count; ++i) {
+            if (!fw.empty()) fw += ' ';
+            fw += v.fieldsText[i];
+        }
+        st.identity.firmware = fw;
+        st.reports["Software version (PNMRX600)"] = messageJson(m);
+        return true;
+    }
+    if (m.type == &VersionReport::kFlashType) {
+        st.reports["Flash content (PNMRX602)"] = messageJson(m);
+        return true;
+    }
+    if (const auto *r = message_cast<SettingsReport>(m)) {
+        st.reports["Settings report (PNMRX603) " + std::to_string(r->number)] = messageJson(m);
+        return true;
+    }
+    return false;
+}
+
+} // namespace gnss::nemerix

@@ -1,0 +1,32 @@
+#pragma once
+// StateTracker: decoded messages in, one ReceiverState snapshot per navigation epoch out.
+// Standard messages go to the EpochAssembler (plus HDT heading and GST deviations); vendor
+// messages go to the dialect's updateState hook.
+#include "epoch_assembler.h"
+#include "receiver_state.h"
+
+namespace gnss {
+
+class StateTracker {
+public:
+    using Callback = FunctionRef<void(const ReceiverState &)>;
+
+    explicit StateTracker(const Dialect *dialect = nullptr) : epochs_(dialect), dialect_(dialect) {}
+    void setDialect(const Dialect *d) {
+        dialect_ = d;
+        epochs_.setDialect(d);
+    }
+
+    // One decoded message (with the dialect of the rule that decoded it, nullptr: standard).
+    void add(const Sentence &s, const Message &m, const Dialect *ruleDialect, Callback onEpoch);
+    void flush(Callback onEpoch);
+
+    const ReceiverState &state() const { return state_; }
+
+private:
+    EpochAssembler epochs_;
+    const Dialect *dialect_;
+    ReceiverState state_;
+};
+
+} // namespace gnss

@@ -1,0 +1,141 @@
+// AttitudeView: roll/pitch/yaw and accelerations from the NVS IMU sentence; time-mark events in
+// a table, newest first; "—" for what the receiver did not send.
+#include "core/sentence_builder.h"
+#include "core/stream_decoder.h"
+#include "dialects.h"
+#include "models/receiver_state_model.h"
+#include "state/state_tracker.h"
+#include "views/attitude_view.h"
+
+#include <QLabel>
+#include <QTableWidget>
+#include <QTest>
+
+using namespace gnss;
+using namespace gnss::ui;
+
+namespace {
+
+ReceiverState track(const std::vector<std::string> &lines) {
+    static const DialectRegistry reg = makeBuiltinRegistry();
+    StreamDecoder dec(reg);
+    StateTracker tracker;
+    auto onEpoch = [](const ReceiverState &) {};
+    for (const auto &l : lines) {
+        dec.feed(l + "\r\n", [&](const SentenceEvent &ev) {
+            if (!ev.message) return;
+            tracker.setDialect(dec.dialect());
+            tracker.add(ev.sentence, *ev.message, ev.dialect, onEpoch);
+        });
+    }
+    tracker.flush(onEpoch);
+    return tracker.state();
+}
+
+QString text(const QWidget &w, const char *name) {
+    auto *l = w.findChild<QLabel *>(QString::fromLatin1(name));
+    return l ? l->text() : QString("<missing %1>").arg(name);
+}
+
+TimeMarkEvent mark(std::int64_t counter, double tow) {
+    TimeMarkEvent e;
+    e.counter = counter;
+    e.towSeconds = tow;
+    return e;
+}
+
+} // namespace
+
+class TestAttitudeView : public QObject {
+    Q_OBJECT
+private slots:
+    void imuSentenceShowsAttitudeAndAcceleration() {
+        ReceiverStateModel model;
+        AttitudeView view(&model);
+        model.publish(track({"$PNVGIMU,145505.20,0.42,0.37,21.84,0.065,0.064,-0.201*7C"}));
+        view.refresh();
+        QCOMPARE(text(view, "attitudeRoll"), QString("0.42°"));
+        QCOMPARE(text(view, "attitudePitch"), QString("0.37°"));
+        QCOMPARE(text(view, "attitudeYaw"), QString("21.84°"));
+        QCOMPARE(text(view, "attitudeAccNorth"), QString("0.065 m/s²"));
+        QCOMPARE(text(view, "attitudeAccEast"), QString("0.064 m/s²"));
+        QCOMPARE(text(view, "attitudeAccDown"), QString("-0.201 m/s²"));
+        QCOMPARE(text(view, "attitudeTime"), QString("14:55:05.200"));
+    }
+
+    void missingValuesShowADash() {
+        ReceiverStateModel model;
+        AttitudeView view(&model);
+        const QString dash(QChar(0x2014));
+        for (const char *n : {"attitudeRoll", "attitudeYaw", "attitudeAccDown", "attitudeTime"})
+            QCOMPARE(text(view, n), dash);
+        QCOMPARE(view.findChild<QTableWidget *>("timeMarkTable")->rowCount(), 0);
+    }
+
+    void timeMarksFromNvsSentencesNewestFirst() {
+        ReceiverStateModel model;
+        AttitudeView view(&model);
+        model.publish(track({"$PNVGTME,128,40327.564756284*49", "$PNVGTMU,128,081248.547824228*61",
+                             "$PNVGTMC,145505.28,4724.5118287,N,00937.6956032,E,4,17,0.7,403.995,"
+                             "M,47.848,M,2.2,0002*4D",
+                             buildSentence("PNVGTME,129,40328.5")}));
+        view.refresh();
+        auto *table = view.findChild<QTableWidget *>("timeMarkTable");
+        QVERIFY(table);
+        QCOMPARE(table->rowCount(), 2);
+        QCOMPARE(table->item(0, AttitudeView::Counter)->text(), QString("129"));
+        QCOMPARE(table->item(0, AttitudeView::Tow)->text(), QString("40328.500000"));
+        QCOMPARE(table->item(0, AttitudeView::Latitude)->text(), QString(QChar(0x2014)));
+        QCOMPARE(table->item(1, AttitudeView::Counter)->text(), QString("128"));
+        QCOMPARE(table->item(1, AttitudeView::Tow)->text(), QString("40327.564756"));
+        QCOMPARE(table->item(1, AttitudeView::Utc)->text(), QString("08:12:48.547824228"));
+        QCOMPARE(table->item(1, AttitudeView::Latitude)->text(), QString("47.40853048° N"));
+        QCOMPARE(table->item(1, AttitudeView::Longitude)->text(), QString("9.62826005° E"));
+        QCOMPARE(table->item(1, AttitudeView::Altitude)->text(), QString("403.995"));
+        QVERIFY(text(view, "timeMarkCount").contains("2"));
+    }
+
+    void aNewMarkGoesOnTopOnTheTimer() {
+        ReceiverStateModel model;
+        AttitudeView view(&model);
+        ReceiverState st;
+        for (int i = 1; i <= 3; ++i) st.addTimeMark(mark(i, 100.0 + i));
+        model.publish(st);
+        auto *table = view.findChild<QTableWidget *>("timeMarkTable");
+        QTRY_COMPARE_WITH_TIMEOUT(table->rowCount(), 3, 2000);
+        QCOMPARE(table->item(0, 0)->text(), QString("3"));
+        QCOMPARE(table->item(2, 0)->text(), QString("1"));
+        // A full buffer: the count stays, the newest changes; the table must follow.
+        st.timeMarks.pop_front();
+        st.addTimeMark(mark(4, 104.0));
+        model.publish(st);
+        QTRY_COMPARE_WITH_TIMEOUT(table->item(0, 0)->text(), QString("4"), 2000);
+        QCOMPARE(table->item(2, 0)->text(), QString("2"));
+    }
+
+    void screenshotReadsWell() {
+        ReceiverStateModel model;
+        AttitudeView view(&model);
+        ReceiverState st =
+                track({"$PNVGIMU,145505.20,0.42,0.37,21.84,0.065,0.064,-0.201*7C",
+                       "$PNVGTME,128,40327.564756284*49", "$PNVGTMU,128,081248.547824228*61",
+                       "$PNVGTMC,145505.28,4724.5118287,N,00937.6956032,E,4,17,0.7,"
+                       "403.995,M,47.848,M,2.2,0002*4D"});
+        for (int i = 129; i < 135; ++i) {
+            TimeMarkEvent e = st.timeMarks.back();
+            e.counter = i;
+            *e.towSeconds += 1.0;
+            st.addTimeMark(e);
+        }
+        model.publish(st);
+        view.refresh();
+        view.resize(820, 480);
+        const QImage img = view.grab().toImage();
+        QVERIFY(!img.isNull());
+        const QByteArray dir = qgetenv("GNSS_SCREENSHOT_DIR");
+        if (!dir.isEmpty()) QVERIFY(img.save(QString::fromLocal8Bit(dir) + "/attitude_view.png"));
+    }
+};
+
+QTEST_MAIN(TestAttitudeView)
+#include "tst_attitude_view.moc"

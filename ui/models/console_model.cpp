@@ -1,0 +1,73 @@
+#include "console_model.h"
+
+#include <QColor>
+#include <QDateTime>
+
+namespace gnss::ui {
+namespace {
+constexpr int kMaxRaw = 64 * 1024;
+}
+
+ConsoleModel::ConsoleModel(QObject *parent) : QAbstractListModel(parent) {}
+
+int ConsoleModel::rowCount(const QModelIndex &p) const { return p.isValid() ? 0 : int(lines_.size()); }
+
+QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
+    if (!index.isValid() || index.row() >= int(lines_.size())) return {};
+    const ConsoleLine &l = lines_[size_t(index.row())];
+    switch (role) {
+    case Qt::DisplayRole: {
+        const QString time = QDateTime::fromMSecsSinceEpoch(l.ms, Qt::UTC).toString("hh:mm:ss.zzz");
+        return time + (l.sent ? QStringLiteral("  ▶ ") : QStringLiteral("    ")) + QString::fromLatin1(l.text);
+    }
+    case Qt::ToolTipRole: return l.error.isEmpty() ? QVariant() : QVariant(l.error);
+    case Qt::ForegroundRole:
+        if (l.checksumBad || !l.error.isEmpty()) return QColor(0xC6, 0x28, 0x28);
+        if (l.sent) return QColor(0x00, 0x72, 0xB2);
+        return {};
+    case SentRole: return l.sent;
+    case ChecksumBadRole: return l.checksumBad;
+    case ErrorRole: return l.error;
+    case AddressRole: return QString::fromLatin1(l.address);
+    case TimeRole: return l.ms;
+    }
+    return {};
+}
+
+void ConsoleModel::flush() {
+    if (pending_.empty()) return;
+    if (paused_) {
+        // Paused: keep only what fits, so resuming shows the latest lines.
+        if (pending_.size() > size_t(kMaxLines)) pending_.erase(pending_.begin(), pending_.end() - kMaxLines);
+        return;
+    }
+    const int overflow = int(lines_.size() + pending_.size()) - kMaxLines;
+    if (overflow > 0) {
+        const int drop = std::min(overflow, int(lines_.size()));
+        if (drop > 0) {
+            beginRemoveRows({}, 0, drop - 1);
+            lines_.erase(lines_.begin(), lines_.begin() + drop);
+            endRemoveRows();
+        }
+        if (pending_.size() > size_t(kMaxLines)) pending_.erase(pending_.begin(), pending_.end() - kMaxLines);
+    }
+    beginInsertRows({}, int(lines_.size()), int(lines_.size() + pending_.size()) - 1);
+    for (auto &l : pending_) lines_.push_back(std::move(l));
+    endInsertRows();
+    pending_.clear();
+}
+
+void ConsoleModel::clear() {
+    beginResetModel();
+    lines_.clear();
+    pending_.clear();
+    raw_.clear();
+    endResetModel();
+}
+
+void ConsoleModel::appendRaw(const QByteArray &bytes) {
+    raw_.append(bytes);
+    if (raw_.size() > kMaxRaw) raw_.remove(0, raw_.size() - kMaxRaw);
+}
+
+} // namespace gnss::ui

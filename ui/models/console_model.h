@@ -1,0 +1,48 @@
+#pragma once
+// ConsoleModel: the lines received and sent, newest last, bounded. Lines arrive per sentence but
+// are handed to views in batches (flush() on the session's timer), so a 20 Hz receiver does not
+// repaint the console twenty times a second per line.
+#include <QAbstractListModel>
+#include <QByteArray>
+#include <deque>
+#include <vector>
+
+namespace gnss::ui {
+
+struct ConsoleLine {
+    qint64 ms = 0;        // host time
+    QByteArray text;      // the sentence, without line ending
+    QByteArray address;   // for filtering
+    bool sent = false;    // a command we sent
+    bool checksumBad = false;
+    QString error;        // why it was not decoded (empty when it was)
+};
+
+class ConsoleModel : public QAbstractListModel {
+    Q_OBJECT
+public:
+    enum Role { SentRole = Qt::UserRole + 1, ChecksumBadRole, ErrorRole, AddressRole, TimeRole };
+    static constexpr int kMaxLines = 20000;
+
+    explicit ConsoleModel(QObject *parent = nullptr);
+    int rowCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+
+    void append(ConsoleLine line) { pending_.push_back(std::move(line)); }
+    void flush(); // moves pending lines into the model (one insert), drops the oldest past the cap
+    void clear();
+    void setPaused(bool p) { paused_ = p; }
+    bool paused() const { return paused_; }
+
+    // The last raw bytes received, for the hex view.
+    void appendRaw(const QByteArray &bytes);
+    const QByteArray &raw() const { return raw_; }
+
+private:
+    std::deque<ConsoleLine> lines_;
+    std::vector<ConsoleLine> pending_;
+    QByteArray raw_;
+    bool paused_ = false;
+};
+
+} // namespace gnss::ui

@@ -1,0 +1,101 @@
+#include "receiver_session.h"
+
+#include <QDateTime>
+
+namespace gnss::ui {
+
+ReceiverSession::ReceiverSession(const DialectRegistry &registry, SessionModels models,
+                                 QObject *parent)
+    : QObject(parent), registry_(registry), models_(models) {
+    reset();
+    refreshTimer_.setInterval(100);
+    connect(&refreshTimer_, &QTimer::timeout, this, &ReceiverSession::refresh);
+    refreshTimer_.start();
+}
+
+void ReceiverSession::reset(const DecoderOptions &options) {
+    decoder_ = std::make_unique<StreamDecoder>(registry_, options);
+    counterSource_ = nullptr;
+    tracker_ = std::make_unique<StateTracker>(decoder_->dialect());
+    lastDialect_ = decoder_->dialect();
+    counters_ = {};
+    bytesAtLastRate_ = sentencesAtLastRate_ = 0;
+    lastRateMs_ = QDateTime::currentMSecsSinceEpoch();
+    if (models_.state) models_.state->clear();
+    if (models_.satellites) models_.satellites->clear();
+    if (models_.messages) models_.messages->clear();
+    if (models_.console) models_.console->clear();
+    emit dialectChanged(lastDialect_);
+}
+
+void ReceiverSession::feed(const QByteArray &bytes) {
+    noteBytes(bytes);
+    decoder_->feed(std::string_view(bytes.constData(), size_t(bytes.size())),
+                   [this](const SentenceEvent &ev) { onSentence(ev, decoder_->dialect()); });
+}
+
+void ReceiverSession::noteBytes(const QByteArray &bytes) {
+    counters_.bytes += quint64(bytes.size());
+    if (models_.console) models_.console->appendRaw(bytes);
+}
+
+void ReceiverSession::consume(const SentenceEvent &ev, const Dialect *dialect) { onSentence(ev, dialect); }
+
+void ReceiverSession::onSentence(const SentenceEvent &ev, const Dialect *dialect) {
+    if (dialect != lastDialect_) {
+        lastDialect_ = dialect;
+        tracker_->setDialect(dialect);
+        emit dialectChanged(dialect);
+    }
+    ++counters_.sentences;
+    const Sentence &s = ev.sentence;
+    if (s.checksum() == ChecksumStatus::Bad) ++counters_.checksumErrors;
+    if (!ev.message && ev.error != "unknown sentence" && s.checksum() != ChecksumStatus::Bad)
+        ++counters_.decodeErrors;
+    if (models_.console && !models_.console->paused()) {
+        ConsoleLine l;
+        l.ms = QDateTime::currentMSecsSinceEpoch();
+        l.text = QByteArray(s.line().data(), qsizetype(s.line().size()));
+        l.address = QByteArray(s.address().data(), qsizetype(s.address().size()));
+        l.checksumBad = s.checksum() == ChecksumStatus::Bad;
+        if (!ev.message) l.error = QString::fromUtf8(ev.error.data(), qsizetype(ev.error.size()));
+        models_.console->append(std::move(l));
+    }
+    if (!ev.message) return;
+    tracker_->add(s, *ev.message, ev.dialect, [this](const ReceiverState &st) {
+        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        if (models_.satellites) models_.satellites->update(st.epoch, now);
+        if (models_.state) models_.state->publish(st, QDateTime::fromMSecsSinceEpoch(now, Qt::UTC));
+    });
+}
+
+void ReceiverSession::noteSent(const QByteArray &sentence) {
+    if (!models_.console) return;
+    ConsoleLine l;
+    l.ms = QDateTime::currentMSecsSinceEpoch();
+    l.text = sentence.trimmed();
+    const int comma = l.text.indexOf(',');
+    const int star = l.text.indexOf('*');
+    const int end = comma >= 0 ? comma : (star >= 0 ? star : l.text.size());
+    l.address = l.text.mid(1, end - 1);
+    l.sent = true;
+    models_.console->append(std::move(l));
+}
+
+void ReceiverSession::refresh() {
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    if (models_.console) models_.console->flush();
+    if (models_.messages)
+        models_.messages->refresh((counterSource_ ? counterSource_ : decoder_.get())->addressStats(), now);
+    if (now - lastRateMs_ >= 1000) {
+        const double dt = double(now - lastRateMs_) / 1000.0;
+        counters_.bytesPerSecond = double(counters_.bytes - bytesAtLastRate_) / dt;
+        counters_.sentencesPerSecond = double(counters_.sentences - sentencesAtLastRate_) / dt;
+        bytesAtLastRate_ = counters_.bytes;
+        sentencesAtLastRate_ = counters_.sentences;
+        lastRateMs_ = now;
+    }
+    emit countersChanged();
+}
+
+} // namespace gnss::ui

@@ -1,0 +1,194 @@
+#include "time_series_model.h"
+
+#include "receiver_state_model.h"
+
+#include <algorithm>
+
+namespace gnss::ui {
+
+namespace {
+
+constexpr double kKnotsToMs = 1852.0 / 3600.0;
+
+Constellation snrConstellation(TimeSeriesModel::Series s) {
+    switch (s) {
+    case TimeSeriesModel::SnrGps: return Constellation::Gps;
+    case TimeSeriesModel::SnrGlonass: return Constellation::Glonass;
+    case TimeSeriesModel::SnrGalileo: return Constellation::Galileo;
+    case TimeSeriesModel::SnrBeiDou: return Constellation::BeiDou;
+    case TimeSeriesModel::SnrQzss: return Constellation::Qzss;
+    case TimeSeriesModel::SnrSbas: return Constellation::Sbas;
+    case TimeSeriesModel::SnrNavIC: return Constellation::NavIC;
+    default: return Constellation::Unknown;
+    }
+}
+
+} // namespace
+
+TimeSeriesModel::TimeSeriesModel(QObject *parent) : QObject(parent) {}
+
+void TimeSeriesModel::attach(ReceiverStateModel *model) {
+    connect(model, &ReceiverStateModel::updated, this, [this, model] {
+        if (model->epochCount() == 0)
+            clear();
+        else
+            append(model->state(), model->lastEpochTime());
+    });
+}
+
+void TimeSeriesModel::setWindowSeconds(double seconds) {
+    windowMs_ = std::max<qint64>(1000, static_cast<qint64>(seconds * 1000.0));
+    trim();
+    ++revision_;
+}
+
+void TimeSeriesModel::setCapacity(std::size_t n) {
+    capacity_ = std::max<std::size_t>(2, n);
+    trim();
+    ++revision_;
+}
+
+void TimeSeriesModel::append(const ReceiverState &state, const QDateTime &hostTime) {
+    const qint64 t = hostTime.isValid() ? hostTime.toMSecsSinceEpoch() : latestMs_;
+    // A host clock stepping back would break the time order the trimming relies on.
+    latestMs_ = std::max(latestMs_, t);
+    for (int i = 0; i < SeriesCount; ++i) {
+        const auto s = static_cast<Series>(i);
+        if (auto v = valueOf(s, state)) series_[i].push_back({latestMs_, *v});
+    }
+    trim();
+    ++revision_;
+}
+
+void TimeSeriesModel::clear() {
+    for (auto &s : series_) s.clear();
+    latestMs_ = 0;
+    ++revision_;
+}
+
+void TimeSeriesModel::trim() {
+    const qint64 oldest = latestMs_ - windowMs_;
+    for (auto &s : series_) {
+        while (!s.empty() && s.front().msecs < oldest) s.pop_front();
+        while (s.size() > capacity_) s.pop_front();
+    }
+}
+
+std::optional<double> TimeSeriesModel::valueOf(Series s, const ReceiverState &st) {
+    const Epoch &e = st.epoch;
+    switch (s) {
+    case SatsUsed:
+        if (e.satsUsed) return *e.satsUsed;
+        return std::nullopt;
+    case Hdop: return e.hdop ? e.hdop : st.rtk.hdop;
+    case Pdop: return e.pdop ? e.pdop : st.rtk.pdop;
+    case FixKind: return static_cast<double>(static_cast<int>(e.fix));
+    case SnrGps:
+    case SnrGlonass:
+    case SnrGalileo:
+    case SnrBeiDou:
+    case SnrQzss:
+    case SnrSbas:
+    case SnrNavIC: {
+        const Constellation c = snrConstellation(s);
+        double sum = 0;
+        int n = 0;
+        for (const auto &sat : e.satellites) {
+            if (sat.sat.system == c && sat.snr) {
+                sum += *sat.snr;
+                ++n;
+            }
+        }
+        if (n == 0) return std::nullopt;
+        return sum / n;
+    }
+    case SdLat: return st.rtk.sdLat;
+    case SdLon: return st.rtk.sdLon;
+    case SdHeight: return st.rtk.sdHeight;
+    case BaselineLength: return st.rtk.baseToRover.length;
+    case AltitudeMsl: return e.altMsl;
+    case Speed:
+        if (e.sogKnots) return *e.sogKnots * kKnotsToMs;
+        return std::nullopt;
+    case SeriesCount: break;
+    }
+    return std::nullopt;
+}
+
+QString TimeSeriesModel::key(Series s) {
+    switch (s) {
+    case SatsUsed: return QStringLiteral("satsUsed");
+    case Hdop: return QStringLiteral("hdop");
+    case Pdop: return QStringLiteral("pdop");
+    case FixKind: return QStringLiteral("fixType");
+    case SdLat: return QStringLiteral("sdLat");
+    case SdLon: return QStringLiteral("sdLon");
+    case SdHeight: return QStringLiteral("sdHeight");
+    case BaselineLength: return QStringLiteral("baselineLength");
+    case AltitudeMsl: return QStringLiteral("altitudeMsl");
+    case Speed: return QStringLiteral("speed");
+    case SeriesCount: return {};
+    default:
+        return QStringLiteral("snr.") + QString::fromLatin1(toString(snrConstellation(s)).data(),
+                                                            toString(snrConstellation(s)).size());
+    }
+}
+
+std::optional<TimeSeriesModel::Series> TimeSeriesModel::fromKey(const QString &k) {
+    for (int i = 0; i < SeriesCount; ++i)
+        if (key(static_cast<Series>(i)) == k) return static_cast<Series>(i);
+    return std::nullopt;
+}
+
+QString TimeSeriesModel::label(Series s) {
+    switch (s) {
+    case SatsUsed: return tr("Satellites used");
+    case Hdop: return tr("HDOP");
+    case Pdop: return tr("PDOP");
+    case FixKind: return tr("Fix type");
+    case SdLat: return tr("Std. dev. latitude");
+    case SdLon: return tr("Std. dev. longitude");
+    case SdHeight: return tr("Std. dev. height");
+    case BaselineLength: return tr("Baseline length");
+    case AltitudeMsl: return tr("Altitude above sea level");
+    case Speed: return tr("Speed");
+    case SeriesCount: return {};
+    default: {
+        const auto name = toString(snrConstellation(s));
+        return tr("Mean SNR %1").arg(QString::fromLatin1(name.data(), name.size()));
+    }
+    }
+}
+
+TimeSeriesModel::Group TimeSeriesModel::group(Series s) {
+    switch (s) {
+    case SatsUsed: return Satellites;
+    case Hdop:
+    case Pdop: return Dop;
+    case FixKind: return Fix;
+    case SdLat:
+    case SdLon:
+    case SdHeight: return Deviation;
+    case BaselineLength: return Baseline;
+    case AltitudeMsl: return Altitude;
+    case Speed: return SpeedGroup;
+    default: return Snr;
+    }
+}
+
+QString TimeSeriesModel::groupTitle(Group g) {
+    switch (g) {
+    case Satellites: return tr("Satellites used");
+    case Dop: return tr("DOP");
+    case Fix: return tr("Fix type");
+    case Snr: return tr("Mean SNR (dB-Hz)");
+    case Deviation: return tr("Standard deviation (m)");
+    case Baseline: return tr("Baseline length (m)");
+    case Altitude: return tr("Altitude above sea level (m)");
+    case SpeedGroup: return tr("Speed (m/s)");
+    case GroupCount: break;
+    }
+    return {};
+}
+
+} // namespace gnss::ui

@@ -1,0 +1,148 @@
+#include "attitude_view.h"
+
+#include "models/receiver_state_model.h"
+#include "value_format.h"
+
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace gnss::ui {
+
+namespace {
+
+// Angles read "40.61°", no space before the degree sign.
+QString degrees(const std::optional<double> &v, int decimals) {
+    return v ? fmt::number(v, decimals) + QChar(0x00B0) : fmt::dash();
+}
+
+// Counters can pass an int's range; "—" when not sent.
+QString count(const std::optional<std::int64_t> &v) {
+    return v ? QString::number(*v) : fmt::dash();
+}
+// UTC with at least milliseconds (time marks keep the receiver's nanoseconds).
+QString utcText(const std::optional<TimeOfDay> &t) {
+    return t ? QString::fromStdString(t->toString(3)) : fmt::dash();
+}
+
+} // namespace
+
+AttitudeView::AttitudeView(ReceiverStateModel *model, QWidget *parent)
+    : QWidget(parent), model_(model), timer_(new QTimer(this)) {
+    auto *outer = new QVBoxLayout(this);
+    auto *top = new QHBoxLayout;
+
+    auto *att = new QGroupBox(tr("Attitude"));
+    auto *g = new QGridLayout(att);
+    g->setColumnStretch(1, 1);
+    roll_ = addRow(g, tr("Roll"), "attitudeRoll");
+    pitch_ = addRow(g, tr("Pitch"), "attitudePitch");
+    yaw_ = addRow(g, tr("Yaw"), "attitudeYaw");
+    time_ = addRow(g, tr("Time (UTC)"), "attitudeTime");
+    top->addWidget(att, 1);
+
+    auto *acc = new QGroupBox(tr("Acceleration"));
+    g = new QGridLayout(acc);
+    g->setColumnStretch(1, 1);
+    accNorth_ = addRow(g, tr("North"), "attitudeAccNorth");
+    accEast_ = addRow(g, tr("East"), "attitudeAccEast");
+    accDown_ = addRow(g, tr("Down"), "attitudeAccDown");
+    g->setRowStretch(g->rowCount(), 1);
+    top->addWidget(acc, 1);
+    outer->addLayout(top);
+
+    auto *tm = new QGroupBox(tr("Time marks (newest first)"));
+    auto *tl = new QVBoxLayout(tm);
+    markCount_ = new QLabel(fmt::dash());
+    markCount_->setObjectName("timeMarkCount");
+    tl->addWidget(markCount_);
+    marks_ = new QTableWidget(0, ColumnCount);
+    marks_->setObjectName("timeMarkTable");
+    marks_->setHorizontalHeaderLabels({tr("Counter"), tr("GPS time of week (s)"), tr("UTC"),
+                                       tr("Latitude"), tr("Longitude"), tr("Altitude MSL (m)")});
+    marks_->verticalHeader()->hide();
+    marks_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    marks_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    marks_->setAlternatingRowColors(true);
+    marks_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    marks_->horizontalHeader()->setStretchLastSection(true);
+    tl->addWidget(marks_);
+    outer->addWidget(tm, 1);
+
+    timer_->setInterval(100); // 10 Hz
+    connect(timer_, &QTimer::timeout, this, &AttitudeView::poll);
+    timer_->start();
+    refresh();
+}
+
+QLabel *AttitudeView::addRow(QGridLayout *grid, const QString &name, const char *objectName) {
+    const int row = grid->rowCount();
+    grid->addWidget(new QLabel(name + QLatin1Char(':')), row, 0);
+    auto *value = new QLabel(fmt::dash());
+    value->setObjectName(QString::fromLatin1(objectName));
+    value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    grid->addWidget(value, row, 1);
+    return value;
+}
+
+void AttitudeView::poll() {
+    if (model_->epochCount() != shownEpochs_) refresh();
+}
+
+void AttitudeView::refresh() {
+    shownEpochs_ = model_->epochCount();
+    const ReceiverState &st = model_->state();
+    const AttitudeState &a = st.attitude;
+    const QString acc = tr("m/s\u00B2");
+    roll_->setText(degrees(a.roll, 2));
+    pitch_->setText(degrees(a.pitch, 2));
+    yaw_->setText(degrees(a.yaw, 2));
+    time_->setText(utcText(a.time));
+    accNorth_->setText(fmt::number(a.accNorth, 3, acc));
+    accEast_->setText(fmt::number(a.accEast, 3, acc));
+    accDown_->setText(fmt::number(a.accDown, 3, acc));
+
+    // Rebuild the table only when the events changed: the count or the newest one.
+    const auto &tm = st.timeMarks;
+    const std::optional<std::int64_t> newestCounter = tm.empty() ? std::nullopt : tm.back().counter;
+    const std::optional<double> newestTow = tm.empty() ? std::nullopt : tm.back().towSeconds;
+    if (tm.size() == shownMarks_ && newestCounter == shownCounter_ && newestTow == shownTow_)
+        return;
+    shownMarks_ = tm.size();
+    shownCounter_ = newestCounter;
+    shownTow_ = newestTow;
+    markCount_->setText(tm.empty() ? tr("No time marks yet")
+                                   : tr("%n time mark(s)", nullptr, int(tm.size())));
+    const int rows = std::min<int>(static_cast<int>(tm.size()), kMaxRows);
+    marks_->setUpdatesEnabled(false);
+    marks_->setRowCount(rows);
+    for (int row = 0; row < rows; ++row) {
+        const TimeMarkEvent &e = tm[tm.size() - 1 - static_cast<std::size_t>(row)]; // newest first
+        const QString cells[ColumnCount] = {count(e.counter),
+                                            fmt::number(e.towSeconds, 6),
+                                            utcText(e.utc),
+                                            fmt::latitude(e.lat, false),
+                                            fmt::longitude(e.lon, false),
+                                            fmt::number(e.altMsl, 3)};
+        for (int c = 0; c < ColumnCount; ++c) {
+            QTableWidgetItem *item = marks_->item(row, c);
+            if (!item) {
+                item = new QTableWidgetItem;
+                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+                marks_->setItem(row, c, item);
+            }
+            item->setText(cells[c]);
+        }
+    }
+    marks_->setUpdatesEnabled(true);
+}
+
+} // namespace gnss::ui

@@ -1,0 +1,316 @@
+#include "charts_view.h"
+
+#include "models/receiver_state_model.h"
+#include "style/gnss_style.h"
+
+#include <QCategoryAxis>
+#include <QChart>
+#include <QChartView>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QListWidget>
+#include <QScrollArea>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gnss::ui {
+
+namespace {
+
+using TS = TimeSeriesModel;
+
+Constellation snrSystem(TS::Series s) {
+    switch (s) {
+    case TS::SnrGps: return Constellation::Gps;
+    case TS::SnrGlonass: return Constellation::Glonass;
+    case TS::SnrGalileo: return Constellation::Galileo;
+    case TS::SnrBeiDou: return Constellation::BeiDou;
+    case TS::SnrQzss: return Constellation::Qzss;
+    case TS::SnrSbas: return Constellation::Sbas;
+    case TS::SnrNavIC: return Constellation::NavIC;
+    default: return Constellation::Unknown;
+    }
+}
+
+// Okabe-Ito colours for the lines that are not a constellation's.
+QColor lineColor(TS::Series s) {
+    if (TS::group(s) == TS::Snr) return style::constellationColor(snrSystem(s));
+    switch (s) {
+    case TS::Pdop:
+    case TS::SdLon: return QColor(0xD5, 0x5E, 0x00);
+    case TS::SdHeight: return QColor(0x00, 0x9E, 0x73);
+    case TS::FixKind: return QColor(0xCC, 0x79, 0xA7);
+    default: return QColor(0x00, 0x72, 0xB2);
+    }
+}
+
+bool checkedByDefault(TS::Series s) {
+    return s == TS::SatsUsed || s == TS::Hdop || s == TS::Pdop || s == TS::FixKind ||
+           TS::group(s) == TS::Snr;
+}
+
+// Points relative to the newest epoch (x in `unitMs` units, negative = older), reduced to each
+// bucket's min and max when there are more than `maxPoints`.
+QList<QPointF> toPoints(const std::deque<TS::Sample> &d, qint64 latest, double unitMs,
+                        int maxPoints) {
+    QList<QPointF> out;
+    const std::size_t n = d.size();
+    auto pt = [&](const TS::Sample &s) { return QPointF((s.msecs - latest) / unitMs, s.value); };
+    if (n <= static_cast<std::size_t>(maxPoints)) {
+        out.reserve(static_cast<qsizetype>(n));
+        for (const auto &s : d) out.append(pt(s));
+        return out;
+    }
+    const std::size_t bucket = (n + maxPoints / 2 - 1) / (maxPoints / 2);
+    out.reserve(maxPoints + 2);
+    for (std::size_t i = 0; i < n; i += bucket) {
+        const std::size_t end = std::min(n, i + bucket);
+        std::size_t lo = i, hi = i;
+        for (std::size_t j = i; j < end; ++j) {
+            if (d[j].value < d[lo].value) lo = j;
+            if (d[j].value > d[hi].value) hi = j;
+        }
+        out.append(pt(d[std::min(lo, hi)]));
+        if (lo != hi) out.append(pt(d[std::max(lo, hi)]));
+    }
+    return out;
+}
+
+} // namespace
+
+ChartsView::ChartsView(ReceiverStateModel *model, QWidget *parent)
+    : QWidget(parent), series_(new TimeSeriesModel(this)), timer_(new QTimer(this)) {
+    series_->attach(model);
+
+    auto *side = new QWidget;
+    auto *sideLayout = new QVBoxLayout(side);
+    sideLayout->setContentsMargins(0, 0, 0, 0);
+    sideLayout->addWidget(new QLabel(tr("Series")));
+    list_ = new QListWidget;
+    list_->setObjectName("chartsSeriesList");
+    for (int i = 0; i < TS::SeriesCount; ++i) {
+        const auto s = static_cast<TS::Series>(i);
+        auto *item = new QListWidgetItem(TS::label(s), list_);
+        item->setData(Qt::UserRole, i);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(checkedByDefault(s) ? Qt::Checked : Qt::Unchecked);
+    }
+    sideLayout->addWidget(list_, 1);
+    auto *win = new QHBoxLayout;
+    win->addWidget(new QLabel(tr("Window")));
+    window_ = new QSpinBox;
+    window_->setObjectName("chartsWindow");
+    window_->setRange(1, 60);
+    window_->setValue(10);
+    window_->setSuffix(tr(" min"));
+    win->addWidget(window_, 1);
+    sideLayout->addLayout(win);
+
+    auto *charts = new QWidget;
+    chartsLayout_ = new QVBoxLayout(charts);
+    chartsLayout_->setContentsMargins(0, 0, 0, 0);
+    chartsLayout_->setSpacing(2);
+    chartsLayout_->addStretch(1);
+    auto *scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(charts);
+
+    auto *split = new QSplitter(Qt::Horizontal);
+    split->addWidget(side);
+    split->addWidget(scroll);
+    split->setStretchFactor(1, 1);
+    split->setSizes({170, 600});
+    auto *outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(split);
+
+    series_->setWindowSeconds(window_->value() * 60.0);
+    connect(window_, &QSpinBox::valueChanged, this, [this](int minutes) {
+        series_->setWindowSeconds(minutes * 60.0);
+        selectionChanged_ = true;
+        redraw();
+    });
+    connect(list_, &QListWidget::itemChanged, this, [this] {
+        selectionChanged_ = true;
+        redraw();
+    });
+    timer_->setInterval(500); // 2 Hz: charts are for trends
+    connect(timer_, &QTimer::timeout, this, &ChartsView::redraw);
+    timer_->start();
+    redraw();
+}
+
+QStringList ChartsView::checkedSeries() const {
+    QStringList keys;
+    for (int i = 0; i < list_->count(); ++i)
+        if (list_->item(i)->checkState() == Qt::Checked)
+            keys << TS::key(static_cast<TS::Series>(list_->item(i)->data(Qt::UserRole).toInt()));
+    return keys;
+}
+
+void ChartsView::setCheckedSeries(const QStringList &keys) {
+    const QSignalBlocker block(list_);
+    for (int i = 0; i < list_->count(); ++i) {
+        const auto s = static_cast<TS::Series>(list_->item(i)->data(Qt::UserRole).toInt());
+        list_->item(i)->setCheckState(keys.contains(TS::key(s)) ? Qt::Checked : Qt::Unchecked);
+    }
+    selectionChanged_ = true;
+    redraw();
+}
+
+int ChartsView::windowMinutes() const {
+    return window_->value();
+}
+
+void ChartsView::setWindowMinutes(int minutes) {
+    window_->setValue(minutes);
+}
+
+ChartsView::GroupChart &ChartsView::ensureGroup(TS::Group g) {
+    GroupChart &gc = groups_[g];
+    if (gc.view) return gc;
+    gc.chart = new QChart;
+    gc.chart->setTitle(TS::groupTitle(g));
+    gc.chart->setMargins(QMargins(4, 2, 4, 2));
+    gc.chart->legend()->setAlignment(Qt::AlignRight);
+    gc.chart->setAnimationOptions(QChart::NoAnimation);
+    gc.x = new QValueAxis;
+    gc.chart->addAxis(gc.x, Qt::AlignBottom);
+    if (g == TS::Fix) {
+        auto *cat = new QCategoryAxis;
+        cat->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+        for (int f = 0; f <= static_cast<int>(FixType::Manual); ++f)
+            cat->append(style::fixTypeLabel(static_cast<FixType>(f)), f);
+        cat->setRange(-0.5, static_cast<int>(FixType::Manual) + 0.5);
+        gc.y = cat;
+        gc.chart->legend()->hide();
+    } else {
+        auto *v = new QValueAxis;
+        v->setLabelFormat(g == TS::Satellites ? "%d" : "%.2f");
+        gc.y = v;
+    }
+    gc.chart->addAxis(gc.y, Qt::AlignLeft);
+    gc.view = new QChartView(gc.chart);
+    gc.view->setObjectName(QStringLiteral("chart_%1").arg(int(g)));
+    gc.view->setRenderHint(QPainter::Antialiasing);
+    gc.view->setMinimumHeight(170);
+    // Keep the charts in group order above the trailing stretch.
+    int at = 0;
+    for (int i = 0; i < g; ++i)
+        if (groups_[i].view) ++at;
+    chartsLayout_->insertWidget(at, gc.view);
+    return gc;
+}
+
+void ChartsView::rebuildCharts() {
+    std::array<bool, TS::GroupCount> used{};
+    for (int i = 0; i < list_->count(); ++i) {
+        const auto s = static_cast<TS::Series>(list_->item(i)->data(Qt::UserRole).toInt());
+        const bool on = list_->item(i)->checkState() == Qt::Checked;
+        if (on) {
+            used[TS::group(s)] = true;
+            GroupChart &gc = ensureGroup(TS::group(s));
+            if (!lines_[s]) {
+                auto *line = new QLineSeries;
+                line->setObjectName(QStringLiteral("series_") + TS::key(s));
+                line->setName(TS::label(s));
+                QPen pen(lineColor(s));
+                pen.setWidthF(1.6);
+                line->setPen(pen);
+                gc.chart->addSeries(line);
+                line->attachAxis(gc.x);
+                line->attachAxis(gc.y);
+                lines_[s] = line;
+            }
+        } else if (lines_[s]) {
+            groups_[TS::group(s)].chart->removeSeries(lines_[s]);
+            delete lines_[s];
+            lines_[s] = nullptr;
+        }
+    }
+    for (int g = 0; g < TS::GroupCount; ++g)
+        if (groups_[g].view) groups_[g].view->setVisible(used[g]);
+    applyTheme();
+}
+
+void ChartsView::redraw() {
+    if (!selectionChanged_ && series_->revision() == drawnRevision_) return;
+    if (selectionChanged_) rebuildCharts();
+    selectionChanged_ = false;
+    drawnRevision_ = series_->revision();
+
+    const double windowS = series_->windowSeconds();
+    const bool minutes = windowS > 120.0;
+    const double unitMs = minutes ? 60'000.0 : 1000.0;
+    const double span = windowS * 1000.0 / unitMs;
+    const qint64 latest = series_->latestMsecs();
+
+    std::array<double, TS::GroupCount> lo, hi;
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for (int i = 0; i < TS::SeriesCount; ++i) {
+        if (!lines_[i]) continue;
+        const auto s = static_cast<TS::Series>(i);
+        const QList<QPointF> pts = toPoints(series_->samples(s), latest, unitMs, kMaxPointsPerLine);
+        for (const QPointF &p : pts) {
+            lo[TS::group(s)] = std::min(lo[TS::group(s)], p.y());
+            hi[TS::group(s)] = std::max(hi[TS::group(s)], p.y());
+        }
+        lines_[i]->replace(pts);
+    }
+    for (int g = 0; g < TS::GroupCount; ++g) {
+        GroupChart &gc = groups_[g];
+        if (!gc.view || !gc.view->isVisibleTo(this)) continue;
+        gc.x->setRange(-span, 0.0);
+        gc.x->setTitleText(minutes ? tr("minutes before the latest epoch")
+                                   : tr("seconds before the latest epoch"));
+        gc.x->setLabelFormat(minutes ? "%.0f" : "%.0f");
+        if (auto *v = qobject_cast<QValueAxis *>(gc.y)) {
+            double a = lo[g], b = hi[g];
+            if (!std::isfinite(a)) a = 0.0, b = 1.0;
+            if (g == TS::Satellites || g == TS::Dop || g == TS::Deviation || g == TS::SpeedGroup)
+                a = std::min(a, 0.0); // quantities that start at zero read better from zero
+            if (b - a < 1e-9) a -= 0.5, b += 0.5;
+            const double pad = (b - a) * 0.08;
+            v->setRange(a < 0.0 || g == TS::Altitude || g == TS::Snr ? a - pad : a, b + pad);
+            v->applyNiceNumbers();
+        }
+    }
+}
+
+void ChartsView::applyTheme() {
+    // Follow the palette (light or dark) rather than Qt Charts' fixed white theme.
+    const QPalette p = palette();
+    const QColor text = p.color(QPalette::WindowText), base = p.color(QPalette::Base);
+    QColor grid = p.color(QPalette::Mid);
+    for (GroupChart &gc : groups_) {
+        if (!gc.chart) continue;
+        gc.chart->setBackgroundBrush(base);
+        gc.chart->setTitleBrush(text);
+        gc.chart->legend()->setLabelColor(text);
+        gc.view->setBackgroundBrush(p.color(QPalette::Window));
+        for (QAbstractAxis *a : {static_cast<QAbstractAxis *>(gc.x), gc.y}) {
+            a->setLabelsBrush(text);
+            a->setTitleBrush(text);
+            a->setGridLineColor(grid);
+            a->setLinePenColor(grid);
+        }
+    }
+}
+
+void ChartsView::changeEvent(QEvent *e) {
+    if (e->type() == QEvent::PaletteChange) applyTheme();
+    QWidget::changeEvent(e);
+}
+
+} // namespace gnss::ui

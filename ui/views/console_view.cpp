@@ -1,0 +1,185 @@
+#include "console_view.h"
+
+#include "core/sentence_builder.h"
+#include "models/console_model.h"
+
+#include <QCompleter>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListView>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QScrollBar>
+#include <QSortFilterProxyModel>
+#include <QStringListModel>
+#include <QTimer>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace gnss::ui {
+
+ConsoleView::ConsoleView(ConsoleModel *model, QWidget *parent) : QWidget(parent), model_(model) {
+    setObjectName("console");
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+
+    auto *bar = new QHBoxLayout;
+    filter_ = new QLineEdit(this);
+    filter_->setObjectName("consoleFilter");
+    filter_->setPlaceholderText(tr("Filter by address (e.g. GGA|PNVG)"));
+    filter_->setClearButtonEnabled(true);
+    connect(filter_, &QLineEdit::textChanged, this, &ConsoleView::setFilter);
+    bar->addWidget(filter_, 1);
+    auto *pause = new QToolButton(this);
+    pause->setObjectName("consolePause");
+    pause->setText(tr("Pause"));
+    pause->setCheckable(true);
+    connect(pause, &QToolButton::toggled, this, [this](bool on) { model_->setPaused(on); });
+    bar->addWidget(pause);
+    auto *hex = new QToolButton(this);
+    hex->setObjectName("consoleHex");
+    hex->setText(tr("Hex"));
+    hex->setCheckable(true);
+    hex->setToolTip(tr("Show the raw bytes received, including binary data"));
+    connect(hex, &QToolButton::toggled, this, &ConsoleView::setHex);
+    bar->addWidget(hex);
+    auto *clear = new QToolButton(this);
+    clear->setObjectName("consoleClear");
+    clear->setText(tr("Clear"));
+    connect(clear, &QToolButton::clicked, model_, &ConsoleModel::clear);
+    bar->addWidget(clear);
+    layout->addLayout(bar);
+
+    proxy_ = new QSortFilterProxyModel(this);
+    proxy_->setSourceModel(model_);
+    proxy_->setFilterRole(ConsoleModel::AddressRole);
+    list_ = new QListView(this);
+    list_->setObjectName("consoleLines");
+    list_->setModel(proxy_);
+    list_->setUniformItemSizes(true);
+    list_->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    QFont mono(QStringLiteral("monospace"));
+    mono.setStyleHint(QFont::TypeWriter);
+    list_->setFont(mono);
+    // Follow new lines unless the user scrolled up to read.
+    connect(list_->verticalScrollBar(), &QScrollBar::valueChanged, this,
+            [this](int v) { follow_ = v >= list_->verticalScrollBar()->maximum() - 2; });
+    connect(proxy_, &QAbstractItemModel::rowsInserted, this, [this] {
+        if (follow_) list_->scrollToBottom();
+    });
+    layout->addWidget(list_, 1);
+
+    hex_ = new QPlainTextEdit(this);
+    hex_->setObjectName("consoleHexView");
+    hex_->setReadOnly(true);
+    hex_->setFont(mono);
+    hex_->setVisible(false);
+    layout->addWidget(hex_, 1);
+    auto *hexTimer = new QTimer(this);
+    hexTimer->setInterval(500);
+    connect(hexTimer, &QTimer::timeout, this, [this] {
+        if (hex_->isVisible()) refreshHex();
+    });
+    hexTimer->start();
+
+    auto *send = new QHBoxLayout;
+    input_ = new QLineEdit(this);
+    input_->setObjectName("consoleInput");
+    input_->setPlaceholderText(tr("Command to send, e.g. $PNVGVER (the checksum is added)"));
+    input_->setFont(mono);
+    input_->installEventFilter(this);
+    completions_ = new QStringListModel(this);
+    auto *completer = new QCompleter(completions_, this);
+    completer->setCaseSensitivity(Qt::CaseInsensitive);
+    completer->setFilterMode(Qt::MatchContains);
+    input_->setCompleter(completer);
+    connect(input_, &QLineEdit::returnPressed, this, &ConsoleView::submit);
+    send->addWidget(input_, 1);
+    auto *sendButton = new QPushButton(tr("Send"), this);
+    sendButton->setObjectName("consoleSend");
+    connect(sendButton, &QPushButton::clicked, this, &ConsoleView::submit);
+    send->addWidget(sendButton);
+    layout->addLayout(send);
+    inputError_ = new QLabel(this);
+    inputError_->setObjectName("consoleInputError");
+    inputError_->setStyleSheet(QStringLiteral("color: #c62828;"));
+    inputError_->setVisible(false);
+    layout->addWidget(inputError_);
+}
+
+void ConsoleView::setCommandNames(const QStringList &names) {
+    QStringList withDollar;
+    for (const QString &n : names) withDollar << (n.startsWith('$') ? n : '$' + n);
+    completions_->setStringList(withDollar);
+}
+
+void ConsoleView::setHistory(const QStringList &history) { history_ = history; }
+
+void ConsoleView::setFilter(const QString &pattern) {
+    if (filter_->text() != pattern) filter_->setText(pattern);
+    proxy_->setFilterRegularExpression(QRegularExpression(pattern, QRegularExpression::CaseInsensitiveOption));
+}
+
+int ConsoleView::visibleLines() const { return proxy_->rowCount(); }
+
+bool ConsoleView::submit() {
+    const QString typed = input_->text().trimmed();
+    if (typed.isEmpty()) return false;
+    std::string error;
+    const std::string sentence = completeSentence(typed.toStdString(), error);
+    if (sentence.empty()) {
+        inputError_->setText(tr("Not sent: %1").arg(QString::fromStdString(error)));
+        inputError_->setVisible(true);
+        return false;
+    }
+    inputError_->setVisible(false);
+    history_.removeAll(typed);
+    history_.append(typed);
+    while (history_.size() > 100) history_.removeFirst();
+    historyPos_ = -1;
+    input_->clear();
+    emit sendRequested(QByteArray::fromStdString(sentence));
+    return true;
+}
+
+bool ConsoleView::eventFilter(QObject *o, QEvent *e) {
+    if (o == input_ && e->type() == QEvent::KeyPress && !history_.isEmpty()) {
+        const int key = static_cast<QKeyEvent *>(e)->key();
+        if (key == Qt::Key_Up || key == Qt::Key_Down) {
+            if (historyPos_ < 0) historyPos_ = int(history_.size());
+            historyPos_ = std::clamp(historyPos_ + (key == Qt::Key_Up ? -1 : 1), 0, int(history_.size()));
+            input_->setText(historyPos_ < history_.size() ? history_[historyPos_] : QString());
+            return true;
+        }
+    }
+    return QWidget::eventFilter(o, e);
+}
+
+void ConsoleView::setHex(bool on) {
+    list_->setVisible(!on);
+    hex_->setVisible(on);
+    if (on) refreshHex();
+}
+
+void ConsoleView::refreshHex() {
+    const QByteArray &raw = model_->raw();
+    const QByteArray tail = raw.right(8192);
+    QString out;
+    out.reserve(tail.size() * 4);
+    for (qsizetype i = 0; i < tail.size(); i += 16) {
+        const QByteArray row = tail.mid(i, 16);
+        out += QStringLiteral("%1  ").arg(i, 6, 16, QChar('0'));
+        for (int k = 0; k < 16; ++k)
+            out += k < row.size() ? QStringLiteral("%1 ").arg(quint8(row[k]), 2, 16, QChar('0')) : QStringLiteral("   ");
+        out += ' ';
+        for (char ch : row) out += (ch >= 0x20 && ch < 0x7F) ? QChar(ch) : QChar('.');
+        out += '\n';
+    }
+    hex_->setPlainText(out);
+    hex_->verticalScrollBar()->setValue(hex_->verticalScrollBar()->maximum());
+}
+
+} // namespace gnss::ui

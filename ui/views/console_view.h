@@ -1,0 +1,59 @@
+#pragma once
+// ConsoleView: received and sent lines (sent ones marked), checksum errors highlighted, filter by
+// address, pause, clear, a hex view of the raw bytes, and a send box that adds the checksum,
+// keeps a history and completes the dialect's command names.
+#include <QStringList>
+#include <QWidget>
+
+class QLabel;
+class QLineEdit;
+class QListView;
+class QPlainTextEdit;
+class QSortFilterProxyModel;
+class QStringListModel;
+class QToolButton;
+
+namespace gnss::ui {
+
+class ConsoleModel;
+
+class ConsoleView : public QWidget {
+    Q_OBJECT
+public:
+    explicit ConsoleView(ConsoleModel *model, QWidget *parent = nullptr);
+
+    // Command names offered for completion (the connected dialect's).
+    void setCommandNames(const QStringList &names);
+    void setHistory(const QStringList &history);
+    QStringList history() const { return history_; }
+    void setFilter(const QString &addressPattern);
+    int visibleLines() const;
+
+    // Sends what the send box holds: completes the checksum, refuses a malformed sentence with a
+    // message beside the box. Returns whether a sentence was emitted.
+    bool submit();
+
+signals:
+    void sendRequested(const QByteArray &sentence);
+
+protected:
+    bool eventFilter(QObject *o, QEvent *e) override;
+
+private:
+    void setHex(bool on);
+    void refreshHex();
+
+    ConsoleModel *model_;
+    QSortFilterProxyModel *proxy_;
+    QListView *list_;
+    QPlainTextEdit *hex_;
+    QLineEdit *filter_;
+    QLineEdit *input_;
+    QLabel *inputError_;
+    QStringListModel *completions_;
+    QStringList history_;
+    int historyPos_ = -1;
+    bool follow_ = true;
+};
+
+} // namespace gnss::ui

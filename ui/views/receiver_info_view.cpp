@@ -1,0 +1,132 @@
+#include "receiver_info_view.h"
+
+#include "models/receiver_state_model.h"
+#include "value_format.h"
+
+#include <QHeaderView>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace gnss::ui {
+namespace {
+
+// Flags whose "true" is bad news, and flags whose "false" is bad news (by name; reports are JSON).
+bool badWhenTrue(const QString &key) {
+    return key.contains("jamming") || key.contains("error") || key.contains("fail") || key.contains("short") ||
+           key.contains("overload");
+}
+bool badWhenFalse(const QString &key) {
+    return key.endsWith("_ok") || key.startsWith("ok") || key.contains("_ok_");
+}
+
+QString prettyKey(QString k) {
+    k.replace('_', ' ');
+    if (!k.isEmpty()) k[0] = k[0].toUpper();
+    return k;
+}
+
+} // namespace
+
+ReceiverInfoView::ReceiverInfoView(ReceiverStateModel *model, QWidget *parent)
+    : QWidget(parent), model_(model) {
+    setObjectName("receiverInfo");
+    auto *layout = new QVBoxLayout(this);
+    identity_ = new QLabel(this);
+    identity_->setObjectName("receiverIdentity");
+    identity_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(identity_);
+    jamming_ = new QLabel(this);
+    jamming_->setObjectName("jammingIndicator");
+    layout->addWidget(jamming_);
+    tree_ = new QTreeWidget(this);
+    tree_->setObjectName("receiverReports");
+    tree_->setColumnCount(2);
+    tree_->setHeaderLabels({tr("Item"), tr("Value")});
+    tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    layout->addWidget(tree_, 1);
+    connect(model_, &ReceiverStateModel::updated, this, [this] { dirty_ = true; });
+    timer_.setInterval(250);
+    connect(&timer_, &QTimer::timeout, this, [this] {
+        if (dirty_ && isVisible()) refresh();
+    });
+    timer_.start();
+    refresh();
+}
+
+void ReceiverInfoView::addJson(QTreeWidgetItem *parent, const QString &key, const QJsonValue &v) {
+    auto *item = new QTreeWidgetItem(parent, {prettyKey(key)});
+    if (v.isObject()) {
+        const QJsonObject o = v.toObject();
+        for (auto it = o.begin(); it != o.end(); ++it) addJson(item, it.key(), it.value());
+        return;
+    }
+    if (v.isArray()) {
+        const QJsonArray a = v.toArray();
+        for (int i = 0; i < a.size(); ++i) addJson(item, QString::number(i + 1), a[i]);
+        return;
+    }
+    if (v.isBool()) {
+        const bool b = v.toBool();
+        item->setText(1, b ? QStringLiteral("✓") : QStringLiteral("✗"));
+        const bool bad = (b && badWhenTrue(key)) || (!b && badWhenFalse(key));
+        const bool good = (b && badWhenFalse(key)) || (!b && badWhenTrue(key));
+        if (bad) item->setForeground(1, QColor(0xC6, 0x28, 0x28));
+        else if (good) item->setForeground(1, QColor(0x2E, 0x7D, 0x32));
+        return;
+    }
+    if (v.isNull()) {
+        item->setText(1, fmt::dash());
+        return;
+    }
+    item->setText(1, v.isDouble() ? QString::number(v.toDouble(), 'g', 12) : v.toString());
+    const QString s = v.toString();
+    if (s == QLatin1String("ok") || s == QLatin1String("OK")) item->setForeground(1, QColor(0x2E, 0x7D, 0x32));
+}
+
+void ReceiverInfoView::refresh() {
+    dirty_ = false;
+    const ReceiverState &st = model_->state();
+    const ReceiverIdentity &id = st.identity;
+    if (id.model.empty() && id.vendor.empty()) {
+        identity_->setText(tr("Receiver: not identified yet"));
+    } else {
+        identity_->setText(tr("<b>%1 %2</b><br>Firmware: %3%4")
+                                   .arg(QString::fromStdString(id.vendor), QString::fromStdString(id.model),
+                                        id.firmware.empty() ? fmt::dash() : QString::fromStdString(id.firmware),
+                                        id.hardware.empty() ? QString()
+                                                            : tr("<br>Hardware: %1").arg(QString::fromStdString(id.hardware))));
+    }
+    if (!st.jamming) {
+        jamming_->setText(tr("Jamming: not reported"));
+        jamming_->setStyleSheet({});
+    } else if (*st.jamming) {
+        jamming_->setText(tr("Jamming: DETECTED"));
+        jamming_->setStyleSheet(QStringLiteral("color: white; background: #c62828; padding: 2px 6px;"));
+    } else {
+        jamming_->setText(tr("Jamming: none detected"));
+        jamming_->setStyleSheet(QStringLiteral("color: #2e7d32;"));
+    }
+    QString key;
+    for (const auto &[title, json] : st.reports) key += QString::fromStdString(title + json);
+    if (key == shownKey_) return;
+    shownKey_ = key;
+    // Rebuild, keeping which reports were expanded.
+    QSet<QString> expanded;
+    for (int i = 0; i < tree_->topLevelItemCount(); ++i)
+        if (tree_->topLevelItem(i)->isExpanded()) expanded.insert(tree_->topLevelItem(i)->text(0));
+    tree_->clear();
+    for (const auto &[title, json] : st.reports) {
+        const QString t = QString::fromStdString(title);
+        auto *top = new QTreeWidgetItem(tree_, {t});
+        const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(json));
+        const QJsonObject o = doc.object();
+        for (auto it = o.begin(); it != o.end(); ++it) addJson(top, it.key(), it.value());
+        top->setExpanded(expanded.isEmpty() || expanded.contains(t));
+    }
+}
+
+} // namespace gnss::ui

@@ -1,0 +1,66 @@
+#pragma once
+// RtkView: the RTK panel (issue 8): mode, base-station statistics and distance, base-to-rover
+// baseline, heading and antenna baseline, standard deviations, receiver DOPs, and a correction
+// age watchdog that turns red past a threshold. Reads ReceiverState::rtk through the model,
+// refreshes on a 10 Hz timer when a new epoch has arrived, never per update.
+#include <QWidget>
+
+#include <optional>
+
+class QDoubleSpinBox;
+class QLabel;
+class QGridLayout;
+class QStackedWidget;
+class QTimer;
+
+namespace gnss::ui {
+
+class ReceiverStateModel;
+
+class RtkView : public QWidget {
+    Q_OBJECT
+public:
+    explicit RtkView(ReceiverStateModel *model, QWidget *parent = nullptr);
+
+    // Correction age (seconds) above which the watchdog turns red; default 10 s.
+    double correctionAgeThreshold() const;
+    void setCorrectionAgeThreshold(double seconds);
+    // The latest shown correction age is past the threshold.
+    bool correctionsLate() const { return late_; }
+    // The receiver reports RTK information at all (state.rtk.seen).
+    bool rtkAvailable() const { return available_; }
+
+    // The watchdog's alarm colour (UI.md semantic red, readable on light and dark palettes).
+    static QColor alarmColor();
+
+public slots:
+    // Reads the model now (the timer calls this when a new epoch has arrived).
+    void refresh();
+
+signals:
+    void availabilityChanged(bool available);
+    void correctionsLateChanged(bool late);
+
+private:
+    QLabel *addRow(QGridLayout *grid, const QString &name, const char *objectName);
+    void updateWatchdog(std::optional<double> age);
+    void poll();
+
+    ReceiverStateModel *model_;
+    QTimer *timer_;
+    quint64 shownEpochs_ = ~quint64(0);
+    bool available_ = false;
+    bool late_ = false;
+    std::optional<double> age_;
+
+    QStackedWidget *stack_;
+    QDoubleSpinBox *threshold_;
+    QLabel *mode_, *watchdog_;
+    QLabel *rtcmTotal_, *rtcmErrors_, *rtcmOk_, *baseDistance_, *baseId_, *correctionAge_;
+    QLabel *blNorth_, *blEast_, *blVertical_, *blLength_, *blCourse_, *blPitch_;
+    QLabel *heading_, *antNorth_, *antEast_, *antVertical_, *antLength_, *antPitch_;
+    QLabel *sdLat_, *sdLon_, *sdHeight_, *sdVelNorth_, *sdVelEast_, *sdVelUp_, *sdHeading_;
+    QLabel *gdop_, *pdop_, *hdop_, *vdop_, *tdop_, *ndop_, *edop_;
+};
+
+} // namespace gnss::ui
