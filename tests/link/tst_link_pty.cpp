@@ -80,9 +80,8 @@ private slots:
 
     void vendorDetectionNamesEachDialect_data() {
         QTest::addColumn<QString>("dialect");
-        QTest::addColumn<QString>("model");
         for (const char *d : {"nvs", "geostar", "nemerix", "nmea"})
-            QTest::newRow(d) << d << QString();
+            QTest::newRow(d) << d;
     }
     void vendorDetectionNamesEachDialect() {
         QFETCH(QString, dialect);
