@@ -7,6 +7,7 @@
 #include "nvs_encode_util.h"
 
 #include "core/field_parse.h"
+#include "core/sentence_builder.h"
 
 #include <array>
 #include <map>
@@ -239,6 +240,10 @@ void extractSettings(const Message &reply, std::vector<KeyValue> &out) {
     } else if (const auto *idl = message_cast<Idl>(reply)) {
         if (idl->kind == IdlKind::Mode && idl->mode)
             out.push_back({"idl.mode", std::to_string(*idl->mode)});
+        // One station per SHOW item: a reader joins the items of one reply with ';'.
+        if (idl->kind == IdlKind::Item && idl->stationId && idl->icb)
+            out.push_back({"idl.stations",
+                           std::to_string(*idl->stationId) + ":" + formatFixed(*idl->icb, 4)});
     }
 }
 

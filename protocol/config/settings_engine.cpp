@@ -1,0 +1,570 @@
+// Before any Qt header: core headers have members named emit, which Qt defines as a macro.
+#include "core/dialect_registry.h"
+#include "core/stream_decoder.h"
+
+#include "settings_engine.h"
+
+#include "connection.h"
+#include "setting_values.h"
+#include "transport.h"
+
+#include <QDateTime>
+
+#include <algorithm>
+
+namespace gnss::config {
+
+namespace {
+
+QString qs(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+bool succeeded(const link::CommandResult &r) {
+    return r.outcome == link::CommandOutcome::Accepted || r.outcome == link::CommandOutcome::Sent;
+}
+
+} // namespace
+
+QString verdictName(Verdict v) {
+    switch (v) {
+    case Verdict::Verified: return SettingsEngine::tr("verified");
+    case Verdict::NotTaken: return SettingsEngine::tr("not taken");
+    case Verdict::NotReported: return SettingsEngine::tr("not reported");
+    case Verdict::WrittenUnverified: return SettingsEngine::tr("sent (write-only, not verifiable)");
+    case Verdict::NotSent: return SettingsEngine::tr("not applied (command failed)");
+    }
+    return {};
+}
+
+int OperationReport::failedCommands() const {
+    int n = 0;
+    for (const auto &c : commands) n += succeeded(c) ? 0 : 1;
+    return n;
+}
+
+int OperationReport::failedChecks() const {
+    int n = 0;
+    for (const auto &c : checks)
+        n += c.verdict == Verdict::Verified || c.verdict == Verdict::WrittenUnverified ? 0 : 1;
+    return n;
+}
+
+SettingsEngine::SettingsEngine(QObject *parent) : QObject(parent) {
+    qRegisterMetaType<OperationReport>();
+}
+
+SettingsEngine::SettingsEngine(link::CommandQueue *queue, const Dialect *dialect, QObject *parent)
+    : SettingsEngine(parent) {
+    attach(queue, dialect);
+}
+
+SettingsEngine::~SettingsEngine() = default;
+
+void SettingsEngine::attach(link::Connection *connection, const Dialect *dialect) {
+    attach(connection ? connection->commands() : nullptr, dialect,
+           connection ? connection->transport() : nullptr);
+}
+
+void SettingsEngine::attach(link::CommandQueue *queue, const Dialect *dialect,
+                            link::Transport *transport) {
+    if (isBusy() && queue != queue_) {
+        report_.error = tr("the link changed during the operation");
+        pending_.clear();
+        end();
+    }
+    transport_ = transport;
+    if (queue != queue_) {
+        QObject::disconnect(queueConnection_);
+        queue_ = queue;
+        if (queue)
+            queueConnection_ = connect(queue, &link::CommandQueue::commandFinished, this,
+                                       &SettingsEngine::onCommandFinished);
+    }
+    if (dialect != dialect_) {
+        dialect_ = dialect;
+        registry_.reset();
+        decoder_.reset();
+        if (dialect) {
+            registry_ = std::make_unique<DialectRegistry>(std::vector<const Dialect *>{dialect});
+            DecoderOptions o;
+            o.dialect = std::string(dialect->id);
+            o.lenient = dialect->checksumOptional;
+            decoder_ = std::make_unique<StreamDecoder>(*registry_, o);
+        }
+        reported_.clear();
+        written_.clear();
+        identity_ = {};
+        emit dialectChanged(dialect);
+        emit valuesChanged();
+    }
+}
+
+void SettingsEngine::forget() {
+    reported_.clear();
+    written_.clear();
+    emit valuesChanged();
+}
+
+// ---- Values ---------------------------------------------------------------------------------
+
+ValueState SettingsEngine::state(std::string_view key) const {
+    if (reported_.find(key) != reported_.end()) return ValueState::Reported;
+    if (written_.find(key) != written_.end()) return ValueState::Written;
+    const SettingDef *def = dialect_ ? findSetting(dialect_->settings, key) : nullptr;
+    if (def && def->access == SettingAccess::WriteOnly) return ValueState::WriteOnly;
+    return ValueState::NotRead;
+}
+
+std::optional<std::string> SettingsEngine::receiverValue(std::string_view key) const {
+    if (auto it = reported_.find(key); it != reported_.end()) return it->second;
+    if (auto it = written_.find(key); it != written_.end()) return it->second;
+    return std::nullopt;
+}
+
+QString SettingsEngine::displayValue(std::string_view key) const {
+    switch (state(key)) {
+    case ValueState::Reported: return qs(*receiverValue(key));
+    case ValueState::Written:
+        return tr("%1 (set here; write-only, not read back)").arg(qs(*receiverValue(key)));
+    case ValueState::WriteOnly: return tr("unknown (write-only)");
+    case ValueState::NotRead: break;
+    }
+    return QStringLiteral("\u2014");
+}
+
+std::vector<KeyValue> SettingsEngine::knownValues() const {
+    std::vector<KeyValue> out;
+    if (!dialect_) return out;
+    for (const auto &def : dialect_->settings)
+        if (auto v = receiverValue(def.key)) out.push_back({std::string(def.key), *v});
+    return out;
+}
+
+std::vector<KeyValue> SettingsEngine::changesFrom(const std::vector<KeyValue> &values) const {
+    std::vector<KeyValue> out;
+    for (const auto &kv : values) {
+        const SettingDef *def = dialect_ ? findSetting(dialect_->settings, kv.key) : nullptr;
+        const auto rv = receiverValue(kv.key);
+        if (def && rv && sameValue(*def, kv.value, *rv)) continue;
+        out.push_back(kv);
+    }
+    return out;
+}
+
+// ---- Operations -----------------------------------------------------------------------------
+
+bool SettingsEngine::begin(Operation op, const QString &title) {
+    if (isBusy()) return false;
+    report_ = {};
+    report_.operation = op;
+    report_.title = title;
+    pending_.clear();
+    done_ = total_ = 0;
+    cancelled_ = false;
+    action_.reset();
+    applying_.clear();
+    phase_ = Phase::Commands;
+    if (!dialect_ || !queue_) {
+        report_.error = !dialect_ ? tr("no receiver dialect known yet: connect to a receiver "
+                                       "first")
+                                  : tr("not connected to a receiver");
+        emit finished(report_);
+        return false;
+    }
+    op_ = op;
+    emit busyChanged(true);
+    return true;
+}
+
+bool SettingsEngine::enqueue(const std::vector<std::string> &sentences) {
+    for (const auto &s : sentences) {
+        QString error;
+        const int id = queue_->enqueue(qs(s), optionsFor(s), &error);
+        if (id < 0) {
+            report_.error = error;
+            return false;
+        }
+        pending_.insert(id);
+        ++total_;
+    }
+    emit progress(done_, total_, report_.title);
+    return true;
+}
+
+int SettingsEngine::effectRank(const std::string &sentence) const {
+    Sentence s;
+    if (!dialect_ || !s.parse(sentence)) return 0;
+    const ReplyRule *rule = link::CommandQueue::findRule(dialect_->replyRules, s);
+    if (!rule) return 0;
+    switch (rule->effect) {
+    case CommandEffect::None:
+    case CommandEffect::ChangesOutput: return 0;
+    case CommandEffect::ResetsReceiver: return 1;
+    case CommandEffect::ChangesBaud: {
+        // The host's own port last of the speed changes: the others go out at the speed in force.
+        const LinkSpeed *link = linkSpeedCommand(dialect_->id);
+        return link && std::string_view(sentence).substr(1).starts_with(link->command) ? 3 : 2;
+    }
+    case CommandEffect::ChangesProtocol: return 4;
+    }
+    return 0;
+}
+
+link::CommandOptions SettingsEngine::optionsFor(const std::string &sentence) const {
+    link::CommandOptions o;
+    Sentence s;
+    if (!dialect_ || !transport_ || transport_->baud() <= 0 || !s.parse(sentence)) return o;
+    const ReplyRule *rule = link::CommandQueue::findRule(dialect_->replyRules, s);
+    if (!rule || rule->effect != CommandEffect::ChangesBaud) return o;
+    const LinkSpeed *link = linkSpeedCommand(dialect_->id);
+    const std::string_view body = std::string_view(sentence).substr(1);
+    if (!link || !body.starts_with(link->command)) {
+        // Another port's speed: the host's side of the line stays where it is.
+        o.newBaud = transport_->baud();
+        return o;
+    }
+    // The host's port: the link follows to the speed set ("BDR057" does not spell it out).
+    for (const auto &kv : applying_)
+        if (kv.key == link->settingKey) o.newBaud = QString::fromStdString(kv.value).toInt();
+    return o;
+}
+
+bool SettingsEngine::read(const std::vector<std::string> &keys) {
+    if (!begin(Operation::Read, tr("Read settings"))) return false;
+    std::vector<std::string> wanted;
+    if (keys.empty()) {
+        for (const auto &def : dialect_->settings)
+            if (isReadable(def)) wanted.emplace_back(def.key);
+    } else {
+        for (const auto &k : keys) {
+            const SettingDef *def = findSetting(dialect_->settings, k);
+            if (!def) {
+                report_.error =
+                        tr("unknown setting '%1' of the %2 dialect").arg(qs(k), qs(dialect_->id));
+                end();
+                return false;
+            }
+            if (isReadable(*def)) wanted.push_back(k);
+        }
+    }
+    std::vector<std::string> sentences;
+    if (!wanted.empty() && dialect_->encodeQueries) {
+        const EncodeResult q = dialect_->encodeQueries(wanted);
+        if (!q.ok()) {
+            report_.error = qs(q.error);
+            end();
+            return false;
+        }
+        sentences = q.sentences;
+    }
+    // The identity (model, firmware) for profiles, unless a query already brings it.
+    if (keys.empty() && !dialect_->probeCommand.empty() &&
+        std::find(sentences.begin(), sentences.end(), dialect_->probeCommand) == sentences.end())
+        sentences.insert(sentences.begin(), std::string(dialect_->probeCommand));
+    for (const auto &k : wanted) reported_.erase(k);
+    if (sentences.empty()) {
+        end();
+        return true;
+    }
+    if (!enqueue(sentences)) {
+        cancel();
+        if (pending_.empty()) end();
+        return false;
+    }
+    return true;
+}
+
+std::vector<KeyValue> SettingsEngine::withCompanions(std::vector<KeyValue> changes) {
+    if (!dialect_->encodeSettings || dialect_->encodeSettings(changes).ok()) return changes;
+    auto has = [&](std::string_view key) {
+        return std::any_of(changes.begin(), changes.end(),
+                           [&](const KeyValue &kv) { return kv.key == key; });
+    };
+    auto add = [&](const SettingDef &def) {
+        if (has(def.key) || !isWritable(def)) return false;
+        std::string v;
+        if (auto rv = receiverValue(def.key))
+            v = *rv;
+        else if (!def.defaultValue.empty())
+            v = std::string(def.defaultValue);
+        else
+            return false;
+        changes.push_back({std::string(def.key), v});
+        report_.companions.push_back(changes.back());
+        return true;
+    };
+    const std::vector<KeyValue> original = changes;
+    // Settings written by the same command template go together (PNVGRZA: baud and protocol).
+    for (const auto &kv : original) {
+        const SettingDef *def = findSetting(dialect_->settings, kv.key);
+        if (!def || def->write.empty()) continue;
+        for (const auto &other : dialect_->settings)
+            if (other.write == def->write) add(other);
+    }
+    // Then the settings the encoder's refusal names ("give nmea.position_decimals too").
+    for (int round = 0; round < 4; ++round) {
+        const EncodeResult r = dialect_->encodeSettings(changes);
+        if (r.ok()) return changes;
+        bool added = false;
+        for (const auto &def : dialect_->settings)
+            if (r.error.find(def.key) != std::string::npos) added = add(def) || added;
+        if (!added) break;
+    }
+    if (dialect_->encodeSettings(changes).ok()) return changes;
+    report_.companions.clear();
+    return original;
+}
+
+bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
+    if (!begin(Operation::Apply, tr("Apply settings"))) return false;
+    for (const auto &kv : values) {
+        const SettingDef *def = findSetting(dialect_->settings, kv.key);
+        if (!def || !isWritable(*def)) {
+            report_.error = def ? tr("%1 cannot be set").arg(qs(kv.key))
+                                : tr("unknown setting '%1' of the %2 dialect")
+                                            .arg(qs(kv.key), qs(dialect_->id));
+            end();
+            return false;
+        }
+    }
+    const std::vector<KeyValue> changes = changesFrom(values);
+    if (changes.empty()) {
+        report_.nothingToDo = true;
+        end();
+        return true;
+    }
+    if (!dialect_->encodeSettings) {
+        report_.error = tr("the %1 dialect has no settings encoder").arg(qs(dialect_->id));
+        end();
+        return false;
+    }
+    applying_ = withCompanions(changes);
+    EncodeResult enc = dialect_->encodeSettings(applying_);
+    if (!enc.ok()) {
+        report_.error = tr("nothing was sent: %1").arg(qs(enc.error));
+        for (const auto &kv : changes)
+            report_.checks.push_back({kv.key, kv.value, {}, Verdict::NotSent});
+        end();
+        return false;
+    }
+    // Write-only values are known again from this apply's echoes (PNVGRZA) or its outcome.
+    for (const auto &kv : applying_)
+        if (const SettingDef *def = findSetting(dialect_->settings, kv.key);
+            def && !isReadable(*def))
+            written_.erase(kv.key);
+    // Restarts, then speed changes, then protocol changes last: after them the rest would
+    // not arrive, or not be answered on the same terms.
+    std::stable_sort(enc.sentences.begin(), enc.sentences.end(),
+                     [this](const std::string &a, const std::string &b) {
+                         return effectRank(a) < effectRank(b);
+                     });
+    if (!enqueue(enc.sentences)) {
+        cancel();
+        if (pending_.empty()) end();
+        return false;
+    }
+    return true;
+}
+
+bool SettingsEngine::runAction(Action action) {
+    const ActionDef *def = dialect_ ? findAction(dialect_->id, action) : nullptr;
+    const QString title = def ? tr(std::string(def->label).c_str()) : tr("Action");
+    if (!begin(Operation::Action, title)) return false;
+    if (!def) {
+        report_.error = tr("the %1 receiver has no '%2' command")
+                                .arg(qs(dialect_->displayName), qs(actionName(action)));
+        end();
+        return false;
+    }
+    action_ = action;
+    if (!enqueue({actionSentence(*def)})) {
+        end();
+        return false;
+    }
+    return true;
+}
+
+std::vector<Action> SettingsEngine::availableActions() const {
+    std::vector<Action> out;
+    if (!dialect_) return out;
+    for (const auto &a : actionTable())
+        if (a.dialect == dialect_->id) out.push_back(a.action);
+    return out;
+}
+
+void SettingsEngine::cancel() {
+    if (!isBusy()) return;
+    cancelled_ = true;
+    report_.cancelled = true;
+    const std::set<int> ids = pending_;
+    for (int id : ids)
+        if (queue_ && !queue_->cancel(id)) pending_.erase(id);
+    if (pending_.empty() && isBusy()) phaseDone();
+}
+
+void SettingsEngine::onCommandFinished(const link::CommandResult &r) {
+    if (!pending_.count(r.id)) return;
+    pending_.erase(r.id);
+    ++done_;
+    report_.commands.append(r);
+    absorb(r);
+    emit commandFinished(r);
+    emit progress(done_, total_, report_.title);
+    if (pending_.empty()) phaseDone();
+}
+
+void SettingsEngine::absorb(const link::CommandResult &r) {
+    if (!decoder_ || r.replies.isEmpty()) return;
+    std::vector<KeyValue> out;
+    for (const QString &line : r.replies) {
+        const std::string text = line.toStdString();
+        decoder_->decodeLine(text, [&](const SentenceEvent &ev) {
+            if (!ev.message) return;
+            if (dialect_->extractSettings) dialect_->extractSettings(*ev.message, out);
+            if (dialect_->updateState) dialect_->updateState(*ev.message, identity_);
+        });
+    }
+    // A list reported one item per sentence (NVS PNVGIDL SHOW) is joined with ';'.
+    std::set<std::string> seen;
+    for (const auto &kv : out) {
+        const SettingDef *def = findSetting(dialect_->settings, kv.key);
+        if (!def) continue;
+        auto &target = def->access == SettingAccess::WriteOnly ? written_ : reported_;
+        if (def->type == SettingType::List && seen.count(kv.key)) {
+            std::string &v = target[kv.key];
+            if (!kv.value.empty()) v += (v.empty() ? "" : ";") + kv.value;
+        } else {
+            target[kv.key] = kv.value;
+        }
+        seen.insert(kv.key);
+    }
+    if (!out.empty()) emit valuesChanged();
+}
+
+void SettingsEngine::phaseDone() {
+    if (op_ == Operation::Apply && phase_ == Phase::Commands && !cancelled_) {
+        startVerify();
+        return;
+    }
+    if (op_ == Operation::Apply) finishVerify();
+    if (op_ == Operation::Action && action_ == Action::RestoreDefaults && !cancelled_ &&
+        report_.failedCommands() == 0)
+        forget(); // the receiver restarts with its defaults: read them again
+    end();
+}
+
+void SettingsEngine::startVerify() {
+    phase_ = Phase::Verify;
+    bool linkLost = false;
+    for (const auto &c : report_.commands)
+        linkLost = linkLost || c.outcome == link::CommandOutcome::LinkLost;
+    std::vector<std::string> keys;
+    for (const auto &kv : applying_) {
+        const SettingDef *def = findSetting(dialect_->settings, kv.key);
+        if (def && isReadable(*def)) keys.push_back(kv.key);
+    }
+    if (linkLost || keys.empty() || !dialect_->encodeQueries || !queue_) {
+        finishVerify();
+        end();
+        return;
+    }
+    const EncodeResult q = dialect_->encodeQueries(keys);
+    for (const auto &k : keys) reported_.erase(k);
+    if (!q.ok() || q.sentences.empty() || !enqueue(q.sentences)) {
+        if (!q.ok()) report_.error = tr("could not read back: %1").arg(qs(q.error));
+        if (pending_.empty()) {
+            finishVerify();
+            end();
+        }
+    }
+}
+
+void SettingsEngine::finishVerify() {
+    if (!report_.checks.empty()) return;
+    // Commands of the set itself (not the read-back) that failed.
+    bool anyFailed = false;
+    for (const auto &c : report_.commands) anyFailed = anyFailed || !succeeded(c);
+    for (const auto &kv : applying_) {
+        const SettingDef *def = findSetting(dialect_->settings, kv.key);
+        if (!def) continue;
+        SettingCheck c{kv.key, kv.value, {}, Verdict::NotReported};
+        if (isReadable(*def)) {
+            if (auto it = reported_.find(kv.key); it != reported_.end()) {
+                c.reported = it->second;
+                c.verdict = sameValue(*def, kv.value, it->second) ? Verdict::Verified
+                                                                  : Verdict::NotTaken;
+            } else if (anyFailed) {
+                c.verdict = Verdict::NotSent;
+            }
+        } else if (auto it = written_.find(kv.key);
+                   it != written_.end() && !sameValue(*def, kv.value, it->second)) {
+            // The receiver's echo (PNVGRZA) carried another value.
+            c.reported = it->second;
+            c.verdict = Verdict::NotTaken;
+        } else if (anyFailed) {
+            c.verdict = Verdict::NotSent;
+            written_.erase(kv.key);
+        } else {
+            c.verdict = Verdict::WrittenUnverified;
+            written_[kv.key] = kv.value;
+        }
+        report_.checks.push_back(std::move(c));
+    }
+    emit valuesChanged();
+}
+
+void SettingsEngine::end() {
+    if (op_ == Operation::None) {
+        emit finished(report_);
+        return;
+    }
+    op_ = Operation::None;
+    pending_.clear();
+    emit busyChanged(false);
+    emit finished(report_);
+}
+
+// ---- Profiles -------------------------------------------------------------------------------
+
+Profile SettingsEngine::exportProfile() const {
+    Profile p;
+    if (!dialect_) return p;
+    p.dialect = std::string(dialect_->id);
+    p.model = identity().model;
+    p.firmware = identity().firmware;
+    p.created = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
+    for (const auto &def : dialect_->settings) {
+        if (!isWritable(def)) continue;
+        if (auto v = receiverValue(def.key)) {
+            p.values.push_back({std::string(def.key), *v});
+            if (state(def.key) == ValueState::Written) p.writeOnly.emplace_back(def.key);
+        }
+    }
+    return p;
+}
+
+std::vector<DiffEntry> SettingsEngine::diff(const Profile &p) const {
+    std::vector<DiffEntry> out;
+    for (const auto &kv : p.values) {
+        const SettingDef *def = dialect_ ? findSetting(dialect_->settings, kv.key) : nullptr;
+        if (!def || !isWritable(*def)) continue;
+        const auto rv = receiverValue(kv.key);
+        if (rv && sameValue(*def, kv.value, *rv)) continue;
+        out.push_back({kv.key, kv.value, rv.value_or(std::string()), rv.has_value()});
+    }
+    return out;
+}
+
+bool SettingsEngine::applyProfile(const Profile &p) {
+    if (dialect_ && p.dialect != dialect_->id) {
+        if (!begin(Operation::Apply, tr("Apply profile"))) return false;
+        report_.error = tr("the profile is for dialect '%1', the receiver speaks '%2'")
+                                .arg(qs(p.dialect), qs(dialect_->id));
+        end();
+        return false;
+    }
+    return apply(p.values);
+}
+
+} // namespace gnss::config
