@@ -46,7 +46,7 @@ ReceiverState sampleState(double phase = 0.0) {
     return st;
 }
 
-const QDateTime t0 = QDateTime(QDate(2026, 5, 31), QTime(15, 35, 0), QTimeZone::UTC);
+const QDateTime t0 = QDateTime(QDate(2026, 5, 31), QTime(15, 35, 0), Qt::UTC);
 
 } // namespace
 
