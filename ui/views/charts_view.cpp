@@ -306,19 +306,42 @@ void ChartsView::redraw() {
         gc.x->setTickInterval(niceStep(span / 5.0));
         gc.x->setTitleText(minutes ? tr("minutes before the latest epoch")
                                    : tr("seconds before the latest epoch"));
-        if (auto *cat = qobject_cast<QCategoryAxis *>(gc.y)) {
+        if (g == TS::Fix) {
             int a = std::isfinite(lo[g]) ? int(std::lround(lo[g])) : int(FixType::None);
             int b = std::isfinite(hi[g]) ? int(std::lround(hi[g])) : int(FixType::Fix3D);
             if (b - a < 2) a = std::max(0, b - 2), b = a + 2; // at least three names
             if (gc.fixLo != a || gc.fixHi != b) {
+                // A fresh axis: Qt Charts 6.4 mislays the labels of a category axis whose
+                // categories are replaced in place.
                 gc.fixLo = a;
                 gc.fixHi = b;
-                for (const QString &l : cat->categoriesLabels()) cat->remove(l);
+                auto *cat = new QCategoryAxis;
+                cat->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
                 cat->setStartValue(a - 0.5);
                 for (int f = a; f <= b; ++f)
                     cat->append(style::fixTypeLabel(static_cast<FixType>(f)), f);
+                cat->setRange(a - 0.5, b + 0.5);
+                gc.chart->addAxis(cat, Qt::AlignLeft);
+                // Qt Charts rescales an attached axis to the data after new points arrive
+                // (later, from its own layout); the fix axis keeps the span its names were
+                // made for.
+                connect(cat, &QCategoryAxis::rangeChanged, this, [this, cat](qreal lo, qreal hi) {
+                    const GroupChart &fc = groups_[TS::Fix];
+                    if (lo != fc.fixLo - 0.5 || hi != fc.fixHi + 0.5)
+                        cat->setRange(fc.fixLo - 0.5, fc.fixHi + 0.5);
+                });
+                for (QAbstractSeries *line : gc.chart->series()) {
+                    line->detachAxis(gc.y);
+                    line->attachAxis(cat);
+                }
+                gc.chart->removeAxis(gc.y);
+                delete gc.y;
+                gc.y = cat;
+                applyTheme();
             }
-            cat->setRange(a - 0.5, b + 0.5);
+            // Every time: attaching a line or replacing its points may rescale the axis to the
+            // data.
+            gc.y->setRange(a - 0.5, b + 0.5);
         }
         if (auto *v = qobject_cast<QValueAxis *>(gc.y)) {
             double a = lo[g], b = hi[g];
