@@ -4,6 +4,7 @@
 #include "models/time_series_model.h"
 #include "views/charts_view.h"
 
+#include <QCategoryAxis>
 #include <QChartView>
 #include <QLineSeries>
 #include <QSpinBox>
@@ -46,7 +47,7 @@ ReceiverState sampleState(double phase = 0.0) {
     return st;
 }
 
-const QDateTime t0 = QDateTime(QDate(2026, 5, 31), QTime(15, 35, 0), QTimeZone::UTC);
+const QDateTime t0 = QDateTime(QDate(2026, 5, 31), QTime(15, 35, 0), Qt::UTC);
 
 } // namespace
 
@@ -179,6 +180,36 @@ private slots:
         double top = 0;
         for (const QPointF &p : line->points()) top = std::max(top, p.y());
         QCOMPARE(top, 9.9);
+    }
+
+    void aDarkPaletteRepaintsTheCharts() {
+        ReceiverStateModel model;
+        ChartsView view(&model);
+        for (int i = 0; i < 100; ++i) model.publish(sampleState(i * 0.1), t0.addMSecs(i * 200));
+        QPalette dark;
+        dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
+        dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
+        dark.setColor(QPalette::WindowText, QColor(0xe0, 0xe0, 0xe0));
+        dark.setColor(QPalette::Text, QColor(0xe0, 0xe0, 0xe0));
+        dark.setColor(QPalette::Mid, QColor(0x55, 0x55, 0x55));
+        view.setPalette(dark);
+        view.redraw();
+        QChart *chart = view.chartView(TS::Dop)->chart();
+        QCOMPARE(chart->backgroundBrush().color(), QColor(0x1e, 0x1e, 0x1e));
+        QCOMPARE(chart->titleBrush().color(), QColor(0xe0, 0xe0, 0xe0));
+        view.resize(900, 700);
+        QTest::qWait(50); // let the charts lay out at the new size before grabbing
+        // The fix axis names the fix types around the data and keeps that span after layout.
+        auto *cat = qobject_cast<QCategoryAxis *>(
+                view.chartView(TS::Fix)->chart()->axes(Qt::Vertical).value(0));
+        QVERIFY(cat);
+        QCOMPARE(cat->categoriesLabels(), QStringList({"DGNSS", "RTK float", "RTK fixed"}));
+        QCOMPARE(cat->min(), 3.5);
+        QCOMPARE(cat->max(), 6.5);
+        const QByteArray dir = qgetenv("GNSS_SCREENSHOT_DIR");
+        if (!dir.isEmpty())
+            QVERIFY(view.grab().toImage().save(QString::fromLocal8Bit(dir) +
+                                               "/charts_view_dark.png"));
     }
 
     void screenshotReadsWell() {

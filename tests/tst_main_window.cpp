@@ -34,7 +34,8 @@ private slots:
         QStringList titles;
         for (QAction *a : w.menuBar()->actions()) titles << a->text().remove('&');
         QCOMPARE(titles, (QStringList{"File", "Receiver", "View", "Help"}));
-        for (const char *d : {"skyDock", "fixDock", "signalDock", "satellitesDock", "consoleDock", "statsDock", "infoDock"})
+        for (const char *d : {"skyDock", "fixDock", "signalDock", "satellitesDock", "consoleDock", "statsDock", "infoDock",
+                              "rtkDock", "chartsDock", "deviationDock", "attitudeDock"})
             QVERIFY2(w.dock(d), d);
     }
 

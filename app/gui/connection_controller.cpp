@@ -95,7 +95,7 @@ bool ConnectionController::openWith(int baud) {
             [this](const QString &d) { setState(State::Connected, tr("Connected: %1").arg(d)); });
     connect(c->commands(), &link::CommandQueue::commandFinished, this, [this](const link::CommandResult &r) {
         const bool ok = r.outcome == link::CommandOutcome::Accepted || r.outcome == link::CommandOutcome::Sent;
-        emit commandFinished(tr("%1: %2").arg(r.sentence, r.detail.isEmpty() ? link::toString(r.outcome) : r.detail), ok);
+        emit commandFinished(tr("%1: %2").arg(r.sentence, r.detail.isEmpty() ? link::outcomeName(r.outcome) : r.detail), ok);
     });
     if (!c->open()) {
         setState(State::Failed, tr("Cannot open %1: %2").arg(spec_.displayName(), c->transport()->errorString()));

@@ -10,10 +10,14 @@
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
 #include "style/gnss_style.h"
+#include "views/attitude_view.h"
+#include "views/charts_view.h"
 #include "views/console_view.h"
+#include "views/deviation_view.h"
 #include "views/fix_view.h"
 #include "views/message_stats_view.h"
 #include "views/receiver_info_view.h"
+#include "views/rtk_view.h"
 #include "views/signal_levels_view.h"
 #include "views/sky_plot_view.h"
 
@@ -109,11 +113,24 @@ void MainWindow::createDocks() {
                               Qt::BottomDockWidgetArea);
     auto *infoDock = addDock(new ui::ReceiverInfoView(stateModel_, this), tr("Receiver information"), "infoDock",
                              Qt::RightDockWidgetArea);
-    tabifyDockWidget(fixDock, infoDock);
+    rtk_ = new ui::RtkView(stateModel_, this);
+    auto *rtkDock = addDock(rtk_, tr("RTK"), "rtkDock", Qt::RightDockWidgetArea);
+    charts_ = new ui::ChartsView(stateModel_, this);
+    auto *chartsDock = addDock(charts_, tr("Charts"), "chartsDock", Qt::BottomDockWidgetArea);
+    auto *deviationDock = addDock(new ui::DeviationView(stateModel_, this), tr("Deviation"), "deviationDock",
+                                  Qt::LeftDockWidgetArea);
+    auto *attitudeDock = addDock(new ui::AttitudeView(stateModel_, this), tr("Attitude and time marks"),
+                                 "attitudeDock", Qt::RightDockWidgetArea);
+    tabifyDockWidget(fixDock, rtkDock);
+    tabifyDockWidget(rtkDock, infoDock);
     tabifyDockWidget(infoDock, satDock);
+    tabifyDockWidget(satDock, attitudeDock);
     fixDock->raise();
     tabifyDockWidget(consoleDock, statsDock);
+    tabifyDockWidget(statsDock, chartsDock);
     consoleDock->raise();
+    tabifyDockWidget(skyDock, deviationDock);
+    skyDock->raise();
     splitDockWidget(skyDock, signalDock, Qt::Vertical);
     connect(consoleView_, &ui::ConsoleView::sendRequested, this, [this](const QByteArray &s) {
         QString why;
@@ -285,6 +302,8 @@ void MainWindow::saveLayout() {
     settings_->setValue("window/geometry", saveGeometry());
     settings_->setValue("window/state", saveState());
     settings_->setValue("view/skyTracks", sky_->showTracks());
+    settings_->setValue("view/chartSeries", charts_->checkedSeries());
+    settings_->setValue("view/chartWindowMinutes", charts_->windowMinutes());
     settings_->setValue("console/history", consoleView_->history());
     const SourceSpec s = controller_->source();
     if (s.valid()) settings_->setValue("connection/last", s.toString());
@@ -295,6 +314,8 @@ void MainWindow::restoreLayout() {
     restoreGeometry(settings_->value("window/geometry").toByteArray());
     restoreState(settings_->value("window/state").toByteArray());
     sky_->setShowTracks(settings_->value("view/skyTracks", false).toBool());
+    if (settings_->contains("view/chartSeries")) charts_->setCheckedSeries(settings_->value("view/chartSeries").toStringList());
+    charts_->setWindowMinutes(settings_->value("view/chartWindowMinutes", charts_->windowMinutes()).toInt());
     consoleView_->setHistory(settings_->value("console/history").toStringList());
     const QString theme = settings_->value("view/theme", "system").toString();
     if (theme != QLatin1String("system")) applyTheme(theme);

@@ -22,6 +22,8 @@ class ReceiverSession;
 class ReceiverStateModel;
 class SatelliteModel;
 class SkyPlotView;
+class RtkView;
+class ChartsView;
 } // namespace ui
 } // namespace gnss
 
@@ -73,6 +75,8 @@ private:
     ConnectionController *controller_ = nullptr;
     ConnectionBar *bar_ = nullptr;
     ui::SkyPlotView *sky_ = nullptr;
+    ui::RtkView *rtk_ = nullptr;
+    ui::ChartsView *charts_ = nullptr;
     ui::ConsoleView *consoleView_ = nullptr;
     QMenu *viewMenu_ = nullptr;
     QAction *recordAction_ = nullptr;

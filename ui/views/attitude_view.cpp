@@ -68,6 +68,7 @@ AttitudeView::AttitudeView(ReceiverStateModel *model, QWidget *parent)
     marks_->setHorizontalHeaderLabels({tr("Counter"), tr("GPS time of week (s)"), tr("UTC"),
                                        tr("Latitude"), tr("Longitude"), tr("Altitude MSL (m)")});
     marks_->verticalHeader()->hide();
+    marks_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
     marks_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     marks_->setSelectionBehavior(QAbstractItemView::SelectRows);
     marks_->setAlternatingRowColors(true);

@@ -85,6 +85,15 @@ QList<QPointF> toPoints(const std::deque<TS::Sample> &d, qint64 latest, double u
     return out;
 }
 
+// 1, 2 or 5 times a power of ten, at least x.
+double niceStep(double x) {
+    if (!(x > 0)) return 1.0;
+    const double p = std::pow(10.0, std::floor(std::log10(x)));
+    for (double m : {1.0, 2.0, 5.0})
+        if (m * p >= x * (1 - 1e-9)) return m * p;
+    return 10 * p;
+}
+
 } // namespace
 
 ChartsView::ChartsView(ReceiverStateModel *model, QWidget *parent)
@@ -129,7 +138,8 @@ ChartsView::ChartsView(ReceiverStateModel *model, QWidget *parent)
     split->addWidget(side);
     split->addWidget(scroll);
     split->setStretchFactor(1, 1);
-    split->setSizes({170, 600});
+    list_->setMinimumWidth(list_->sizeHintForColumn(0) + 8);
+    split->setSizes({list_->minimumWidth(), 700});
     auto *outer = new QVBoxLayout(this);
     outer->setContentsMargins(0, 0, 0, 0);
     outer->addWidget(split);
@@ -182,28 +192,38 @@ ChartsView::GroupChart &ChartsView::ensureGroup(TS::Group g) {
     gc.chart = new QChart;
     gc.chart->setTitle(TS::groupTitle(g));
     gc.chart->setMargins(QMargins(4, 2, 4, 2));
-    gc.chart->legend()->setAlignment(Qt::AlignRight);
+    // Up to seven constellations: their legend goes on top; other charts have room at the right.
+    gc.chart->legend()->setAlignment(g == TS::Snr ? Qt::AlignTop : Qt::AlignRight);
     gc.chart->setAnimationOptions(QChart::NoAnimation);
     gc.x = new QValueAxis;
     gc.chart->addAxis(gc.x, Qt::AlignBottom);
+    gc.x->setTickType(QValueAxis::TicksDynamic);
+    gc.x->setTickAnchor(0.0);
+    gc.x->setLabelFormat("%g");
     if (g == TS::Fix) {
+        // Fix types by name; only the span the data covers, so the names fit (see redraw).
         auto *cat = new QCategoryAxis;
         cat->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
-        for (int f = 0; f <= static_cast<int>(FixType::Manual); ++f)
-            cat->append(style::fixTypeLabel(static_cast<FixType>(f)), f);
-        cat->setRange(-0.5, static_cast<int>(FixType::Manual) + 0.5);
         gc.y = cat;
         gc.chart->legend()->hide();
     } else {
         auto *v = new QValueAxis;
-        v->setLabelFormat(g == TS::Satellites ? "%d" : "%.2f");
+        const char *format = "%.2f";
+        switch (g) {
+        case TS::Satellites: format = "%.0f"; break;
+        case TS::Snr: format = "%.0f"; break;
+        case TS::Dop: format = "%.1f"; break;
+        case TS::Deviation: format = "%.3f"; break;
+        default: break;
+        }
+        v->setLabelFormat(format);
         gc.y = v;
     }
     gc.chart->addAxis(gc.y, Qt::AlignLeft);
     gc.view = new QChartView(gc.chart);
     gc.view->setObjectName(QStringLiteral("chart_%1").arg(int(g)));
     gc.view->setRenderHint(QPainter::Antialiasing);
-    gc.view->setMinimumHeight(170);
+    gc.view->setMinimumHeight(g == TS::Snr || g == TS::Fix ? 220 : 180);
     // Keep the charts in group order above the trailing stretch.
     int at = 0;
     for (int i = 0; i < g; ++i)
@@ -223,7 +243,8 @@ void ChartsView::rebuildCharts() {
             if (!lines_[s]) {
                 auto *line = new QLineSeries;
                 line->setObjectName(QStringLiteral("series_") + TS::key(s));
-                line->setName(TS::label(s));
+                // In the SNR chart the title says "Mean SNR"; the legend names the system.
+                line->setName(TS::group(s) == TS::Snr ? TS::key(s).mid(4) : TS::label(s));
                 QPen pen(lineColor(s));
                 pen.setWidthF(1.6);
                 line->setPen(pen);
@@ -238,8 +259,15 @@ void ChartsView::rebuildCharts() {
             lines_[s] = nullptr;
         }
     }
-    for (int g = 0; g < TS::GroupCount; ++g)
-        if (groups_[g].view) groups_[g].view->setVisible(used[g]);
+    std::array<int, TS::GroupCount> lines{};
+    for (int i = 0; i < TS::SeriesCount; ++i)
+        if (lines_[i]) ++lines[TS::group(static_cast<TS::Series>(i))];
+    for (int g = 0; g < TS::GroupCount; ++g) {
+        if (!groups_[g].view) continue;
+        groups_[g].view->setVisible(used[g]);
+        // One line: the chart's title names it; the legend would only take room.
+        groups_[g].chart->legend()->setVisible(g != TS::Fix && lines[g] > 1);
+    }
     applyTheme();
 }
 
@@ -267,14 +295,54 @@ void ChartsView::redraw() {
             hi[TS::group(s)] = std::max(hi[TS::group(s)], p.y());
         }
         lines_[i]->replace(pts);
+        // No legend entry for a line without data (a constellation the receiver does not track).
+        const auto markers = groups_[TS::group(s)].chart->legend()->markers(lines_[i]);
+        for (QLegendMarker *m : markers) m->setVisible(!pts.isEmpty());
     }
     for (int g = 0; g < TS::GroupCount; ++g) {
         GroupChart &gc = groups_[g];
         if (!gc.view || !gc.view->isVisibleTo(this)) continue;
         gc.x->setRange(-span, 0.0);
+        gc.x->setTickInterval(niceStep(span / 5.0));
         gc.x->setTitleText(minutes ? tr("minutes before the latest epoch")
                                    : tr("seconds before the latest epoch"));
-        gc.x->setLabelFormat(minutes ? "%.0f" : "%.0f");
+        if (g == TS::Fix) {
+            int a = std::isfinite(lo[g]) ? int(std::lround(lo[g])) : int(FixType::None);
+            int b = std::isfinite(hi[g]) ? int(std::lround(hi[g])) : int(FixType::Fix3D);
+            if (b - a < 2) a = std::max(0, b - 2), b = a + 2; // at least three names
+            if (gc.fixLo != a || gc.fixHi != b) {
+                // A fresh axis: Qt Charts 6.4 mislays the labels of a category axis whose
+                // categories are replaced in place.
+                gc.fixLo = a;
+                gc.fixHi = b;
+                auto *cat = new QCategoryAxis;
+                cat->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+                cat->setStartValue(a - 0.5);
+                for (int f = a; f <= b; ++f)
+                    cat->append(style::fixTypeLabel(static_cast<FixType>(f)), f);
+                cat->setRange(a - 0.5, b + 0.5);
+                gc.chart->addAxis(cat, Qt::AlignLeft);
+                // Qt Charts rescales an attached axis to the data after new points arrive
+                // (later, from its own layout); the fix axis keeps the span its names were
+                // made for.
+                connect(cat, &QCategoryAxis::rangeChanged, this, [this, cat](qreal lo, qreal hi) {
+                    const GroupChart &fc = groups_[TS::Fix];
+                    if (lo != fc.fixLo - 0.5 || hi != fc.fixHi + 0.5)
+                        cat->setRange(fc.fixLo - 0.5, fc.fixHi + 0.5);
+                });
+                for (QAbstractSeries *line : gc.chart->series()) {
+                    line->detachAxis(gc.y);
+                    line->attachAxis(cat);
+                }
+                gc.chart->removeAxis(gc.y);
+                delete gc.y;
+                gc.y = cat;
+                applyTheme();
+            }
+            // Every time: attaching a line or replacing its points may rescale the axis to the
+            // data.
+            gc.y->setRange(a - 0.5, b + 0.5);
+        }
         if (auto *v = qobject_cast<QValueAxis *>(gc.y)) {
             double a = lo[g], b = hi[g];
             if (!std::isfinite(a)) a = 0.0, b = 1.0;

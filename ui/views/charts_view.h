@@ -58,6 +58,7 @@ private:
         QChart *chart = nullptr;
         QValueAxis *x = nullptr;
         QAbstractAxis *y = nullptr;
+        int fixLo = -1, fixHi = -1; // fix types named on the fix chart's axis
     };
     void rebuildCharts();
     GroupChart &ensureGroup(TimeSeriesModel::Group g);

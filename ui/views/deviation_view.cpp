@@ -71,7 +71,7 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
     p.fillRect(rect(), pal.color(QPalette::Base));
 
     const QFontMetrics fm(font());
-    const int left = fm.horizontalAdvance(QStringLiteral("-000.000")) + 8;
+    const int left = fm.horizontalAdvance(QStringLiteral("-000.000")) + fm.height() + 8;
     const int bottom = fm.height() * 2 + 6;
     const int side = std::max(50, std::min(width() - left - 12, height() - bottom - 12));
     const QRect plot(left + (width() - left - 12 - side) / 2, 8, side, side);
@@ -122,9 +122,10 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
     p.drawText(QRectF(plot.left(), plot.bottom() + 2 + fm.height(), plot.width(), fm.height()),
                Qt::AlignHCenter, tr("East (m)"));
     p.save();
-    p.translate(fm.height() * 0.2, plot.top());
-    p.drawText(QRectF(0, 0, fm.height(), plot.height() / 2.0), Qt::AlignLeft | Qt::AlignTop,
-               tr("N"));
+    p.translate(2, plot.center().y());
+    p.rotate(-90);
+    p.drawText(QRectF(-plot.height() / 2.0, 0, plot.height(), fm.height()), Qt::AlignHCenter,
+               tr("North (m)"));
     p.restore();
 
     // Points, oldest first so the newest are on top.
@@ -158,7 +159,13 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
         const double rp = ci.radius * scale;
         p.drawEllipse(c, rp, rp);
         const QPointF at = c + QPointF(rp * 0.7071, -rp * 0.7071);
-        p.drawText(at + QPointF(3, -3), ci.name);
+        // On a translucent plate so the name reads over a dense cloud.
+        const QRectF plateRect(at + QPointF(3, -3 - fm.ascent()),
+                               QSizeF(fm.horizontalAdvance(ci.name) + 4, fm.height()));
+        QColor plate = pal.color(QPalette::Base);
+        plate.setAlpha(190);
+        p.fillRect(plateRect, plate);
+        p.drawText(plateRect, Qt::AlignCenter, ci.name);
     }
     // Mean offset from a typed reference.
     if (s_->hasReference()) {
@@ -214,10 +221,10 @@ DeviationView::DeviationView(ReceiverStateModel *model, QWidget *parent)
     useRef_->setToolTip(tr("Centre on a known position instead of the mean of the positions"));
     refLat_ = new QLineEdit;
     refLat_->setObjectName("deviationRefLat");
-    refLat_->setPlaceholderText(tr("latitude, e.g. 55.75123456 N"));
+    refLat_->setPlaceholderText(tr("latitude, e.g. 55.7512 N"));
     refLon_ = new QLineEdit;
     refLon_->setObjectName("deviationRefLon");
-    refLon_->setPlaceholderText(tr("longitude, e.g. 37.61812345 E"));
+    refLon_->setPlaceholderText(tr("longitude, e.g. 37.6181 E"));
     capacity_ = new QSpinBox;
     capacity_->setObjectName("deviationCapacity");
     capacity_->setRange(10, 1000000);
