@@ -1,5 +1,6 @@
 #include "connection_controller.h"
 
+#include "core/dialect_registry.h"
 #include "link/baud_detector.h"
 #include "link/connection.h"
 #include "link/replay_transport.h"
@@ -93,6 +94,11 @@ bool ConnectionController::openWith(int baud) {
             [this](const QString &why) { setState(State::Reconnecting, tr("Link lost: %1 — retrying every second").arg(why)); });
     connect(c, &link::Connection::linkRestored, this,
             [this](const QString &d) { setState(State::Connected, tr("Connected: %1").arg(d)); });
+    // Once the dialect is known, ask the receiver who it is (model, firmware) with its probe.
+    connect(c, &link::Connection::dialectDetected, this, [this, c](const QString &id) {
+        if (const Dialect *d = registry_.find(id.toStdString()); d && !d->probeCommand.empty())
+            send(QByteArray(d->probeCommand.data(), qsizetype(d->probeCommand.size())));
+    });
     connect(c->commands(), &link::CommandQueue::commandFinished, this, [this](const link::CommandResult &r) {
         const bool ok = r.outcome == link::CommandOutcome::Accepted || r.outcome == link::CommandOutcome::Sent;
         emit commandFinished(tr("%1: %2").arg(r.sentence, r.detail.isEmpty() ? link::outcomeName(r.outcome) : r.detail), ok);

@@ -117,10 +117,13 @@ void MainWindow::createDocks() {
     auto *rtkDock = addDock(rtk_, tr("RTK"), "rtkDock", Qt::RightDockWidgetArea);
     charts_ = new ui::ChartsView(stateModel_, this);
     auto *chartsDock = addDock(charts_, tr("Charts"), "chartsDock", Qt::BottomDockWidgetArea);
+    splitDockWidget(skyDock, signalDock, Qt::Vertical);
     auto *deviationDock = addDock(new ui::DeviationView(stateModel_, this), tr("Deviation"), "deviationDock",
                                   Qt::LeftDockWidgetArea);
     auto *attitudeDock = addDock(new ui::AttitudeView(stateModel_, this), tr("Attitude and time marks"),
                                  "attitudeDock", Qt::RightDockWidgetArea);
+    tabifyDockWidget(skyDock, deviationDock);
+    skyDock->raise();
     tabifyDockWidget(fixDock, rtkDock);
     tabifyDockWidget(rtkDock, infoDock);
     tabifyDockWidget(infoDock, satDock);
@@ -129,9 +132,6 @@ void MainWindow::createDocks() {
     tabifyDockWidget(consoleDock, statsDock);
     tabifyDockWidget(statsDock, chartsDock);
     consoleDock->raise();
-    tabifyDockWidget(skyDock, deviationDock);
-    skyDock->raise();
-    splitDockWidget(skyDock, signalDock, Qt::Vertical);
     connect(consoleView_, &ui::ConsoleView::sendRequested, this, [this](const QByteArray &s) {
         QString why;
         if (!controller_->send(s, &why)) statusBar()->showMessage(tr("Not sent: %1").arg(why), 8000);
