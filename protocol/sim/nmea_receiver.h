@@ -1,6 +1,6 @@
 #pragma once
 // NmeaReceiver: a plain NMEA-0183 4.11 receiver (GPS, GLONASS, Galileo, BeiDou, SBAS) with the
-// usual default output (GGA, GSA, GSV, RMC, VTG, ZDA at 1 Hz, 9600 baud) that answers standard
+// usual default output (GGA, GSA, RMC, VTG, ZDA at 1 Hz and GSV every 2 s, 9600 baud) that answers standard
 // queries ($--GPQ,GGA) with the sentence asked for.
 #include "receiver.h"
 #include "standard_output.h"
@@ -21,6 +21,7 @@ private:
     // The sentence(s) of this type for the current epoch; empty when the type is not produced.
     std::vector<std::string> sentencesOf(std::string_view type, const SkySnapshot &snap) const;
     StandardStyle style_;
+    unsigned epochs_ = 0;
 };
 
 } // namespace gnss::sim
