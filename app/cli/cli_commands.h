@@ -22,5 +22,7 @@ int cmdProbe(const CliContext &ctx, int argc, char **argv);
 int cmdMonitor(const CliContext &ctx, int argc, char **argv);
 int cmdRecord(const CliContext &ctx, int argc, char **argv);
 int cmdSend(const CliContext &ctx, int argc, char **argv);
+// Receiver settings (cmd_config.cpp): get, set, export, apply, diff.
+int cmdConfig(const CliContext &ctx, int argc, char **argv);
 
 } // namespace gnss::cli

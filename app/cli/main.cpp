@@ -32,6 +32,9 @@ constexpr Command kCommands[] = {
          "record --port P|--tcp H:P --out FILE [--duration S]   FILE + FILE.idx"},
         {"send", gnss::cli::cmdSend,
          "send --port P|--tcp H:P [--baud B] SENTENCE...   replies and outcome per command"},
+        {"config", gnss::cli::cmdConfig,
+         "config --port P [--baud B] | --sim D  get [KEY...] | set KEY=VALUE... | export FILE | "
+         "apply FILE | diff FILE"},
 };
 
 void usage(std::FILE *f) {

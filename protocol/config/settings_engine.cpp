@@ -497,11 +497,12 @@ void SettingsEngine::finishVerify() {
             } else if (anyFailed) {
                 c.verdict = Verdict::NotSent;
             }
-        } else if (auto it = written_.find(kv.key);
-                   it != written_.end() && !sameValue(*def, kv.value, it->second)) {
-            // The receiver's echo (PNVGRZA) carried another value.
+        } else if (auto it = written_.find(kv.key); it != written_.end()) {
+            // Known from the receiver's echo in this apply (PNVGRZA answers with the values in
+            // force): that is a read-back.
             c.reported = it->second;
-            c.verdict = Verdict::NotTaken;
+            c.verdict =
+                    sameValue(*def, kv.value, it->second) ? Verdict::Verified : Verdict::NotTaken;
         } else if (anyFailed) {
             c.verdict = Verdict::NotSent;
             written_.erase(kv.key);

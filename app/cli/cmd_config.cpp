@@ -1,0 +1,360 @@
+// gnss-cli config: a receiver's settings from the command line, on the settings engine
+// (protocol/config) that the settings dock uses.
+//
+//   gnss-cli config (--port P [--baud B] | --sim DIALECT) [--dialect D] get [KEY...]
+//   ... set KEY=VALUE...     apply; one JSON line per command, then the verification
+//   ... export FILE          read everything, write a versioned JSON profile
+//   ... apply FILE           apply the profile's difference; non-zero if anything was refused
+//                            or did not verify
+//   ... diff FILE            one JSON line per difference; exit 1 when there are any
+//
+// Without --baud the speed is detected; without --dialect the receiver is identified.
+// Before any Qt header: core headers have members named emit, which Qt defines as a macro.
+#include "core/json_writer.h"
+#include "core/stream_decoder.h"
+
+#include "baud_detector.h"
+#include "cli_args.h"
+#include "cli_commands.h"
+#include "command_queue.h"
+#include "serial_transport.h"
+#include "settings_engine.h"
+#include "vendor_detector.h"
+#ifdef GNSS_HAVE_SIM
+#include "simulator_transport.h"
+#endif
+
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QTimer>
+
+#include <cstdio>
+#include <memory>
+
+namespace gnss::cli {
+namespace {
+
+using config::OperationReport;
+using config::SettingsEngine;
+
+void printLine(const std::string &s) {
+    std::fwrite(s.data(), 1, s.size(), stdout);
+    std::fputc('\n', stdout);
+    std::fflush(stdout);
+}
+
+void say(const QString &s) {
+    std::fprintf(stderr, "gnss-cli: %s\n", s.toUtf8().constData());
+}
+
+std::string utf8(const QString &s) {
+    return s.toStdString();
+}
+
+// Runs an engine operation to its end.
+OperationReport run(SettingsEngine &engine, const std::function<bool()> &start) {
+    QEventLoop loop;
+    bool done = false;
+    auto c = QObject::connect(&engine, &SettingsEngine::finished, &loop, [&] {
+        done = true;
+        loop.quit();
+    });
+    start();
+    if (!done) loop.exec();
+    QObject::disconnect(c);
+    return engine.lastReport();
+}
+
+void printCommand(const link::CommandResult &r) {
+    std::string out;
+    JsonWriter w(out);
+    w.beginObject()
+            .field("sentence", utf8(r.sentence))
+            .field("outcome", utf8(link::outcomeName(r.outcome)))
+            .field("detail", utf8(r.detail));
+    w.key("replies").beginArray();
+    for (const QString &line : r.replies) w.value(utf8(line));
+    w.endArray();
+    if (r.baudAfter > 0) w.field("baud", r.baudAfter);
+    w.endObject();
+    printLine(out);
+}
+
+// The verification of an apply, one line per setting, then the summary.
+void printChecks(const OperationReport &r) {
+    for (const auto &c : r.checks) {
+        std::string out;
+        JsonWriter w(out);
+        w.beginObject()
+                .field("key", c.key)
+                .field("set", c.wanted)
+                .field("reported",
+                       c.reported.empty() ? std::nullopt : std::optional<std::string>(c.reported))
+                .field("verdict", utf8(config::verdictName(c.verdict)))
+                .endObject();
+        printLine(out);
+    }
+    std::string out;
+    JsonWriter w(out);
+    w.beginObject()
+            .field("ok", r.ok())
+            .field("nothing_to_do", r.nothingToDo)
+            .field("commands", static_cast<int>(r.commands.size()))
+            .field("failed_commands", r.failedCommands())
+            .field("failed_checks", r.failedChecks());
+    w.key("companions").beginArray();
+    for (const auto &kv : r.companions) w.value(kv.key + "=" + kv.value);
+    w.endArray();
+    w.field("error", r.error.isEmpty() ? std::nullopt : std::optional<std::string>(utf8(r.error)))
+            .endObject();
+    printLine(out);
+}
+
+bool reportRead(const OperationReport &r) {
+    if (r.ok()) return true;
+    say(QObject::tr("reading the settings failed: %1")
+                .arg(r.error.isEmpty()
+                             ? QObject::tr("%n command(s) failed", nullptr, r.failedCommands())
+                             : r.error));
+    for (const auto &c : r.commands)
+        if (c.outcome != link::CommandOutcome::Accepted && c.outcome != link::CommandOutcome::Sent)
+            say(QString("  %1: %2").arg(c.sentence, c.detail));
+    return false;
+}
+
+struct Link {
+    std::unique_ptr<link::Transport> transport;
+    const Dialect *dialect = nullptr;
+};
+
+// Opens --port or --sim, finds the speed and the dialect; nullptr transport with a message.
+Link openLink(const CliContext &ctx, const Args &args) {
+    Link l;
+    const auto port = args.option("port");
+    const auto sim = args.option("sim");
+    if ((port ? 1 : 0) + (sim ? 1 : 0) != 1) {
+        say(QObject::tr("config needs one of --port P or --sim DIALECT"));
+        return {};
+    }
+    int baud = 0;
+    if (const auto b = args.option("baud")) {
+        baud = QString::fromStdString(*b).toInt();
+        if (baud < 300 || baud > 4000000) {
+            say(QObject::tr("--baud expects a speed such as 9600 or 115200, got '%1'")
+                        .arg(QString::fromStdString(*b)));
+            return {};
+        }
+    }
+    const std::string dialectId = args.option("dialect").value_or(sim ? *sim : "auto");
+    if (dialectId != "auto") {
+        l.dialect = ctx.registry.find(dialectId);
+        if (!l.dialect) {
+            say(QObject::tr("unknown dialect '%1'").arg(QString::fromStdString(dialectId)));
+            return {};
+        }
+    }
+    if (sim) {
+#ifdef GNSS_HAVE_SIM
+        l.transport =
+                std::make_unique<link::SimulatorTransport>(QString::fromStdString(*sim), 1, baud);
+#else
+        say(QObject::tr("this gnss-cli was built without the simulator"));
+        return {};
+#endif
+    } else {
+        link::SerialSettings s;
+        s.portName = QString::fromStdString(*port);
+        s.baud = baud > 0 ? baud : 9600;
+        l.transport = std::make_unique<link::SerialTransport>(s);
+    }
+    if (!l.transport->open()) {
+        say(l.transport->errorString());
+        return {};
+    }
+    if (port && baud <= 0) {
+        link::BaudDetector detector(l.transport.get());
+        detector.setCandidates(link::BaudDetector::likelyRates(0));
+        QEventLoop loop;
+        link::BaudDetection found;
+        QObject::connect(&detector, &link::BaudDetector::finished,
+                         [&](const link::BaudDetection &d) {
+                             found = d;
+                             loop.quit();
+                         });
+        QTimer::singleShot(0, &detector, &link::BaudDetector::start);
+        loop.exec();
+        if (!found.found) {
+            say(found.error);
+            return {};
+        }
+    }
+    if (!l.dialect) {
+        link::VendorDetector vendor(l.transport.get(), ctx.registry);
+        QEventLoop loop;
+        link::VendorIdentity id;
+        QObject::connect(&vendor, &link::VendorDetector::finished,
+                         [&](const link::VendorIdentity &v) {
+                             id = v;
+                             loop.quit();
+                         });
+        QTimer::singleShot(0, &vendor, &link::VendorDetector::start);
+        loop.exec();
+        if (!id.found) {
+            say(QObject::tr("the receiver's dialect was not recognised (%1); give --dialect")
+                        .arg(id.error));
+            return {};
+        }
+        l.dialect = ctx.registry.find(id.dialect.toStdString());
+    }
+    if (l.dialect && l.dialect->settings.empty()) {
+        say(QObject::tr("the %1 dialect has no settings")
+                    .arg(QString::fromUtf8(l.dialect->id.data(),
+                                           static_cast<qsizetype>(l.dialect->id.size()))));
+        return {};
+    }
+    return l;
+}
+
+int get(SettingsEngine &engine, const std::vector<std::string> &keys) {
+    for (const auto &k : keys)
+        if (!findSetting(engine.dialect()->settings, k)) {
+            say(QObject::tr("unknown setting '%1' (gnss-cli schema %2 lists them)")
+                        .arg(QString::fromStdString(k),
+                             QString::fromStdString(std::string(engine.dialect()->id))));
+            return 2;
+        }
+    const auto r = run(engine, [&] { return engine.read(keys); });
+    const bool ok = reportRead(r);
+    std::string out;
+    JsonWriter w(out);
+    w.beginObject().field("dialect", engine.dialect()->id);
+    const auto &id = engine.identity();
+    w.field("model", id.model.empty() ? std::nullopt : std::optional<std::string>(id.model));
+    w.field("firmware",
+            id.firmware.empty() ? std::nullopt : std::optional<std::string>(id.firmware));
+    w.key("values").beginObject();
+    std::vector<std::string> writeOnly;
+    for (const auto &def : engine.dialect()->settings) {
+        if (def.key.starts_with("action.")) continue;
+        bool wanted = keys.empty();
+        for (const auto &k : keys) wanted = wanted || k == def.key;
+        if (!wanted) continue;
+        w.field(def.key, engine.receiverValue(def.key));
+        if (engine.state(def.key) == config::ValueState::WriteOnly) writeOnly.emplace_back(def.key);
+    }
+    w.endObject();
+    w.key("write_only").beginArray();
+    for (const auto &k : writeOnly) w.value(k);
+    w.endArray().endObject();
+    printLine(out);
+    return ok ? 0 : 1;
+}
+
+int applyValues(SettingsEngine &engine, const std::function<bool()> &start) {
+    auto c = QObject::connect(&engine, &SettingsEngine::commandFinished, printCommand);
+    const auto r = run(engine, start);
+    QObject::disconnect(c);
+    printChecks(r);
+    if (!r.error.isEmpty()) say(r.error);
+    return r.ok() ? 0 : 1;
+}
+
+} // namespace
+
+int cmdConfig(const CliContext &ctx, int argc, char **argv) {
+    Args args(argc, argv, 2, {});
+    if (!args.error().empty()) {
+        say(QString::fromStdString(args.error()));
+        return 2;
+    }
+    const auto &pos = args.positionals();
+    if (pos.empty()) {
+        say(QObject::tr("config needs an action: get, set, export, apply or diff"));
+        return 2;
+    }
+    const std::string action = pos.front();
+    const std::vector<std::string> rest(pos.begin() + 1, pos.end());
+    std::vector<KeyValue> sets;
+    if (action == "set") {
+        for (const auto &a : rest) {
+            const auto eq = a.find('=');
+            if (eq == std::string::npos || eq == 0) {
+                say(QObject::tr("set expects KEY=VALUE, got '%1'").arg(QString::fromStdString(a)));
+                return 2;
+            }
+            sets.push_back({a.substr(0, eq), a.substr(eq + 1)});
+        }
+        if (sets.empty()) {
+            say(QObject::tr("set needs at least one KEY=VALUE"));
+            return 2;
+        }
+    } else if (action == "export" || action == "apply" || action == "diff") {
+        if (rest.size() != 1) {
+            say(QObject::tr("config %1 needs one FILE").arg(QString::fromStdString(action)));
+            return 2;
+        }
+    } else if (action != "get") {
+        say(QObject::tr("unknown config action '%1': get, set, export, apply or diff")
+                    .arg(QString::fromStdString(action)));
+        return 2;
+    }
+
+    int qargc = 1;
+    char name[] = "gnss-cli";
+    char *qargv[] = {name, nullptr};
+    QCoreApplication app(qargc, qargv);
+    Link l = openLink(ctx, args);
+    if (!l.transport) return 1;
+    link::CommandQueue queue(l.transport.get());
+    queue.setDialect(l.dialect);
+    SettingsEngine engine;
+    engine.attach(&queue, l.dialect, l.transport.get());
+
+    if (action == "get") return get(engine, rest);
+    if (action == "set") {
+        // Only what differs is sent: the engine reads the receiver first.
+        std::vector<std::string> keys;
+        for (const auto &kv : sets)
+            if (findSetting(l.dialect->settings, kv.key)) keys.push_back(kv.key);
+        if (!keys.empty()) run(engine, [&] { return engine.read(keys); });
+        return applyValues(engine, [&] { return engine.apply(sets); });
+    }
+    const QString path = QString::fromStdString(rest.front());
+    if (action == "export") {
+        if (!reportRead(run(engine, [&] { return engine.read(); }))) return 1;
+        QString error;
+        const config::Profile p = engine.exportProfile();
+        if (!config::saveProfile(path, p, &error)) {
+            say(error);
+            return 1;
+        }
+        say(QObject::tr("%n setting(s) of the %1 receiver written to %2", nullptr,
+                        static_cast<int>(p.values.size()))
+                    .arg(QString::fromStdString(p.dialect), path));
+        return 0;
+    }
+    config::Profile profile;
+    QString error;
+    if (!config::loadProfile(path, profile, &error, l.dialect)) {
+        say(error);
+        return 2;
+    }
+    if (!reportRead(run(engine, [&] { return engine.read(); }))) return 1;
+    if (action == "apply") return applyValues(engine, [&] { return engine.applyProfile(profile); });
+    // diff
+    const auto entries = engine.diff(profile);
+    for (const auto &d : entries) {
+        std::string out;
+        JsonWriter w(out);
+        w.beginObject()
+                .field("key", d.key)
+                .field("profile", d.profileValue)
+                .field("receiver",
+                       d.receiverKnown ? std::optional<std::string>(d.receiverValue) : std::nullopt)
+                .endObject();
+        printLine(out);
+    }
+    return entries.empty() ? 0 : 1;
+}
+
+} // namespace gnss::cli
