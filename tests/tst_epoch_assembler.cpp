@@ -132,6 +132,18 @@ private slots:
         QVERIFY(epochs[0].fixNote.empty());
     }
 
+    void dopsOfASlowerGsaHoldUntilTheNext() {
+        const auto epochs = epochsOf({
+                "GPGGA,120000.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                "GPGSA,A,3,01,02,03,04,,,,,,,,,1.8,0.9,1.5",
+                "GPGGA,120001.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                "GPGGA,120002.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+        });
+        QCOMPARE(epochs.size(), std::size_t(3));
+        QCOMPARE(*epochs[2].pdop, 1.8);
+        QCOMPARE(*epochs[2].vdop, 1.5);
+    }
+
     void timeWithoutDateStaysTimeOfDay() {
         const auto epochs = epochsOf({"GPGGA,235959.50,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,"});
         QCOMPARE(QString::fromStdString(epochs[0].timeText()), QString("23:59:59.500"));

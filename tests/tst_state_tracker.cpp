@@ -96,7 +96,8 @@ private slots:
 
         st = track({buildSentence("PNMRX600,VT002,1.23,NMX")});
         QCOMPARE(QString::fromStdString(st.identity.vendor), QString("Nemerix"));
-        QVERIFY(!st.identity.firmware.empty());
+        QCOMPARE(QString::fromStdString(st.identity.model), QString("VT002"));
+        QCOMPARE(QString::fromStdString(st.identity.firmware), QString("1.23 NMX"));
     }
 
     void standardHeadingAndDeviationsToo() {

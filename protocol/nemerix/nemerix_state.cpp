@@ -11,9 +11,18 @@ bool updateState(const Message &m, ReceiverState &st) {
     if (m.type == &VersionReport::kSoftwareType) {
         const auto &v = static_cast<const VersionReport &>(m);
         st.identity.vendor = "Nemerix";
-        if (st.identity.model.empty()) st.identity.model = "Nemerix receiver";
+        // The spec gives no layout: a first field that names the module ("VT002") is the model,
+        // the rest is the firmware; otherwise all of it is the firmware.
+        std::size_t first = 0;
+        if (v.count >= 2 && !v.fieldsText[0].empty() && v.fieldsText[0].find(' ') == std::string_view::npos &&
+            v.fieldsText[0].size() <= 12) {
+            st.identity.model = std::string(v.fieldsText[0]);
+            first = 1;
+        } else if (st.identity.model.empty()) {
+            st.identity.model = "receiver";
+        }
         std::string fw;
-        for (std::size_t i = 0; i < v.count; ++i) {
+        for (std::size_t i = first; i < v.count; ++i) {
             if (!fw.empty()) fw += ' ';
             fw += v.fieldsText[i];
         }

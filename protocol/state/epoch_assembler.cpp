@@ -101,6 +101,13 @@ void EpochAssembler::closeEpoch(Callback onEpoch) {
         ++it;
     }
     if (!e.satsUsed && usedThisEpoch_) e.satsUsed = usedCount_;
+    // A receiver may send GSA less often than its fix (Nemerix: every 3 s): the DOPs of the last
+    // GSA hold until the next one, as the used flags do.
+    if (!usedThisEpoch_) {
+        if (!e.pdop) e.pdop = lastPdop_;
+        if (!e.vdop) e.vdop = lastVdop_;
+        if (!e.hdop) e.hdop = lastHdop_;
+    }
 
     onEpoch(e);
     ++epochs_;
@@ -191,6 +198,9 @@ void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) 
         if (!current_.pdop) current_.pdop = a->pdop;
         if (!current_.hdop) current_.hdop = a->hdop;
         if (!current_.vdop) current_.vdop = a->vdop;
+        if (a->pdop) lastPdop_ = a->pdop;
+        if (a->hdop) lastHdop_ = a->hdop;
+        if (a->vdop) lastVdop_ = a->vdop;
     } else if (const auto *g = message_cast<Gsv>(m)) {
         const auto t = s.talker();
         const std::uint32_t key = (static_cast<std::uint32_t>(static_cast<unsigned char>(t[0])) << 24) |

@@ -62,6 +62,7 @@ private:
     std::bitset<8 * 256> used_;    // used in fix, from this epoch's GSA (or the last), by system/PRN
     int usedCount_ = 0;
     bool usedThisEpoch_ = false;
+    std::optional<double> lastPdop_, lastHdop_, lastVdop_; // from the latest GSA (kept when GSA is slower)
     std::optional<Date> lastDate_;
     std::optional<int> ggaQuality_, gsaFix_;
     std::optional<char> rmcMode_, rmcStatus_;
