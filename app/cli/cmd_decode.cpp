@@ -106,17 +106,7 @@ int cmdDecode(const CliContext &ctx, int argc, char **argv) {
     Output out;
     const bool ok = run(opt, dec, [&](const SentenceEvent &ev) {
         JsonWriter w(out.buffer());
-        const Sentence &s = ev.sentence;
-        w.beginObject().field("line", s.line()).field("address", s.address());
-        w.field("talker", s.talker()).field("type", s.type());
-        w.field("checksum", toString(s.checksum()));
-        if (ev.message) {
-            w.key("data");
-            ev.message->writeJson(w);
-        } else {
-            w.field("error", ev.error);
-        }
-        w.endObject();
+        writeSentenceEventJson(w, ev);
         out.lineDone();
     });
     return ok ? 0 : 1;

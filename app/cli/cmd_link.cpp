@@ -267,17 +267,7 @@ int cmdMonitor(const CliContext &ctx, int argc, char **argv) {
         }
         std::string out;
         JsonWriter w(out);
-        const Sentence &s = ev.sentence;
-        w.beginObject().field("line", s.line()).field("address", s.address());
-        w.field("talker", s.talker()).field("type", s.type());
-        w.field("checksum", toString(s.checksum()));
-        if (ev.message) {
-            w.key("data");
-            ev.message->writeJson(w);
-        } else {
-            w.field("error", ev.error);
-        }
-        w.endObject();
+        writeSentenceEventJson(w, ev);
         printLine(out);
     });
     QObject::connect(&conn, &link::Connection::linkLost, [](const QString &why) {

@@ -32,6 +32,20 @@ const char *hexByte(std::uint8_t v, char *buf) {
 
 } // namespace
 
+void writeSentenceEventJson(JsonWriter &w, const SentenceEvent &ev) {
+    const Sentence &s = ev.sentence;
+    w.beginObject().field("line", s.line()).field("address", s.address());
+    w.field("talker", s.talker()).field("type", s.type());
+    w.field("checksum", toString(s.checksum()));
+    if (ev.message) {
+        w.key("data");
+        ev.message->writeJson(w);
+    } else {
+        w.field("error", ev.error);
+    }
+    w.endObject();
+}
+
 StreamDecoder::StreamDecoder(const DialectRegistry &registry, DecoderOptions options)
     : registry_(registry), options_(std::move(options)) {
     if (options_.dialect != "auto" && !options_.dialect.empty()) {

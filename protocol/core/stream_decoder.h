@@ -45,6 +45,10 @@ struct SentenceEvent {
     const Dialect *dialect = nullptr; // dialect of the rule that matched (nullptr: standard)
 };
 
+// The JSON object `gnss-cli decode` prints for one sentence: line, address, talker, type,
+// checksum, and data (the decoded values) or error (why not).
+void writeSentenceEventJson(JsonWriter &w, const SentenceEvent &ev);
+
 class StreamDecoder {
 public:
     using Handler = FunctionRef<void(const SentenceEvent &)>;

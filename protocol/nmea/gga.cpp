@@ -10,36 +10,38 @@ namespace gnss::nmea {
 
 const MessageType Gga::kType{"GGA"};
 
+void readGgaFields(FieldReader &r, GgaFields &m) {
+    m.time = r.time(0, "time");
+    m.lat = r.latitude(1, "latitude");
+    m.lon = r.longitude(3, "longitude");
+    m.quality = r.integer(5, "quality");
+    m.satsUsed = r.integer(6, "satellites used");
+    m.hdop = r.real(7, "HDOP");
+    m.altMsl = r.real(8, "altitude");
+    m.geoidSep = r.real(10, "geoid separation");
+    m.dgpsAge = r.real(12, "DGPS age");
+    m.dgpsStation = r.integer(13, "DGPS station");
+}
+
 bool decodeGga(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     Gga m;
-    if (r.require(6)) {
-        m.time = r.time(0, "time");
-        m.lat = r.latitude(1, "latitude");
-        m.lon = r.longitude(3, "longitude");
-        m.quality = r.integer(5, "quality");
-        m.satsUsed = r.integer(6, "satellites used");
-        m.hdop = r.real(7, "HDOP");
-        m.altMsl = r.real(8, "altitude");
-        m.geoidSep = r.real(10, "geoid separation");
-        m.dgpsAge = r.real(12, "DGPS age");
-        m.dgpsStation = r.integer(13, "DGPS station");
-    }
+    if (r.require(6)) readGgaFields(r, m);
     return finishDecode(r, ctx, m);
 }
 
-void Gga::writeJson(JsonWriter &w) const {
+void writeGgaFieldsJson(JsonWriter &w, const GgaFields &f) {
     w.beginObject()
-            .field("time", time)
-            .field("lat", lat)
-            .field("lon", lon)
-            .field("quality", quality)
-            .field("sats_used", satsUsed)
-            .field("hdop", hdop)
-            .field("alt_msl", altMsl)
-            .field("geoid_sep", geoidSep)
-            .field("dgps_age", dgpsAge)
-            .field("dgps_station", dgpsStation)
+            .field("time", f.time)
+            .field("lat", f.lat)
+            .field("lon", f.lon)
+            .field("quality", f.quality)
+            .field("sats_used", f.satsUsed)
+            .field("hdop", f.hdop)
+            .field("alt_msl", f.altMsl)
+            .field("geoid_sep", f.geoidSep)
+            .field("dgps_age", f.dgpsAge)
+            .field("dgps_station", f.dgpsStation)
             .endObject();
 }
 

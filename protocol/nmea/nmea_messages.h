@@ -15,9 +15,8 @@
 
 namespace gnss::nmea {
 
-struct Gga : Message {
-    static const MessageType kType;
-    Gga() : Message(kType) {}
+// The GGA field layout, shared with vendor sentences that repeat it (NVS PNVGTMC).
+struct GgaFields {
     std::optional<TimeOfDay> time;
     std::optional<double> lat, lon; // signed decimal degrees
     std::optional<int> quality;     // 0 none, 1 GPS, 2 DGPS, 4 RTK fixed, 5 float, 6 DR, ...
@@ -27,7 +26,15 @@ struct Gga : Message {
     std::optional<double> geoidSep; // metres, geoid above ellipsoid
     std::optional<double> dgpsAge;  // seconds
     std::optional<int> dgpsStation;
-    void writeJson(JsonWriter &w) const override;
+};
+// Reads fields 0-13 in the GGA layout (after require(6) has passed).
+void readGgaFields(FieldReader &r, GgaFields &f);
+void writeGgaFieldsJson(JsonWriter &w, const GgaFields &f);
+
+struct Gga : Message, GgaFields {
+    static const MessageType kType;
+    Gga() : Message(kType) {}
+    void writeJson(JsonWriter &w) const override { writeGgaFieldsJson(w, *this); }
 };
 
 struct Gll : Message {

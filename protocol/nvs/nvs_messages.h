@@ -7,6 +7,7 @@
 #include "core/field_reader.h"
 #include "core/field_types.h"
 #include "core/message.h"
+#include "nmea/nmea_messages.h"
 
 #include <optional>
 #include <string>
@@ -200,16 +201,11 @@ struct Tmu : Message {
 };
 
 // 4.18 PNVGTMC: GGA-like fix at the time mark (kept apart from GGA: it is not the epoch's fix).
-struct Tmc : Message {
+// The GGA layout at the event (quality with NVS GGA meanings: 4 RTK fixed, 5 float, 6 estimated).
+struct Tmc : Message, nmea::GgaFields {
     static const MessageType kType;
     Tmc() : Message(kType) {}
-    std::optional<TimeOfDay> time;
-    std::optional<double> lat, lon;
-    std::optional<int> quality; // NVS GGA meanings: 4 RTK fixed, 5 float, 6 estimated
-    std::optional<int> satsUsed;
-    std::optional<double> hdop, altMsl, geoidSep, dgpsAge;
-    std::optional<int> dgpsStation;
-    void writeJson(JsonWriter &w) const override;
+    void writeJson(JsonWriter &w) const override { nmea::writeGgaFieldsJson(w, *this); }
 };
 
 // 4.19-4.21 PNVGSDP / PNVGSDV / PNVGSDH: standard deviations.

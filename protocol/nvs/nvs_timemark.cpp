@@ -45,34 +45,8 @@ void Tmu::writeJson(JsonWriter &w) const {
 bool decodeTmc(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     Tmc m;
-    if (r.require(6)) {
-        m.time = r.time(0, "time");
-        m.lat = r.latitude(1, "latitude");
-        m.lon = r.longitude(3, "longitude");
-        m.quality = r.integer(5, "quality");
-        m.satsUsed = r.integer(6, "satellites used");
-        m.hdop = r.real(7, "HDOP");
-        m.altMsl = r.real(8, "altitude");
-        m.geoidSep = r.real(10, "geoid separation");
-        m.dgpsAge = r.real(12, "differential age");
-        m.dgpsStation = r.integer(13, "station id");
-    }
+    if (r.require(6)) nmea::readGgaFields(r, m);
     return finish(r, ctx, m);
-}
-
-void Tmc::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("time", time)
-            .field("lat", lat)
-            .field("lon", lon)
-            .field("quality", quality)
-            .field("sats_used", satsUsed)
-            .field("hdop", hdop)
-            .field("alt_msl", altMsl)
-            .field("geoid_sep", geoidSep)
-            .field("dgps_age", dgpsAge)
-            .field("dgps_station", dgpsStation)
-            .endObject();
 }
 
 } // namespace gnss::nvs
