@@ -100,6 +100,10 @@ void SettingsEngine::attach(link::CommandQueue *queue, const Dialect *dialect,
     }
 }
 
+bool SettingsEngine::canSend() const {
+    return queue_ && (!transport_ || transport_->canWrite());
+}
+
 void SettingsEngine::forget() {
     reported_.clear();
     written_.clear();

@@ -102,6 +102,8 @@ public:
     const Dialect *dialect() const { return dialect_; }
     link::CommandQueue *queue() const { return queue_; }
     bool isBusy() const { return op_ != Operation::None; }
+    // Whether commands can go to the receiver (a replayed log cannot take any).
+    bool canSend() const;
     // Forgets what was read and written (the receiver restarted with other settings).
     void forget();
 
