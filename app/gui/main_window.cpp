@@ -132,6 +132,8 @@ void MainWindow::createDocks() {
                                            "settingsDock", Qt::RightDockWidgetArea));
     connect(session_, &ui::ReceiverSession::dialectChanged, settingsEngine,
             [this, settingsEngine](const Dialect *d) { settingsEngine->attach(controller_->connection(), d); });
+    connect(controller_, &ConnectionController::stateChanged, settingsEngine,
+            [this, settingsEngine] { settingsEngine->attach(controller_->connection(), session_->dialect()); });
     fixDock->raise();
     tabifyDockWidget(consoleDock, statsDock);
     tabifyDockWidget(statsDock, chartsDock);

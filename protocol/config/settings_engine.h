@@ -139,6 +139,7 @@ public:
 
 signals:
     void dialectChanged(const gnss::Dialect *dialect);
+    void queueChanged(); // another link (connected, reconnected, or gone)
     void busyChanged(bool busy);
     void progress(int done, int total, const QString &step);
     void commandFinished(const gnss::link::CommandResult &result);

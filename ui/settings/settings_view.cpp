@@ -143,6 +143,11 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
         rebuild();
         if (d && engine_->canSend()) readAll(); // on connect: what the receiver is set to now
     });
+    connect(engine_, &config::SettingsEngine::queueChanged, this, [this] {
+        // The link came (after the dialect was known) or came back: read what is set now.
+        if (engine_->dialect() && engine_->canSend() && !engine_->isBusy()) readAll();
+        updateButtons();
+    });
     connect(engine_, &config::SettingsEngine::valuesChanged, this, &SettingsView::refreshValues);
     connect(engine_, &config::SettingsEngine::busyChanged, this, &SettingsView::updateButtons);
     connect(engine_, &config::SettingsEngine::progress, this,
