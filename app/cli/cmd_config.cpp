@@ -7,6 +7,7 @@
 //   ... apply FILE           apply the profile's difference; non-zero if anything was refused
 //                            or did not verify
 //   ... diff FILE            one JSON line per difference; exit 1 when there are any
+//   ... action save|defaults|cold|warm|hot   the receiver-wide actions the dialect offers
 //
 // Without --baud the speed is detected; without --dialect the receiver is identified.
 // Before any Qt header: core headers have members named emit, which Qt defines as a macro.
@@ -269,7 +270,7 @@ int cmdConfig(const CliContext &ctx, int argc, char **argv) {
     }
     const auto &pos = args.positionals();
     if (pos.empty()) {
-        say(QObject::tr("config needs an action: get, set, export, apply or diff"));
+        say(QObject::tr("config needs an action: get, set, export, apply, diff or action"));
         return 2;
     }
     const std::string action = pos.front();
@@ -293,8 +294,13 @@ int cmdConfig(const CliContext &ctx, int argc, char **argv) {
             say(QObject::tr("config %1 needs one FILE").arg(QString::fromStdString(action)));
             return 2;
         }
+    } else if (action == "action") {
+        if (rest.size() != 1) {
+            say(QObject::tr("config action needs one of save, defaults, cold, warm, hot"));
+            return 2;
+        }
     } else if (action != "get") {
-        say(QObject::tr("unknown config action '%1': get, set, export, apply or diff")
+        say(QObject::tr("unknown config action '%1': get, set, export, apply, diff or action")
                     .arg(QString::fromStdString(action)));
         return 2;
     }
@@ -318,6 +324,16 @@ int cmdConfig(const CliContext &ctx, int argc, char **argv) {
             if (findSetting(l.dialect->settings, kv.key)) keys.push_back(kv.key);
         if (!keys.empty()) run(engine, [&] { return engine.read(keys); });
         return applyValues(engine, [&] { return engine.apply(sets); });
+    }
+    if (action == "action") {
+        for (config::Action a :
+             {config::Action::SaveToFlash, config::Action::RestoreDefaults,
+              config::Action::ColdStart, config::Action::WarmStart, config::Action::HotStart})
+            if (config::actionName(a) == rest.front())
+                return applyValues(engine, [&] { return engine.runAction(a); });
+        say(QObject::tr("unknown action '%1': save, defaults, cold, warm or hot")
+                    .arg(QString::fromStdString(rest.front())));
+        return 2;
     }
     const QString path = QString::fromStdString(rest.front());
     if (action == "export") {

@@ -34,7 +34,7 @@ constexpr Command kCommands[] = {
          "send --port P|--tcp H:P [--baud B] SENTENCE...   replies and outcome per command"},
         {"config", gnss::cli::cmdConfig,
          "config --port P [--baud B] | --sim D  get [KEY...] | set KEY=VALUE... | export FILE | "
-         "apply FILE | diff FILE"},
+         "apply FILE | diff FILE | action save|defaults|cold|warm|hot"},
 };
 
 void usage(std::FILE *f) {

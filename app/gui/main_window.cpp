@@ -9,6 +9,7 @@
 #include "models/receiver_session.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
+#include "settings/settings_view.h"
 #include "style/gnss_style.h"
 #include "views/attitude_view.h"
 #include "views/charts_view.h"
@@ -128,6 +129,14 @@ void MainWindow::createDocks() {
     tabifyDockWidget(rtkDock, infoDock);
     tabifyDockWidget(infoDock, satDock);
     tabifyDockWidget(satDock, attitudeDock);
+    // Receiver settings: the engine follows the connection and the dialect it speaks.
+    auto *settingsEngine = new config::SettingsEngine(this);
+    tabifyDockWidget(attitudeDock, addDock(new ui::SettingsView(settingsEngine, this), tr("Receiver settings"),
+                                           "settingsDock", Qt::RightDockWidgetArea));
+    connect(session_, &ui::ReceiverSession::dialectChanged, settingsEngine,
+            [this, settingsEngine](const Dialect *d) { settingsEngine->attach(controller_->connection(), d); });
+    connect(controller_, &ConnectionController::stateChanged, settingsEngine,
+            [this, settingsEngine] { settingsEngine->attach(controller_->connection(), session_->dialect()); });
     fixDock->raise();
     tabifyDockWidget(consoleDock, statsDock);
     tabifyDockWidget(statsDock, chartsDock);

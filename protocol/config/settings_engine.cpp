@@ -74,7 +74,8 @@ void SettingsEngine::attach(link::CommandQueue *queue, const Dialect *dialect,
         end();
     }
     transport_ = transport;
-    if (queue != queue_) {
+    const bool newQueue = queue != queue_;
+    if (newQueue) {
         QObject::disconnect(queueConnection_);
         queue_ = queue;
         if (queue)
@@ -98,6 +99,11 @@ void SettingsEngine::attach(link::CommandQueue *queue, const Dialect *dialect,
         emit dialectChanged(dialect);
         emit valuesChanged();
     }
+    if (newQueue) emit queueChanged();
+}
+
+bool SettingsEngine::canSend() const {
+    return queue_ && (!transport_ || transport_->canWrite());
 }
 
 void SettingsEngine::forget() {

@@ -102,6 +102,8 @@ public:
     const Dialect *dialect() const { return dialect_; }
     link::CommandQueue *queue() const { return queue_; }
     bool isBusy() const { return op_ != Operation::None; }
+    // Whether commands can go to the receiver (a replayed log cannot take any).
+    bool canSend() const;
     // Forgets what was read and written (the receiver restarted with other settings).
     void forget();
 
@@ -137,6 +139,7 @@ public:
 
 signals:
     void dialectChanged(const gnss::Dialect *dialect);
+    void queueChanged(); // another link (connected, reconnected, or gone)
     void busyChanged(bool busy);
     void progress(int done, int total, const QString &step);
     void commandFinished(const gnss::link::CommandResult &result);

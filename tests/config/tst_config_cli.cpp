@@ -102,6 +102,10 @@ private slots:
         QVERIFY2(r.out.contains("$GPSGG,ELEV09*7B"), why(r));
         r = cli({"--sim", "nemerix", "frobnicate"});
         QCOMPARE(r.rc, 2);
+        r = cli({"--sim", "nvs", "action", "save"});
+        QVERIFY2(r.rc == 0 && r.out.contains("$PNVGCFG,W*"), why(r));
+        r = cli({"--sim", "nemerix", "action", "save"}); // the VT002 cannot save
+        QCOMPARE(r.rc, 1);
     }
 };
 

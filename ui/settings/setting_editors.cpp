@@ -1,0 +1,338 @@
+#include "setting_editors.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+
+#include <cmath>
+#include <limits>
+
+namespace gnss::ui {
+
+namespace {
+
+QString qs(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+QString unitSuffix(const SettingDef &d) {
+    return d.unit.empty() ? QString() : " " + qs(d.unit);
+}
+
+class IntegerEditor : public SettingEditor {
+public:
+    IntegerEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+        box_ = new QSpinBox(this);
+        box_->setRange(def.min ? static_cast<int>(*def.min) : -999999999,
+                       def.max ? static_cast<int>(*def.max) : 999999999);
+        box_->setSuffix(unitSuffix(def));
+        box_->setValue(qs(def.defaultValue).toInt());
+        connect(box_, &QSpinBox::valueChanged, this, [this] {
+            if (!loading_) emit edited();
+        });
+        finish(box_);
+    }
+    QString value() const override { return QString::number(box_->value()); }
+    void setValue(const QString &v) override {
+        bool ok = false;
+        const int n = v.trimmed().toInt(&ok);
+        if (!ok) return;
+        loading_ = true;
+        box_->setValue(n);
+        loading_ = false;
+    }
+    QWidget *input() const override { return box_; }
+
+private:
+    QSpinBox *box_;
+};
+
+class RealEditor : public SettingEditor {
+public:
+    RealEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+        box_ = new QDoubleSpinBox(this);
+        box_->setDecimals(4);
+        box_->setRange(def.min ? *def.min : -1e9, def.max ? *def.max : 1e9);
+        box_->setSingleStep(def.max && def.min && *def.max - *def.min <= 2 ? 0.001 : 0.1);
+        box_->setSuffix(unitSuffix(def));
+        box_->setValue(qs(def.defaultValue).toDouble());
+        connect(box_, &QDoubleSpinBox::valueChanged, this, [this] {
+            if (!loading_) emit edited();
+        });
+        finish(box_);
+    }
+    QString value() const override {
+        QString s = QString::number(box_->value(), 'f', box_->decimals());
+        while (s.contains('.') && (s.endsWith('0') || s.endsWith('.'))) s.chop(1);
+        return s;
+    }
+    void setValue(const QString &v) override {
+        bool ok = false;
+        const double d = v.trimmed().toDouble(&ok);
+        if (!ok) return;
+        loading_ = true;
+        box_->setValue(d);
+        loading_ = false;
+    }
+    QWidget *input() const override { return box_; }
+
+private:
+    QDoubleSpinBox *box_;
+};
+
+class EnumEditor : public SettingEditor {
+public:
+    EnumEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+        box_ = new QComboBox(this);
+        for (const auto &o : def.options) {
+            const QString label = qs(o.label);
+            box_->addItem(label == qs(o.value) ? label : QString("%1 (%2)").arg(label, qs(o.value)),
+                          qs(o.value));
+        }
+        setValue(qs(def.defaultValue));
+        connect(box_, &QComboBox::currentIndexChanged, this, [this] {
+            if (!loading_) emit edited();
+        });
+        finish(box_);
+    }
+    QString value() const override { return box_->currentData().toString(); }
+    void setValue(const QString &v) override {
+        int i = box_->findData(v.trimmed());
+        if (i < 0) // "05" for "5", "on" for "ON"
+            for (int k = 0; k < box_->count() && i < 0; ++k) {
+                const QString d = box_->itemData(k).toString();
+                bool a = false, b = false;
+                if (d.compare(v.trimmed(), Qt::CaseInsensitive) == 0 ||
+                    (d.toDouble(&a) == v.trimmed().toDouble(&b) && a && b))
+                    i = k;
+            }
+        if (i < 0) return;
+        loading_ = true;
+        box_->setCurrentIndex(i);
+        loading_ = false;
+    }
+    QWidget *input() const override { return box_; }
+
+private:
+    QComboBox *box_;
+};
+
+class BoolEditor : public SettingEditor {
+public:
+    BoolEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+        box_ = new QCheckBox(this);
+        // The schema's "on" and "off" values (options when given, else "1"/"0").
+        for (const auto &o : def.options) {
+            const QString l = qs(o.label).toLower();
+            if (l == "on" || l == "1" || l.startsWith("on")) on_ = qs(o.value);
+            if (l == "off" || l == "0" || l.startsWith("off")) off_ = qs(o.value);
+        }
+        setValue(qs(def.defaultValue));
+        connect(box_, &QCheckBox::toggled, this, [this] {
+            if (!loading_) emit edited();
+        });
+        finish(box_);
+    }
+    QString value() const override { return box_->isChecked() ? on_ : off_; }
+    void setValue(const QString &v) override {
+        const QString l = v.trimmed().toLower();
+        bool on;
+        if (l == on_.toLower() || l == "1" || l == "on" || l == "true")
+            on = true;
+        else if (l == off_.toLower() || l == "0" || l == "off" || l == "false")
+            on = false;
+        else
+            return;
+        loading_ = true;
+        box_->setChecked(on);
+        loading_ = false;
+    }
+    QWidget *input() const override { return box_; }
+
+private:
+    QCheckBox *box_;
+    QString on_ = "1", off_ = "0";
+};
+
+class TextEditor : public SettingEditor {
+public:
+    TextEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+        edit_ = new QLineEdit(this);
+        edit_->setText(qs(def.defaultValue));
+        edit_->setPlaceholderText(def.type == SettingType::List ? tr("items separated by ';'")
+                                                                : QString());
+        connect(edit_, &QLineEdit::textEdited, this, [this] { emit edited(); });
+        finish(edit_);
+    }
+    QString value() const override { return edit_->text().trimmed(); }
+    void setValue(const QString &v) override { edit_->setText(v); }
+    QWidget *input() const override { return edit_; }
+
+private:
+    QLineEdit *edit_;
+};
+
+QDoubleSpinBox *coordinateBox(QWidget *parent, double min, double max, int decimals,
+                              const QString &suffix) {
+    auto *b = new QDoubleSpinBox(parent);
+    b->setRange(min, max);
+    b->setDecimals(decimals);
+    b->setSuffix(suffix);
+    b->setMinimumWidth(130);
+    return b;
+}
+
+// "ddmm.mmmm" / "dddmm.mmmm" → degrees.
+double fromNmea(const QString &s) {
+    const double v = s.toDouble();
+    const double deg = std::floor(v / 100);
+    return deg + (v - deg * 100) / 60;
+}
+
+} // namespace
+
+SettingEditor::SettingEditor(const SettingDef &def, QWidget *parent) : QWidget(parent), def_(def) {}
+
+void SettingEditor::finish(QWidget *input) {
+    if (!layout()) {
+        auto *l = new QHBoxLayout(this);
+        l->setContentsMargins(0, 0, 0, 0);
+        l->addWidget(input, 1);
+    }
+    input->setObjectName(qs(def_.key));
+    QString tip = qs(def_.help);
+    if (def_.min || def_.max)
+        tip += "\n" + tr("Range: %1 to %2 %3")
+                              .arg(def_.min ? QString::number(*def_.min) : QString("-"),
+                                   def_.max ? QString::number(*def_.max) : QString("-"),
+                                   qs(def_.unit));
+    input->setToolTip(tip.trimmed());
+    setFocusProxy(input);
+}
+
+CoordinateEditor::CoordinateEditor(const SettingDef &def, Kind kind, QWidget *parent)
+    : SettingEditor(def, parent), kind_(kind) {
+    auto *l = new QHBoxLayout(this);
+    l->setContentsMargins(0, 0, 0, 0);
+    if (kind == Kind::Ecef) {
+        a_ = coordinateBox(this, -1e7, 1e7, 4, tr(" m (X)"));
+        b_ = coordinateBox(this, -1e7, 1e7, 4, tr(" m (Y)"));
+        c_ = coordinateBox(this, -1e7, 1e7, 4, tr(" m (Z)"));
+        l->addWidget(a_);
+        l->addWidget(b_);
+        l->addWidget(c_);
+    } else {
+        // Degrees with 8 decimals (about 1 mm) and hemispheres, never a bare minus (UI.md).
+        a_ = coordinateBox(this, 0, 90, 8, QStringLiteral("\u00b0"));
+        b_ = coordinateBox(this, 0, 180, 8, QStringLiteral("\u00b0"));
+        c_ = coordinateBox(this, -1e5, 1e7, 4, tr(" m (ellipsoid)"));
+        ns_ = new QComboBox(this);
+        ns_->addItems({"N", "S"});
+        ew_ = new QComboBox(this);
+        ew_->addItems({"E", "W"});
+        l->addWidget(a_);
+        l->addWidget(ns_);
+        l->addWidget(b_);
+        l->addWidget(ew_);
+        l->addWidget(c_);
+        for (QComboBox *c : {ns_, ew_})
+            connect(c, &QComboBox::currentIndexChanged, this, [this] {
+                if (!loading_) emit edited();
+            });
+    }
+    convert_ = new QPushButton(this);
+    convert_->setObjectName(qs(def.key) + ":convert");
+    l->addWidget(convert_);
+    for (QDoubleSpinBox *b : {a_, b_, c_})
+        connect(b, &QDoubleSpinBox::valueChanged, this, [this] {
+            if (!loading_) emit edited();
+        });
+    finish(a_);
+}
+
+QWidget *CoordinateEditor::input() const {
+    return a_;
+}
+
+QString CoordinateEditor::value() const {
+    if (kind_ == Kind::Ecef)
+        return QString("%1,%2,%3")
+                .arg(a_->value(), 0, 'f', 4)
+                .arg(b_->value(), 0, 'f', 4)
+                .arg(c_->value(), 0, 'f', 4);
+    const config::Geodetic g = geodetic();
+    return QString("%1,%2,%3")
+            .arg(g.lat, 0, 'f', 11)
+            .arg(g.lon, 0, 'f', 11)
+            .arg(g.height, 0, 'f', 4);
+}
+
+void CoordinateEditor::setValue(const QString &value) {
+    const QStringList p = value.split(',', Qt::SkipEmptyParts);
+    loading_ = true;
+    if (kind_ == Kind::Ecef && p.size() == 3) {
+        a_->setValue(p[0].toDouble());
+        b_->setValue(p[1].toDouble());
+        c_->setValue(p[2].toDouble());
+    } else if (kind_ == Kind::Geodetic && (p.size() == 3 || p.size() == 5)) {
+        config::Geodetic g;
+        if (p.size() == 3) { // radians, radians, metres
+            g = {p[0].toDouble(), p[1].toDouble(), p[2].toDouble()};
+        } else { // ddmm.mmmm,N,dddmm.mmmm,E,H
+            const double lat = fromNmea(p[0]) * (p[1].trimmed() == "S" ? -1 : 1);
+            const double lon = fromNmea(p[2]) * (p[3].trimmed() == "W" ? -1 : 1);
+            g = {config::radians(lat), config::radians(lon), p[4].toDouble()};
+        }
+        a_->setValue(std::fabs(config::degrees(g.lat)));
+        ns_->setCurrentIndex(g.lat < 0 ? 1 : 0);
+        b_->setValue(std::fabs(config::degrees(g.lon)));
+        ew_->setCurrentIndex(g.lon < 0 ? 1 : 0);
+        c_->setValue(g.height);
+    }
+    loading_ = false;
+}
+
+config::Geodetic CoordinateEditor::geodetic() const {
+    if (kind_ == Kind::Ecef) return config::toGeodetic({a_->value(), b_->value(), c_->value()});
+    return {config::radians(a_->value() * (ns_->currentIndex() == 1 ? -1 : 1)),
+            config::radians(b_->value() * (ew_->currentIndex() == 1 ? -1 : 1)), c_->value()};
+}
+
+void CoordinateEditor::setGeodetic(const config::Geodetic &g) {
+    if (kind_ == Kind::Ecef) {
+        const config::Ecef e = config::toEcef(g);
+        setValue(QString("%1,%2,%3").arg(e.x, 0, 'f', 4).arg(e.y, 0, 'f', 4).arg(e.z, 0, 'f', 4));
+    } else {
+        setValue(QString("%1,%2,%3")
+                         .arg(g.lat, 0, 'f', 11)
+                         .arg(g.lon, 0, 'f', 11)
+                         .arg(g.height, 0, 'f', 4));
+    }
+    emit edited();
+}
+
+SettingEditor *makeSettingEditor(const SettingDef &def, QWidget *parent) {
+    switch (def.type) {
+    case SettingType::Integer: return new IntegerEditor(def, parent);
+    case SettingType::Real: return new RealEditor(def, parent);
+    case SettingType::Bool: return new BoolEditor(def, parent);
+    case SettingType::Enum:
+        if (!def.options.empty()) return new EnumEditor(def, parent);
+        break;
+    case SettingType::Coordinates:
+        if (def.key.ends_with("XYZ"))
+            return new CoordinateEditor(def, CoordinateEditor::Kind::Ecef, parent);
+        if (def.key.ends_with("BLH"))
+            return new CoordinateEditor(def, CoordinateEditor::Kind::Geodetic, parent);
+        break;
+    case SettingType::Text:
+    case SettingType::List: break;
+    }
+    return new TextEditor(def, parent);
+}
+
+} // namespace gnss::ui

@@ -1,0 +1,66 @@
+#pragma once
+// One editor per setting, chosen by the schema row's type: a spin box with unit and range
+// (integer, real), a combo box (enum), a check box (bool), a coordinate editor (BASEXYZ / BASEBLH:
+// X, Y, Z in metres or latitude, longitude with hemispheres and height, converting between the
+// two on WGS-84), a line edit otherwise. Every editor reads and writes the schema's value text.
+#include "core/settings_schema.h"
+#include "geodesy.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QPushButton;
+
+namespace gnss::ui {
+
+class SettingEditor : public QWidget {
+    Q_OBJECT
+public:
+    SettingEditor(const SettingDef &def, QWidget *parent);
+    const SettingDef &def() const { return def_; }
+    // The value as the schema writes it ("5", "0.05", "GPS", "1", "x,y,z").
+    virtual QString value() const = 0;
+    // Shows `value` (an empty or unreadable value leaves the editor as it is). Emits nothing.
+    virtual void setValue(const QString &value) = 0;
+    // The widget that takes focus and edits (for tests: its objectName is the key).
+    virtual QWidget *input() const = 0;
+
+signals:
+    void edited(); // the user changed the value
+
+protected:
+    void finish(QWidget *input); // layout, tooltip, object name, change signal
+    bool loading_ = false;
+
+private:
+    SettingDef def_;
+};
+
+// The editor for a schema row.
+SettingEditor *makeSettingEditor(const SettingDef &def, QWidget *parent);
+
+// BASEXYZ / BASEBLH.
+class CoordinateEditor : public SettingEditor {
+    Q_OBJECT
+public:
+    enum class Kind { Ecef, Geodetic };
+    CoordinateEditor(const SettingDef &def, Kind kind, QWidget *parent);
+    Kind kind() const { return kind_; }
+    QString value() const override;
+    void setValue(const QString &value) override;
+    QWidget *input() const override;
+
+    config::Geodetic geodetic() const;
+    void setGeodetic(const config::Geodetic &g); // the user's edit: emits edited()
+    // The button that fills this editor from the other form ("From BASEXYZ").
+    QPushButton *convertButton() const { return convert_; }
+
+private:
+    Kind kind_;
+    QDoubleSpinBox *a_, *b_, *c_;
+    QComboBox *ns_ = nullptr, *ew_ = nullptr;
+    QPushButton *convert_;
+};
+
+} // namespace gnss::ui

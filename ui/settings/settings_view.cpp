@@ -1,0 +1,517 @@
+#include "settings_view.h"
+
+#include "presets.h"
+#include "setting_editors.h"
+#include "setting_values.h"
+
+#include <QEvent>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenu>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QTabWidget>
+#include <QTextBrowser>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace gnss::ui {
+
+namespace {
+
+QString qs(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+// Edited values: Okabe-Ito orange, the palette of UI.md.
+const QColor kEdited(0xE6, 0x9F, 0x00);
+
+// Shows a setting's help when its editor takes focus.
+class FocusHelp : public QObject {
+public:
+    FocusHelp(QObject *parent, std::function<void()> f) : QObject(parent), f_(std::move(f)) {}
+    bool eventFilter(QObject *, QEvent *e) override {
+        if (e->type() == QEvent::FocusIn || e->type() == QEvent::Enter) f_();
+        return false;
+    }
+
+private:
+    std::function<void()> f_;
+};
+
+} // namespace
+
+SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
+    : QWidget(parent), engine_(engine) {
+    confirm_ = [this](const QString &title, const QString &text) {
+        return QMessageBox::question(this, title, text) == QMessageBox::Yes;
+    };
+    auto *top = new QVBoxLayout(this);
+    auto *bar = new QHBoxLayout;
+    read_ = new QPushButton(tr("Read"), this);
+    read_->setToolTip(tr("Read every setting the receiver reports"));
+    apply_ = new QPushButton(tr("Apply"), this);
+    apply_->setToolTip(tr("Send the edited values (only what differs), then read them back"));
+    revert_ = new QPushButton(tr("Revert"), this);
+    revert_->setToolTip(tr("Forget the edits: show the receiver's values again"));
+    save_ = new QPushButton(tr("Save to flash"), this);
+    defaults_ = new QPushButton(tr("Restore defaults"), this);
+    reset_ = new QToolButton(this);
+    reset_->setText(tr("Reset"));
+    reset_->setPopupMode(QToolButton::InstantPopup);
+    presets_ = new QToolButton(this);
+    presets_->setText(tr("Presets"));
+    presets_->setPopupMode(QToolButton::InstantPopup);
+    profiles_ = new QToolButton(this);
+    profiles_->setText(tr("Profile"));
+    profiles_->setPopupMode(QToolButton::InstantPopup);
+    auto *profileMenu = new QMenu(profiles_);
+    profileMenu->addAction(tr("Import and compare..."), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Import settings profile"), {},
+                                                          tr("Settings profiles (*.json)"));
+        QString error;
+        if (!path.isEmpty() && !importProfile(path, &error)) status(error);
+    });
+    profileMenu->addAction(tr("Export..."), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export settings profile"), {},
+                                                          tr("Settings profiles (*.json)"));
+        QString error;
+        if (!path.isEmpty() && !exportProfile(path, &error)) status(error);
+    });
+    profiles_->setMenu(profileMenu);
+    cancel_ = new QPushButton(tr("Cancel"), this);
+    for (QWidget *w : std::initializer_list<QWidget *>{read_, apply_, revert_, save_, defaults_,
+                                                       reset_, presets_, profiles_})
+        bar->addWidget(w);
+    bar->addStretch(1);
+    top->addLayout(bar);
+
+    auto *split = new QSplitter(Qt::Horizontal, this);
+    groups_ = new QListWidget(split);
+    groups_->setObjectName("settingGroups");
+    groups_->setMaximumWidth(220);
+    pages_ = new QStackedWidget(split);
+    pages_->setObjectName("settingPages");
+    auto *right = new QSplitter(Qt::Vertical, split);
+    help_ = new QTextBrowser(right);
+    help_->setObjectName("settingHelp");
+    tabs_ = new QTabWidget(right);
+    outcomes_ = new QTreeWidget(tabs_);
+    outcomes_->setObjectName("settingOutcomes");
+    outcomes_->setHeaderLabels({tr("Command / setting"), tr("Outcome"), tr("Detail")});
+    outcomes_->setRootIsDecorated(true);
+    diff_ = new QTreeWidget(tabs_);
+    diff_->setObjectName("profileDiff");
+    diff_->setHeaderLabels({tr("Setting"), tr("Profile"), tr("Receiver")});
+    diff_->setRootIsDecorated(false);
+    tabs_->addTab(outcomes_, tr("Outcomes"));
+    tabs_->addTab(diff_, tr("Profile difference"));
+    split->setStretchFactor(1, 3);
+    split->setStretchFactor(2, 2);
+    top->addWidget(split, 1);
+    auto *foot = new QHBoxLayout;
+    status_ = new QLabel(this);
+    status_->setObjectName("settingsStatus");
+    status_->setWordWrap(true);
+    progress_ = new QProgressBar(this);
+    progress_->setMaximumWidth(200);
+    progress_->setVisible(false);
+    foot->addWidget(status_, 1);
+    foot->addWidget(progress_);
+    foot->addWidget(cancel_);
+    top->addLayout(foot);
+
+    connect(groups_, &QListWidget::currentRowChanged, pages_, &QStackedWidget::setCurrentIndex);
+    connect(read_, &QPushButton::clicked, this, &SettingsView::readAll);
+    connect(apply_, &QPushButton::clicked, this, &SettingsView::applyEdits);
+    connect(revert_, &QPushButton::clicked, this, &SettingsView::revert);
+    connect(save_, &QPushButton::clicked, this, [this] { runAction(config::Action::SaveToFlash); });
+    connect(defaults_, &QPushButton::clicked, this,
+            [this] { runAction(config::Action::RestoreDefaults); });
+    connect(cancel_, &QPushButton::clicked, engine_, &config::SettingsEngine::cancel);
+
+    connect(engine_, &config::SettingsEngine::dialectChanged, this, [this](const Dialect *d) {
+        rebuild();
+        if (d && engine_->canSend()) readAll(); // on connect: what the receiver is set to now
+    });
+    connect(engine_, &config::SettingsEngine::queueChanged, this, [this] {
+        // The link came (after the dialect was known) or came back: read what is set now.
+        if (engine_->dialect() && engine_->canSend() && !engine_->isBusy()) readAll();
+        updateButtons();
+    });
+    connect(engine_, &config::SettingsEngine::valuesChanged, this, &SettingsView::refreshValues);
+    connect(engine_, &config::SettingsEngine::busyChanged, this, &SettingsView::updateButtons);
+    connect(engine_, &config::SettingsEngine::progress, this,
+            [this](int done, int total, const QString &step) {
+                progress_->setRange(0, std::max(total, 1));
+                progress_->setValue(done);
+                progress_->setFormat(QString("%1 %p%").arg(step));
+            });
+    connect(engine_, &config::SettingsEngine::finished, this, &SettingsView::showReport);
+    rebuild();
+}
+
+void SettingsView::rebuild() {
+    while (pages_->count()) {
+        QWidget *w = pages_->widget(0);
+        pages_->removeWidget(w);
+        w->deleteLater();
+    }
+    groups_->clear();
+    editors_.clear();
+    receiverLabels_.clear();
+    rowLabels_.clear();
+    edits_.clear();
+    diff_->clear();
+    const Dialect *d = engine_->dialect();
+    if (!d || d->settings.empty()) {
+        help_->setPlainText(d ? tr("The %1 receiver has no settings this program knows.")
+                                            .arg(qs(d->displayName))
+                              : tr("Connect to a receiver: its settings appear here."));
+        updateButtons();
+        return;
+    }
+    std::map<QString, QFormLayout *> forms;
+    for (const SettingDef &def : d->settings) {
+        if (config::isAction(def)) continue; // restarts etc. are the buttons above
+        const QString group = qs(def.group);
+        QFormLayout *&form = forms[group];
+        if (!form) {
+            auto *scroll = new QScrollArea(pages_);
+            scroll->setObjectName("page:" + group);
+            scroll->setWidgetResizable(true);
+            auto *page = new QWidget(scroll);
+            form = new QFormLayout(page);
+            scroll->setWidget(page);
+            pages_->addWidget(scroll);
+            groups_->addItem(group);
+        }
+        SettingEditor *e = makeSettingEditor(def, nullptr);
+        const std::string key(def.key);
+        auto *label =
+                new QLabel(qs(def.label) + (def.unit.empty() ? "" : " (" + qs(def.unit) + ")"));
+        label->setToolTip(qs(def.help));
+        auto *receiver = new QLabel;
+        receiver->setObjectName("receiver:" + qs(def.key));
+        receiver->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        auto *cell = new QWidget;
+        auto *v = new QVBoxLayout(cell);
+        v->setContentsMargins(0, 0, 0, 0);
+        v->setSpacing(1);
+        v->addWidget(e);
+        v->addWidget(receiver);
+        form->addRow(label, cell);
+        if (def.access == SettingAccess::ReadOnly) e->setEnabled(false);
+        editors_[key] = e;
+        receiverLabels_[key] = receiver;
+        rowLabels_[key] = label;
+        connect(e, &SettingEditor::edited, this, [this, e] { onEdited(e); });
+        auto *filter = new FocusHelp(e, [this, e] { showHelp(e->def()); });
+        e->input()->installEventFilter(filter);
+        label->installEventFilter(new FocusHelp(label, [this, e] { showHelp(e->def()); }));
+    }
+    // BASEXYZ ⇄ BASEBLH: each coordinate editor fills itself from the other form.
+    std::vector<CoordinateEditor *> coords;
+    for (auto &[key, e] : editors_)
+        if (auto *c = qobject_cast<CoordinateEditor *>(e)) coords.push_back(c);
+    for (CoordinateEditor *c : coords) {
+        CoordinateEditor *other = nullptr;
+        for (CoordinateEditor *o : coords)
+            if (o != c && o->kind() != c->kind()) other = o;
+        c->convertButton()->setVisible(other != nullptr);
+        if (!other) continue;
+        c->convertButton()->setText(tr("From %1").arg(qs(other->def().key).section('.', -1)));
+        c->convertButton()->setToolTip(
+                tr("Convert the %1 position to this form (WGS-84)").arg(qs(other->def().key)));
+        connect(c->convertButton(), &QPushButton::clicked, c,
+                [c, other] { c->setGeodetic(other->geodetic()); });
+    }
+    // Presets of this dialect.
+    auto *menu = new QMenu(presets_);
+    for (const config::Preset *p : config::presetsFor(d->id)) {
+        QAction *a = menu->addAction(qs(p->name));
+        a->setToolTip(qs(p->description));
+        const QString name = qs(p->name);
+        connect(a, &QAction::triggered, this, [this, name] { loadPreset(name); });
+    }
+    delete presets_->menu();
+    presets_->setMenu(menu);
+    presets_->setEnabled(!menu->isEmpty());
+    // Restarts the dialect offers.
+    auto *resets = new QMenu(reset_);
+    for (config::Action a : engine_->availableActions()) {
+        if (a == config::Action::SaveToFlash || a == config::Action::RestoreDefaults) continue;
+        const config::ActionDef *def = config::findAction(d->id, a);
+        resets->addAction(tr(std::string(def->label).c_str()), this, [this, a] { runAction(a); });
+    }
+    delete reset_->menu();
+    reset_->setMenu(resets);
+    groups_->setCurrentRow(0);
+    help_->setPlainText(tr("%1: select a setting to see its help.").arg(qs(d->displayName)));
+    refreshValues();
+    updateButtons();
+}
+
+void SettingsView::refreshValues() {
+    for (auto &[key, e] : editors_) {
+        receiverLabels_[key]->setText(tr("Receiver: %1").arg(engine_->displayValue(key)));
+        if (edits_.count(key)) {
+            // Still an edit only while it differs from the receiver.
+            const auto rv = engine_->receiverValue(key);
+            if (rv && config::sameValue(e->def(), edits_[key].toStdString(), *rv))
+                setEdited(key, false);
+            continue;
+        }
+        if (const auto rv = engine_->receiverValue(key)) e->setValue(QString::fromStdString(*rv));
+    }
+}
+
+void SettingsView::setEdited(const std::string &key, bool edited) {
+    SettingEditor *e = editors_.at(key);
+    if (edited)
+        edits_[key] = e->value();
+    else
+        edits_.erase(key);
+    e->setProperty("edited", edited);
+    QLabel *label = rowLabels_.at(key);
+    QFont f = label->font();
+    f.setBold(edited);
+    label->setFont(f);
+    label->setStyleSheet(edited ? QString("color: %1;").arg(kEdited.name()) : QString());
+    e->input()->setStyleSheet(
+            edited ? QString("background-color: %1;").arg(kEdited.lighter(170).name()) : QString());
+    updateButtons();
+}
+
+void SettingsView::onEdited(SettingEditor *e) {
+    const std::string key(e->def().key);
+    const auto rv = engine_->receiverValue(key);
+    const bool differs = !rv || !config::sameValue(e->def(), e->value().toStdString(), *rv);
+    setEdited(key, differs);
+    showHelp(e->def());
+}
+
+void SettingsView::showHelp(const SettingDef &def) {
+    QString html = QString("<h3>%1</h3><p><code>%2</code></p><p>%3</p>")
+                           .arg(qs(def.label).toHtmlEscaped(), qs(def.key).toHtmlEscaped(),
+                                qs(def.help).toHtmlEscaped());
+    if (def.min || def.max)
+        html += "<p>" +
+                tr("Range: %1 to %2 %3")
+                        .arg(def.min ? QString::number(*def.min) : "-",
+                             def.max ? QString::number(*def.max) : "-", qs(def.unit)) +
+                "</p>";
+    if (!def.defaultValue.empty())
+        html += "<p>" + tr("Default: %1").arg(qs(def.defaultValue).toHtmlEscaped()) + "</p>";
+    html += "<p>" + tr("Written with: %1").arg(qs(def.write).toHtmlEscaped()) + "<br>" +
+            tr("Read back: %1")
+                    .arg(def.access == SettingAccess::WriteOnly
+                                 ? tr("cannot be read back (write-only)")
+                                 : qs(def.readBack).toHtmlEscaped()) +
+            "</p>";
+    help_->setHtml(html);
+}
+
+std::vector<KeyValue> SettingsView::edits() const {
+    std::vector<KeyValue> out;
+    // Schema order.
+    if (const Dialect *d = engine_->dialect())
+        for (const auto &def : d->settings)
+            if (auto it = edits_.find(std::string(def.key)); it != edits_.end())
+                out.push_back({it->first, it->second.toStdString()});
+    return out;
+}
+
+SettingEditor *SettingsView::editor(const std::string &key) const {
+    auto it = editors_.find(key);
+    return it == editors_.end() ? nullptr : it->second;
+}
+
+QStringList SettingsView::pageNames() const {
+    QStringList out;
+    for (int i = 0; i < groups_->count(); ++i) out << groups_->item(i)->text();
+    return out;
+}
+
+void SettingsView::readAll() {
+    status(tr("Reading the receiver's settings..."));
+    engine_->read();
+}
+
+void SettingsView::applyEdits() {
+    const auto values = edits();
+    if (values.empty()) {
+        status(tr("Nothing to apply: no value was changed."));
+        return;
+    }
+    status(tr("Applying %n setting(s)...", nullptr, static_cast<int>(values.size())));
+    engine_->apply(values);
+}
+
+void SettingsView::revert() {
+    const auto keys = edits_;
+    for (const auto &[key, value] : keys) {
+        setEdited(key, false);
+        SettingEditor *e = editors_.at(key);
+        if (const auto rv = engine_->receiverValue(key))
+            e->setValue(QString::fromStdString(*rv));
+        else
+            e->setValue(qs(e->def().defaultValue));
+    }
+    diff_->clear();
+    status(tr("Edits reverted."));
+}
+
+void SettingsView::runAction(config::Action action) {
+    const Dialect *d = engine_->dialect();
+    const config::ActionDef *def = d ? config::findAction(d->id, action) : nullptr;
+    if (!def) {
+        status(tr("This receiver has no such command."));
+        return;
+    }
+    const QString label = tr(std::string(def->label).c_str());
+    if (!confirm_(label,
+                  tr("%1 on the %2?\n\n%3")
+                          .arg(label, qs(d->displayName), tr(std::string(def->effect).c_str()))))
+        return;
+    status(tr("%1...").arg(label));
+    engine_->runAction(action);
+}
+
+void SettingsView::loadPreset(const QString &name) {
+    const Dialect *d = engine_->dialect();
+    if (!d) return;
+    for (const config::Preset *p : config::presetsFor(d->id)) {
+        if (qs(p->name) != name) continue;
+        for (const auto &kv : config::presetValues(*p)) {
+            SettingEditor *e = editor(kv.key);
+            if (!e) continue;
+            e->setValue(QString::fromStdString(kv.value));
+            onEdited(e);
+        }
+        status(tr("Preset \"%1\" loaded: %n setting(s) differ from the receiver. Apply sends "
+                  "them.",
+                  nullptr, static_cast<int>(edits_.size()))
+                       .arg(name));
+        return;
+    }
+}
+
+bool SettingsView::importProfile(const QString &path, QString *error) {
+    config::Profile p;
+    if (!config::loadProfile(path, p, error, engine_->dialect())) return false;
+    diff_->clear();
+    const auto entries = engine_->diff(p);
+    for (const auto &e : entries) {
+        auto *item = new QTreeWidgetItem(
+                diff_, {QString::fromStdString(e.key), QString::fromStdString(e.profileValue),
+                        e.receiverKnown ? QString::fromStdString(e.receiverValue)
+                                        : engine_->displayValue(e.key)});
+        item->setData(0, Qt::UserRole, QString::fromStdString(e.key));
+        if (SettingEditor *ed = editor(e.key)) {
+            ed->setValue(QString::fromStdString(e.profileValue));
+            onEdited(ed);
+        }
+    }
+    diff_->header()->resizeSections(QHeaderView::ResizeToContents);
+    tabs_->setCurrentWidget(diff_);
+    status(entries.empty()
+                   ? tr("The receiver already has every setting of %1.").arg(path)
+                   : tr("%n setting(s) of the profile differ from the receiver (model %1, firmware "
+                        "%2); they are loaded as edits: Apply sends them.",
+                        nullptr, static_cast<int>(entries.size()))
+                             .arg(QString::fromStdString(p.model),
+                                  QString::fromStdString(p.firmware)));
+    return true;
+}
+
+bool SettingsView::exportProfile(const QString &path, QString *error) {
+    if (!engine_->dialect()) {
+        if (error) *error = tr("Not connected to a receiver.");
+        return false;
+    }
+    const config::Profile p = engine_->exportProfile();
+    if (!config::saveProfile(path, p, error)) return false;
+    status(tr("%n setting(s) exported to %1.", nullptr, static_cast<int>(p.values.size()))
+                   .arg(path));
+    return true;
+}
+
+void SettingsView::showReport(const config::OperationReport &r) {
+    auto *top = new QTreeWidgetItem(outcomes_,
+                                    {r.title, r.ok() ? tr("done") : tr("problems"), r.error});
+    for (const auto &c : r.commands) {
+        auto *item = new QTreeWidgetItem(top, {c.sentence, link::outcomeName(c.outcome), c.detail});
+        for (const QString &reply : c.replies) new QTreeWidgetItem(item, {reply});
+    }
+    for (const auto &c : r.checks) {
+        const bool good = c.verdict == config::Verdict::Verified ||
+                          c.verdict == config::Verdict::WrittenUnverified;
+        auto *item = new QTreeWidgetItem(
+                top,
+                {QString::fromStdString(c.key + " = " + c.wanted), config::verdictName(c.verdict),
+                 c.reported.empty()
+                         ? QString()
+                         : tr("receiver reports %1").arg(QString::fromStdString(c.reported))});
+        if (!good) item->setForeground(1, QColor(0xD5, 0x5E, 0x00));
+        // A value that took is no longer an edit; one that did not stays highlighted.
+        if (good && editors_.count(c.key)) setEdited(c.key, false);
+    }
+    top->setExpanded(!r.ok());
+    outcomes_->scrollToItem(top);
+    outcomes_->header()->resizeSections(QHeaderView::ResizeToContents);
+    if (!r.ok()) tabs_->setCurrentWidget(outcomes_);
+    QString text;
+    if (!r.error.isEmpty())
+        text = tr("%1: %2").arg(r.title, r.error);
+    else if (r.cancelled)
+        text = tr("%1: cancelled.").arg(r.title);
+    else if (r.nothingToDo)
+        text = tr("Nothing to send: the receiver already has these values.");
+    else if (r.failedCommands() || r.failedChecks())
+        text = tr("%1: %2 command(s) failed, %3 setting(s) did not take; see Outcomes.")
+                       .arg(r.title)
+                       .arg(r.failedCommands())
+                       .arg(r.failedChecks());
+    else
+        text = tr("%1: done (%n command(s)).", nullptr, static_cast<int>(r.commands.size()))
+                       .arg(r.title);
+    status(text);
+    refreshValues();
+}
+
+void SettingsView::updateButtons() {
+    const bool busy = engine_->isBusy();
+    const bool ready = engine_->dialect() && engine_->canSend() && !busy;
+    const auto actions = engine_->availableActions();
+    auto has = [&](config::Action a) {
+        return std::find(actions.begin(), actions.end(), a) != actions.end();
+    };
+    read_->setEnabled(ready);
+    apply_->setEnabled(ready && !edits_.empty());
+    revert_->setEnabled(!busy && !edits_.empty());
+    save_->setEnabled(ready && has(config::Action::SaveToFlash));
+    save_->setToolTip(has(config::Action::SaveToFlash)
+                              ? tr("Write the settings in force to the receiver's flash")
+                              : tr("This receiver has no command to save its settings"));
+    defaults_->setEnabled(ready && has(config::Action::RestoreDefaults));
+    reset_->setEnabled(ready && reset_->menu() && !reset_->menu()->isEmpty());
+    profiles_->setEnabled(engine_->dialect() != nullptr && !busy);
+    cancel_->setVisible(busy);
+    progress_->setVisible(busy);
+}
+
+void SettingsView::status(const QString &text) {
+    status_->setText(text);
+}
+
+} // namespace gnss::ui

@@ -1,0 +1,80 @@
+#pragma once
+// SettingsView: the settings dock. Generated from the connected dialect's schema: one page per
+// group, the right editor per setting, the receiver's value beside it, help as tooltips and in
+// a help pane. Edited values are highlighted against the receiver's. Read / Apply / Revert /
+// Save to flash / Restore defaults / Reset (confirmed), presets, profile import (with its
+// difference) and export; each command's outcome and each setting's verification listed.
+// Knows no vendor: the schema, the engine and the presets table say everything.
+#include "settings_engine.h"
+
+#include <QWidget>
+
+#include <functional>
+#include <map>
+
+class QLabel;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QStackedWidget;
+class QTabWidget;
+class QTextBrowser;
+class QToolButton;
+class QTreeWidget;
+
+namespace gnss::ui {
+
+class SettingEditor;
+
+class SettingsView : public QWidget {
+    Q_OBJECT
+public:
+    explicit SettingsView(config::SettingsEngine *engine, QWidget *parent = nullptr);
+
+    // Asked before save / restore / reset; the default asks with a message box. Tests replace it.
+    using Confirm = std::function<bool(const QString &title, const QString &text)>;
+    void setConfirm(Confirm c) { confirm_ = std::move(c); }
+
+    // The values the user changed, not yet applied (key → value).
+    std::vector<KeyValue> edits() const;
+    bool isEdited(const std::string &key) const { return edits_.count(key) != 0; }
+    SettingEditor *editor(const std::string &key) const;
+    QStringList pageNames() const;
+
+    // Actions (the buttons call these).
+    void readAll();
+    void applyEdits();
+    void revert();
+    void runAction(config::Action action);
+    void loadPreset(const QString &name);
+    bool importProfile(const QString &path, QString *error = nullptr); // edits = its difference
+    bool exportProfile(const QString &path, QString *error = nullptr);
+
+private:
+    void rebuild();
+    void refreshValues();
+    void setEdited(const std::string &key, bool edited);
+    void onEdited(SettingEditor *e);
+    void showHelp(const SettingDef &def);
+    void showReport(const config::OperationReport &r);
+    void updateButtons();
+    void status(const QString &text);
+
+    config::SettingsEngine *engine_;
+    Confirm confirm_;
+    QListWidget *groups_;
+    QStackedWidget *pages_;
+    QTextBrowser *help_;
+    QTabWidget *tabs_;
+    QTreeWidget *outcomes_;
+    QTreeWidget *diff_;
+    QLabel *status_;
+    QProgressBar *progress_;
+    QPushButton *read_, *apply_, *revert_, *save_, *defaults_, *cancel_;
+    QToolButton *reset_, *presets_, *profiles_;
+    std::map<std::string, SettingEditor *> editors_;
+    std::map<std::string, QLabel *> receiverLabels_, rowLabels_;
+    std::map<std::string, QString> edits_;
+};
+
+} // namespace gnss::ui
