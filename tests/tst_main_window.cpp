@@ -52,6 +52,16 @@ private slots:
         QVERIFY(fixLabel);
     }
 
+    void closingWithACommandInFlightIsSafe() {
+        auto s = settings();
+        auto w = std::make_unique<gnss::app::MainWindow>(registry_, s.get());
+        w->show();
+        w->connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nvs"});
+        QString why;
+        QVERIFY2(w->controller()->send("$PNVGVER*4E", &why), qPrintable(why));
+        w.reset(); // the command is still waiting for its answer
+    }
+
     void layoutAndLastConnectionAreRestored() {
         {
             auto s = settings();

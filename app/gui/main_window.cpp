@@ -73,7 +73,12 @@ MainWindow::MainWindow(const DialectRegistry &registry, QSettings *settings, QWi
     restoreLayout();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // Closing the link fails a command still waiting for its answer; its report must not reach
+    // a window half destroyed.
+    controller_->disconnect(this);
+    controller_->disconnectFromSource();
+}
 
 void MainWindow::createModels() {
     stateModel_ = new ui::ReceiverStateModel(this);

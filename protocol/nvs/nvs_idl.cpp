@@ -55,7 +55,9 @@ bool decodeIdl(const Sentence &s, DecodeContext &ctx) {
             m.kind = IdlKind::Show;
         } else if (parseInt(sub, n)) {
             m.kind = IdlKind::Item;
-            if (r.require(4)) {
+            if (n == 0 && r.count() == 1) {
+                m.count = 0; // "$PNVGIDL,0": the SHOW answer for an empty list
+            } else if (r.require(4)) {
                 m.count = r.integer(0, "list length");
                 m.index = r.integer(1, "index");
                 m.stationId = r.integer(2, "station id");
