@@ -70,7 +70,6 @@ QVector<SignalLevelsView::Bar> SignalLevelsView::layoutBars() const {
 void SignalLevelsView::paintEvent(QPaintEvent *) {
     dirty_ = false;
     QPainter p(this);
-    p.setRenderHint(QPainter::Antialiasing);
     const QPalette pal = palette();
     const QRectF area = plotArea();
     const QFontMetricsF fm(font());
