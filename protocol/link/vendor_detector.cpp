@@ -2,6 +2,7 @@
 
 #include "command_queue.h"
 #include "core/json_writer.h"
+#include "state/receiver_state.h"
 #include "transport.h"
 
 #include <QJsonDocument>
@@ -65,7 +66,17 @@ void VendorDetector::onEvent(const SentenceEvent &ev) {
         JsonWriter w(json);
         ev.message->writeJson(w);
         result_.replyJson = QString::fromStdString(json);
-        readIdentity(result_.replyJson, result_);
+        // The dialect's own reading of its reply (the one the views show); field names as a
+        // fallback for a dialect without one.
+        ReceiverState st;
+        if (probing_->updateState && probing_->updateState(*ev.message, st) && !st.identity.model.empty()) {
+            result_.model = QString::fromStdString(st.identity.model);
+            result_.firmware = QString::fromStdString(st.identity.firmware);
+            if (!st.identity.hardware.empty())
+                result_.firmware += QStringLiteral(" (%1)").arg(QString::fromStdString(st.identity.hardware));
+        } else {
+            readIdentity(result_.replyJson, result_);
+        }
     }
     done();
 }
