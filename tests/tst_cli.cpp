@@ -34,11 +34,13 @@ QList<QJsonObject> jsonLines(const QByteArray &out) {
     return l;
 }
 
-const QByteArray kLog = "$GPRMC,153556.00,A,5550.602948,N,03732.239612,E,000.00000,000.0,310518,,,R*4E\r\n"
-                        "$GPGGA,153556.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,0014.4,M,000.6,0100*46\r\n"
-                        "$GPGSV,1,1,04,02,43,143,51,03,08,014,39,06,45,081,49,12,87,266,55,1*6E\r\n"
-                        "garbage\x01\x02\r\n"
-                        "$GPGGA,000008.00,,,,,0,,,,,,,,,*40\r\n";
+const QByteArray kLog =
+        "$GPRMC,153556.00,A,5550.602948,N,03732.239612,E,000.00000,000.0,310518,,,R*4E\r\n"
+        "$GPGGA,153556.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,0014.4,M,000.6,0100*"
+        "46\r\n"
+        "$GPGSV,1,1,04,02,43,143,51,03,08,014,39,06,45,081,49,12,87,266,55,1*6E\r\n"
+        "garbage\x01\x02\r\n"
+        "$GPGGA,000008.00,,,,,0,,,,,,,,,*40\r\n";
 
 } // namespace
 
@@ -52,7 +54,8 @@ private slots:
         const auto lines = jsonLines(r.out);
         QCOMPARE(lines.size(), 4);
         for (const auto &o : lines)
-            for (const char *k : {"line", "address", "talker", "type", "checksum"}) QVERIFY(o.contains(k));
+            for (const char *k : {"line", "address", "talker", "type", "checksum"})
+                QVERIFY(o.contains(k));
         QCOMPARE(lines[1]["type"].toString(), QString("GGA"));
         QCOMPARE(lines[1]["data"].toObject()["quality"].toInt(), 4);
         QCOMPARE(lines[3]["checksum"].toString(), QString("bad"));
@@ -145,9 +148,10 @@ private slots:
         Run r = cli({"encode", "nemerix", "--prefix", "PXYZW", "--query", "rate.GGA"});
         QCOMPARE(r.exitCode, 0);
         QCOMPARE(r.out.trimmed(), QByteArray("$PXYZW603*69"));
-        const auto lines = jsonLines(cli({"decode", "--dialect", "nemerix", "--prefix", "PXYZW", "-"},
-                                         "$PXYZW600*xx\r\n")
-                                             .out);
+        const auto lines =
+                jsonLines(cli({"decode", "--dialect", "nemerix", "--prefix", "PXYZW", "-"},
+                              "$PXYZW600*xx\r\n")
+                                  .out);
         QCOMPARE(lines.size(), 1);
         QVERIFY(lines[0].contains("data"));
         QCOMPARE(cli({"encode", "nemerix", "--prefix", "pxyzw", "rate.GGA=1"}).exitCode, 2);

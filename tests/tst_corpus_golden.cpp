@@ -19,7 +19,9 @@ using namespace gnss;
 
 namespace {
 
-QString corpusDir() { return QStringLiteral(GNSS_SHARED_DIR "/corpus/gpsd"); }
+QString corpusDir() {
+    return QStringLiteral(GNSS_SHARED_DIR "/corpus/gpsd");
+}
 
 // gpsd's gnssid → our constellation.
 Constellation fromGnssId(int g) {
@@ -61,7 +63,8 @@ private slots:
         if (!dir.exists()) QSKIP("../shared/corpus not present");
         const auto logs = dir.entryList({"*.log"}, QDir::Files, QDir::Name);
         for (const auto &l : logs)
-            if (QFile::exists(dir.filePath(l + ".chk"))) QTest::newRow(qPrintable(l)) << dir.filePath(l);
+            if (QFile::exists(dir.filePath(l + ".chk")))
+                QTest::newRow(qPrintable(l)) << dir.filePath(l);
     }
 
     void captureMatchesGpsd() {
@@ -92,11 +95,12 @@ private slots:
                         for (std::size_t i = 0; i < v->satelliteCount; ++i) {
                             const auto &s = v->satellites[i];
                             if (!s.elevation || !s.azimuth) continue;
-                            ourSky.insert(QString("%1:%2:%3:%4")
-                                                  .arg(QString::fromLatin1(toString(s.sat.system).data()))
-                                                  .arg(s.sat.prn)
-                                                  .arg(*s.elevation)
-                                                  .arg(*s.azimuth));
+                            ourSky.insert(
+                                    QString("%1:%2:%3:%4")
+                                            .arg(QString::fromLatin1(toString(s.sat.system).data()))
+                                            .arg(s.sat.prn)
+                                            .arg(*s.elevation)
+                                            .arg(*s.azimuth));
                         }
                     }
                 });
@@ -134,11 +138,13 @@ private slots:
         QVERIFY2(mismatches.isEmpty(), qPrintable(mismatches.left(600)));
         // Satellites gpsd reports must be among ours (gpsd drops some; we may see more).
         const QSet<QString> missing = gpsdSky - ourSky;
-        const double coverage = gpsdSky.isEmpty() ? 1.0 : 1.0 - double(missing.size()) / gpsdSky.size();
-        QVERIFY2(coverage >= 0.95, qPrintable(QString("%1 of %2 gpsd satellites not seen, e.g. %3")
-                                                      .arg(missing.size())
-                                                      .arg(gpsdSky.size())
-                                                      .arg(QStringList(missing.values().mid(0, 5)).join(' '))));
+        const double coverage =
+                gpsdSky.isEmpty() ? 1.0 : 1.0 - double(missing.size()) / gpsdSky.size();
+        QVERIFY2(coverage >= 0.95,
+                 qPrintable(QString("%1 of %2 gpsd satellites not seen, e.g. %3")
+                                    .arg(missing.size())
+                                    .arg(gpsdSky.size())
+                                    .arg(QStringList(missing.values().mid(0, 5)).join(' '))));
         qInfo("%s: %d positions compared, %lld sky entries", qPrintable(QFileInfo(log).fileName()),
               positionsCompared, static_cast<long long>(gpsdSky.size()));
     }

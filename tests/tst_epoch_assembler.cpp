@@ -100,10 +100,16 @@ private slots:
         QTest::newRow("dgnss") << gga.arg(2) << "" << int(FixType::Dgnss);
         QTest::newRow("estimated") << gga.arg(6) << "" << int(FixType::Estimated);
         QTest::newRow("no fix") << gga.arg(0) << "" << int(FixType::None);
-        QTest::newRow("2D from GSA") << gga.arg(1) << "GPGSA,A,2,01,02,03,,,,,,,,,,1.8,0.9,1.5" << int(FixType::Fix2D);
-        QTest::newRow("RMC mode R") << "GPRMC,120000.00,A,4807.038,N,01131.000,E,1.0,90.0,230394,,,R" << "" << int(FixType::RtkFixed);
-        QTest::newRow("RMC void") << "GPRMC,120000.00,V,,,,,,,230394,,,N" << "" << int(FixType::None);
-        QTest::newRow("GNS modes") << "GNGNS,120000.00,4807.038,N,01131.000,E,FR,10,0.8,182.2,14.4,,,V" << "" << int(FixType::RtkFixed);
+        QTest::newRow("2D from GSA")
+                << gga.arg(1) << "GPGSA,A,2,01,02,03,,,,,,,,,,1.8,0.9,1.5" << int(FixType::Fix2D);
+        QTest::newRow("RMC mode R")
+                << "GPRMC,120000.00,A,4807.038,N,01131.000,E,1.0,90.0,230394,,,R"
+                << "" << int(FixType::RtkFixed);
+        QTest::newRow("RMC void") << "GPRMC,120000.00,V,,,,,,,230394,,,N"
+                                  << "" << int(FixType::None);
+        QTest::newRow("GNS modes")
+                << "GNGNS,120000.00,4807.038,N,01131.000,E,FR,10,0.8,182.2,14.4,,,V"
+                << "" << int(FixType::RtkFixed);
     }
     void fixTypeFollowsQualityModeAndGsa() {
         QFETCH(QString, first);
@@ -118,16 +124,20 @@ private slots:
 
     void vendorFixKindsCarryTheirNote() {
         // GeoS-5: GGA quality 9 and mode letter G are GeoPath, shown as 3D with a note.
-        auto epochs = epochsOf({"GPGGA,040717.00,5550.610226,N,03732.250730,E,9,18,0.6,00187.429,M,0014.442,M,,"},
-                               "geostar");
+        auto epochs = epochsOf(
+                {"GPGGA,040717.00,5550.610226,N,03732.250730,E,9,18,0.6,00187.429,M,0014.442,M,,"},
+                "geostar");
         QCOMPARE(int(epochs[0].fix), int(FixType::Fix3D));
         QCOMPARE(QString::fromStdString(epochs[0].fixNote), QString("GeoPath"));
-        epochs = epochsOf({"GNRMC,102014.00,A,5550.608252,N,03732.248871,E,000.00000,092.9,300518,,,G,V"}, "geostar");
+        epochs = epochsOf(
+                {"GNRMC,102014.00,A,5550.608252,N,03732.248871,E,000.00000,092.9,300518,,,G,V"},
+                "geostar");
         QCOMPARE(int(epochs[0].fix), int(FixType::Fix3D));
         QCOMPARE(QString::fromStdString(epochs[0].fixNote), QString("GeoPath"));
         // Quality 7 is a fixed (manual) position there.
-        epochs = epochsOf({"GPGGA,040717.00,5550.610226,N,03732.250730,E,7,18,0.6,00187.429,M,0014.442,M,,"},
-                          "geostar");
+        epochs = epochsOf(
+                {"GPGGA,040717.00,5550.610226,N,03732.250730,E,7,18,0.6,00187.429,M,0014.442,M,,"},
+                "geostar");
         QCOMPARE(int(epochs[0].fix), int(FixType::Manual));
         QVERIFY(epochs[0].fixNote.empty());
     }
@@ -145,7 +155,8 @@ private slots:
     }
 
     void timeWithoutDateStaysTimeOfDay() {
-        const auto epochs = epochsOf({"GPGGA,235959.50,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,"});
+        const auto epochs =
+                epochsOf({"GPGGA,235959.50,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,"});
         QCOMPARE(QString::fromStdString(epochs[0].timeText()), QString("23:59:59.500"));
     }
 };

@@ -31,7 +31,9 @@ Result frameInChunks(const std::string &data, const std::vector<std::size_t> &ch
     return r;
 }
 
-Result frameWhole(const std::string &data) { return frameInChunks(data, {data.size() + 1}); }
+Result frameWhole(const std::string &data) {
+    return frameInChunks(data, {data.size() + 1});
+}
 
 // A stream with every kind of trouble a serial line brings.
 std::string troubledStream() {
@@ -45,7 +47,7 @@ std::string troubledStream() {
             s += "\xD3\x00\x13";
             for (int b = 0; b < 19; ++b) s.push_back(static_cast<char>(rng() & 0xFF));
         }
-        if (i % 11 == 0) s += "$GPRMC,1235"; // cut by the next '$'
+        if (i % 11 == 0) s += "$GPRMC,1235";                                 // cut by the next '$'
         if (i % 13 == 0) s += "$GPZDA,12" + std::string(5000, '1') + "\r\n"; // too long
     }
     return s;
@@ -59,11 +61,16 @@ private slots:
     void sentenceEndsAtCrLfLfOrCr_data() {
         QTest::addColumn<QByteArray>("input");
         QTest::addColumn<QStringList>("expected");
-        QTest::newRow("CR LF") << QByteArray("$A,1*00\r\n$B,2*00\r\n") << QStringList{"$A,1*00", "$B,2*00"};
-        QTest::newRow("LF") << QByteArray("$A,1*00\n$B,2*00\n") << QStringList{"$A,1*00", "$B,2*00"};
-        QTest::newRow("CR") << QByteArray("$A,1*00\r$B,2*00\r") << QStringList{"$A,1*00", "$B,2*00"};
-        QTest::newRow("mixed") << QByteArray("$A*00\r\n!B*00\r$C*00\n") << QStringList{"$A*00", "!B*00", "$C*00"};
-        QTest::newRow("LF CR is two terminators") << QByteArray("$A*00\n\r$B*00\n") << QStringList{"$A*00", "$B*00"};
+        QTest::newRow("CR LF") << QByteArray("$A,1*00\r\n$B,2*00\r\n")
+                               << QStringList{"$A,1*00", "$B,2*00"};
+        QTest::newRow("LF") << QByteArray("$A,1*00\n$B,2*00\n")
+                            << QStringList{"$A,1*00", "$B,2*00"};
+        QTest::newRow("CR") << QByteArray("$A,1*00\r$B,2*00\r")
+                            << QStringList{"$A,1*00", "$B,2*00"};
+        QTest::newRow("mixed") << QByteArray("$A*00\r\n!B*00\r$C*00\n")
+                               << QStringList{"$A*00", "!B*00", "$C*00"};
+        QTest::newRow("LF CR is two terminators")
+                << QByteArray("$A*00\n\r$B*00\n") << QStringList{"$A*00", "$B*00"};
     }
     void sentenceEndsAtCrLfLfOrCr() {
         QFETCH(QByteArray, input);

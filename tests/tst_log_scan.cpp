@@ -13,7 +13,8 @@ using namespace gnss;
 
 namespace {
 
-LogScanResult sequential(std::string_view log, const DialectRegistry &reg, const DecoderOptions &o) {
+LogScanResult sequential(std::string_view log, const DialectRegistry &reg,
+                         const DecoderOptions &o) {
     StreamDecoder dec(reg, o);
     EpochAssembler assembler;
     LogScanResult r;
@@ -62,12 +63,16 @@ std::string makeLog(int epochs, int vendorFrom, const std::string &vendorSentenc
     for (int e = 0; e < epochs; ++e) {
         char t[16];
         std::snprintf(t, sizeof t, "%02d%02d%02d.00", e / 3600 % 24, e / 60 % 60, e % 60);
-        s += buildSentence(std::string("GPGGA,") + t + ",4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,") + "\r\n";
-        s += buildSentence("GPGSV,2,1,05,01,40,083,46,02,17,308,41,03,07,344,39,04,22,228,45") + "\r\n";
+        s += buildSentence(std::string("GPGGA,") + t +
+                           ",4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,") +
+             "\r\n";
+        s += buildSentence("GPGSV,2,1,05,01,40,083,46,02,17,308,41,03,07,344,39,04,22,228,45") +
+             "\r\n";
         if (e % 5 != 3) s += buildSentence("GPGSV,2,2,05,05,10,010,") + "\r\n";
-        s += std::string("$GPRMC,") + t + ",A,4807.038,N,01131.000,E,0.1,90.0,230394,,,A\r\n"; // no checksum
-        if (e % 7 == 0) s += "$GPGSA,A,3,01,02,03,,,,,,,,,,1.8,0.9,1.5*00\r\n";                // bad checksum
-        if (e % 11 == 0) s += "\xD3\x00\x05\x01\x02\x03\x04\x05\x06\x07";                     // binary
+        s += std::string("$GPRMC,") + t +
+             ",A,4807.038,N,01131.000,E,0.1,90.0,230394,,,A\r\n";               // no checksum
+        if (e % 7 == 0) s += "$GPGSA,A,3,01,02,03,,,,,,,,,,1.8,0.9,1.5*00\r\n"; // bad checksum
+        if (e % 11 == 0) s += "\xD3\x00\x05\x01\x02\x03\x04\x05\x06\x07";       // binary
         if (e >= vendorFrom && e % 4 == 0) s += vendorSentence + "\r\n";
         (void)rng;
     }
@@ -83,13 +88,20 @@ private slots:
         QTest::addColumn<int>("vendorFrom");
         QTest::addColumn<QString>("vendor");
         QTest::addColumn<QString>("dialect");
-        QTest::newRow("plain NMEA") << 100000 << "" << "auto";
-        QTest::newRow("Nemerix named early") << 0 << "$PNMRX600*6F" << "auto";
-        QTest::newRow("Nemerix named late") << 2500 << "$PNMRX600*6F" << "auto";
-        QTest::newRow("NVS named early") << 0 << "$PNVGVER*4E" << "auto";
-        QTest::newRow("GeoStar once at start") << 0 << "$GPSGG,RQUERY*70" << "auto";
-        QTest::newRow("dialect given") << 100000 << "" << "nemerix";
-        QTest::newRow("lenient") << 100000 << "" << "lenient";
+        QTest::newRow("plain NMEA") << 100000 << ""
+                                    << "auto";
+        QTest::newRow("Nemerix named early") << 0 << "$PNMRX600*6F"
+                                             << "auto";
+        QTest::newRow("Nemerix named late") << 2500 << "$PNMRX600*6F"
+                                            << "auto";
+        QTest::newRow("NVS named early") << 0 << "$PNVGVER*4E"
+                                         << "auto";
+        QTest::newRow("GeoStar once at start") << 0 << "$GPSGG,RQUERY*70"
+                                               << "auto";
+        QTest::newRow("dialect given") << 100000 << ""
+                                       << "nemerix";
+        QTest::newRow("lenient") << 100000 << ""
+                                 << "lenient";
     }
     void parallelCountsEqualSequential() {
         QFETCH(int, vendorFrom);
@@ -97,7 +109,8 @@ private slots:
         QFETCH(QString, dialect);
         const DialectRegistry reg = makeBuiltinRegistry();
         std::string log = makeLog(3000, vendorFrom, vendor.toStdString());
-        if (vendor.contains("RQUERY")) log = vendor.toStdString() + "\r\n" + makeLog(3000, 100000, "");
+        if (vendor.contains("RQUERY"))
+            log = vendor.toStdString() + "\r\n" + makeLog(3000, 100000, "");
         DecoderOptions o;
         if (dialect == "lenient")
             o.lenient = true;

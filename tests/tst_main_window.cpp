@@ -34,8 +34,9 @@ private slots:
         QStringList titles;
         for (QAction *a : w.menuBar()->actions()) titles << a->text().remove('&');
         QCOMPARE(titles, (QStringList{"File", "Receiver", "View", "Help"}));
-        for (const char *d : {"skyDock", "fixDock", "signalDock", "satellitesDock", "consoleDock", "statsDock", "infoDock",
-                              "rtkDock", "chartsDock", "deviationDock", "attitudeDock"})
+        for (const char *d :
+             {"skyDock", "fixDock", "signalDock", "satellitesDock", "consoleDock", "statsDock",
+              "infoDock", "rtkDock", "chartsDock", "deviationDock", "attitudeDock"})
             QVERIFY2(w.dock(d), d);
     }
 
@@ -83,13 +84,14 @@ private slots:
 
     void startupOptionsParse() {
         QString err;
-        auto o = parseStartupOptions({"gnss-workbench", "--sim", "nvs", "--screenshot", "/tmp/x.png",
-                                      "--quit-after", "2.5"},
+        auto o = parseStartupOptions({"gnss-workbench", "--sim", "nvs", "--screenshot",
+                                      "/tmp/x.png", "--quit-after", "2.5"},
                                      err);
         QVERIFY2(o, qPrintable(err));
         QCOMPARE(o->sim, QString("nvs"));
         QCOMPARE(o->quitAfter, 2.5);
-        o = parseStartupOptions({"gnss-workbench", "--port", "/dev/ttyUSB0", "--baud", "115200"}, err);
+        o = parseStartupOptions({"gnss-workbench", "--port", "/dev/ttyUSB0", "--baud", "115200"},
+                                err);
         QVERIFY(o);
         QCOMPARE(o->baud, 115200);
         QCOMPARE(SourceSpec::fromString("serial:/dev/ttyUSB0@115200").baud, 115200);

@@ -27,9 +27,11 @@ private slots:
         ui::FixView view(&f.state);
         QCOMPARE(label(view, "fixLatitude"), QString("—"));
         f.feed({"$GPRMC,153556.00,A,5550.602948,N,03732.239612,E,000.00000,000.0,310518,,,R*4E",
-                "$GPGGA,153556.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,0014.4,M,000.6,0100*46",
+                "$GPGGA,153556.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,0014.4,M,000.6,"
+                "0100*46",
                 "$GPGSA,A,3,001,010,011,012,013,015,017,018,019,024,028,030,1.0,0.5,0.8*33",
-                "GPGGA,153557.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,0014.4,M,000.6,0100"});
+                "GPGGA,153557.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,0014.4,M,000.6,"
+                "0100"});
         view.refresh();
         QCOMPARE(label(view, "fixBadge"), QString("RTK fixed"));
         QCOMPARE(label(view, "fixLatitude"), QString("55.84338247° N"));
@@ -78,7 +80,8 @@ private slots:
 
     void messageStatisticsCountRatesAndErrors() {
         test::SessionFixture f;
-        f.feed({"GPGGA,120000,,,,,0,,,,,,,,", "GPGGA,120001,,,,,0,,,,,,,,", "$GPGGA,000008.00,,,,,0,,,,,,,,,*40"});
+        f.feed({"GPGGA,120000,,,,,0,,,,,,,,", "GPGGA,120001,,,,,0,,,,,,,,",
+                "$GPGGA,000008.00,,,,,0,,,,,,,,,*40"});
         QCOMPARE(f.messages.rowCount(), 1);
         const auto &row = f.messages.rows().front();
         QCOMPARE(row.address, QString("GPGGA"));

@@ -58,13 +58,17 @@ private slots:
         QCOMPARE(int(gnss::constellationOfSystemId(15)), int(Constellation::Qzss)); // GeoStar
         QCOMPARE(int(gnss::constellationOfSystemId(9)), int(Constellation::Unknown));
         // With a system id, Galileo 1-36 is Galileo, not GPS.
-        QCOMPARE(int(gnss::mapSatelliteId(Constellation::Galileo, 4).system), int(Constellation::Galileo));
+        QCOMPARE(int(gnss::mapSatelliteId(Constellation::Galileo, 4).system),
+                 int(Constellation::Galileo));
     }
 
     void labelsAndSignalsFollowTheConventions() {
-        QCOMPARE(QString::fromStdString(gnss::satelliteLabel({Constellation::Gps, 5})), QString("G05"));
-        QCOMPARE(QString::fromStdString(gnss::satelliteLabel({Constellation::Glonass, 12})), QString("R12"));
-        QCOMPARE(QString::fromStdString(gnss::satelliteLabel({Constellation::Galileo, 31})), QString("E31"));
+        QCOMPARE(QString::fromStdString(gnss::satelliteLabel({Constellation::Gps, 5})),
+                 QString("G05"));
+        QCOMPARE(QString::fromStdString(gnss::satelliteLabel({Constellation::Glonass, 12})),
+                 QString("R12"));
+        QCOMPARE(QString::fromStdString(gnss::satelliteLabel({Constellation::Galileo, 31})),
+                 QString("E31"));
         QCOMPARE(gnss::signalName(Constellation::Gps, 7), std::string_view("L5-I"));
         QCOMPARE(gnss::signalName(Constellation::Galileo, 7), std::string_view("E1-BC"));
         QCOMPARE(gnss::signalName(Constellation::Gps, 0), std::string_view(""));

@@ -18,7 +18,8 @@ private slots:
         QTest::addColumn<QString>("line");
         QTest::addColumn<gnss::ChecksumStatus>("status");
         QTest::newRow("upper-case ok") << "$GPGPQ,PNVGTST*21" << ChecksumStatus::Ok;
-        QTest::newRow("lower-case ok") << "$PNVGIMU,145505.20,0.42,0.37,21.84,0.065,0.064,-0.201*7c" << ChecksumStatus::Ok;
+        QTest::newRow("lower-case ok")
+                << "$PNVGIMU,145505.20,0.42,0.37,21.84,0.065,0.064,-0.201*7c" << ChecksumStatus::Ok;
         QTest::newRow("wrong") << "$GPGGA,000008.00,,,,,0,,,,,,,,,*40" << ChecksumStatus::Bad;
         QTest::newRow("absent") << "$PNMRX603" << ChecksumStatus::Missing;
         QTest::newRow("placeholder xx") << "$PNMRX603*xx" << ChecksumStatus::Missing;
@@ -39,7 +40,8 @@ private slots:
         QCOMPARE(gnss::buildSentence("PNVGVER"), std::string("$PNVGVER*4E"));
         QCOMPARE(gnss::buildSentence("GPSGG,RQUERY"), std::string("$GPSGG,RQUERY*70"));
         // Long bodies exercise the word-at-a-time path.
-        const std::string body = "GPGSV,08,01,32,002,33,059,47,004,-2,000,48,005,34,099,49,009,06,017,40";
+        const std::string body =
+                "GPGSV,08,01,32,002,33,059,47,004,-2,000,48,005,34,099,49,009,06,017,40";
         Sentence s;
         const std::string line = "$" + body + "*69";
         QVERIFY(s.parse(line));
@@ -51,14 +53,38 @@ private slots:
         QTest::addColumn<QString>("address");
         QTest::addColumn<QString>("talker");
         QTest::addColumn<QString>("type");
-        QTest::newRow("standard") << "$GPGGA,1*00" << "GPGGA" << "GP" << "GGA";
-        QTest::newRow("GN") << "$GNRMC,1*00" << "GNRMC" << "GN" << "RMC";
-        QTest::newRow("proprietary NVS") << "$PNVGRTK,MODE*00" << "PNVGRTK" << "P" << "NVGRTK";
-        QTest::newRow("proprietary Nemerix") << "$PNMRX110,0*00" << "PNMRX110" << "P" << "NMRX110";
-        QTest::newRow("GeoStar") << "$GPSGG,RQUERY*70" << "GPSGG" << "GP" << "SGG";
-        QTest::newRow("numeric talker") << "$12GGA,1*00" << "12GGA" << "12" << "GGA";
-        QTest::newRow("no fields") << "$PNVGVER*4E" << "PNVGVER" << "P" << "NVGVER";
-        QTest::newRow("AIS") << "!AIVDM,1*00" << "AIVDM" << "AI" << "VDM";
+        QTest::newRow("standard") << "$GPGGA,1*00"
+                                  << "GPGGA"
+                                  << "GP"
+                                  << "GGA";
+        QTest::newRow("GN") << "$GNRMC,1*00"
+                            << "GNRMC"
+                            << "GN"
+                            << "RMC";
+        QTest::newRow("proprietary NVS") << "$PNVGRTK,MODE*00"
+                                         << "PNVGRTK"
+                                         << "P"
+                                         << "NVGRTK";
+        QTest::newRow("proprietary Nemerix") << "$PNMRX110,0*00"
+                                             << "PNMRX110"
+                                             << "P"
+                                             << "NMRX110";
+        QTest::newRow("GeoStar") << "$GPSGG,RQUERY*70"
+                                 << "GPSGG"
+                                 << "GP"
+                                 << "SGG";
+        QTest::newRow("numeric talker") << "$12GGA,1*00"
+                                        << "12GGA"
+                                        << "12"
+                                        << "GGA";
+        QTest::newRow("no fields") << "$PNVGVER*4E"
+                                   << "PNVGVER"
+                                   << "P"
+                                   << "NVGVER";
+        QTest::newRow("AIS") << "!AIVDM,1*00"
+                             << "AIVDM"
+                             << "AI"
+                             << "VDM";
     }
     void addressSplitsIntoTalkerAndType() {
         QFETCH(QString, line);

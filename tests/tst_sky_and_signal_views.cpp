@@ -14,8 +14,7 @@ private slots:
         test::SessionFixture f;
         f.feed({"GPGGA,120000.00,5550.6129,N,03732.2527,E,1,03,0.9,180.0,M,14.4,M,,",
                 "GPGSA,A,3,05,12,,,,,,,,,,,1.8,0.9,1.5",
-                "GPGSV,1,1,03,05,90,000,45,12,00,090,38,14,45,180,",
-                "GLGSV,1,1,01,70,30,270,41",
+                "GPGSV,1,1,03,05,90,000,45,12,00,090,38,14,45,180,", "GLGSV,1,1,01,70,30,270,41",
                 "GPGGA,120001.00,5550.6129,N,03732.2527,E,1,03,0.9,180.0,M,14.4,M,,"});
         ui::SkyPlotView view(&f.satellites);
         view.resize(400, 400);
@@ -63,7 +62,8 @@ private slots:
         QCOMPARE(labels, (QStringList{"G05", "G07", "G05 L5-Q", "E11 E1-BC"}));
         // Taller bar for the stronger signal; a gap between groups.
         QVERIFY(bars[0].rect.height() > bars[2].rect.height());
-        QVERIFY(bars[2].rect.left() - bars[1].rect.right() > bars[1].rect.left() - bars[0].rect.right());
+        QVERIFY(bars[2].rect.left() - bars[1].rect.right() >
+                bars[1].rect.left() - bars[0].rect.right());
         QVERIFY(!view.grab().toImage().isNull());
     }
 

@@ -1,6 +1,6 @@
 // Standard sentence decoders across NMEA 2.x to 4.11: values, empty fields, malformed fields.
-#include "decode_helper.h"
 #include "core/sentence_builder.h"
+#include "decode_helper.h"
 
 #include <QJsonArray>
 #include <QTest>
@@ -18,7 +18,8 @@ class TestStandardDecoders : public QObject {
     Q_OBJECT
 private slots:
     void ggaDecodesEveryField() {
-        const auto d = decodeOne("$GPGGA,092750.000,5321.6802,N,00630.3372,W,1,8,1.03,61.7,M,55.2,M,,*76");
+        const auto d =
+                decodeOne("$GPGGA,092750.000,5321.6802,N,00630.3372,W,1,8,1.03,61.7,M,55.2,M,,*76");
         QVERIFY2(d.ok, qPrintable(d.error));
         QCOMPARE(d.data["time"].toString(), QString("09:27:50.000"));
         QVERIFY(near(d.data["lat"], 53 + 21.6802 / 60));
@@ -51,18 +52,21 @@ private slots:
     }
 
     void gsaCarriesSystemIdIn410() {
-        const auto d = decodeOne("$GNGSA,A,3,68,69,70,77,78,79,81,87,88,,,,1.0,0.5,0.8,2*13", {.lenient = true});
+        const auto d = decodeOne("$GNGSA,A,3,68,69,70,77,78,79,81,87,88,,,,1.0,0.5,0.8,2*13",
+                                 {.lenient = true});
         QVERIFY2(d.ok, qPrintable(d.error));
         QCOMPARE(d.data["system_id"].toInt(), 2);
         QCOMPARE(d.data["ids"].toArray().size(), 9);
-        QCOMPARE(d.data["satellites"].toArray()[0].toObject()["system"].toString(), QString("GLONASS"));
+        QCOMPARE(d.data["satellites"].toArray()[0].toObject()["system"].toString(),
+                 QString("GLONASS"));
         QCOMPARE(d.data["satellites"].toArray()[0].toObject()["prn"].toInt(), 4);
         QVERIFY(near(d.data["pdop"], 1.0));
         QVERIFY(near(d.data["vdop"], 0.8));
     }
 
     void gsaWithoutSystemIdInfersFromIds() {
-        const auto d = decodeOne("$GPGSA,A,3,001,010,011,012,013,015,017,018,019,024,028,030,1.0,0.5,0.8*33");
+        const auto d = decodeOne(
+                "$GPGSA,A,3,001,010,011,012,013,015,017,018,019,024,028,030,1.0,0.5,0.8*33");
         QVERIFY2(d.ok, qPrintable(d.error));
         QVERIFY(d.data["system_id"].isNull());
         QCOMPARE(d.data["ids"].toArray().size(), 12);
@@ -71,7 +75,8 @@ private slots:
     }
 
     void gsvReadsThreeDigitIdsAndNegativeElevations() {
-        const auto d = decodeOne("$GPGSV,08,01,32,002,33,059,47,004,-2,000,48,005,34,099,49,009,06,017,40*69");
+        const auto d = decodeOne(
+                "$GPGSV,08,01,32,002,33,059,47,004,-2,000,48,005,34,099,49,009,06,017,40*69");
         QVERIFY2(d.ok, qPrintable(d.error));
         QCOMPARE(d.data["total"].toInt(), 8);
         QCOMPARE(d.data["index"].toInt(), 1);
@@ -86,7 +91,8 @@ private slots:
     }
 
     void gsvSignalIdAndMissingSnr() {
-        const auto d = decodeOne("$GAGSV,3,1,09,01,09,130,40,03,09,317,37,05,00,271,,08,06,005,,7*77");
+        const auto d =
+                decodeOne("$GAGSV,3,1,09,01,09,130,40,03,09,317,37,05,00,271,,08,06,005,,7*77");
         QVERIFY2(d.ok, qPrintable(d.error));
         QCOMPARE(d.data["signal_id"].toInt(), 7);
         const auto sats = d.data["satellites"].toArray();
@@ -102,10 +108,14 @@ private slots:
         QTest::addColumn<QString>("line");
         QTest::addColumn<QString>("system");
         QTest::addColumn<int>("signal");
-        QTest::newRow("GPS L5") << gnss::buildSentence("GPGSV,1,1,01,05,40,083,46,8").c_str() << "GPS" << 8;
-        QTest::newRow("BeiDou B2a") << gnss::buildSentence("GBGSV,1,1,01,19,40,083,46,5").c_str() << "BeiDou" << 5;
-        QTest::newRow("QZSS L1") << gnss::buildSentence("GQGSV,1,1,01,02,40,083,46,1").c_str() << "QZSS" << 1;
-        QTest::newRow("NavIC") << gnss::buildSentence("GIGSV,1,1,01,03,40,083,46,1").c_str() << "NavIC" << 1;
+        QTest::newRow("GPS L5") << gnss::buildSentence("GPGSV,1,1,01,05,40,083,46,8").c_str()
+                                << "GPS" << 8;
+        QTest::newRow("BeiDou B2a")
+                << gnss::buildSentence("GBGSV,1,1,01,19,40,083,46,5").c_str() << "BeiDou" << 5;
+        QTest::newRow("QZSS L1") << gnss::buildSentence("GQGSV,1,1,01,02,40,083,46,1").c_str()
+                                 << "QZSS" << 1;
+        QTest::newRow("NavIC") << gnss::buildSentence("GIGSV,1,1,01,03,40,083,46,1").c_str()
+                               << "NavIC" << 1;
     }
     void gsv411SignalIdsForEveryConstellation() {
         QFETCH(QString, line);
@@ -118,7 +128,8 @@ private slots:
     }
 
     void rmcDecodesDateModeAndNavStatus() {
-        const auto d = decodeOne("$GNRMC,153632.00,A,5550.602949,N,03732.239610,E,000.00000,000.0,310518,,,R,V*28");
+        const auto d = decodeOne(
+                "$GNRMC,153632.00,A,5550.602949,N,03732.239610,E,000.00000,000.0,310518,,,R,V*28");
         QVERIFY2(d.ok, qPrintable(d.error));
         QCOMPARE(d.data["status"].toString(), QString("A"));
         QCOMPARE(d.data["date"].toString(), QString("2018-05-31"));
@@ -126,19 +137,24 @@ private slots:
         QCOMPARE(d.data["nav_status"].toString(), QString("V"));
         QVERIFY(near(d.data["sog_knots"], 0.0));
         QVERIFY(near(d.data["lat"], 55 + 50.602949 / 60));
-        const auto west = decodeOne(gnss::buildSentence("GPRMC,123519,A,4807.038,N,01131.000,W,022.4,084.4,230394,003.1,W").c_str());
+        const auto west = decodeOne(
+                gnss::buildSentence(
+                        "GPRMC,123519,A,4807.038,N,01131.000,W,022.4,084.4,230394,003.1,W")
+                        .c_str());
         QVERIFY2(west.ok, qPrintable(west.error));
         QVERIFY(near(west.data["mag_var"], -3.1));
         QCOMPARE(west.data["date"].toString(), QString("1994-03-23"));
     }
 
     void gnsModeOfAnyLength() {
-        const auto two = decodeOne("$GNGNS,153632.00,5550.602949,N,03732.239610,E,RR,15,0.7,00192.247,0014.4,,,V*24");
+        const auto two = decodeOne(
+                "$GNGNS,153632.00,5550.602949,N,03732.239610,E,RR,15,0.7,00192.247,0014.4,,,V*24");
         QVERIFY2(two.ok, qPrintable(two.error));
         QCOMPARE(two.data["mode"].toString(), QString("RR"));
         QCOMPARE(two.data["sats_used"].toInt(), 15);
         QCOMPARE(two.data["nav_status"].toString(), QString("V"));
-        const auto four = decodeOne("$GPGNS,080839.00,5550.611145,N,03732.253491,E,DNNN,10,0.8,00182.290,0014.4,001.0,0000,V*15");
+        const auto four = decodeOne("$GPGNS,080839.00,5550.611145,N,03732.253491,E,DNNN,10,0.8,"
+                                    "00182.290,0014.4,001.0,0000,V*15");
         QVERIFY2(four.ok, qPrintable(four.error));
         QCOMPARE(four.data["mode"].toString(), QString("DNNN"));
         QVERIFY(near(four.data["dgps_age"], 1.0));
@@ -149,13 +165,22 @@ private slots:
         QTest::addColumn<QString>("line");
         QTest::addColumn<QString>("key");
         QTest::addColumn<double>("value");
-        QTest::newRow("VTG") << gnss::buildSentence("GPVTG,224.5,T,,M,0.5,N,0.9,K,A").c_str() << "cog_true" << 224.5;
-        QTest::newRow("VTG 1.x") << gnss::buildSentence("GPVTG,054.7,034.4,005.5,010.2").c_str() << "sog_kmh" << 10.2;
-        QTest::newRow("HDT") << gnss::buildSentence("GPHDT,274.07,T").c_str() << "heading" << 274.07;
-        QTest::newRow("DTM") << "$GPDTM,999,,0.002,S,0.005,E,005.8,W84*1A" << "lat_offset_min" << -0.002;
-        QTest::newRow("GST") << gnss::buildSentence("GPGST,172814.0,0.006,0.023,0.020,273.6,0.023,0.020,0.031").c_str() << "sd_alt" << 0.031;
-        QTest::newRow("ZDA") << "$GPZDA,072914.00,31,05,2018,+00,00*48" << "tz_hours" << 0.0;
-        QTest::newRow("TXT") << gnss::buildSentence("GPTXT,01,01,02,ANTSTATUS=OK").c_str() << "id" << 2.0;
+        QTest::newRow("VTG") << gnss::buildSentence("GPVTG,224.5,T,,M,0.5,N,0.9,K,A").c_str()
+                             << "cog_true" << 224.5;
+        QTest::newRow("VTG 1.x") << gnss::buildSentence("GPVTG,054.7,034.4,005.5,010.2").c_str()
+                                 << "sog_kmh" << 10.2;
+        QTest::newRow("HDT") << gnss::buildSentence("GPHDT,274.07,T").c_str() << "heading"
+                             << 274.07;
+        QTest::newRow("DTM") << "$GPDTM,999,,0.002,S,0.005,E,005.8,W84*1A"
+                             << "lat_offset_min" << -0.002;
+        QTest::newRow("GST") << gnss::buildSentence(
+                                        "GPGST,172814.0,0.006,0.023,0.020,273.6,0.023,0.020,0.031")
+                                        .c_str()
+                             << "sd_alt" << 0.031;
+        QTest::newRow("ZDA") << "$GPZDA,072914.00,31,05,2018,+00,00*48"
+                             << "tz_hours" << 0.0;
+        QTest::newRow("TXT") << gnss::buildSentence("GPTXT,01,01,02,ANTSTATUS=OK").c_str() << "id"
+                             << 2.0;
     }
     void otherStandardSentences() {
         QFETCH(QString, line);
@@ -169,7 +194,8 @@ private slots:
     void zdaAndTxtKeepTheirText() {
         const auto z = decodeOne("$GNZDA,072836.00,31,05,2018,+00,00*57");
         QCOMPARE(z.data["date"].toString(), QString("2018-05-31"));
-        const auto t = decodeOne(gnss::buildSentence("GPTXT,01,01,02,u-blox ag - www.u-blox.com").c_str());
+        const auto t =
+                decodeOne(gnss::buildSentence("GPTXT,01,01,02,u-blox ag - www.u-blox.com").c_str());
         QCOMPARE(t.data["text"].toString(), QString("u-blox ag - www.u-blox.com"));
     }
 
@@ -184,15 +210,29 @@ private slots:
     void malformedFieldsAreReportedNotThrown_data() {
         QTest::addColumn<QString>("body");
         QTest::addColumn<QString>("errorPart");
-        QTest::newRow("GGA bad lat") << "GPGGA,120000,48x7.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,," << "latitude";
-        QTest::newRow("GGA bad hemisphere") << "GPGGA,120000,4807.038,Q,01131.000,E,1,08,0.9,545.4,M,46.9,M,," << "hemisphere";
-        QTest::newRow("GGA bad quality") << "GPGGA,120000,4807.038,N,01131.000,E,x,08,0.9,545.4,M,46.9,M,," << "quality";
-        QTest::newRow("GGA short") << "GPGGA,120000,4807.038" << "expected at least";
-        QTest::newRow("RMC bad date") << "GPRMC,123519,A,4807.038,N,01131.000,E,022.4,084.4,330394,,," << "date";
-        QTest::newRow("RMC bad time") << "GPRMC,2561xx,A,4807.038,N,01131.000,E,022.4,084.4,230394,,," << "time";
-        QTest::newRow("GSV index beyond total") << "GPGSV,2,3,08,01,40,083,46" << "sentence number";
-        QTest::newRow("GSV elevation") << "GPGSV,1,1,01,01,95,083,46" << "elevation";
-        QTest::newRow("GSA bad id") << "GPGSA,A,3,0x,,,,,,,,,,,,1.0,0.5,0.8" << "satellite id";
+        QTest::newRow("GGA bad lat")
+                << "GPGGA,120000,48x7.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,"
+                << "latitude";
+        QTest::newRow("GGA bad hemisphere")
+                << "GPGGA,120000,4807.038,Q,01131.000,E,1,08,0.9,545.4,M,46.9,M,,"
+                << "hemisphere";
+        QTest::newRow("GGA bad quality")
+                << "GPGGA,120000,4807.038,N,01131.000,E,x,08,0.9,545.4,M,46.9,M,,"
+                << "quality";
+        QTest::newRow("GGA short") << "GPGGA,120000,4807.038"
+                                   << "expected at least";
+        QTest::newRow("RMC bad date")
+                << "GPRMC,123519,A,4807.038,N,01131.000,E,022.4,084.4,330394,,,"
+                << "date";
+        QTest::newRow("RMC bad time")
+                << "GPRMC,2561xx,A,4807.038,N,01131.000,E,022.4,084.4,230394,,,"
+                << "time";
+        QTest::newRow("GSV index beyond total") << "GPGSV,2,3,08,01,40,083,46"
+                                                << "sentence number";
+        QTest::newRow("GSV elevation") << "GPGSV,1,1,01,01,95,083,46"
+                                       << "elevation";
+        QTest::newRow("GSA bad id") << "GPGSA,A,3,0x,,,,,,,,,,,,1.0,0.5,0.8"
+                                    << "satellite id";
     }
     void malformedFieldsAreReportedNotThrown() {
         QFETCH(QString, body);

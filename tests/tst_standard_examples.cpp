@@ -65,7 +65,8 @@ void crossCheck(const QString &sentence, const QJsonObject &d) {
         expectNumber(d, "cog", f[7]);
         int di = 8; // GeoS-5's no-fix RMC prints two extra empty fields before the date
         while (di < f.size() && f[di].size() != 6) ++di;
-        QCOMPARE(d["date"].toString(), QString("20%1-%2-%3").arg(f[di].mid(4, 2), f[di].mid(2, 2), f[di].left(2)));
+        QCOMPARE(d["date"].toString(),
+                 QString("20%1-%2-%3").arg(f[di].mid(4, 2), f[di].mid(2, 2), f[di].left(2)));
         QCOMPARE(d["mode"].toString(), f[di + 3]);
     } else if (type == "GLL") {
         expectCoordinate(d, "lat", f[0], f[1]);
@@ -146,7 +147,8 @@ private slots:
 
     void specValuesTypedFromTheSpec() {
         // GeoS-5 spec 3.1: RTK fixed example.
-        auto d = decodeOne("$GPGGA,153556.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,0014.4,M,000.6,0100*46");
+        auto d = decodeOne("$GPGGA,153556.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,"
+                           "0014.4,M,000.6,0100*46");
         QVERIFY(d.ok);
         QCOMPARE(d.data["quality"].toInt(), 4);
         QCOMPARE(d.data["sats_used"].toInt(), 15);
@@ -154,7 +156,8 @@ private slots:
         QCOMPARE(d.data["dgps_station"].toInt(), 100);
         QCOMPARE(d.data["time"].toString(), QString("15:35:56.000"));
         // 3.1: GeoPath quality 9 with three-decimal geoid separation.
-        d = decodeOne("$GPGGA,040717.00,5550.610226,N,03732.250730,E,9,18,0.6,00187.429,M,0014.442,M,,*6A");
+        d = decodeOne("$GPGGA,040717.00,5550.610226,N,03732.250730,E,9,18,0.6,00187.429,M,0014.442,"
+                      "M,,*6A");
         QVERIFY(d.ok);
         QCOMPARE(d.data["quality"].toInt(), 9);
         QCOMPARE(d.data["geoid_sep"].toDouble(), 14.442);

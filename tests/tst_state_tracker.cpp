@@ -36,17 +36,18 @@ class TestStateTracker : public QObject {
 private slots:
     void nvsRtkSentencesFillTheRtkState() {
         int epochs = 0;
-        const ReceiverState st = track(
-                {buildSentence("GPGGA,145505.20,4724.5118287,N,00937.6956032,E,4,17,0.7,403.995,M,47.848,M,2.2,0002"),
-                 buildSentence("PNVGBSS,1200,3,1197,4769.223,1.2"),
-                 "$PNVGBRS,091244.60,4604.566,-1242.064,-27.096,4769.223,344.90,-0.33,R*1A",
-                 "$PNVGBLS,145505.20,0.437,0.374,-0.040,0.576,40.61,-4.01,R*1A",
-                 "$PNVGSDP,151337.40,0.005,0.004,0.009,R*38", "$PNVGSDV,151337.40,0.087,0.077,0.118,R*31",
-                 "$PNVGSDH,151337.40,0.978,R*2E",
-                 "$PNVGDOP,121707.80,1.06,0.94,0.59,0.73,0.50,0.41,0.42,R*14",
-                 "$PNVGVOG,140327.80,1.437,5.374,-0.041,R*08",
-                 "$PNVGIMU,145505.20,0.42,0.37,21.84,0.065,0.064,-0.201*7C"},
-                &epochs);
+        const ReceiverState st =
+                track({buildSentence("GPGGA,145505.20,4724.5118287,N,00937.6956032,E,4,17,0.7,403."
+                                     "995,M,47.848,M,2.2,0002"),
+                       buildSentence("PNVGBSS,1200,3,1197,4769.223,1.2"),
+                       "$PNVGBRS,091244.60,4604.566,-1242.064,-27.096,4769.223,344.90,-0.33,R*1A",
+                       "$PNVGBLS,145505.20,0.437,0.374,-0.040,0.576,40.61,-4.01,R*1A",
+                       "$PNVGSDP,151337.40,0.005,0.004,0.009,R*38",
+                       "$PNVGSDV,151337.40,0.087,0.077,0.118,R*31", "$PNVGSDH,151337.40,0.978,R*2E",
+                       "$PNVGDOP,121707.80,1.06,0.94,0.59,0.73,0.50,0.41,0.42,R*14",
+                       "$PNVGVOG,140327.80,1.437,5.374,-0.041,R*08",
+                       "$PNVGIMU,145505.20,0.42,0.37,21.84,0.065,0.064,-0.201*7C"},
+                      &epochs);
         QCOMPARE(epochs, 1);
         QCOMPARE(int(st.epoch.fix), int(FixType::RtkFixed));
         QVERIFY(st.rtk.seen);
@@ -66,10 +67,11 @@ private slots:
     }
 
     void nvsTimeMarkSentencesMakeOneEvent() {
-        const ReceiverState st = track({"$PNVGTME,128,40327.564756284*49", "$PNVGTMU,128,081248.547824228*61",
-                                        "$PNVGTMC,145505.28,4724.5118287,N,00937.6956032,E,4,17,0.7,403.995,M,"
-                                        "47.848,M,2.2,0002*4D",
-                                        buildSentence("PNVGTME,129,40328.5")});
+        const ReceiverState st =
+                track({"$PNVGTME,128,40327.564756284*49", "$PNVGTMU,128,081248.547824228*61",
+                       "$PNVGTMC,145505.28,4724.5118287,N,00937.6956032,E,4,17,0.7,403.995,M,"
+                       "47.848,M,2.2,0002*4D",
+                       buildSentence("PNVGTME,129,40328.5")});
         QCOMPARE(st.timeMarks.size(), std::size_t(2));
         const TimeMarkEvent &e = st.timeMarks.front();
         QCOMPARE(*e.counter, std::int64_t(128));
@@ -101,8 +103,9 @@ private slots:
     }
 
     void standardHeadingAndDeviationsToo() {
-        const ReceiverState st = track({buildSentence("GPHDT,274.07,T"),
-                                        buildSentence("GPGST,172814.0,0.006,0.023,0.020,273.6,0.023,0.020,0.031")});
+        const ReceiverState st =
+                track({buildSentence("GPHDT,274.07,T"),
+                       buildSentence("GPGST,172814.0,0.006,0.023,0.020,273.6,0.023,0.020,0.031")});
         QCOMPARE(*st.rtk.heading, 274.07);
         QCOMPARE(*st.rtk.sdHeight, 0.031);
     }

@@ -24,8 +24,8 @@ bool decodeProbe(const Sentence &, DecodeContext &ctx) {
     return true;
 }
 constexpr SentenceRule kVendorRules[] = {{"PTSTA", AddressMatch::Whole, decodeProbe, "probe"}};
-const Dialect kVendor{.id = "vendor", .displayName = "Vendor", .rules = kVendorRules,
-                      .checksumOptional = true};
+const Dialect kVendor{
+        .id = "vendor", .displayName = "Vendor", .rules = kVendorRules, .checksumOptional = true};
 
 struct Collected {
     int decoded = 0, failed = 0;
@@ -98,9 +98,10 @@ private slots:
     void everyLineIsCountedPerAddress() {
         const DialectRegistry reg = makeBuiltinRegistry();
         StreamDecoder dec(reg);
-        const std::string data = buildSentence("GPGGA,120000,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,") +
-                                 "\r\n" + buildSentence("GPGGA,12x000,,,,,0,,,,,,,,") + "\r\n" +
-                                 buildSentence("PFOO,1") + "\r\n" + "$GPRMC,1\r\n" + "$,\r\n";
+        const std::string data =
+                buildSentence("GPGGA,120000,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,") +
+                "\r\n" + buildSentence("GPGGA,12x000,,,,,0,,,,,,,,") + "\r\n" +
+                buildSentence("PFOO,1") + "\r\n" + "$GPRMC,1\r\n" + "$,\r\n";
         run(dec, data);
         const auto &st = dec.addressStats();
         QCOMPARE(st.size(), std::size_t(4));
@@ -117,10 +118,14 @@ private slots:
         const DialectRegistry reg = makeBuiltinRegistry();
         std::mt19937 rng(1234);
         const std::string valid[] = {
-                "$GPGGA,123519.00,4807.038,N,01131.000,E,4,08,0.9,545.4,M,46.9,M,1.2,0031*", "$GPGSV,3,2,12,",
-                "$GNGSA,A,3,01,02,,,,,,,,,,,1.0,0.5,0.8,1*", "$GPRMC,123519,A,4807.038,N,01131.000,E,0,0,230394,,,A*",
-                "$GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C", "$PNVGRTK,MODE,1*",
-                "$PNMRX301,1,2,3,4,5,6,7,8,9*", "$GPGSV,1,1,04,001,-90,359,99,,,,,,,,,,,,,,,,*"};
+                "$GPGGA,123519.00,4807.038,N,01131.000,E,4,08,0.9,545.4,M,46.9,M,1.2,0031*",
+                "$GPGSV,3,2,12,",
+                "$GNGSA,A,3,01,02,,,,,,,,,,,1.0,0.5,0.8,1*",
+                "$GPRMC,123519,A,4807.038,N,01131.000,E,0,0,230394,,,A*",
+                "$GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C",
+                "$PNVGRTK,MODE,1*",
+                "$PNMRX301,1,2,3,4,5,6,7,8,9*",
+                "$GPGSV,1,1,04,001,-90,359,99,,,,,,,,,,,,,,,,*"};
         for (bool lenient : {false, true}) {
             StreamDecoder dec(reg, {.lenient = lenient});
             std::uint64_t events = 0;

@@ -90,8 +90,8 @@ bool parseCommon(const CliContext &ctx, int argc, char **argv, CommonOptions &ou
 
 bool run(const CommonOptions &opt, StreamDecoder &dec, StreamDecoder::Handler handler) {
     std::string error;
-    const bool ok = readInput(opt.input, [&](std::string_view chunk) { dec.feed(chunk, handler); },
-                              error);
+    const bool ok = readInput(
+            opt.input, [&](std::string_view chunk) { dec.feed(chunk, handler); }, error);
     dec.finish();
     if (!ok) std::fprintf(stderr, "gnss-cli: %s\n", error.c_str());
     return ok;
@@ -241,8 +241,9 @@ int cmdStats(const CliContext &ctx, int argc, char **argv) {
                       (unsigned long long)fs.binaryAborted, (unsigned long long)rejected,
                       (unsigned long long)epochs);
         o += line;
-        std::snprintf(line, sizeof line, "time: %.3f s (%.0f MB/s, %.0f sentences/s, %u thread%s)\n",
-                      seconds, seconds > 0 ? mb / seconds : 0.0,
+        std::snprintf(line, sizeof line,
+                      "time: %.3f s (%.0f MB/s, %.0f sentences/s, %u thread%s)\n", seconds,
+                      seconds > 0 ? mb / seconds : 0.0,
                       seconds > 0 ? static_cast<double>(sentences) / seconds : 0.0, scan.segments,
                       scan.segments == 1 ? "" : "s");
         o += line;

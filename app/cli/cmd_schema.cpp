@@ -113,8 +113,7 @@ int cmdEncode(const CliContext &ctx, int argc, char **argv) {
     }
     const auto prefix = args.option("prefix");
     for (const auto &s : result.sentences) {
-        const std::string out =
-                prefix ? renameAddressPrefix(s, d->renamablePrefix, *prefix) : s;
+        const std::string out = prefix ? renameAddressPrefix(s, d->renamablePrefix, *prefix) : s;
         std::printf("%s\n", out.c_str());
     }
     return 0;

@@ -41,9 +41,11 @@ void usage(std::FILE *f) {
     std::fprintf(f, "usage: gnss-cli COMMAND [OPTIONS]\n\ncommands:\n");
     for (const auto &c : kCommands)
         std::fprintf(f, "  %.*s\n", static_cast<int>(c.synopsis.size()), c.synopsis.data());
-    std::fprintf(f, "\nD: auto (default), nvs, geostar, nemerix, nmea\n"
-                    "--alias NEW=PNMRX reads a renamed prefix; with --dialect nemerix, --prefix NEW reads\n"
-                    "and (encode) writes it. See docs/cli.md.\n");
+    std::fprintf(
+            f,
+            "\nD: auto (default), nvs, geostar, nemerix, nmea\n"
+            "--alias NEW=PNMRX reads a renamed prefix; with --dialect nemerix, --prefix NEW reads\n"
+            "and (encode) writes it. See docs/cli.md.\n");
 }
 
 } // namespace

@@ -42,19 +42,21 @@ ConnectionBar::ConnectionBar(link::PortWatcher *ports, QWidget *parent)
         const QString action = source_->itemData(i, SpecRole).toString();
         if (action == QLatin1String("tcp?")) {
             bool ok = false;
-            const QString hp = QInputDialog::getText(this, tr("TCP source"), tr("Host and port (HOST:PORT):"),
-                                                     QLineEdit::Normal, QStringLiteral("127.0.0.1:5000"), &ok);
+            const QString hp =
+                    QInputDialog::getText(this, tr("TCP source"), tr("Host and port (HOST:PORT):"),
+                                          QLineEdit::Normal, QStringLiteral("127.0.0.1:5000"), &ok);
             if (ok && !hp.isEmpty()) extra_ = SourceSpec{SourceSpec::Kind::Tcp, hp};
             rebuildSources();
         } else if (action == QLatin1String("replay?")) {
-            const QString f = QFileDialog::getOpenFileName(this, tr("Open Log"), {},
-                                                           tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
+            const QString f = QFileDialog::getOpenFileName(
+                    this, tr("Open Log"), {}, tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
             if (!f.isEmpty()) extra_ = SourceSpec{SourceSpec::Kind::Replay, f};
             rebuildSources();
         }
         baud_->setEnabled(selection().kind == SourceSpec::Kind::Serial);
     });
-    if (ports_) connect(ports_, &link::PortWatcher::portsChanged, this, &ConnectionBar::rebuildSources);
+    if (ports_)
+        connect(ports_, &link::PortWatcher::portsChanged, this, &ConnectionBar::rebuildSources);
     rebuildSources();
 }
 
@@ -66,7 +68,8 @@ void ConnectionBar::rebuildSources() {
             QString text = p.portName;
             if (!p.description.isEmpty()) text += QStringLiteral(" — ") + p.description;
             if (!p.usbId().isEmpty()) text += QStringLiteral(" [%1]").arg(p.usbId());
-            source_->addItem(text, SourceSpec{SourceSpec::Kind::Serial, p.systemLocation}.toString());
+            source_->addItem(text,
+                             SourceSpec{SourceSpec::Kind::Serial, p.systemLocation}.toString());
             source_->setItemData(source_->count() - 1,
                                  tr("%1\nManufacturer: %2\nSerial number: %3")
                                          .arg(p.systemLocation, p.manufacturer, p.serialNumber),
@@ -81,7 +84,9 @@ void ConnectionBar::rebuildSources() {
                 {"nemerix", QT_TR_NOOP("Simulated Nemerix VT002")},
                 {"nmea", QT_TR_NOOP("Simulated NMEA receiver")}};
     for (const auto &s : sims)
-        source_->addItem(tr(s.label), SourceSpec{SourceSpec::Kind::Simulator, QString::fromLatin1(s.id)}.toString());
+        source_->addItem(
+                tr(s.label),
+                SourceSpec{SourceSpec::Kind::Simulator, QString::fromLatin1(s.id)}.toString());
     if (extra_.valid()) source_->addItem(extra_.displayName(), extra_.toString());
     source_->addItem(tr("TCP…"), QStringLiteral("tcp?"));
     source_->addItem(tr("Open log…"), QStringLiteral("replay?"));

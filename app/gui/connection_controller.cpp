@@ -11,13 +11,15 @@
 
 namespace gnss::app {
 
-ConnectionController::ConnectionController(const DialectRegistry &registry, ui::ReceiverSession *session,
-                                           QObject *parent)
+ConnectionController::ConnectionController(const DialectRegistry &registry,
+                                           ui::ReceiverSession *session, QObject *parent)
     : QObject(parent), registry_(registry), session_(session) {
     stateText_ = tr("Not connected");
 }
 
-ConnectionController::~ConnectionController() { disconnectFromSource(); }
+ConnectionController::~ConnectionController() {
+    disconnectFromSource();
+}
 
 void ConnectionController::setState(State s, const QString &text) {
     state_ = s;
@@ -34,17 +36,21 @@ bool ConnectionController::connectTo(const SourceSpec &spec) {
     }
     if (spec.kind == SourceSpec::Kind::Serial && spec.baud == 0) {
         // Baud "auto": try the likely rates before opening for real.
-        auto transport = std::make_unique<link::SerialTransport>(link::SerialSettings{spec.name, 9600});
+        auto transport =
+                std::make_unique<link::SerialTransport>(link::SerialSettings{spec.name, 9600});
         if (!transport->open()) {
-            setState(State::Failed, tr("Cannot open %1: %2").arg(spec.name, transport->errorString()));
+            setState(State::Failed,
+                     tr("Cannot open %1: %2").arg(spec.name, transport->errorString()));
             return false;
         }
         detector_ = std::make_unique<link::BaudDetector>(transport.get());
         auto *raw = transport.release();
         raw->setParent(detector_.get());
-        connect(detector_.get(), &link::BaudDetector::tryingRate, this,
-                [this](int baud) { setState(State::Detecting, tr("Detecting baud rate: trying %1…").arg(baud)); });
-        connect(detector_.get(), &link::BaudDetector::finished, this, &ConnectionController::onDetection);
+        connect(detector_.get(), &link::BaudDetector::tryingRate, this, [this](int baud) {
+            setState(State::Detecting, tr("Detecting baud rate: trying %1…").arg(baud));
+        });
+        connect(detector_.get(), &link::BaudDetector::finished, this,
+                &ConnectionController::onDetection);
         setState(State::Detecting, tr("Detecting baud rate…"));
         detector_->start();
         return true;
@@ -78,8 +84,12 @@ bool ConnectionController::openWith(int baud) {
         transport = std::make_unique<link::TcpTransport>(spec_.name.left(colon), port);
         break;
     }
-    case SourceSpec::Kind::Replay: transport = std::make_unique<link::ReplayTransport>(spec_.name); break;
-    case SourceSpec::Kind::Simulator: transport = std::make_unique<link::SimulatorTransport>(spec_.name); break;
+    case SourceSpec::Kind::Replay:
+        transport = std::make_unique<link::ReplayTransport>(spec_.name);
+        break;
+    case SourceSpec::Kind::Simulator:
+        transport = std::make_unique<link::SimulatorTransport>(spec_.name);
+        break;
     case SourceSpec::Kind::None: return false;
     }
     DecoderOptions options;
@@ -88,10 +98,13 @@ bool ConnectionController::openWith(int baud) {
     connection_ = std::make_unique<link::Connection>(std::move(transport), registry_, options);
     link::Connection *c = connection_.get();
     session_->setCounterSource(&c->decoder());
-    connect(c->transport(), &link::Transport::bytesReceived, session_, &ui::ReceiverSession::noteBytes);
-    c->setSentenceHandler([this, c](const SentenceEvent &ev) { session_->consume(ev, c->decoder().dialect()); });
-    connect(c, &link::Connection::linkLost, this,
-            [this](const QString &why) { setState(State::Reconnecting, tr("Link lost: %1 — retrying every second").arg(why)); });
+    connect(c->transport(), &link::Transport::bytesReceived, session_,
+            &ui::ReceiverSession::noteBytes);
+    c->setSentenceHandler(
+            [this, c](const SentenceEvent &ev) { session_->consume(ev, c->decoder().dialect()); });
+    connect(c, &link::Connection::linkLost, this, [this](const QString &why) {
+        setState(State::Reconnecting, tr("Link lost: %1 — retrying every second").arg(why));
+    });
     connect(c, &link::Connection::linkRestored, this,
             [this](const QString &d) { setState(State::Connected, tr("Connected: %1").arg(d)); });
     // Once the dialect is known, ask the receiver who it is (model, firmware) with its probe.
@@ -99,12 +112,19 @@ bool ConnectionController::openWith(int baud) {
         if (const Dialect *d = registry_.find(id.toStdString()); d && !d->probeCommand.empty())
             send(QByteArray(d->probeCommand.data(), qsizetype(d->probeCommand.size())));
     });
-    connect(c->commands(), &link::CommandQueue::commandFinished, this, [this](const link::CommandResult &r) {
-        const bool ok = r.outcome == link::CommandOutcome::Accepted || r.outcome == link::CommandOutcome::Sent;
-        emit commandFinished(tr("%1: %2").arg(r.sentence, r.detail.isEmpty() ? link::outcomeName(r.outcome) : r.detail), ok);
-    });
+    connect(c->commands(), &link::CommandQueue::commandFinished, this,
+            [this](const link::CommandResult &r) {
+                const bool ok = r.outcome == link::CommandOutcome::Accepted ||
+                                r.outcome == link::CommandOutcome::Sent;
+                emit commandFinished(
+                        tr("%1: %2").arg(r.sentence, r.detail.isEmpty()
+                                                             ? link::outcomeName(r.outcome)
+                                                             : r.detail),
+                        ok);
+            });
     if (!c->open()) {
-        setState(State::Failed, tr("Cannot open %1: %2").arg(spec_.displayName(), c->transport()->errorString()));
+        setState(State::Failed,
+                 tr("Cannot open %1: %2").arg(spec_.displayName(), c->transport()->errorString()));
         return false;
     }
     setState(State::Connected, tr("Connected: %1").arg(c->transport()->description()));
@@ -147,6 +167,8 @@ void ConnectionController::stopRecording() {
     if (connection_) connection_->stopRecording();
 }
 
-bool ConnectionController::recording() const { return connection_ && connection_->recorder()->isOpen(); }
+bool ConnectionController::recording() const {
+    return connection_ && connection_->recorder()->isOpen();
+}
 
 } // namespace gnss::app

@@ -7,10 +7,10 @@
 #include <QApplication>
 #include <QLibraryInfo>
 #include <QLocale>
-#include <QTranslator>
 #include <QPixmap>
 #include <QSettings>
 #include <QTimer>
+#include <QTranslator>
 #include <cstdio>
 
 int main(int argc, char **argv) {
@@ -21,7 +21,8 @@ int main(int argc, char **argv) {
 
     // The interface in the user's language where we have it (translations/), Qt's own strings too.
     QTranslator qtTranslator, appTranslator;
-    if (qtTranslator.load(QLocale(), "qtbase", "_", QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+    if (qtTranslator.load(QLocale(), "qtbase", "_",
+                          QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QApplication::installTranslator(&qtTranslator);
     if (appTranslator.load(QLocale(), "gnss-workbench", "_", ":/i18n"))
         QApplication::installTranslator(&appTranslator);
@@ -40,13 +41,18 @@ int main(int argc, char **argv) {
     window.show();
     using gnss::app::SourceSpec;
     SourceSpec start;
-    if (!options->port.isEmpty()) start = {SourceSpec::Kind::Serial, options->port, options->baud};
-    else if (!options->tcp.isEmpty()) start = {SourceSpec::Kind::Tcp, options->tcp};
-    else if (!options->replay.isEmpty()) start = {SourceSpec::Kind::Replay, options->replay};
-    else if (!options->sim.isEmpty()) start = {SourceSpec::Kind::Simulator, options->sim};
+    if (!options->port.isEmpty())
+        start = {SourceSpec::Kind::Serial, options->port, options->baud};
+    else if (!options->tcp.isEmpty())
+        start = {SourceSpec::Kind::Tcp, options->tcp};
+    else if (!options->replay.isEmpty())
+        start = {SourceSpec::Kind::Replay, options->replay};
+    else if (!options->sim.isEmpty())
+        start = {SourceSpec::Kind::Simulator, options->sim};
     window.connectAtStart(start);
 
-    const double delay = options->quitAfter > 0 ? options->quitAfter : (options->screenshot.isEmpty() ? 0 : 1);
+    const double delay =
+            options->quitAfter > 0 ? options->quitAfter : (options->screenshot.isEmpty() ? 0 : 1);
     if (delay > 0) {
         QTimer::singleShot(static_cast<int>(delay * 1000), &app, [&] {
             if (!options->screenshot.isEmpty()) {

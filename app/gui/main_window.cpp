@@ -55,15 +55,19 @@ MainWindow::MainWindow(const DialectRegistry &registry, QSettings *settings, QWi
     createDocks();
     createMenus();
     createStatusBar();
-    connect(bar_, &ConnectionBar::connectRequested, this, [this](const SourceSpec &s) { controller_->connectTo(s); });
-    connect(bar_, &ConnectionBar::disconnectRequested, controller_, &ConnectionController::disconnectFromSource);
+    connect(bar_, &ConnectionBar::connectRequested, this,
+            [this](const SourceSpec &s) { controller_->connectTo(s); });
+    connect(bar_, &ConnectionBar::disconnectRequested, controller_,
+            &ConnectionController::disconnectFromSource);
     connect(controller_, &ConnectionController::stateChanged, this, [this] {
         bar_->setConnected(controller_->state() != ConnectionController::State::Disconnected &&
                            controller_->state() != ConnectionController::State::Failed);
         updateStatus();
     });
     connect(controller_, &ConnectionController::commandFinished, this,
-            [this](const QString &summary, bool ok) { statusBar()->showMessage(ok ? summary : tr("Command: %1").arg(summary), 8000); });
+            [this](const QString &summary, bool ok) {
+                statusBar()->showMessage(ok ? summary : tr("Command: %1").arg(summary), 8000);
+            });
     auto *statusTimer = new QTimer(this);
     statusTimer->setInterval(500);
     connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
@@ -85,7 +89,8 @@ void MainWindow::createModels() {
     satellites_ = new ui::SatelliteModel(this);
     messages_ = new ui::MessageStatsModel(this);
     console_ = new ui::ConsoleModel(this);
-    session_ = new ui::ReceiverSession(registry_, {stateModel_, satellites_, messages_, console_}, this);
+    session_ = new ui::ReceiverSession(registry_, {stateModel_, satellites_, messages_, console_},
+                                       this);
     controller_ = new ConnectionController(registry_, session_, this);
 }
 
@@ -94,19 +99,23 @@ QDockWidget *MainWindow::addDock(QWidget *w, const QString &title, const QString
     auto *d = new QDockWidget(title, this);
     d->setObjectName(objectName);
     d->setWidget(w);
-    d->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    d->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
+                   QDockWidget::DockWidgetFloatable);
     addDockWidget(area, d);
     return d;
 }
 
-QDockWidget *MainWindow::dock(const QString &objectName) const { return findChild<QDockWidget *>(objectName); }
+QDockWidget *MainWindow::dock(const QString &objectName) const {
+    return findChild<QDockWidget *>(objectName);
+}
 
 void MainWindow::createDocks() {
     sky_ = new ui::SkyPlotView(satellites_, this);
     auto *skyDock = addDock(sky_, tr("Sky plot"), "skyDock", Qt::LeftDockWidgetArea);
-    auto *fixDock = addDock(new ui::FixView(stateModel_, this), tr("Fix and position"), "fixDock", Qt::RightDockWidgetArea);
-    auto *signalDock = addDock(new ui::SignalLevelsView(satellites_, this), tr("Signal levels"), "signalDock",
-                               Qt::BottomDockWidgetArea);
+    auto *fixDock = addDock(new ui::FixView(stateModel_, this), tr("Fix and position"), "fixDock",
+                            Qt::RightDockWidgetArea);
+    auto *signalDock = addDock(new ui::SignalLevelsView(satellites_, this), tr("Signal levels"),
+                               "signalDock", Qt::BottomDockWidgetArea);
     auto *table = new QTableView(this);
     table->setObjectName("satelliteTable");
     table->setModel(satellites_);
@@ -114,20 +123,22 @@ void MainWindow::createDocks() {
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     auto *satDock = addDock(table, tr("Satellites"), "satellitesDock", Qt::RightDockWidgetArea);
     consoleView_ = new ui::ConsoleView(console_, this);
-    auto *consoleDock = addDock(consoleView_, tr("Console"), "consoleDock", Qt::BottomDockWidgetArea);
-    auto *statsDock = addDock(new ui::MessageStatsView(messages_, this), tr("Message statistics"), "statsDock",
-                              Qt::BottomDockWidgetArea);
-    auto *infoDock = addDock(new ui::ReceiverInfoView(stateModel_, this), tr("Receiver information"), "infoDock",
-                             Qt::RightDockWidgetArea);
+    auto *consoleDock =
+            addDock(consoleView_, tr("Console"), "consoleDock", Qt::BottomDockWidgetArea);
+    auto *statsDock = addDock(new ui::MessageStatsView(messages_, this), tr("Message statistics"),
+                              "statsDock", Qt::BottomDockWidgetArea);
+    auto *infoDock = addDock(new ui::ReceiverInfoView(stateModel_, this),
+                             tr("Receiver information"), "infoDock", Qt::RightDockWidgetArea);
     rtk_ = new ui::RtkView(stateModel_, this);
     auto *rtkDock = addDock(rtk_, tr("RTK"), "rtkDock", Qt::RightDockWidgetArea);
     charts_ = new ui::ChartsView(stateModel_, this);
     auto *chartsDock = addDock(charts_, tr("Charts"), "chartsDock", Qt::BottomDockWidgetArea);
     splitDockWidget(skyDock, signalDock, Qt::Vertical);
-    auto *deviationDock = addDock(new ui::DeviationView(stateModel_, this), tr("Deviation"), "deviationDock",
-                                  Qt::LeftDockWidgetArea);
-    auto *attitudeDock = addDock(new ui::AttitudeView(stateModel_, this), tr("Attitude and time marks"),
-                                 "attitudeDock", Qt::RightDockWidgetArea);
+    auto *deviationDock = addDock(new ui::DeviationView(stateModel_, this), tr("Deviation"),
+                                  "deviationDock", Qt::LeftDockWidgetArea);
+    auto *attitudeDock =
+            addDock(new ui::AttitudeView(stateModel_, this), tr("Attitude and time marks"),
+                    "attitudeDock", Qt::RightDockWidgetArea);
     tabifyDockWidget(skyDock, deviationDock);
     skyDock->raise();
     tabifyDockWidget(fixDock, rtkDock);
@@ -136,19 +147,25 @@ void MainWindow::createDocks() {
     tabifyDockWidget(satDock, attitudeDock);
     // Receiver settings: the engine follows the connection and the dialect it speaks.
     auto *settingsEngine = new config::SettingsEngine(this);
-    tabifyDockWidget(attitudeDock, addDock(new ui::SettingsView(settingsEngine, this), tr("Receiver settings"),
-                                           "settingsDock", Qt::RightDockWidgetArea));
+    tabifyDockWidget(attitudeDock,
+                     addDock(new ui::SettingsView(settingsEngine, this), tr("Receiver settings"),
+                             "settingsDock", Qt::RightDockWidgetArea));
     connect(session_, &ui::ReceiverSession::dialectChanged, settingsEngine,
-            [this, settingsEngine](const Dialect *d) { settingsEngine->attach(controller_->connection(), d); });
+            [this, settingsEngine](const Dialect *d) {
+                settingsEngine->attach(controller_->connection(), d);
+            });
     connect(controller_, &ConnectionController::stateChanged, settingsEngine,
-            [this, settingsEngine] { settingsEngine->attach(controller_->connection(), session_->dialect()); });
+            [this, settingsEngine] {
+                settingsEngine->attach(controller_->connection(), session_->dialect());
+            });
     fixDock->raise();
     tabifyDockWidget(consoleDock, statsDock);
     tabifyDockWidget(statsDock, chartsDock);
     consoleDock->raise();
     connect(consoleView_, &ui::ConsoleView::sendRequested, this, [this](const QByteArray &s) {
         QString why;
-        if (!controller_->send(s, &why)) statusBar()->showMessage(tr("Not sent: %1").arg(why), 8000);
+        if (!controller_->send(s, &why))
+            statusBar()->showMessage(tr("Not sent: %1").arg(why), 8000);
     });
     connect(session_, &ui::ReceiverSession::dialectChanged, this, [this](const Dialect *d) {
         QStringList names;
@@ -157,10 +174,13 @@ void MainWindow::createDocks() {
         consoleView_->setCommandNames(names);
         if (d)
             for (const auto &s : d->settings)
-                if (s.key.ends_with("ELEV") || s.key.ends_with("ELGPS") || s.key == "fix.minElevation") {
+                if (s.key.ends_with("ELEV") || s.key.ends_with("ELGPS") ||
+                    s.key == "fix.minElevation") {
                     // The elevation mask's default until the receiver reports its own.
                     bool ok = false;
-                    const double v = QString::fromLatin1(s.defaultValue.data(), int(s.defaultValue.size())).toDouble(&ok);
+                    const double v =
+                            QString::fromLatin1(s.defaultValue.data(), int(s.defaultValue.size()))
+                                    .toDouble(&ok);
                     if (ok) sky_->setElevationMask(v);
                 }
     });
@@ -169,8 +189,8 @@ void MainWindow::createDocks() {
 void MainWindow::createMenus() {
     QMenu *file = menuBar()->addMenu(tr("&File"));
     QAction *open = file->addAction(tr("&Open Log..."), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open Log"), {},
-                                                          tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
+        const QString path = QFileDialog::getOpenFileName(
+                this, tr("Open Log"), {}, tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
         if (!path.isEmpty()) {
             const SourceSpec s{SourceSpec::Kind::Replay, path};
             bar_->select(s);
@@ -195,7 +215,8 @@ void MainWindow::createMenus() {
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     viewMenu_->setObjectName("viewMenu");
-    for (QDockWidget *d : findChildren<QDockWidget *>()) viewMenu_->addAction(d->toggleViewAction());
+    for (QDockWidget *d : findChildren<QDockWidget *>())
+        viewMenu_->addAction(d->toggleViewAction());
     viewMenu_->addSeparator();
     QAction *tracks = viewMenu_->addAction(tr("Sky plot &tracks"));
     tracks->setCheckable(true);
@@ -203,22 +224,25 @@ void MainWindow::createMenus() {
     viewMenu_->addAction(tr("&Reset layout"), this, [this] { restoreState(defaultState_); });
     QMenu *theme = viewMenu_->addMenu(tr("T&heme"));
     auto *group = new QActionGroup(this);
-    for (const auto &[id, label] : {std::pair{"system", QT_TR_NOOP("Follow the system")},
-                                    std::pair{"light", QT_TR_NOOP("Light")}, std::pair{"dark", QT_TR_NOOP("Dark")}}) {
+    for (const auto &[id, label] :
+         {std::pair{"system", QT_TR_NOOP("Follow the system")},
+          std::pair{"light", QT_TR_NOOP("Light")}, std::pair{"dark", QT_TR_NOOP("Dark")}}) {
         QAction *a = theme->addAction(tr(label));
         a->setCheckable(true);
         a->setData(QString::fromLatin1(id));
         group->addAction(a);
         connect(a, &QAction::triggered, this, [this, a] { applyTheme(a->data().toString()); });
-        if (settings_ && settings_->value("view/theme", "system").toString() == QLatin1String(id)) a->setChecked(true);
+        if (settings_ && settings_->value("view/theme", "system").toString() == QLatin1String(id))
+            a->setChecked(true);
     }
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About GNSS Workbench"), this, [this] {
-        QMessageBox::about(this, tr("About GNSS Workbench"),
-                           tr("<b>GNSS Workbench</b> %1<br>Configure and monitor NVS NV08C-RTK, GeoStar "
-                              "GeoS-5, Nemerix and NMEA-0183 receivers.")
-                                   .arg(QApplication::applicationVersion()));
+        QMessageBox::about(
+                this, tr("About GNSS Workbench"),
+                tr("<b>GNSS Workbench</b> %1<br>Configure and monitor NVS NV08C-RTK, GeoStar "
+                   "GeoS-5, Nemerix and NMEA-0183 receivers.")
+                        .arg(QApplication::applicationVersion()));
     });
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 }
@@ -247,22 +271,27 @@ void MainWindow::updateStatus() {
     stateLabel_->setText(controller_->stateText());
     const Dialect *d = session_->dialect();
     const ReceiverIdentity &id = stateModel_->state().identity;
-    QString who = d ? QString::fromLatin1(d->displayName.data(), int(d->displayName.size())) : tr("dialect: —");
+    QString who = d ? QString::fromLatin1(d->displayName.data(), int(d->displayName.size()))
+                    : tr("dialect: —");
     if (!id.model.empty()) who = QString::fromStdString(id.vendor + " " + id.model);
     if (!id.firmware.empty()) who += tr(" (firmware %1)").arg(QString::fromStdString(id.firmware));
     dialectLabel_->setText(who);
     const auto &c = session_->counters();
-    rateLabel_->setText(tr("%1 B/s · %2 sentences/s").arg(qRound(c.bytesPerSecond)).arg(c.sentencesPerSecond, 0, 'f', 1));
+    rateLabel_->setText(tr("%1 B/s · %2 sentences/s")
+                                .arg(qRound(c.bytesPerSecond))
+                                .arg(c.sentencesPerSecond, 0, 'f', 1));
     errorLabel_->setText(tr("checksum errors: %1").arg(c.checksumErrors));
     errorLabel_->setStyleSheet(c.checksumErrors ? QStringLiteral("color: #c62828;") : QString());
     const bool rec = controller_->recording();
     recordLabel_->setText(rec ? tr("● REC") : QString());
-    recordLabel_->setStyleSheet(rec ? QStringLiteral("color: #c62828; font-weight: bold;") : QString());
+    recordLabel_->setStyleSheet(rec ? QStringLiteral("color: #c62828; font-weight: bold;")
+                                    : QString());
     const bool any = stateModel_->epochCount() > 0;
     const FixType fix = any ? stateModel_->state().epoch.fix : FixType::None;
     fixLabel_->setText(any ? style::fixTypeLabel(fix) : tr("No fix"));
-    fixLabel_->setStyleSheet(QStringLiteral("background: %1; color: white; border-radius: 4px; padding: 1px 6px;")
-                                     .arg(style::fixTypeColor(fix).name()));
+    fixLabel_->setStyleSheet(
+            QStringLiteral("background: %1; color: white; border-radius: 4px; padding: 1px 6px;")
+                    .arg(style::fixTypeColor(fix).name()));
 }
 
 void MainWindow::toggleRecording(bool on) {
@@ -271,13 +300,14 @@ void MainWindow::toggleRecording(bool on) {
         updateStatus();
         return;
     }
-    const QString path = QFileDialog::getSaveFileName(this, tr("Record to"), QStringLiteral("receiver.nmea"),
-                                                      tr("NMEA logs (*.nmea)"));
+    const QString path = QFileDialog::getSaveFileName(
+            this, tr("Record to"), QStringLiteral("receiver.nmea"), tr("NMEA logs (*.nmea)"));
     if (path.isEmpty() || !controller_->startRecording(path)) {
         if (!path.isEmpty())
-            QMessageBox::warning(this, tr("Record"), tr("Cannot record to %1: connect to a receiver first, and "
-                                                        "check the folder is writable.")
-                                                             .arg(path));
+            QMessageBox::warning(this, tr("Record"),
+                                 tr("Cannot record to %1: connect to a receiver first, and "
+                                    "check the folder is writable.")
+                                         .arg(path));
         QSignalBlocker block(recordAction_);
         recordAction_->setChecked(false);
     }
@@ -328,8 +358,10 @@ void MainWindow::restoreLayout() {
     restoreGeometry(settings_->value("window/geometry").toByteArray());
     restoreState(settings_->value("window/state").toByteArray());
     sky_->setShowTracks(settings_->value("view/skyTracks", false).toBool());
-    if (settings_->contains("view/chartSeries")) charts_->setCheckedSeries(settings_->value("view/chartSeries").toStringList());
-    charts_->setWindowMinutes(settings_->value("view/chartWindowMinutes", charts_->windowMinutes()).toInt());
+    if (settings_->contains("view/chartSeries"))
+        charts_->setCheckedSeries(settings_->value("view/chartSeries").toStringList());
+    charts_->setWindowMinutes(
+            settings_->value("view/chartWindowMinutes", charts_->windowMinutes()).toInt());
     consoleView_->setHistory(settings_->value("console/history").toStringList());
     const QString theme = settings_->value("view/theme", "system").toString();
     if (theme != QLatin1String("system")) applyTheme(theme);
@@ -337,7 +369,8 @@ void MainWindow::restoreLayout() {
 
 void MainWindow::connectAtStart(const SourceSpec &spec) {
     SourceSpec s = spec;
-    if (!s.valid() && settings_) s = SourceSpec::fromString(settings_->value("connection/last").toString());
+    if (!s.valid() && settings_)
+        s = SourceSpec::fromString(settings_->value("connection/last").toString());
     if (!s.valid()) s = SourceSpec{SourceSpec::Kind::Simulator, QStringLiteral("nvs")};
     bar_->select(s);
     controller_->connectTo(s);

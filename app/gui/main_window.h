@@ -59,7 +59,8 @@ private:
     void createDocks();
     void createMenus();
     void createStatusBar();
-    QDockWidget *addDock(QWidget *w, const QString &title, const QString &objectName, Qt::DockWidgetArea area);
+    QDockWidget *addDock(QWidget *w, const QString &title, const QString &objectName,
+                         Qt::DockWidgetArea area);
     void updateStatus();
     void applyTheme(const QString &theme);
     void toggleRecording(bool on);
@@ -80,8 +81,8 @@ private:
     ui::ConsoleView *consoleView_ = nullptr;
     QMenu *viewMenu_ = nullptr;
     QAction *recordAction_ = nullptr;
-    QLabel *stateLabel_ = nullptr, *dialectLabel_ = nullptr, *rateLabel_ = nullptr, *errorLabel_ = nullptr,
-           *fixLabel_ = nullptr, *recordLabel_ = nullptr;
+    QLabel *stateLabel_ = nullptr, *dialectLabel_ = nullptr, *rateLabel_ = nullptr,
+           *errorLabel_ = nullptr, *fixLabel_ = nullptr, *recordLabel_ = nullptr;
     QByteArray defaultState_;
 };
 

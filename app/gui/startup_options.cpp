@@ -7,38 +7,34 @@ namespace gnss::app {
 
 std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments, QString &error) {
     QCommandLineParser p;
-    p.setApplicationDescription(QCoreApplication::translate(
-            "StartupOptions", "Configure and monitor GNSS receivers."));
+    p.setApplicationDescription(
+            QCoreApplication::translate("StartupOptions", "Configure and monitor GNSS receivers."));
     p.addHelpOption();
     p.addVersionOption();
-    const QCommandLineOption port({"p", "port"},
-                                  QCoreApplication::translate("StartupOptions", "Serial port."),
-                                  "port");
-    const QCommandLineOption baud({"b", "baud"},
-                                  QCoreApplication::translate("StartupOptions",
-                                                              "Baud rate (default: auto)."),
-                                  "baud");
-    const QCommandLineOption tcp("tcp",
-                                 QCoreApplication::translate("StartupOptions",
-                                                             "TCP source HOST:PORT."),
-                                 "host:port");
-    const QCommandLineOption replay("replay",
-                                    QCoreApplication::translate("StartupOptions",
-                                                                "Replay a recorded log."),
-                                    "file");
-    const QCommandLineOption sim("sim",
-                                 QCoreApplication::translate(
-                                         "StartupOptions",
-                                         "Built-in simulated receiver: nvs, geostar, nemerix, nmea."),
-                                 "dialect");
-    const QCommandLineOption shot("screenshot",
-                                  QCoreApplication::translate(
-                                          "StartupOptions", "Save an image of the window and quit."),
-                                  "file");
-    const QCommandLineOption quit("quit-after",
-                                  QCoreApplication::translate("StartupOptions",
-                                                              "Quit after this many seconds."),
-                                  "seconds");
+    const QCommandLineOption port(
+            {"p", "port"}, QCoreApplication::translate("StartupOptions", "Serial port."), "port");
+    const QCommandLineOption baud(
+            {"b", "baud"},
+            QCoreApplication::translate("StartupOptions", "Baud rate (default: auto)."), "baud");
+    const QCommandLineOption tcp(
+            "tcp", QCoreApplication::translate("StartupOptions", "TCP source HOST:PORT."),
+            "host:port");
+    const QCommandLineOption replay(
+            "replay", QCoreApplication::translate("StartupOptions", "Replay a recorded log."),
+            "file");
+    const QCommandLineOption sim(
+            "sim",
+            QCoreApplication::translate(
+                    "StartupOptions", "Built-in simulated receiver: nvs, geostar, nemerix, nmea."),
+            "dialect");
+    const QCommandLineOption shot(
+            "screenshot",
+            QCoreApplication::translate("StartupOptions", "Save an image of the window and quit."),
+            "file");
+    const QCommandLineOption quit(
+            "quit-after",
+            QCoreApplication::translate("StartupOptions", "Quit after this many seconds."),
+            "seconds");
     p.addOptions({port, baud, tcp, replay, sim, shot, quit});
     if (!p.parse(arguments)) {
         error = p.errorText();

@@ -5,10 +5,12 @@
 namespace gnss {
 namespace {
 
-constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9, 1e10,
-                             1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19};
+constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,
+                             1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19};
 
-inline bool isDigit(char c) { return c >= '0' && c <= '9'; }
+inline bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
 
 // Parses "[+-]digits[.digits]" into an integer mantissa and a count of decimals.
 // Returns false on anything else (or more than 18 significant digits).
@@ -138,7 +140,8 @@ bool parseTimeOfDay(std::string_view s, TimeOfDay &out) {
     const int h = (s[0] - '0') * 10 + (s[1] - '0');
     const int m = (s[2] - '0') * 10 + (s[3] - '0');
     const int sec = (s[4] - '0') * 10 + (s[5] - '0');
-    if (h > 23 || m > 59 || sec > 60 || (sec == 60 && (h != 23 || m != 59))) return false; // leap second only at 23:59:60
+    if (h > 23 || m > 59 || sec > 60 || (sec == 60 && (h != 23 || m != 59)))
+        return false; // leap second only at 23:59:60
     std::int64_t frac = 0;
     int dec = 0;
     if (s.size() > 6) {

@@ -7,7 +7,7 @@ namespace gnss {
 
 // UTC time of day with the precision the receiver printed.
 struct TimeOfDay {
-    std::int64_t nanos = 0;  // since 00:00:00
+    std::int64_t nanos = 0;    // since 00:00:00
     std::uint8_t decimals = 0; // digits printed after the seconds' decimal point (0-9)
 
     int hour() const { return static_cast<int>(nanos / 3'600'000'000'000LL); }

@@ -44,7 +44,8 @@ inline std::size_t scanText(const char *p, std::size_t from, std::size_t to) {
         const __m128i ctrl = _mm_andnot_si128(_mm_cmpeq_epi8(v, tab), _mm_cmplt_epi8(v, space));
         special = _mm_or_si128(special, _mm_or_si128(ctrl, _mm_cmpeq_epi8(v, del)));
         const int mask = _mm_movemask_epi8(special);
-        if (mask != 0) return i + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(mask)));
+        if (mask != 0)
+            return i + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(mask)));
         i += 16;
     }
 #endif

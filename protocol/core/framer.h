@@ -22,11 +22,11 @@
 namespace gnss {
 
 struct FramerStats {
-    std::uint64_t bytesIn = 0;      // every byte fed
-    std::uint64_t bytesSkipped = 0; // bytes outside any emitted sentence (incl. dropped lines)
-    std::uint64_t sentences = 0;    // sentences emitted
-    std::uint64_t truncated = 0;    // sentences cut by a new '$'/'!' before their end
-    std::uint64_t tooLong = 0;      // lines dropped for exceeding kMaxLine
+    std::uint64_t bytesIn = 0;       // every byte fed
+    std::uint64_t bytesSkipped = 0;  // bytes outside any emitted sentence (incl. dropped lines)
+    std::uint64_t sentences = 0;     // sentences emitted
+    std::uint64_t truncated = 0;     // sentences cut by a new '$'/'!' before their end
+    std::uint64_t tooLong = 0;       // lines dropped for exceeding kMaxLine
     std::uint64_t binaryAborted = 0; // sentence candidates abandoned on a non-text byte
 };
 

@@ -117,18 +117,19 @@ std::string_view signalName(Constellation c, int s) {
         return s >= 0 && s < 5 ? n[s] : std::string_view{};
     }
     case Constellation::Galileo: {
-        static constexpr std::string_view n[] = {"", "E5a", "E5b", "E5a+b", "E6-A", "E6-BC", "E1-A",
-                                                 "E1-BC"};
+        static constexpr std::string_view n[] = {"",     "E5a",   "E5b",  "E5a+b",
+                                                 "E6-A", "E6-BC", "E1-A", "E1-BC"};
         return s >= 0 && s < 8 ? n[s] : std::string_view{};
     }
     case Constellation::BeiDou: {
-        static constexpr std::string_view n[] = {"",     "B1I",   "B1Q", "B1C", "B1A", "B2a", "B2b",
+        static constexpr std::string_view n[] = {"",      "B1I", "B1Q", "B1C", "B1A", "B2a", "B2b",
                                                  "B2a+b", "B3I", "B3Q", "B3A", "B2I", "B2Q"};
         return s >= 0 && s < 13 ? n[s] : std::string_view{};
     }
     case Constellation::Qzss: {
-        static constexpr std::string_view n[] = {"",      "L1 C/A", "L1C(D)", "L1C(P)", "LIS", "L2C-M",
-                                                 "L2C-L", "L5-I",   "L5-Q",   "L6D",    "L6E"};
+        static constexpr std::string_view n[] = {"",     "L1 C/A", "L1C(D)", "L1C(P)",
+                                                 "LIS",  "L2C-M",  "L2C-L",  "L5-I",
+                                                 "L5-Q", "L6D",    "L6E"};
         return s >= 0 && s < 11 ? n[s] : std::string_view{};
     }
     case Constellation::NavIC: {

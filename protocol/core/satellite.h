@@ -18,7 +18,16 @@
 
 namespace gnss {
 
-enum class Constellation : std::uint8_t { Unknown, Gps, Glonass, Galileo, BeiDou, Qzss, Sbas, NavIC };
+enum class Constellation : std::uint8_t {
+    Unknown,
+    Gps,
+    Glonass,
+    Galileo,
+    BeiDou,
+    Qzss,
+    Sbas,
+    NavIC
+};
 
 std::string_view toString(Constellation c); // "GPS", "GLONASS", ... as gnss-cli prints them
 char rinexLetter(Constellation c);          // G R E C J S I, '?' for unknown

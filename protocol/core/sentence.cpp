@@ -127,7 +127,8 @@ bool Sentence::parse(std::string_view line) {
                 mask &= mask - 1;
             }
         } else {
-            for (; mask; mask &= mask - 1) addComma(i + static_cast<std::size_t>(__builtin_ctz(mask)));
+            for (; mask; mask &= mask - 1)
+                addComma(i + static_cast<std::size_t>(__builtin_ctz(mask)));
         }
     }
     alignas(16) std::uint8_t lanes[16];

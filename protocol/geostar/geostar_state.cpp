@@ -1,7 +1,7 @@
 // GeoStar messages → the vendor-neutral receiver state: identity from RQUERY (the module named by
 // configuration register 2), the status word and registers as reports, the jamming flag.
-#include "geostar_messages.h"
 #include "geostar_state.h"
+#include "geostar_messages.h"
 #include "state/receiver_state.h"
 #include "state/report_json.h"
 
@@ -12,7 +12,8 @@ bool updateState(const Message &m, ReceiverState &st) {
         st.identity.vendor = "GeoStar";
         const auto type = r->config2.receiverType();
         st.identity.model = std::string(type.empty() ? r->receiverName : type);
-        st.identity.firmware = std::string(r->firmwareVersion.empty() ? r->firmware : r->firmwareVersion);
+        st.identity.firmware =
+                std::string(r->firmwareVersion.empty() ? r->firmware : r->firmwareVersion);
         st.reports["Status and configuration (RQUERY)"] = messageJson(m);
         st.jamming = r->status.jammingDetected;
         return true;

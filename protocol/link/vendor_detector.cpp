@@ -69,11 +69,13 @@ void VendorDetector::onEvent(const SentenceEvent &ev) {
         // The dialect's own reading of its reply (the one the views show); field names as a
         // fallback for a dialect without one.
         ReceiverState st;
-        if (probing_->updateState && probing_->updateState(*ev.message, st) && !st.identity.model.empty()) {
+        if (probing_->updateState && probing_->updateState(*ev.message, st) &&
+            !st.identity.model.empty()) {
             result_.model = QString::fromStdString(st.identity.model);
             result_.firmware = QString::fromStdString(st.identity.firmware);
             if (!st.identity.hardware.empty())
-                result_.firmware += QStringLiteral(" (%1)").arg(QString::fromStdString(st.identity.hardware));
+                result_.firmware +=
+                        QStringLiteral(" (%1)").arg(QString::fromStdString(st.identity.hardware));
         } else {
             readIdentity(result_.replyJson, result_);
         }

@@ -1,7 +1,7 @@
 // Nemerix messages → the vendor-neutral receiver state: version reports and the settings report
 // (PNMRX603) shown as status reports.
-#include "nemerix_messages.h"
 #include "nemerix_state.h"
+#include "nemerix_messages.h"
 #include "state/receiver_state.h"
 #include "state/report_json.h"
 
@@ -14,8 +14,8 @@ bool updateState(const Message &m, ReceiverState &st) {
         // The spec gives no layout: a first field that names the module ("VT002") is the model,
         // the rest is the firmware; otherwise all of it is the firmware.
         std::size_t first = 0;
-        if (v.count >= 2 && !v.fieldsText[0].empty() && v.fieldsText[0].find(' ') == std::string_view::npos &&
-            v.fieldsText[0].size() <= 12) {
+        if (v.count >= 2 && !v.fieldsText[0].empty() &&
+            v.fieldsText[0].find(' ') == std::string_view::npos && v.fieldsText[0].size() <= 12) {
             st.identity.model = std::string(v.fieldsText[0]);
             first = 1;
         } else if (st.identity.model.empty()) {

@@ -15,6 +15,8 @@ bool decodeHdt(const Sentence &s, DecodeContext &ctx) {
     return finishDecode(r, ctx, m);
 }
 
-void Hdt::writeJson(JsonWriter &w) const { w.beginObject().field("heading", heading).endObject(); }
+void Hdt::writeJson(JsonWriter &w) const {
+    w.beginObject().field("heading", heading).endObject();
+}
 
 } // namespace gnss::nmea

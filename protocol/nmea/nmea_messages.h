@@ -70,7 +70,7 @@ struct Gsa : Message {
     std::size_t idCount = 0;
     std::array<SatelliteRef, kMaxIds> satellites{}; // ids mapped to constellation + PRN
     std::optional<double> pdop, hdop, vdop;
-    std::optional<int> systemId; // 4.10+
+    std::optional<int> systemId;                   // 4.10+
     Constellation system = Constellation::Unknown; // from the system id or the talker
     void writeJson(JsonWriter &w) const override;
 };
@@ -88,7 +88,7 @@ struct Gsv : Message {
     static constexpr std::size_t kMaxSatellites = 16;
     Gsv() : Message(kType) {}
     std::optional<int> total, index, inView;
-    std::optional<int> signalId; // 4.10+
+    std::optional<int> signalId;                   // 4.10+
     Constellation system = Constellation::Unknown; // from the talker (Unknown for GN)
     std::array<GsvSatellite, kMaxSatellites> satellites{};
     std::size_t satelliteCount = 0;

@@ -22,6 +22,8 @@ constexpr SentenceRule kStandardRules[] = {
 };
 } // namespace
 
-std::span<const SentenceRule> standardSentenceRules() { return kStandardRules; }
+std::span<const SentenceRule> standardSentenceRules() {
+    return kStandardRules;
+}
 
 } // namespace gnss

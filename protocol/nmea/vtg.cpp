@@ -19,9 +19,12 @@ bool decodeVtg(const Sentence &s, DecodeContext &ctx) {
             const std::size_t n = r.count();
             for (std::size_t i = 1; i < n; ++i) {
                 const auto u = r.text(i);
-                if (u == "T") m.cogTrue = r.real(i - 1, "course true");
-                else if (u == "M") m.cogMagnetic = r.real(i - 1, "course magnetic");
-                else if (u == "N") m.sogKnots = r.real(i - 1, "speed knots");
+                if (u == "T")
+                    m.cogTrue = r.real(i - 1, "course true");
+                else if (u == "M")
+                    m.cogMagnetic = r.real(i - 1, "course magnetic");
+                else if (u == "N")
+                    m.sogKnots = r.real(i - 1, "speed knots");
                 else if (u == "K") {
                     m.sogKmh = r.real(i - 1, "speed km/h");
                     m.mode = r.letter(i + 1, "mode");

@@ -1,7 +1,7 @@
 // NVS messages → the vendor-neutral receiver state (RTK status, RTA heading, IMU attitude, time
 // marks, identity, self-test), so the views never see a PNVG sentence.
-#include "nvs_messages.h"
 #include "nvs_state.h"
+#include "nvs_messages.h"
 #include "state/receiver_state.h"
 #include "state/report_json.h"
 
@@ -21,8 +21,8 @@ void copyBaseline(const Baseline &b, BaselineState &out) {
 // PNVGTME, PNVGTMU and PNVGTMC describe one event: merge them by counter (TMC has none and
 // joins the latest event).
 TimeMarkEvent &timeMark(ReceiverState &st, std::optional<std::int64_t> counter) {
-    if (!st.timeMarks.empty() && (!counter || !st.timeMarks.back().counter ||
-                                  *st.timeMarks.back().counter == *counter)) {
+    if (!st.timeMarks.empty() &&
+        (!counter || !st.timeMarks.back().counter || *st.timeMarks.back().counter == *counter)) {
         TimeMarkEvent &last = st.timeMarks.back();
         if (!last.counter) last.counter = counter;
         return last;

@@ -1,7 +1,7 @@
 #pragma once
 // NmeaReceiver: a plain NMEA-0183 4.11 receiver (GPS, GLONASS, Galileo, BeiDou, SBAS) with the
-// usual default output (GGA, GSA, RMC, VTG, ZDA at 1 Hz and GSV every 2 s, 9600 baud) that answers standard
-// queries ($--GPQ,GGA) with the sentence asked for.
+// usual default output (GGA, GSA, RMC, VTG, ZDA at 1 Hz and GSV every 2 s, 9600 baud) that answers
+// standard queries ($--GPQ,GGA) with the sentence asked for.
 #include "receiver.h"
 #include "standard_output.h"
 

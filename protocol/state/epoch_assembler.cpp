@@ -29,7 +29,8 @@ int standardModeRank(char c) {
 int EpochAssembler::modeRank(char c) const {
     const int r = standardModeRank(c);
     // A vendor letter that means a fix ranks with autonomous ('A').
-    if (r == 0 && dialect_ && dialect_->modeIndicator && dialect_->modeIndicator(c) != FixType::None)
+    if (r == 0 && dialect_ && dialect_->modeIndicator &&
+        dialect_->modeIndicator(c) != FixType::None)
         return standardModeRank('A');
     return r;
 }
@@ -126,7 +127,9 @@ void EpochAssembler::closeEpoch(Callback onEpoch) {
     gnsMode_.clear();
 }
 
-void EpochAssembler::flush(Callback onEpoch) { closeEpoch(onEpoch); }
+void EpochAssembler::flush(Callback onEpoch) {
+    closeEpoch(onEpoch);
+}
 
 EpochAssembler::GsvGroup &EpochAssembler::group(std::uint32_t key) {
     for (auto &g : groups_)
@@ -203,10 +206,11 @@ void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) 
         if (a->vdop) lastVdop_ = a->vdop;
     } else if (const auto *g = message_cast<Gsv>(m)) {
         const auto t = s.talker();
-        const std::uint32_t key = (static_cast<std::uint32_t>(static_cast<unsigned char>(t[0])) << 24) |
-                                  (static_cast<std::uint32_t>(static_cast<unsigned char>(t.size() > 1 ? t[1] : 0))
-                                   << 16) |
-                                  static_cast<std::uint32_t>(g->signalId.value_or(0) & 0xFFFF);
+        const std::uint32_t key =
+                (static_cast<std::uint32_t>(static_cast<unsigned char>(t[0])) << 24) |
+                (static_cast<std::uint32_t>(static_cast<unsigned char>(t.size() > 1 ? t[1] : 0))
+                 << 16) |
+                static_cast<std::uint32_t>(g->signalId.value_or(0) & 0xFFFF);
         GsvGroup &grp = group(key);
         const int total = g->total.value_or(1);
         const int index = g->index.value_or(1);

@@ -55,14 +55,16 @@ private:
         if (s.prn >= 0 && s.prn < 256) used_.set(static_cast<std::size_t>(s.system) * 256 + s.prn);
     }
     bool isUsed(SatelliteRef s) const {
-        return s.prn >= 0 && s.prn < 256 && used_.test(static_cast<std::size_t>(s.system) * 256 + s.prn);
+        return s.prn >= 0 && s.prn < 256 &&
+               used_.test(static_cast<std::size_t>(s.system) * 256 + s.prn);
     }
 
     std::vector<GsvGroup> groups_; // a handful (one per talker and signal): linear search wins
-    std::bitset<8 * 256> used_;    // used in fix, from this epoch's GSA (or the last), by system/PRN
+    std::bitset<8 * 256> used_; // used in fix, from this epoch's GSA (or the last), by system/PRN
     int usedCount_ = 0;
     bool usedThisEpoch_ = false;
-    std::optional<double> lastPdop_, lastHdop_, lastVdop_; // from the latest GSA (kept when GSA is slower)
+    std::optional<double> lastPdop_, lastHdop_,
+            lastVdop_; // from the latest GSA (kept when GSA is slower)
     std::optional<Date> lastDate_;
     std::optional<int> ggaQuality_, gsaFix_;
     std::optional<char> rmcMode_, rmcStatus_;

@@ -41,7 +41,8 @@ SegmentRun runSegment(std::string_view seg, const DialectRegistry &registry,
     dec.feed(seg, [&](const SentenceEvent &ev) {
         if (dec.dialect() != seen) {
             if (r.detectLineStart == kNoDetection)
-                r.detectLineStart = static_cast<std::size_t>(ev.sentence.line().data() - seg.data());
+                r.detectLineStart =
+                        static_cast<std::size_t>(ev.sentence.line().data() - seg.data());
             seen = dec.dialect();
         }
         if (ev.message) {
@@ -89,7 +90,8 @@ void addFramerStats(FramerStats &into, const FramerStats &f) {
 }
 
 bool sameCounts(const SegmentRun &a, const SegmentRun &b) {
-    if (a.epochs != b.epochs || a.hasFirst != b.hasFirst || a.addresses.size() != b.addresses.size())
+    if (a.epochs != b.epochs || a.hasFirst != b.hasFirst ||
+        a.addresses.size() != b.addresses.size())
         return false;
     if (a.firstEpochTime.has_value() != b.firstEpochTime.has_value() ||
         (a.firstEpochTime && !(*a.firstEpochTime == *b.firstEpochTime)))
@@ -122,9 +124,11 @@ std::vector<std::string_view> cut(std::string_view log, unsigned pieces) {
 } // namespace
 
 LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
-                      const DecoderOptions &options, unsigned threads, std::size_t minSegmentBytes) {
+                      const DecoderOptions &options, unsigned threads,
+                      std::size_t minSegmentBytes) {
     if (threads == 0) threads = 1;
-    const std::size_t bySize = std::max<std::size_t>(1, log.size() / std::max<std::size_t>(1, minSegmentBytes));
+    const std::size_t bySize =
+            std::max<std::size_t>(1, log.size() / std::max<std::size_t>(1, minSegmentBytes));
     const unsigned pieces = static_cast<unsigned>(std::min<std::size_t>(threads, bySize));
     const std::vector<std::string_view> segs = cut(log, pieces);
 
@@ -132,7 +136,8 @@ LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
     {
         std::vector<std::thread> workers;
         for (std::size_t k = 1; k < segs.size(); ++k)
-            workers.emplace_back([&, k] { runs[k] = runSegment(segs[k], registry, options, nullptr); });
+            workers.emplace_back(
+                    [&, k] { runs[k] = runSegment(segs[k], registry, options, nullptr); });
         runs[0] = runSegment(segs[0], registry, options, nullptr);
         for (auto &w : workers) w.join();
     }
@@ -159,14 +164,16 @@ LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
                 const std::string_view prefix = segs[k].substr(0, r.detectLineStart);
                 const SegmentRun asRun = runSegment(prefix, registry, options, nullptr);
                 const SegmentRun asMeant = runSegment(prefix, registry, options, inForce);
-                if (!sameCounts(asRun, asMeant)) r = runSegment(segs[k], registry, options, inForce);
+                if (!sameCounts(asRun, asMeant))
+                    r = runSegment(segs[k], registry, options, inForce);
             }
         }
         addFramerStats(result.framer, r.framer);
         addAddressStats(result.addresses, r.addresses, +1);
         result.epochs += r.epochs;
         // The epoch in progress at the cut was counted by both sides.
-        if (haveLast && r.hasFirst && lastTime && r.firstEpochTime && *lastTime == *r.firstEpochTime)
+        if (haveLast && r.hasFirst && lastTime && r.firstEpochTime &&
+            *lastTime == *r.firstEpochTime)
             --result.epochs;
         if (r.hasFirst) {
             lastTime = r.lastEpochTime;

@@ -22,20 +22,20 @@ struct BaselineState {
 };
 
 struct RtkState {
-    bool seen = false;            // the receiver reports RTK information at all
-    std::optional<char> mode;     // R fixed, F float, A autonomous, D differential, ...
+    bool seen = false;        // the receiver reports RTK information at all
+    std::optional<char> mode; // R fixed, F float, A autonomous, D differential, ...
     std::optional<std::int64_t> rtcmTotal, rtcmErrors, rtcmOk;
-    std::optional<double> baseDistance;     // metres
-    std::optional<double> correctionAge;    // seconds
+    std::optional<double> baseDistance;  // metres
+    std::optional<double> correctionAge; // seconds
     std::optional<int> baseStationId;
-    BaselineState baseToRover;              // base-to-rover vector
-    BaselineState antennas;                 // dual-antenna baseline (heading)
-    std::optional<double> heading;          // degrees true
-    std::optional<double> sdLat, sdLon, sdHeight;       // metres
+    BaselineState baseToRover;                            // base-to-rover vector
+    BaselineState antennas;                               // dual-antenna baseline (heading)
+    std::optional<double> heading;                        // degrees true
+    std::optional<double> sdLat, sdLon, sdHeight;         // metres
     std::optional<double> sdVelNorth, sdVelEast, sdVelUp; // m/s
     std::optional<double> sdHeading;                      // degrees
     std::optional<double> gdop, pdop, hdop, vdop, tdop, ndop, edop;
-    std::optional<double> velNorth, velEast, velUp;       // m/s
+    std::optional<double> velNorth, velEast, velUp; // m/s
 };
 
 struct AttitudeState {
@@ -47,7 +47,7 @@ struct AttitudeState {
 
 struct TimeMarkEvent {
     std::optional<std::int64_t> counter;
-    std::optional<double> towSeconds;  // GPS time of week
+    std::optional<double> towSeconds; // GPS time of week
     std::optional<TimeOfDay> utc;
     std::optional<double> lat, lon, altMsl;
 };

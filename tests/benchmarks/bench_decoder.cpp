@@ -48,8 +48,9 @@ void BM_FullDecode(benchmark::State &state) {
     state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
     state.counters["sentences/s"] =
             benchmark::Counter(static_cast<double>(sentences), benchmark::Counter::kIsRate);
-    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                                                benchmark::Counter::kIsRate);
+    state.counters["MB/s"] =
+            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                               benchmark::Counter::kIsRate);
     state.counters["log_MB"] = static_cast<double>(log.size()) / 1e6;
 }
 BENCHMARK(BM_FullDecode)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
@@ -68,8 +69,9 @@ void BM_FullDecodeAllCores(benchmark::State &state) {
     state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
     state.counters["sentences/s"] =
             benchmark::Counter(static_cast<double>(sentences), benchmark::Counter::kIsRate);
-    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                                                benchmark::Counter::kIsRate);
+    state.counters["MB/s"] =
+            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                               benchmark::Counter::kIsRate);
     state.counters["threads"] = threads;
 }
 BENCHMARK(BM_FullDecodeAllCores)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
@@ -90,8 +92,9 @@ void BM_FrameAndParse(benchmark::State &state) {
     }
     benchmark::DoNotOptimize(fields);
     state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
-    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                                                benchmark::Counter::kIsRate);
+    state.counters["MB/s"] =
+            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                               benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_FrameAndParse)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 
@@ -107,8 +110,9 @@ void BM_DecodeWithoutEpochs(benchmark::State &state) {
     }
     benchmark::DoNotOptimize(decoded);
     state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
-    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                                                benchmark::Counter::kIsRate);
+    state.counters["MB/s"] =
+            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                               benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_DecodeWithoutEpochs)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 
@@ -120,7 +124,8 @@ void BM_ChecksumOnly(benchmark::State &state) {
         auto onLine = [&](std::string_view line) {
             ++sentences;
             const auto star = line.rfind('*');
-            if (star != std::string_view::npos && gnss::nmeaChecksum(line.substr(1, star - 1)) != 0) ++ok;
+            if (star != std::string_view::npos && gnss::nmeaChecksum(line.substr(1, star - 1)) != 0)
+                ++ok;
         };
         for (std::size_t pos = 0; pos < log.size(); pos += kChunk)
             framer.feed(std::string_view(log).substr(pos, kChunk), onLine);
@@ -129,8 +134,9 @@ void BM_ChecksumOnly(benchmark::State &state) {
     state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
     state.counters["sentences/s"] =
             benchmark::Counter(static_cast<double>(sentences), benchmark::Counter::kIsRate);
-    state.counters["MB/s"] = benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                                                benchmark::Counter::kIsRate);
+    state.counters["MB/s"] =
+            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
+                               benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ChecksumOnly)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 

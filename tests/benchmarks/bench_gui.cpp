@@ -22,17 +22,22 @@ struct Sys {
     const char *talker;
     int systemId, count, firstId, signalId;
 };
-constexpr Sys kSystems[] = {{"GP", 1, 16, 1, 1}, {"GL", 2, 14, 65, 1}, {"GA", 3, 14, 1, 7}, {"GB", 4, 16, 1, 1}};
+constexpr Sys kSystems[] = {
+        {"GP", 1, 16, 1, 1}, {"GL", 2, 14, 65, 1}, {"GA", 3, 14, 1, 7}, {"GB", 4, 16, 1, 1}};
 
 // One 20 Hz epoch (60 satellites): RMC, GGA, GSA per system, GSV per system.
 QByteArray epochBytes(int n) {
     QByteArray out;
     char b[200];
     const double s = n * 0.05;
-    auto add = [&](const std::string &body) { out += QByteArray::fromStdString(gnss::buildSentence(body)) + "\r\n"; };
-    std::snprintf(b, sizeof b, "GNRMC,1200%05.2f,A,5550.6129,N,03732.2527,E,0.01,0.0,230394,,,R,V", s);
+    auto add = [&](const std::string &body) {
+        out += QByteArray::fromStdString(gnss::buildSentence(body)) + "\r\n";
+    };
+    std::snprintf(b, sizeof b, "GNRMC,1200%05.2f,A,5550.6129,N,03732.2527,E,0.01,0.0,230394,,,R,V",
+                  s);
     add(b);
-    std::snprintf(b, sizeof b, "GNGGA,1200%05.2f,5550.6129,N,03732.2527,E,4,40,0.5,180.0,M,14.4,M,1.0,0031", s);
+    std::snprintf(b, sizeof b,
+                  "GNGGA,1200%05.2f,5550.6129,N,03732.2527,E,4,40,0.5,180.0,M,14.4,M,1.0,0031", s);
     add(b);
     for (const Sys &sys : kSystems) {
         std::string gsa = "GNGSA,A,3";
@@ -43,8 +48,8 @@ QByteArray epochBytes(int n) {
             std::snprintf(b, sizeof b, "%sGSV,%d,%d,%02d", sys.talker, parts, p + 1, sys.count);
             std::string gsv = b;
             for (int k = p * 4; k < std::min(sys.count, p * 4 + 4); ++k) {
-                std::snprintf(b, sizeof b, ",%02d,%02d,%03d,%02d", sys.firstId + k, 5 + (k * 11) % 85, (k * 37 + n) % 360,
-                              30 + k % 20);
+                std::snprintf(b, sizeof b, ",%02d,%02d,%03d,%02d", sys.firstId + k,
+                              5 + (k * 11) % 85, (k * 37 + n) % 360, 30 + k % 20);
                 gsv += b;
             }
             add(gsv + "," + std::to_string(sys.signalId));
@@ -94,8 +99,12 @@ template <class View> void paintBench(benchmark::State &st) {
         benchmark::DoNotOptimize(img.bits());
     }
 }
-void BM_PaintSkyPlot(benchmark::State &st) { paintBench<gnss::ui::SkyPlotView>(st); }
-void BM_PaintSignalLevels(benchmark::State &st) { paintBench<gnss::ui::SignalLevelsView>(st); }
+void BM_PaintSkyPlot(benchmark::State &st) {
+    paintBench<gnss::ui::SkyPlotView>(st);
+}
+void BM_PaintSignalLevels(benchmark::State &st) {
+    paintBench<gnss::ui::SignalLevelsView>(st);
+}
 BENCHMARK(BM_PaintSkyPlot)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaintSignalLevels)->Unit(benchmark::kMicrosecond);
 
@@ -114,7 +123,8 @@ public:
     void Finalize() override {
         ConsoleReporter::Finalize();
         const double perSecondUs = epochUs_ * 20 + (skyUs_ + barsUs_) * 10;
-        std::printf("\nGUI thread at 20 Hz, 60 satellites: epoch into models %.0f us x 20/s + sky %.0f us and "
+        std::printf("\nGUI thread at 20 Hz, 60 satellites: epoch into models %.0f us x 20/s + sky "
+                    "%.0f us and "
                     "signals %.0f us x 10 repaints/s = %.1f%% of one core\n",
                     epochUs_, skyUs_, barsUs_, perSecondUs / 1e4);
     }
@@ -126,7 +136,8 @@ private:
 } // namespace
 
 int main(int argc, char **argv) {
-    qputenv("QT_QPA_PLATFORM", qgetenv("QT_QPA_PLATFORM").isEmpty() ? "offscreen" : qgetenv("QT_QPA_PLATFORM"));
+    qputenv("QT_QPA_PLATFORM",
+            qgetenv("QT_QPA_PLATFORM").isEmpty() ? "offscreen" : qgetenv("QT_QPA_PLATFORM"));
     QApplication app(argc, argv);
     benchmark::Initialize(&argc, argv);
     BudgetReporter reporter;

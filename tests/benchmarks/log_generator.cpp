@@ -16,7 +16,8 @@ struct Sys {
     int signalId;
 };
 
-constexpr Sys kSystems[] = {{"GP", 1, 12, 1, 1}, {"GL", 2, 8, 65, 1}, {"GA", 3, 8, 1, 7}, {"GB", 4, 10, 1, 1}};
+constexpr Sys kSystems[] = {
+        {"GP", 1, 12, 1, 1}, {"GL", 2, 8, 65, 1}, {"GA", 3, 8, 1, 7}, {"GB", 4, 10, 1, 1}};
 
 void add(std::string &out, const char *body) {
     out += buildSentence(body);
@@ -34,10 +35,12 @@ void generateLog(std::string &out, std::size_t bytes) {
         const double s = static_cast<double>(tenths % 600) / 10.0;
         const double lat = 4807.0380 + 0.0001 * std::sin(epoch * 0.01);
         const double lon = 1131.0000 + 0.0001 * std::cos(epoch * 0.01);
-        std::snprintf(b, sizeof b, "GNRMC,%02d%02d%04.1f0,A,%.6f,N,%011.6f,E,0.012,087.3,230394,,,R,V", h, m, s,
+        std::snprintf(b, sizeof b,
+                      "GNRMC,%02d%02d%04.1f0,A,%.6f,N,%011.6f,E,0.012,087.3,230394,,,R,V", h, m, s,
                       lat, lon);
         add(out, b);
-        std::snprintf(b, sizeof b, "GNGGA,%02d%02d%04.1f0,%.6f,N,%011.6f,E,4,28,0.6,545.421,M,46.912,M,1.0,0031",
+        std::snprintf(b, sizeof b,
+                      "GNGGA,%02d%02d%04.1f0,%.6f,N,%011.6f,E,4,28,0.6,545.421,M,46.912,M,1.0,0031",
                       h, m, s, lat, lon);
         add(out, b);
         for (const Sys &sys : kSystems) {
@@ -63,7 +66,8 @@ void generateLog(std::string &out, std::size_t bytes) {
                 for (int k = p * 4; k < std::min(sys.count, p * 4 + 4); ++k) {
                     const int el = 5 + (k * 7 + static_cast<int>(epoch / 600)) % 85;
                     const int az = (k * 37 + static_cast<int>(epoch / 100)) % 360;
-                    std::snprintf(b, sizeof b, ",%02d,%02d,%03d,%02d", sys.firstId + k, el, az, 30 + el / 5);
+                    std::snprintf(b, sizeof b, ",%02d,%02d,%03d,%02d", sys.firstId + k, el, az,
+                                  30 + el / 5);
                     gsv += b;
                 }
                 std::snprintf(b, sizeof b, ",%d", sys.signalId);
@@ -74,7 +78,8 @@ void generateLog(std::string &out, std::size_t bytes) {
         add(out, "GNVTG,087.3,T,,M,0.012,N,0.022,K,R");
         std::snprintf(b, sizeof b, "GNZDA,%02d%02d%04.1f0,23,03,1994,00,00", h, m, s);
         add(out, b);
-        std::snprintf(b, sizeof b, "GNGST,%02d%02d%04.1f0,0.006,0.023,0.020,273.6,0.023,0.020,0.031", h, m, s);
+        std::snprintf(b, sizeof b,
+                      "GNGST,%02d%02d%04.1f0,0.006,0.023,0.020,273.6,0.023,0.020,0.031", h, m, s);
         add(out, b);
         ++epoch;
     }

@@ -80,8 +80,7 @@ private slots:
 
     void vendorDetectionNamesEachDialect_data() {
         QTest::addColumn<QString>("dialect");
-        for (const char *d : {"nvs", "geostar", "nemerix", "nmea"})
-            QTest::newRow(d) << d;
+        for (const char *d : {"nvs", "geostar", "nemerix", "nmea"}) QTest::newRow(d) << d;
     }
     void vendorDetectionNamesEachDialect() {
         QFETCH(QString, dialect);

@@ -1,8 +1,8 @@
 // Every NVS example of examples.tsv decodes, under the nvs dialect, to the values the spec
 // prints; the pre-1.5 forms of PNVGBLS and PNVGIMU (no time tag) decode too.
+#include "core/sentence_builder.h"
 #include "decode_helper.h"
 #include "examples_table.h"
-#include "core/sentence_builder.h"
 #include "nvs/nvs_dialect.h"
 
 #include <QJsonArray>
@@ -266,10 +266,9 @@ void TstNvsExamples::randomFieldsNeverCrashAnyDecoder() {
 
 QTEST_APPLESS_MAIN(TstNvsExamples)
 #include "tst_nvs_examples.moc"
-    void emptyStationListAnswersShowWithACountOfZero() {
-        const auto d = gnss::test::decodeOne(QString::fromStdString(gnss::buildSentence("PNVGIDL,0")));
-        QVERIFY2(d.ok, qPrintable(d.error));
-        QCOMPARE(d.data["count"].toInt(), 0);
-        QVERIFY(d.data["station_id"].isNull());
-    }
-
+void emptyStationListAnswersShowWithACountOfZero() {
+    const auto d = gnss::test::decodeOne(QString::fromStdString(gnss::buildSentence("PNVGIDL,0")));
+    QVERIFY2(d.ok, qPrintable(d.error));
+    QCOMPARE(d.data["count"].toInt(), 0);
+    QVERIFY(d.data["station_id"].isNull());
+}

@@ -5,7 +5,9 @@
 
 namespace gnss::test {
 
-std::string sharedDir() { return GNSS_SHARED_DIR; }
+std::string sharedDir() {
+    return GNSS_SHARED_DIR;
+}
 
 std::vector<SpecExample> loadSpecExamples() {
     std::vector<SpecExample> out;

@@ -10,7 +10,9 @@ constexpr int kMaxRaw = 64 * 1024;
 
 ConsoleModel::ConsoleModel(QObject *parent) : QAbstractListModel(parent) {}
 
-int ConsoleModel::rowCount(const QModelIndex &p) const { return p.isValid() ? 0 : int(lines_.size()); }
+int ConsoleModel::rowCount(const QModelIndex &p) const {
+    return p.isValid() ? 0 : int(lines_.size());
+}
 
 QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
     if (!index.isValid() || index.row() >= int(lines_.size())) return {};
@@ -18,7 +20,8 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
     switch (role) {
     case Qt::DisplayRole: {
         const QString time = QDateTime::fromMSecsSinceEpoch(l.ms, Qt::UTC).toString("hh:mm:ss.zzz");
-        return time + (l.sent ? QStringLiteral("  ▶ ") : QStringLiteral("    ")) + QString::fromLatin1(l.text);
+        return time + (l.sent ? QStringLiteral("  ▶ ") : QStringLiteral("    ")) +
+               QString::fromLatin1(l.text);
     }
     case Qt::ToolTipRole: return l.error.isEmpty() ? QVariant() : QVariant(l.error);
     case Qt::ForegroundRole:
@@ -38,7 +41,8 @@ void ConsoleModel::flush() {
     if (pending_.empty()) return;
     if (paused_) {
         // Paused: keep only what fits, so resuming shows the latest lines.
-        if (pending_.size() > size_t(kMaxLines)) pending_.erase(pending_.begin(), pending_.end() - kMaxLines);
+        if (pending_.size() > size_t(kMaxLines))
+            pending_.erase(pending_.begin(), pending_.end() - kMaxLines);
         return;
     }
     const int overflow = int(lines_.size() + pending_.size()) - kMaxLines;
@@ -49,7 +53,8 @@ void ConsoleModel::flush() {
             lines_.erase(lines_.begin(), lines_.begin() + drop);
             endRemoveRows();
         }
-        if (pending_.size() > size_t(kMaxLines)) pending_.erase(pending_.begin(), pending_.end() - kMaxLines);
+        if (pending_.size() > size_t(kMaxLines))
+            pending_.erase(pending_.begin(), pending_.end() - kMaxLines);
     }
     beginInsertRows({}, int(lines_.size()), int(lines_.size() + pending_.size()) - 1);
     for (auto &l : pending_) lines_.push_back(std::move(l));

@@ -10,12 +10,12 @@
 namespace gnss::ui {
 
 struct ConsoleLine {
-    qint64 ms = 0;        // host time
-    QByteArray text;      // the sentence, without line ending
-    QByteArray address;   // for filtering
-    bool sent = false;    // a command we sent
+    qint64 ms = 0;      // host time
+    QByteArray text;    // the sentence, without line ending
+    QByteArray address; // for filtering
+    bool sent = false;  // a command we sent
     bool checksumBad = false;
-    QString error;        // why it was not decoded (empty when it was)
+    QString error; // why it was not decoded (empty when it was)
 };
 
 class ConsoleModel : public QAbstractListModel {

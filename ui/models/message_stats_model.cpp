@@ -10,8 +10,12 @@ constexpr qint64 kRateWindowMs = 5000;
 
 MessageStatsModel::MessageStatsModel(QObject *parent) : QAbstractTableModel(parent) {}
 
-int MessageStatsModel::rowCount(const QModelIndex &p) const { return p.isValid() ? 0 : int(rows_.size()); }
-int MessageStatsModel::columnCount(const QModelIndex &p) const { return p.isValid() ? 0 : ColumnCount; }
+int MessageStatsModel::rowCount(const QModelIndex &p) const {
+    return p.isValid() ? 0 : int(rows_.size());
+}
+int MessageStatsModel::columnCount(const QModelIndex &p) const {
+    return p.isValid() ? 0 : ColumnCount;
+}
 
 QVariant MessageStatsModel::data(const QModelIndex &index, int role) const {
     if (!index.isValid() || index.row() >= int(rows_.size())) return {};
@@ -37,7 +41,8 @@ QVariant MessageStatsModel::data(const QModelIndex &index, int role) const {
     case Count: return QString::number(r.count);
     case Rate: return QString::number(r.rateHz, 'f', r.rateHz < 10 ? 2 : 1);
     case LastSeen:
-        return r.lastSeenMs ? QDateTime::fromMSecsSinceEpoch(r.lastSeenMs, Qt::UTC).toString("hh:mm:ss.zzz")
+        return r.lastSeenMs ? QDateTime::fromMSecsSinceEpoch(r.lastSeenMs, Qt::UTC)
+                                      .toString("hh:mm:ss.zzz")
                             : QStringLiteral("—");
     case ChecksumErrors: return QString::number(r.checksumErrors);
     case DecodeErrors: return QString::number(r.decodeErrors);
@@ -82,7 +87,8 @@ void MessageStatsModel::refresh(const std::vector<AddressStats> &stats, qint64 n
         const auto &[t0, c0] = r.history.front();
         r.rateHz = nowMs > t0 ? double(r.count - c0) * 1000.0 / double(nowMs - t0) : 0.0;
     }
-    if (!rows_.empty()) emit dataChanged(index(0, 0), index(int(rows_.size()) - 1, ColumnCount - 1));
+    if (!rows_.empty())
+        emit dataChanged(index(0, 0), index(int(rows_.size()) - 1, ColumnCount - 1));
 }
 
 void MessageStatsModel::clear() {

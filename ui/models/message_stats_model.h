@@ -11,7 +11,16 @@ namespace gnss::ui {
 class MessageStatsModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Address, Count, Rate, LastSeen, ChecksumErrors, DecodeErrors, Unknown, ColumnCount };
+    enum Column {
+        Address,
+        Count,
+        Rate,
+        LastSeen,
+        ChecksumErrors,
+        DecodeErrors,
+        Unknown,
+        ColumnCount
+    };
 
     explicit MessageStatsModel(QObject *parent = nullptr);
 

@@ -39,7 +39,9 @@ void ReceiverSession::noteBytes(const QByteArray &bytes) {
     if (models_.console) models_.console->appendRaw(bytes);
 }
 
-void ReceiverSession::consume(const SentenceEvent &ev, const Dialect *dialect) { onSentence(ev, dialect); }
+void ReceiverSession::consume(const SentenceEvent &ev, const Dialect *dialect) {
+    onSentence(ev, dialect);
+}
 
 void ReceiverSession::onSentence(const SentenceEvent &ev, const Dialect *dialect) {
     if (dialect != lastDialect_) {
@@ -86,7 +88,8 @@ void ReceiverSession::refresh() {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     if (models_.console) models_.console->flush();
     if (models_.messages)
-        models_.messages->refresh((counterSource_ ? counterSource_ : decoder_.get())->addressStats(), now);
+        models_.messages->refresh(
+                (counterSource_ ? counterSource_ : decoder_.get())->addressStats(), now);
     if (now - lastRateMs_ >= 1000) {
         const double dt = double(now - lastRateMs_) / 1000.0;
         counters_.bytesPerSecond = double(counters_.bytes - bytesAtLastRate_) / dt;

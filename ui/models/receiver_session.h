@@ -38,7 +38,8 @@ struct LinkCounters {
 class ReceiverSession : public QObject {
     Q_OBJECT
 public:
-    ReceiverSession(const DialectRegistry &registry, SessionModels models, QObject *parent = nullptr);
+    ReceiverSession(const DialectRegistry &registry, SessionModels models,
+                    QObject *parent = nullptr);
 
     // Starts over (new connection): decoder, state and models are reset.
     void reset(const DecoderOptions &options = {});

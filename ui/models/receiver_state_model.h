@@ -20,7 +20,8 @@ public:
     quint64 epochCount() const { return epochs_; }
 
     // Publishes a new epoch's state (copied) and emits updated().
-    void publish(const ReceiverState &s, const QDateTime &hostTime = QDateTime::currentDateTimeUtc()) {
+    void publish(const ReceiverState &s,
+                 const QDateTime &hostTime = QDateTime::currentDateTimeUtc()) {
         state_ = s;
         lastEpoch_ = hostTime;
         ++epochs_;

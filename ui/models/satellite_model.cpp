@@ -24,7 +24,8 @@ int SatelliteModel::columnCount(const QModelIndex &parent) const {
 QString SatelliteModel::label(const SatelliteRow &row) {
     QString l = QString::fromStdString(satelliteLabel(row.sat));
     const auto sig = signalName(row.sat.system, row.signalId);
-    if (!sig.empty() && row.signalId > 1) l += ' ' + QString::fromLatin1(sig.data(), int(sig.size()));
+    if (!sig.empty() && row.signalId > 1)
+        l += ' ' + QString::fromLatin1(sig.data(), int(sig.size()));
     return l;
 }
 
@@ -65,7 +66,8 @@ QVariant SatelliteModel::data(const QModelIndex &index, int role) const {
         return {};
     }
     case Qt::TextAlignmentRole:
-        return index.column() >= Elevation ? QVariant(Qt::AlignRight | Qt::AlignVCenter) : QVariant();
+        return index.column() >= Elevation ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
+                                           : QVariant();
     default: return {};
     }
 }
@@ -118,7 +120,9 @@ void SatelliteModel::update(const Epoch &epoch, qint64 nowMs) {
     // Forget satellites out of view for too long, and old track points.
     const auto before = rows_.size();
     rows_.erase(std::remove_if(rows_.begin(), rows_.end(),
-                               [&](const SatelliteRow &r) { return !r.inView && nowMs - r.lastSeenMs > keepMs_; }),
+                               [&](const SatelliteRow &r) {
+                                   return !r.inView && nowMs - r.lastSeenMs > keepMs_;
+                               }),
                 rows_.end());
     structural |= rows_.size() != before;
     for (auto it = tracks_.begin(); it != tracks_.end();) {
@@ -134,7 +138,8 @@ void SatelliteModel::update(const Epoch &epoch, qint64 nowMs) {
             return a.signalId < b.signalId;
         });
         index_.clear();
-        for (int i = 0; i < int(rows_.size()); ++i) index_.insert(key(rows_[size_t(i)].sat, rows_[size_t(i)].signalId), i);
+        for (int i = 0; i < int(rows_.size()); ++i)
+            index_.insert(key(rows_[size_t(i)].sat, rows_[size_t(i)].signalId), i);
         endResetModel();
     } else if (!rows_.empty()) {
         emit dataChanged(index(0, 0), index(int(rows_.size()) - 1, ColumnCount - 1));

@@ -116,14 +116,19 @@ void ConsoleView::setCommandNames(const QStringList &names) {
     completions_->setStringList(withDollar);
 }
 
-void ConsoleView::setHistory(const QStringList &history) { history_ = history; }
+void ConsoleView::setHistory(const QStringList &history) {
+    history_ = history;
+}
 
 void ConsoleView::setFilter(const QString &pattern) {
     if (filter_->text() != pattern) filter_->setText(pattern);
-    proxy_->setFilterRegularExpression(QRegularExpression(pattern, QRegularExpression::CaseInsensitiveOption));
+    proxy_->setFilterRegularExpression(
+            QRegularExpression(pattern, QRegularExpression::CaseInsensitiveOption));
 }
 
-int ConsoleView::visibleLines() const { return proxy_->rowCount(); }
+int ConsoleView::visibleLines() const {
+    return proxy_->rowCount();
+}
 
 bool ConsoleView::submit() {
     const QString typed = input_->text().trimmed();
@@ -150,7 +155,8 @@ bool ConsoleView::eventFilter(QObject *o, QEvent *e) {
         const int key = static_cast<QKeyEvent *>(e)->key();
         if (key == Qt::Key_Up || key == Qt::Key_Down) {
             if (historyPos_ < 0) historyPos_ = int(history_.size());
-            historyPos_ = std::clamp(historyPos_ + (key == Qt::Key_Up ? -1 : 1), 0, int(history_.size()));
+            historyPos_ =
+                    std::clamp(historyPos_ + (key == Qt::Key_Up ? -1 : 1), 0, int(history_.size()));
             input_->setText(historyPos_ < history_.size() ? history_[historyPos_] : QString());
             return true;
         }
@@ -173,7 +179,8 @@ void ConsoleView::refreshHex() {
         const QByteArray row = tail.mid(i, 16);
         out += QStringLiteral("%1  ").arg(i, 6, 16, QChar('0'));
         for (int k = 0; k < 16; ++k)
-            out += k < row.size() ? QStringLiteral("%1 ").arg(quint8(row[k]), 2, 16, QChar('0')) : QStringLiteral("   ");
+            out += k < row.size() ? QStringLiteral("%1 ").arg(quint8(row[k]), 2, 16, QChar('0'))
+                                  : QStringLiteral("   ");
         out += ' ';
         for (char ch : row) out += (ch >= 0x20 && ch < 0x7F) ? QChar(ch) : QChar('.');
         out += '\n';

@@ -28,7 +28,8 @@ FixView::FixView(ReceiverStateModel *model, QWidget *parent) : QWidget(parent), 
     format_ = new QComboBox(this);
     format_->setObjectName("coordinateFormat");
     format_->addItems({tr("Degrees"), tr("Deg min sec")});
-    connect(format_, &QComboBox::currentIndexChanged, this, [this](int i) { setDegreesMinutesSeconds(i == 1); });
+    connect(format_, &QComboBox::currentIndexChanged, this,
+            [this](int i) { setDegreesMinutesSeconds(i == 1); });
     top->addWidget(format_);
     outer->addLayout(top);
     grid_ = new QGridLayout;
@@ -85,7 +86,8 @@ void FixView::refresh() {
     if (!e.fixNote.empty()) text += QStringLiteral(" · ") + QString::fromStdString(e.fixNote);
     badge_->setText(text);
     const QColor c = style::fixTypeColor(fix);
-    badge_->setStyleSheet(QStringLiteral("QLabel { background: %1; color: white; border-radius: 6px; padding: 4px 10px; }")
+    badge_->setStyleSheet(QStringLiteral("QLabel { background: %1; color: white; border-radius: "
+                                         "6px; padding: 4px 10px; }")
                                   .arg(c.name()));
     lat_->setText(fmt::latitude(e.lat, dms_));
     lon_->setText(fmt::longitude(e.lon, dms_));
@@ -100,11 +102,15 @@ void FixView::refresh() {
                 ++inView;
             }
     }
-    sats_->setText(QStringLiteral("%1 / %2").arg(fmt::integer(e.satsUsed), any ? QString::number(inView) : fmt::dash()));
-    dops_->setText(QStringLiteral("%1 / %2 / %3").arg(fmt::number(e.pdop, 2), fmt::number(e.hdop, 2), fmt::number(e.vdop, 2)));
-    utc_->setText(e.time ? QString::fromStdString(e.date ? e.date->toString() + " " + e.time->toString(3)
-                                                         : e.time->toString(3))
-                         : fmt::dash());
+    sats_->setText(QStringLiteral("%1 / %2").arg(fmt::integer(e.satsUsed),
+                                                 any ? QString::number(inView) : fmt::dash()));
+    dops_->setText(
+            QStringLiteral("%1 / %2 / %3")
+                    .arg(fmt::number(e.pdop, 2), fmt::number(e.hdop, 2), fmt::number(e.vdop, 2)));
+    utc_->setText(
+            e.time ? QString::fromStdString(e.date ? e.date->toString() + " " + e.time->toString(3)
+                                                   : e.time->toString(3))
+                   : fmt::dash());
     if (e.sogKnots) {
         const double ms = *e.sogKnots * 1852.0 / 3600.0;
         speed_->setText(tr("%1 m/s  (%2 km/h)").arg(ms, 0, 'f', 2).arg(ms * 3.6, 0, 'f', 1));

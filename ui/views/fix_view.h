@@ -29,7 +29,8 @@ private:
     QComboBox *format_ = nullptr;
     QLabel *badge_ = nullptr;
     QGridLayout *grid_ = nullptr;
-    QLabel *lat_, *lon_, *altMsl_, *altEll_, *sats_, *dops_, *utc_, *speed_, *course_, *corrAge_, *base_;
+    QLabel *lat_, *lon_, *altMsl_, *altEll_, *sats_, *dops_, *utc_, *speed_, *course_, *corrAge_,
+            *base_;
 };
 
 } // namespace gnss::ui

@@ -16,8 +16,8 @@ namespace {
 
 // Flags whose "true" is bad news, and flags whose "false" is bad news (by name; reports are JSON).
 bool badWhenTrue(const QString &key) {
-    return key.contains("jamming") || key.contains("error") || key.contains("fail") || key.contains("short") ||
-           key.contains("overload");
+    return key.contains("jamming") || key.contains("error") || key.contains("fail") ||
+           key.contains("short") || key.contains("overload");
 }
 bool badWhenFalse(const QString &key) {
     return key.endsWith("_ok") || key.startsWith("ok") || key.contains("_ok_");
@@ -74,8 +74,10 @@ void ReceiverInfoView::addJson(QTreeWidgetItem *parent, const QString &key, cons
         item->setText(1, b ? QStringLiteral("✓") : QStringLiteral("✗"));
         const bool bad = (b && badWhenTrue(key)) || (!b && badWhenFalse(key));
         const bool good = (b && badWhenFalse(key)) || (!b && badWhenTrue(key));
-        if (bad) item->setForeground(1, QColor(0xC6, 0x28, 0x28));
-        else if (good) item->setForeground(1, QColor(0x2E, 0x7D, 0x32));
+        if (bad)
+            item->setForeground(1, QColor(0xC6, 0x28, 0x28));
+        else if (good)
+            item->setForeground(1, QColor(0x2E, 0x7D, 0x32));
         return;
     }
     if (v.isNull()) {
@@ -84,7 +86,8 @@ void ReceiverInfoView::addJson(QTreeWidgetItem *parent, const QString &key, cons
     }
     item->setText(1, v.isDouble() ? QString::number(v.toDouble(), 'g', 12) : v.toString());
     const QString s = v.toString();
-    if (s == QLatin1String("ok") || s == QLatin1String("OK")) item->setForeground(1, QColor(0x2E, 0x7D, 0x32));
+    if (s == QLatin1String("ok") || s == QLatin1String("OK"))
+        item->setForeground(1, QColor(0x2E, 0x7D, 0x32));
 }
 
 void ReceiverInfoView::refresh() {
@@ -94,18 +97,23 @@ void ReceiverInfoView::refresh() {
     if (id.model.empty() && id.vendor.empty()) {
         identity_->setText(tr("Receiver: not identified yet"));
     } else {
-        identity_->setText(tr("<b>%1 %2</b><br>Firmware: %3%4")
-                                   .arg(QString::fromStdString(id.vendor), QString::fromStdString(id.model),
-                                        id.firmware.empty() ? fmt::dash() : QString::fromStdString(id.firmware),
-                                        id.hardware.empty() ? QString()
-                                                            : tr("<br>Hardware: %1").arg(QString::fromStdString(id.hardware))));
+        identity_->setText(
+                tr("<b>%1 %2</b><br>Firmware: %3%4")
+                        .arg(QString::fromStdString(id.vendor), QString::fromStdString(id.model),
+                             id.firmware.empty() ? fmt::dash()
+                                                 : QString::fromStdString(id.firmware),
+                             id.hardware.empty()
+                                     ? QString()
+                                     : tr("<br>Hardware: %1")
+                                               .arg(QString::fromStdString(id.hardware))));
     }
     if (!st.jamming) {
         jamming_->setText(tr("Jamming: not reported"));
         jamming_->setStyleSheet({});
     } else if (*st.jamming) {
         jamming_->setText(tr("Jamming: DETECTED"));
-        jamming_->setStyleSheet(QStringLiteral("color: white; background: #c62828; padding: 2px 6px;"));
+        jamming_->setStyleSheet(
+                QStringLiteral("color: white; background: #c62828; padding: 2px 6px;"));
     } else {
         jamming_->setText(tr("Jamming: none detected"));
         jamming_->setStyleSheet(QStringLiteral("color: #2e7d32;"));

@@ -61,7 +61,8 @@ QVector<SignalLevelsView::Bar> SignalLevelsView::layoutBars() const {
         }
         const double snr = std::clamp(double(r.snr.value_or(0)), 0.0, kMaxSnr);
         const double h = area.height() * snr / kMaxSnr;
-        bars.push_back({order[i], QRectF(x + w * 0.12, area.bottom() - h, w * 0.76, h), SatelliteModel::label(r)});
+        bars.push_back({order[i], QRectF(x + w * 0.12, area.bottom() - h, w * 0.76, h),
+                        SatelliteModel::label(r)});
         x += w;
     }
     return bars;
@@ -80,8 +81,8 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
         p.setPen(QPen(pal.color(QPalette::Midlight), 1));
         p.drawLine(QPointF(area.left(), y), QPointF(area.right(), y));
         p.setPen(pal.color(QPalette::WindowText));
-        p.drawText(QRectF(0, y - fm.height() / 2, area.left() - 4, fm.height()), Qt::AlignRight | Qt::AlignVCenter,
-                   QString::number(s));
+        p.drawText(QRectF(0, y - fm.height() / 2, area.left() - 4, fm.height()),
+                   Qt::AlignRight | Qt::AlignVCenter, QString::number(s));
     }
     const auto bars = layoutBars();
     if (bars.isEmpty()) {
@@ -109,7 +110,8 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
         if (b.rect.height() > 0) p.drawRect(b.rect);
         p.setPen(pal.color(QPalette::WindowText));
         if (r.snr && b.rect.height() > sfm.height() && !vertical)
-            p.drawText(QRectF(b.rect.left() - 4, b.rect.top() - sfm.height(), b.rect.width() + 8, sfm.height()),
+            p.drawText(QRectF(b.rect.left() - 4, b.rect.top() - sfm.height(), b.rect.width() + 8,
+                              sfm.height()),
                        Qt::AlignCenter, QString::number(*r.snr));
         // Id below the bar.
         const QString id = QString::fromStdString(satelliteLabel(r.sat));
@@ -120,8 +122,9 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
             p.drawText(QPointF(0, 0), id);
             p.restore();
         } else {
-            p.drawText(QRectF(b.rect.left() - 6, area.bottom() + 2, b.rect.width() + 12, sfm.height()),
-                       Qt::AlignCenter, id);
+            p.drawText(
+                    QRectF(b.rect.left() - 6, area.bottom() + 2, b.rect.width() + 12, sfm.height()),
+                    Qt::AlignCenter, id);
         }
     }
     // Signal names under each group.
@@ -129,7 +132,8 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
     int start = 0;
     for (int i = 1; i <= bars.size(); ++i) {
         const auto &first = rows[size_t(bars[start].row)];
-        const bool end = i == bars.size() || rows[size_t(bars[i].row)].sat.system != first.sat.system ||
+        const bool end = i == bars.size() ||
+                         rows[size_t(bars[i].row)].sat.system != first.sat.system ||
                          rows[size_t(bars[i].row)].signalId != first.signalId;
         if (!end) continue;
         const auto sig = signalName(first.sat.system, first.signalId);
@@ -138,7 +142,8 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
         const QRectF span(bars[start].rect.left(), height() - fm.height() * 1.2,
                           bars[i - 1].rect.right() - bars[start].rect.left(), fm.height());
         p.setPen(style::constellationColor(first.sat.system));
-        p.drawText(span.adjusted(-20, 0, 20, 0), Qt::AlignCenter, fm.elidedText(name, Qt::ElideRight, span.width() + 40));
+        p.drawText(span.adjusted(-20, 0, 20, 0), Qt::AlignCenter,
+                   fm.elidedText(name, Qt::ElideRight, span.width() + 40));
         start = i;
     }
 }

@@ -14,9 +14,9 @@ public:
     explicit SignalLevelsView(SatelliteModel *model, QWidget *parent = nullptr);
 
     struct Bar {
-        int row;        // model row
-        QRectF rect;    // the bar at its full SNR height
-        QString label;  // "G05", "G05 L5"
+        int row;       // model row
+        QRectF rect;   // the bar at its full SNR height
+        QString label; // "G05", "G05 L5"
     };
     // The bars the next paint draws, in order (for tests).
     QVector<Bar> layoutBars() const;

@@ -26,7 +26,9 @@ void drawConstellationMarker(QPainter &p, Constellation c, QPointF o, double s) 
     };
     switch (style::constellationMarker(c)) {
     case style::Marker::Circle: path.addEllipse(o, h, h); break;
-    case style::Marker::Square: path.addRect(QRectF(o.x() - h * 0.9, o.y() - h * 0.9, s * 0.9, s * 0.9)); break;
+    case style::Marker::Square:
+        path.addRect(QRectF(o.x() - h * 0.9, o.y() - h * 0.9, s * 0.9, s * 0.9));
+        break;
     case style::Marker::Diamond: polygon(4, 0, h * 1.2); break;
     case style::Marker::TriangleUp: polygon(3, 0, h * 1.2); break;
     case style::Marker::TriangleDown: polygon(3, M_PI, h * 1.2); break;
@@ -58,12 +60,23 @@ SkyPlotView::SkyPlotView(SatelliteModel *model, QWidget *parent) : QWidget(paren
     repaintTimer_.start();
 }
 
-void SkyPlotView::setShowTracks(bool on) { showTracks_ = on; dirty_ = true; }
-void SkyPlotView::setShowLabels(bool on) { showLabels_ = on; dirty_ = true; }
-void SkyPlotView::setElevationMask(double d) { mask_ = d; dirty_ = true; }
+void SkyPlotView::setShowTracks(bool on) {
+    showTracks_ = on;
+    dirty_ = true;
+}
+void SkyPlotView::setShowLabels(bool on) {
+    showLabels_ = on;
+    dirty_ = true;
+}
+void SkyPlotView::setElevationMask(double d) {
+    mask_ = d;
+    dirty_ = true;
+}
 void SkyPlotView::setConstellationVisible(Constellation c, bool visible) {
-    if (visible) hidden_.remove(int(c));
-    else hidden_.insert(int(c));
+    if (visible)
+        hidden_.remove(int(c));
+    else
+        hidden_.insert(int(c));
     dirty_ = true;
 }
 
@@ -72,7 +85,9 @@ double SkyPlotView::radius() const {
     return std::max(10.0, std::min(width(), height()) / 2.0 - fm.height() * 1.6);
 }
 
-QPointF SkyPlotView::center() const { return QPointF(width() / 2.0, height() / 2.0); }
+QPointF SkyPlotView::center() const {
+    return QPointF(width() / 2.0, height() / 2.0);
+}
 
 QPointF SkyPlotView::project(double az, double el) const {
     const double rho = radius() * (90.0 - std::clamp(el, 0.0, 90.0)) / 90.0;
@@ -89,9 +104,10 @@ QVector<SkyPlotView::Marker> SkyPlotView::markers() const {
         if (hidden_.contains(int(r.sat.system))) continue;
         const quint64 k = (quint64(quint8(r.sat.system)) << 32) | quint32(r.sat.prn);
         const QString sig = SatelliteModel::label(r);
-        const QString line = tr("%1: SNR %2 dB-Hz%3")
-                                     .arg(sig, r.snr ? QString::number(*r.snr) : QStringLiteral("—"),
-                                          r.used ? tr(", used") : QString());
+        const QString line =
+                tr("%1: SNR %2 dB-Hz%3")
+                        .arg(sig, r.snr ? QString::number(*r.snr) : QStringLiteral("—"),
+                             r.used ? tr(", used") : QString());
         auto it = bySat.find(k);
         if (it == bySat.end()) {
             Marker m;
@@ -142,7 +158,8 @@ void SkyPlotView::paintEvent(QPaintEvent *) {
     p.setPen(text);
     const double off = fm.height() * 0.8;
     auto centred = [&](const QString &s, QPointF at) {
-        p.drawText(QRectF(at.x() - 30, at.y() - fm.height() / 2, 60, fm.height()), Qt::AlignCenter, s);
+        p.drawText(QRectF(at.x() - 30, at.y() - fm.height() / 2, 60, fm.height()), Qt::AlignCenter,
+                   s);
     };
     centred(tr("N"), QPointF(c.x(), c.y() - r - off));
     centred(tr("S"), QPointF(c.x(), c.y() + r + off));
@@ -150,7 +167,8 @@ void SkyPlotView::paintEvent(QPaintEvent *) {
     centred(tr("W"), QPointF(c.x() - r - off, c.y()));
     p.setPen(grid);
     for (int el : {0, 30, 60})
-        p.drawText(QPointF(c.x() + 3, c.y() - r * (90 - el) / 90.0 + fm.ascent()), QStringLiteral("%1°").arg(el));
+        p.drawText(QPointF(c.x() + 3, c.y() - r * (90 - el) / 90.0 + fm.ascent()),
+                   QStringLiteral("%1°").arg(el));
 
     // Elevation mask.
     if (mask_ > 0) {
@@ -206,7 +224,8 @@ void SkyPlotView::paintEvent(QPaintEvent *) {
         if (showLabels_) {
             p.setPen(text);
             p.setFont(small);
-            const QString l = m.snr >= 0 ? QStringLiteral("%1 %2").arg(m.label).arg(m.snr) : m.label;
+            const QString l =
+                    m.snr >= 0 ? QStringLiteral("%1 %2").arg(m.label).arg(m.snr) : m.label;
             p.drawText(m.pos + QPointF(size * 0.7, -size * 0.4), l);
             p.setFont(font());
         }
@@ -248,9 +267,9 @@ void SkyPlotView::contextMenuEvent(QContextMenuEvent *e) {
     labels->setChecked(showLabels_);
     connect(labels, &QAction::toggled, this, &SkyPlotView::setShowLabels);
     QMenu *systems = menu.addMenu(tr("Constellations"));
-    for (Constellation c : {Constellation::Gps, Constellation::Glonass, Constellation::Galileo,
-                            Constellation::BeiDou, Constellation::Qzss, Constellation::Sbas,
-                            Constellation::NavIC}) {
+    for (Constellation c :
+         {Constellation::Gps, Constellation::Glonass, Constellation::Galileo, Constellation::BeiDou,
+          Constellation::Qzss, Constellation::Sbas, Constellation::NavIC}) {
         QAction *a = systems->addAction(QString::fromLatin1(toString(c).data()));
         a->setCheckable(true);
         a->setChecked(constellationVisible(c));

@@ -5,7 +5,9 @@
 
 namespace gnss::ui::fmt {
 
-QString dash() { return QStringLiteral("—"); }
+QString dash() {
+    return QStringLiteral("—");
+}
 
 QString number(const std::optional<double> &v, int decimals, const QString &unit) {
     if (!v || !std::isfinite(*v)) return dash();
@@ -31,16 +33,22 @@ QString coordinate(const std::optional<double> &deg, bool dms, const char *pos, 
         s = 0;
         if (++m == 60) m = 0, ++d;
     }
-    return QStringLiteral("%1° %2′ %3″ %4").arg(d).arg(m, 2, 10, QChar('0')).arg(s, 7, 'f', 4, QChar('0')).arg(hemi);
+    return QStringLiteral("%1° %2′ %3″ %4")
+            .arg(d)
+            .arg(m, 2, 10, QChar('0'))
+            .arg(s, 7, 'f', 4, QChar('0'))
+            .arg(hemi);
 }
 } // namespace
 
 QString latitude(const std::optional<double> &deg, bool dms) {
-    return coordinate(deg, dms, QT_TRANSLATE_NOOP("Hemisphere", "N"), QT_TRANSLATE_NOOP("Hemisphere", "S"));
+    return coordinate(deg, dms, QT_TRANSLATE_NOOP("Hemisphere", "N"),
+                      QT_TRANSLATE_NOOP("Hemisphere", "S"));
 }
 
 QString longitude(const std::optional<double> &deg, bool dms) {
-    return coordinate(deg, dms, QT_TRANSLATE_NOOP("Hemisphere", "E"), QT_TRANSLATE_NOOP("Hemisphere", "W"));
+    return coordinate(deg, dms, QT_TRANSLATE_NOOP("Hemisphere", "E"),
+                      QT_TRANSLATE_NOOP("Hemisphere", "W"));
 }
 
 } // namespace gnss::ui::fmt
