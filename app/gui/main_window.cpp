@@ -272,7 +272,8 @@ void MainWindow::updateStatus() {
     const Dialect *d = session_->dialect();
     const ReceiverIdentity &id = stateModel_->state().identity;
     QString who = d ? QString::fromLatin1(d->displayName.data(), int(d->displayName.size()))
-                    : tr("dialect: —");
+                  : session_->counters().sentences > 0 ? tr("NMEA-0183 (no vendor sentences)")
+                                                       : tr("dialect: —");
     if (!id.model.empty()) who = QString::fromStdString(id.vendor + " " + id.model);
     if (!id.firmware.empty()) who += tr(" (firmware %1)").arg(QString::fromStdString(id.firmware));
     dialectLabel_->setText(who);

@@ -145,7 +145,7 @@ void StreamDecoder::decodeLine(std::string_view line, Handler handler) {
 
     if (!r.match.rule) {
         ++st.unknown;
-        handler(SentenceEvent{s, nullptr, "unknown sentence", nullptr});
+        handler(SentenceEvent{s, nullptr, "unknown sentence", nullptr, true});
         return;
     }
     if (!checksumAcceptable(s, r.match.dialect)) {

@@ -43,6 +43,7 @@ struct SentenceEvent {
     const Message *message = nullptr; // decoded value, or nullptr
     std::string_view error;           // why not decoded (empty when decoded)
     const Dialect *dialect = nullptr; // dialect of the rule that matched (nullptr: standard)
+    bool unknown = false;             // no decoder for this address (not an error on a line)
 };
 
 // The JSON object `gnss-cli decode` prints for one sentence: line, address, talker, type,

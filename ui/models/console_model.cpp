@@ -23,7 +23,9 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
         return time + (l.sent ? QStringLiteral("  ▶ ") : QStringLiteral("    ")) +
                QString::fromLatin1(l.text);
     }
-    case Qt::ToolTipRole: return l.error.isEmpty() ? QVariant() : QVariant(l.error);
+    case Qt::ToolTipRole:
+        if (!l.error.isEmpty()) return l.error;
+        return l.note.isEmpty() ? QVariant() : QVariant(l.note);
     case Qt::ForegroundRole:
         if (l.checksumBad || !l.error.isEmpty()) return QColor(0xC6, 0x28, 0x28);
         if (l.sent) return QColor(0x00, 0x72, 0xB2);

@@ -15,7 +15,8 @@ struct ConsoleLine {
     QByteArray address; // for filtering
     bool sent = false;  // a command we sent
     bool checksumBad = false;
-    QString error; // why it was not decoded (empty when it was)
+    QString error; // why it could not be decoded (empty when it was, or when it is unknown)
+    QString note;  // "unknown sentence": shown on hover, not as an error
 };
 
 class ConsoleModel : public QAbstractListModel {

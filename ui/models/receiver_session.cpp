@@ -52,15 +52,20 @@ void ReceiverSession::onSentence(const SentenceEvent &ev, const Dialect *dialect
     ++counters_.sentences;
     const Sentence &s = ev.sentence;
     if (s.checksum() == ChecksumStatus::Bad) ++counters_.checksumErrors;
-    if (!ev.message && ev.error != "unknown sentence" && s.checksum() != ChecksumStatus::Bad)
-        ++counters_.decodeErrors;
+    if (!ev.message && !ev.unknown && s.checksum() != ChecksumStatus::Bad) ++counters_.decodeErrors;
     if (models_.console && !models_.console->paused()) {
         ConsoleLine l;
         l.ms = QDateTime::currentMSecsSinceEpoch();
         l.text = QByteArray(s.line().data(), qsizetype(s.line().size()));
         l.address = QByteArray(s.address().data(), qsizetype(s.address().size()));
         l.checksumBad = s.checksum() == ChecksumStatus::Bad;
-        if (!ev.message) l.error = QString::fromUtf8(ev.error.data(), qsizetype(ev.error.size()));
+        if (!ev.message) {
+            const QString why = QString::fromUtf8(ev.error.data(), qsizetype(ev.error.size()));
+            if (ev.unknown)
+                l.note = why; // not decoded, but nothing wrong with the line
+            else
+                l.error = why;
+        }
         models_.console->append(std::move(l));
     }
     if (!ev.message) return;

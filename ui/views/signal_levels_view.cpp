@@ -35,7 +35,8 @@ QVector<SignalLevelsView::Bar> SignalLevelsView::layoutBars() const {
     // Order within a constellation: by signal, then PRN (so each signal's bars stand together).
     QVector<int> order;
     for (int i = 0; i < int(rows.size()); ++i)
-        if (rows[size_t(i)].inView) order.push_back(i);
+        if (rows[size_t(i)].inView && rows[size_t(i)].snr)
+            order.push_back(i); // a bar needs a signal
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
         const auto &x = rows[size_t(a)], &y = rows[size_t(b)];
         if (x.sat.system != y.sat.system) return x.sat.system < y.sat.system;
@@ -142,8 +143,7 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
         const QRectF span(bars[start].rect.left(), height() - fm.height() * 1.2,
                           bars[i - 1].rect.right() - bars[start].rect.left(), fm.height());
         p.setPen(style::constellationColor(first.sat.system));
-        p.drawText(span.adjusted(-20, 0, 20, 0), Qt::AlignCenter,
-                   fm.elidedText(name, Qt::ElideRight, span.width() + 40));
+        p.drawText(span, Qt::AlignCenter, fm.elidedText(name, Qt::ElideRight, span.width()));
         start = i;
     }
 }
