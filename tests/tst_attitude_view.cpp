@@ -3,8 +3,10 @@
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
 #include "dialects.h"
+#include "label_text.h"
 #include "models/receiver_state_model.h"
 #include "state/state_tracker.h"
+#include "track_state.h"
 #include "views/attitude_view.h"
 
 #include <QLabel>
@@ -17,24 +19,11 @@ using namespace gnss::ui;
 namespace {
 
 ReceiverState track(const std::vector<std::string> &lines) {
-    static const DialectRegistry reg = makeBuiltinRegistry();
-    StreamDecoder dec(reg);
-    StateTracker tracker;
-    auto onEpoch = [](const ReceiverState &) {};
-    for (const auto &l : lines) {
-        dec.feed(l + "\r\n", [&](const SentenceEvent &ev) {
-            if (!ev.message) return;
-            tracker.setDialect(dec.dialect());
-            tracker.add(ev.sentence, *ev.message, ev.dialect, onEpoch);
-        });
-    }
-    tracker.flush(onEpoch);
-    return tracker.state();
+    return test::trackState(lines);
 }
 
 QString text(const QWidget &w, const char *name) {
-    auto *l = w.findChild<QLabel *>(QString::fromLatin1(name));
-    return l ? l->text() : QString("<missing %1>").arg(name);
+    return test::labelText(w, name);
 }
 
 TimeMarkEvent mark(std::int64_t counter, double tow) {

@@ -1,4 +1,5 @@
 // Fix panel, console, message statistics and receiver information, fed through the session.
+#include "label_text.h"
 #include "session_feed.h"
 #include "views/console_view.h"
 #include "views/fix_view.h"
@@ -14,8 +15,7 @@ using namespace gnss;
 
 namespace {
 QString label(QWidget &w, const char *name) {
-    auto *l = w.findChild<QLabel *>(name);
-    return l ? l->text() : QStringLiteral("<missing %1>").arg(name);
+    return test::labelText(w, name);
 }
 } // namespace
 

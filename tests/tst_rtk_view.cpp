@@ -3,8 +3,10 @@
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
 #include "dialects.h"
+#include "label_text.h"
 #include "models/receiver_state_model.h"
 #include "state/state_tracker.h"
+#include "track_state.h"
 #include "views/rtk_view.h"
 
 #include <QLabel>
@@ -17,19 +19,7 @@ using namespace gnss::ui;
 namespace {
 
 ReceiverState track(const std::vector<std::string> &lines) {
-    static const DialectRegistry reg = makeBuiltinRegistry();
-    StreamDecoder dec(reg);
-    StateTracker tracker;
-    auto onEpoch = [](const ReceiverState &) {};
-    for (const auto &l : lines) {
-        dec.feed(l + "\r\n", [&](const SentenceEvent &ev) {
-            if (!ev.message) return;
-            tracker.setDialect(dec.dialect());
-            tracker.add(ev.sentence, *ev.message, ev.dialect, onEpoch);
-        });
-    }
-    tracker.flush(onEpoch);
-    return tracker.state();
+    return test::trackState(lines);
 }
 
 // The NV08C-RTK sentences of the NVS spec examples (and tst_state_tracker).
@@ -45,9 +35,7 @@ ReceiverState nvsRtkState() {
 }
 
 QString text(const QWidget &w, const char *name) {
-    auto *l = w.findChild<QLabel *>(QString::fromLatin1(name));
-    if (!l) qWarning("no label %s", name);
-    return l ? l->text() : QString("<missing %1>").arg(name);
+    return test::labelText(w, name);
 }
 
 QColor textColor(const QWidget &w, const char *name) {

@@ -4,6 +4,7 @@
 #include "core/stream_decoder.h"
 #include "dialects.h"
 #include "state/state_tracker.h"
+#include "track_state.h"
 
 #include <QTest>
 
@@ -12,21 +13,7 @@ using namespace gnss;
 namespace {
 
 ReceiverState track(const std::vector<std::string> &lines, int *epochs = nullptr) {
-    static const DialectRegistry reg = makeBuiltinRegistry();
-    StreamDecoder dec(reg);
-    StateTracker tracker;
-    int n = 0;
-    auto onEpoch = [&](const ReceiverState &) { ++n; };
-    for (const auto &l : lines) {
-        dec.feed(l + "\r\n", [&](const SentenceEvent &ev) {
-            if (!ev.message) return;
-            tracker.setDialect(dec.dialect());
-            tracker.add(ev.sentence, *ev.message, ev.dialect, onEpoch);
-        });
-    }
-    tracker.flush(onEpoch);
-    if (epochs) *epochs = n;
-    return tracker.state();
+    return test::trackState(lines, epochs);
 }
 
 } // namespace
