@@ -1,11 +1,13 @@
 // The main window: menus and docks present, start-up options, layout saved and restored, and the
 // built-in simulated receiver reaching every model through the real connection path.
+#include "config/settings_engine.h"
 #include "connection_controller.h"
 #include "dialects.h"
 #include "main_window.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
 #include "startup_options.h"
+#include "views/sky_plot_view.h"
 
 #include <QDockWidget>
 #include <QLabel>
@@ -51,6 +53,19 @@ private slots:
         QCOMPARE(w.controller()->state(), gnss::app::ConnectionController::State::Connected);
         const auto *fixLabel = w.findChild<QLabel *>("statusFix");
         QVERIFY(fixLabel);
+    }
+
+    void skyPlotDrawsTheReceiversElevationMask() {
+        auto s = settings();
+        gnss::app::MainWindow w(registry_, s.get());
+        w.show();
+        w.connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nvs"});
+        auto *engine = w.findChild<gnss::config::SettingsEngine *>();
+        QVERIFY(engine);
+        QTRY_VERIFY_WITH_TIMEOUT(engine->receiverValue("rtk.ELGPS").has_value(), 15000);
+        auto *sky = w.findChild<gnss::ui::SkyPlotView *>("skyPlot");
+        QCOMPARE(sky->elevationMask(),
+                 QString::fromStdString(*engine->receiverValue("rtk.ELGPS")).toDouble());
     }
 
     void closingWithACommandInFlightIsSafe() {

@@ -172,18 +172,37 @@ void MainWindow::createDocks() {
         if (d)
             for (auto n : d->commandNames) names << QString::fromLatin1(n.data(), int(n.size()));
         consoleView_->setCommandNames(names);
-        if (d)
-            for (const auto &s : d->settings)
-                if (s.key.ends_with("ELEV") || s.key.ends_with("ELGPS") ||
-                    s.key == "fix.minElevation") {
-                    // The elevation mask's default until the receiver reports its own.
-                    bool ok = false;
-                    const double v =
-                            QString::fromLatin1(s.defaultValue.data(), int(s.defaultValue.size()))
-                                    .toDouble(&ok);
-                    if (ok) sky_->setElevationMask(v);
-                }
+        // The sky plot draws the elevation mask: the schema's default until the receiver's own
+        // value is read (below).
+        if (const SettingDef *m = elevationMaskSetting(d)) {
+            bool ok = false;
+            const double v =
+                    QString::fromLatin1(m->defaultValue.data(), int(m->defaultValue.size()))
+                            .toDouble(&ok);
+            sky_->setElevationMask(ok ? v : -1);
+        } else {
+            sky_->setElevationMask(-1);
+        }
     });
+    connect(settingsEngine, &config::SettingsEngine::valuesChanged, this, [this, settingsEngine] {
+        const SettingDef *m = elevationMaskSetting(settingsEngine->dialect());
+        if (!m) return;
+        if (const auto v = settingsEngine->receiverValue(m->key)) {
+            bool ok = false;
+            const double deg = QString::fromStdString(*v).toDouble(&ok);
+            if (ok) sky_->setElevationMask(deg);
+        }
+    });
+}
+
+const SettingDef *MainWindow::elevationMaskSetting(const Dialect *d) {
+    if (!d) return nullptr;
+    // The dialects name it differently: NVS ELGPS (GPS mask), GeoStar ELEV, Nemerix minElevation.
+    for (const auto &s : d->settings)
+        if (s.key.ends_with(".ELGPS") || s.key.ends_with(".ELEV") ||
+            s.key.ends_with(".minElevation"))
+            return &s;
+    return nullptr;
 }
 
 void MainWindow::createMenus() {

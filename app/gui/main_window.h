@@ -11,6 +11,8 @@ class QDockWidget;
 
 namespace gnss {
 class DialectRegistry;
+struct Dialect;
+struct SettingDef;
 namespace link {
 class PortWatcher;
 }
@@ -64,6 +66,7 @@ private:
     void updateStatus();
     void applyTheme(const QString &theme);
     void toggleRecording(bool on);
+    static const SettingDef *elevationMaskSetting(const Dialect *d);
 
     const DialectRegistry &registry_;
     QSettings *settings_;

@@ -8,6 +8,7 @@
 #include "models/receiver_session.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
+#include "views/deviation_view.h"
 #include "views/signal_levels_view.h"
 #include "views/sky_plot_view.h"
 
@@ -108,6 +109,20 @@ void BM_PaintSignalLevels(benchmark::State &st) {
 BENCHMARK(BM_PaintSkyPlot)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaintSignalLevels)->Unit(benchmark::kMicrosecond);
 
+// The deviation plot with its default 3600 positions kept.
+void BM_PaintDeviation(benchmark::State &st) {
+    Fixture &f = fixture();
+    gnss::ui::DeviationView view(&f.state);
+    for (int i = 0; i < 3600; ++i) f.session.feed(f.epochs[size_t(i) % f.epochs.size()]);
+    view.resize(600, 500);
+    QImage img(view.size(), QImage::Format_ARGB32_Premultiplied);
+    for (auto _ : st) {
+        view.render(&img);
+        benchmark::DoNotOptimize(img.bits());
+    }
+}
+BENCHMARK(BM_PaintDeviation)->Unit(benchmark::kMicrosecond);
+
 // Prints the GUI-thread budget from the measured costs.
 class BudgetReporter : public benchmark::ConsoleReporter {
 public:
@@ -118,19 +133,21 @@ public:
             if (r.benchmark_name().find("EpochIntoModels") != std::string::npos) epochUs_ = us;
             if (r.benchmark_name().find("PaintSkyPlot") != std::string::npos) skyUs_ = us;
             if (r.benchmark_name().find("PaintSignalLevels") != std::string::npos) barsUs_ = us;
+            if (r.benchmark_name().find("PaintDeviation") != std::string::npos) deviationUs_ = us;
         }
     }
     void Finalize() override {
         ConsoleReporter::Finalize();
-        const double perSecondUs = epochUs_ * 20 + (skyUs_ + barsUs_) * 10;
+        const double perSecondUs = epochUs_ * 20 + (skyUs_ + barsUs_) * 10 + deviationUs_ * 4;
         std::printf("\nGUI thread at 20 Hz, 60 satellites: epoch into models %.0f us x 20/s + sky "
-                    "%.0f us and "
-                    "signals %.0f us x 10 repaints/s = %.1f%% of one core\n",
-                    epochUs_, skyUs_, barsUs_, perSecondUs / 1e4);
+                    "%.0f us "
+                    "and signals %.0f us x 10 repaints/s + deviation (3600 points) %.0f us x 4/s = "
+                    "%.1f%% of one core\n",
+                    epochUs_, skyUs_, barsUs_, deviationUs_, perSecondUs / 1e4);
     }
 
 private:
-    double epochUs_ = 0, skyUs_ = 0, barsUs_ = 0;
+    double epochUs_ = 0, skyUs_ = 0, barsUs_ = 0, deviationUs_ = 0;
 };
 
 } // namespace
