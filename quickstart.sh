@@ -14,7 +14,11 @@ preset=${GNSS_PRESET:-dev}
 packages=(
   build-essential cmake ninja-build pkg-config
   qt6-base-dev qt6-base-dev-tools libqt6serialport6-dev libqt6charts6-dev
+  # Qt6ChartsConfig.cmake needs Qt6OpenGL/OpenGLWidgets; Debian's charts -dev does not pull them.
+  libqt6opengl6-dev
+  # lupdate/lrelease (translations) and Qt's own Russian strings.
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n
+  # Qt6Gui's CMake config looks for OpenGL headers (WrapOpenGL).
   libgl-dev
   libbenchmark-dev fonts-dejavu-core
 )
