@@ -29,6 +29,11 @@ using namespace gnss;
 
 namespace {
 
+// Poll timeouts: 10 ms while a program has the line (output paced like a UART's), 100 ms while
+// nobody does.
+constexpr int kActivePollMs = 10;
+constexpr int kIdlePollMs = 100;
+
 volatile std::sig_atomic_t g_stop = 0;
 volatile std::sig_atomic_t g_powerCycle = 0;
 void onSignal(int) {
@@ -170,14 +175,23 @@ int main(int argc, char **argv) {
     std::string outBuffer;
     double last = monotonicSeconds();
     char buf[4096];
+    // A pseudo-terminal master reports POLLHUP at once, whatever is asked, while nobody has the
+    // slave open: polling it then would spin. While hung up the master is left out of the poll
+    // and looked at again every kIdlePollMs (a program opening the device is heard within that).
+    bool ptyIdle = false;
     while (!g_stop) {
         pollfd fds[3];
         int n = 0;
         int stdinIdx = -1, ioIdx = -1, listenIdx = -1;
         if (watchStdin) fds[stdinIdx = n++] = {STDIN_FILENO, POLLIN, 0};
-        if (ioFd >= 0 && ioFd != STDOUT_FILENO) fds[ioIdx = n++] = {ioFd, POLLIN, 0};
+        if (ioFd >= 0 && ioFd != STDOUT_FILENO && !ptyIdle) fds[ioIdx = n++] = {ioFd, POLLIN, 0};
         if (listenFd >= 0) fds[listenIdx = n++] = {listenFd, POLLIN, 0};
-        ::poll(fds, static_cast<nfds_t>(n), 10);
+        ::poll(fds, static_cast<nfds_t>(n), ptyIdle ? kIdlePollMs : kActivePollMs);
+        if (ptyIdle) {
+            pollfd probe{ioFd, POLLIN, 0};
+            ::poll(&probe, 1, 0);
+            ptyIdle = (probe.revents & POLLHUP) != 0;
+        }
 
         if (stdinIdx >= 0 && (fds[stdinIdx].revents & (POLLIN | POLLHUP))) {
             const ssize_t r = ::read(STDIN_FILENO, buf, sizeof buf);
@@ -208,8 +222,9 @@ int main(int argc, char **argv) {
             // A pseudo-terminal master reports POLLHUP while nobody has the slave open: the
             // receiver keeps running, its output goes nowhere (no stale backlog for the next
             // program that opens the device).
-            if (isPty && (fds[ioIdx].revents & POLLHUP)) peerPresent = false;
+            if (isPty && (fds[ioIdx].revents & POLLHUP)) ptyIdle = true;
         }
+        if (ptyIdle) peerPresent = false;
         if (isPty) {
             termios t{};
             if (tcgetattr(ioFd, &t) == 0) rx->setLineBaud(baudOf(cfgetospeed(&t)));
