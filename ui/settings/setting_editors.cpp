@@ -3,7 +3,9 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
@@ -182,7 +184,6 @@ QDoubleSpinBox *coordinateBox(QWidget *parent, double min, double max, int decim
     b->setRange(min, max);
     b->setDecimals(decimals);
     b->setSuffix(suffix);
-    b->setMinimumWidth(130);
     return b;
 }
 
@@ -216,29 +217,37 @@ void SettingEditor::finish(QWidget *input) {
 
 CoordinateEditor::CoordinateEditor(const SettingDef &def, Kind kind, QWidget *parent)
     : SettingEditor(def, parent), kind_(kind) {
-    auto *l = new QHBoxLayout(this);
+    // One line per component, so the editor stays narrow enough for a docked form.
+    auto *l = new QGridLayout(this);
     l->setContentsMargins(0, 0, 0, 0);
+    l->setHorizontalSpacing(4);
+    l->setVerticalSpacing(2);
+    auto row = [&](int r, const QString &name, QWidget *box, QWidget *extra) {
+        auto *label = new QLabel(name, this);
+        l->addWidget(label, r, 0);
+        l->addWidget(box, r, 1);
+        if (extra) l->addWidget(extra, r, 2);
+    };
     if (kind == Kind::Ecef) {
-        a_ = coordinateBox(this, -1e7, 1e7, 4, tr(" m (X)"));
-        b_ = coordinateBox(this, -1e7, 1e7, 4, tr(" m (Y)"));
-        c_ = coordinateBox(this, -1e7, 1e7, 4, tr(" m (Z)"));
-        l->addWidget(a_);
-        l->addWidget(b_);
-        l->addWidget(c_);
+        a_ = coordinateBox(this, -1e7, 1e7, 4, tr(" m"));
+        b_ = coordinateBox(this, -1e7, 1e7, 4, tr(" m"));
+        c_ = coordinateBox(this, -1e7, 1e7, 4, tr(" m"));
+        row(0, tr("X"), a_, nullptr);
+        row(1, tr("Y"), b_, nullptr);
+        row(2, tr("Z"), c_, nullptr);
     } else {
         // Degrees with 8 decimals (about 1 mm) and hemispheres, never a bare minus (UI.md).
         a_ = coordinateBox(this, 0, 90, 8, QStringLiteral("\u00b0"));
         b_ = coordinateBox(this, 0, 180, 8, QStringLiteral("\u00b0"));
-        c_ = coordinateBox(this, -1e5, 1e7, 4, tr(" m (ellipsoid)"));
+        c_ = coordinateBox(this, -1e5, 1e7, 4, tr(" m"));
+        c_->setToolTip(tr("Height above the WGS-84 ellipsoid"));
         ns_ = new QComboBox(this);
-        ns_->addItems({"N", "S"});
+        ns_->addItems({tr("N"), tr("S")});
         ew_ = new QComboBox(this);
-        ew_->addItems({"E", "W"});
-        l->addWidget(a_);
-        l->addWidget(ns_);
-        l->addWidget(b_);
-        l->addWidget(ew_);
-        l->addWidget(c_);
+        ew_->addItems({tr("E"), tr("W")});
+        row(0, tr("Latitude"), a_, ns_);
+        row(1, tr("Longitude"), b_, ew_);
+        row(2, tr("Ellipsoidal height"), c_, nullptr);
         for (QComboBox *c : {ns_, ew_})
             connect(c, &QComboBox::currentIndexChanged, this, [this] {
                 if (!loading_) emit edited();
@@ -246,7 +255,8 @@ CoordinateEditor::CoordinateEditor(const SettingDef &def, Kind kind, QWidget *pa
     }
     convert_ = new QPushButton(this);
     convert_->setObjectName(qs(def.key) + ":convert");
-    l->addWidget(convert_);
+    l->addWidget(convert_, 3, 1, 1, 2, Qt::AlignLeft);
+    l->setColumnStretch(3, 1);
     for (QDoubleSpinBox *b : {a_, b_, c_})
         connect(b, &QDoubleSpinBox::valueChanged, this, [this] {
             if (!loading_) emit edited();

@@ -3,13 +3,16 @@
 #include "presets.h"
 #include "setting_editors.h"
 #include "setting_values.h"
+#include "widgets/flow_layout.h"
 
+#include <QComboBox>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
 #include <QMessageBox>
@@ -18,6 +21,7 @@
 #include <QScrollArea>
 #include <QSplitter>
 #include <QStackedWidget>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTextBrowser>
 #include <QToolButton>
@@ -56,7 +60,9 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
         return QMessageBox::question(this, title, text) == QMessageBox::Yes;
     };
     auto *top = new QVBoxLayout(this);
-    auto *bar = new QHBoxLayout;
+    top->setContentsMargins(4, 4, 4, 4);
+    // Buttons wrap onto a second line in a narrow dock rather than being cut.
+    auto *bar = new FlowLayout;
     read_ = new QPushButton(tr("Read"), this);
     read_->setToolTip(tr("Read every setting the receiver reports"));
     apply_ = new QPushButton(tr("Apply"), this);
@@ -92,19 +98,39 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     for (QWidget *w : std::initializer_list<QWidget *>{read_, apply_, revert_, save_, defaults_,
                                                        reset_, presets_, profiles_})
         bar->addWidget(w);
-    bar->addStretch(1);
     top->addLayout(bar);
 
-    auto *split = new QSplitter(Qt::Horizontal, this);
-    groups_ = new QListWidget(split);
+    // Group choice: a list beside the form when the dock is wide, a combo box above it when it
+    // is narrow (the form always keeps the width it needs); a filter across every group.
+    auto *chooser = new QHBoxLayout;
+    groupCombo_ = new QComboBox(this);
+    groupCombo_->setObjectName("settingGroupCombo");
+    groupCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    filter_ = new QLineEdit(this);
+    filter_->setObjectName("settingFilter");
+    filter_->setPlaceholderText(tr("Find a setting"));
+    filter_->setClearButtonEnabled(true);
+    chooser->addWidget(groupCombo_);
+    chooser->addWidget(filter_, 1);
+    top->addLayout(chooser);
+
+    split_ = new QSplitter(Qt::Vertical, this);
+    split_->setChildrenCollapsible(true);
+    auto *formArea = new QWidget(split_);
+    auto *formRow = new QHBoxLayout(formArea);
+    formRow->setContentsMargins(0, 0, 0, 0);
+    groups_ = new QListWidget(formArea);
     groups_->setObjectName("settingGroups");
-    groups_->setMaximumWidth(220);
-    pages_ = new QStackedWidget(split);
+    groups_->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Expanding);
+    pages_ = new QStackedWidget(formArea);
     pages_->setObjectName("settingPages");
-    auto *right = new QSplitter(Qt::Vertical, split);
-    help_ = new QTextBrowser(right);
+    formRow->addWidget(groups_);
+    formRow->addWidget(pages_, 1);
+    // Help, outcomes and a profile's difference share one pane below the form.
+    tabs_ = new QTabWidget(split_);
+    tabs_->setObjectName("settingDetails");
+    help_ = new QTextBrowser(tabs_);
     help_->setObjectName("settingHelp");
-    tabs_ = new QTabWidget(right);
     outcomes_ = new QTreeWidget(tabs_);
     outcomes_->setObjectName("settingOutcomes");
     outcomes_->setHeaderLabels({tr("Command / setting"), tr("Outcome"), tr("Detail")});
@@ -113,15 +139,20 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     diff_->setObjectName("profileDiff");
     diff_->setHeaderLabels({tr("Setting"), tr("Profile"), tr("Receiver")});
     diff_->setRootIsDecorated(false);
+    tabs_->addTab(help_, tr("Help"));
     tabs_->addTab(outcomes_, tr("Outcomes"));
     tabs_->addTab(diff_, tr("Profile difference"));
-    split->setStretchFactor(1, 3);
-    split->setStretchFactor(2, 2);
-    top->addWidget(split, 1);
+    split_->addWidget(formArea);
+    split_->addWidget(tabs_);
+    split_->setStretchFactor(0, 3);
+    split_->setStretchFactor(1, 1);
+    split_->setCollapsible(0, false);
+    top->addWidget(split_, 1);
     auto *foot = new QHBoxLayout;
     status_ = new QLabel(this);
     status_->setObjectName("settingsStatus");
     status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     progress_ = new QProgressBar(this);
     progress_->setMaximumWidth(200);
     progress_->setVisible(false);
@@ -130,7 +161,9 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     foot->addWidget(cancel_);
     top->addLayout(foot);
 
-    connect(groups_, &QListWidget::currentRowChanged, pages_, &QStackedWidget::setCurrentIndex);
+    connect(groups_, &QListWidget::currentRowChanged, this, &SettingsView::showGroup);
+    connect(groupCombo_, &QComboBox::currentIndexChanged, this, &SettingsView::showGroup);
+    connect(filter_, &QLineEdit::textChanged, this, &SettingsView::applyFilter);
     connect(read_, &QPushButton::clicked, this, &SettingsView::readAll);
     connect(apply_, &QPushButton::clicked, this, &SettingsView::applyEdits);
     connect(revert_, &QPushButton::clicked, this, &SettingsView::revert);
@@ -160,13 +193,104 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     rebuild();
 }
 
+void SettingsView::showGroup(int index) {
+    if (index < 0 || index >= pages_->count()) return;
+    pages_->setCurrentIndex(index);
+    // Keep both choosers on the same group (only one of them is shown at a time).
+    const QSignalBlocker a(groups_), b(groupCombo_);
+    groups_->setCurrentRow(index);
+    groupCombo_->setCurrentIndex(index);
+}
+
+void SettingsView::resizeEvent(QResizeEvent *e) {
+    QWidget::resizeEvent(e);
+    if (!splitSized_ && split_->height() > 200) {
+        // The form gets most of the height; help and outcomes a strip that can be dragged open.
+        const int h = split_->height();
+        split_->setSizes({h - h / 4, h / 4});
+        splitSized_ = true;
+    }
+    updateGroupChooser();
+    updateRowWrapping();
+}
+
+bool SettingsView::eventFilter(QObject *watched, QEvent *e) {
+    if (e->type() == QEvent::Resize) updateRowWrapping();
+    return QWidget::eventFilter(watched, e);
+}
+
+void SettingsView::updateGroupChooser() {
+    // The list is shown only when the form keeps at least kFormMinWidth beside it.
+    constexpr int kFormMinWidth = 460;
+    const bool wide = groups_->count() > 0 && width() >= groups_->width() + kFormMinWidth;
+    groups_->setVisible(wide);
+    groupCombo_->setVisible(!wide && groupCombo_->count() > 0);
+}
+
+void SettingsView::updateRowWrapping() {
+    // One policy per page, so its rows read alike: labels beside the editors when the widest
+    // label and the widest editor fit side by side, every label above its editor otherwise.
+    for (int page = 0; page < pages_->count(); ++page) {
+        auto *scroll = qobject_cast<QScrollArea *>(pages_->widget(page));
+        auto *form = scroll ? qobject_cast<QFormLayout *>(scroll->widget()->layout()) : nullptr;
+        if (!form) continue;
+        int labels = 0, fields = 0;
+        for (int row = 0; row < form->rowCount(); ++row) {
+            if (QLayoutItem *l = form->itemAt(row, QFormLayout::LabelRole))
+                labels = std::max(labels, l->sizeHint().width());
+            if (QLayoutItem *f = form->itemAt(row, QFormLayout::FieldRole))
+                fields = std::max(fields, f->minimumSize().width());
+        }
+        const QMargins m = form->contentsMargins();
+        const int needed = labels + form->horizontalSpacing() + fields + m.left() + m.right();
+        const int available = scroll->viewport()->width();
+        const auto policy =
+                needed <= available ? QFormLayout::DontWrapRows : QFormLayout::WrapAllRows;
+        if (form->rowWrapPolicy() != policy) form->setRowWrapPolicy(policy);
+    }
+}
+
+void SettingsView::applyFilter(const QString &text) {
+    const QString needle = text.trimmed();
+    int firstMatch = -1;
+    for (int page = 0; page < pages_->count(); ++page) {
+        auto *scroll = qobject_cast<QScrollArea *>(pages_->widget(page));
+        auto *form = scroll ? qobject_cast<QFormLayout *>(scroll->widget()->layout()) : nullptr;
+        if (!form) continue;
+        int shown = 0;
+        for (int row = 0; row < form->rowCount(); ++row) {
+            auto *label = qobject_cast<QLabel *>(
+                    form->itemAt(row, QFormLayout::LabelRole)
+                            ? form->itemAt(row, QFormLayout::LabelRole)->widget()
+                            : nullptr);
+            const QString key = label ? label->property("settingKey").toString() : QString();
+            const bool match = needle.isEmpty() || !label ||
+                               label->text().contains(needle, Qt::CaseInsensitive) ||
+                               key.contains(needle, Qt::CaseInsensitive);
+            form->setRowVisible(row, match);
+            shown += match ? 1 : 0;
+        }
+        const bool any = shown > 0;
+        if (QListWidgetItem *item = groups_->item(page)) item->setHidden(!any);
+        if (any && firstMatch < 0) firstMatch = page;
+    }
+    if (!needle.isEmpty() && firstMatch >= 0 && groups_->item(pages_->currentIndex()) &&
+        groups_->item(pages_->currentIndex())->isHidden())
+        showGroup(firstMatch);
+    if (!needle.isEmpty() && firstMatch < 0) status(tr("No setting matches \"%1\".").arg(needle));
+}
+
 void SettingsView::rebuild() {
     while (pages_->count()) {
         QWidget *w = pages_->widget(0);
         pages_->removeWidget(w);
         w->deleteLater();
     }
-    groups_->clear();
+    {
+        const QSignalBlocker a(groups_), b(groupCombo_);
+        groups_->clear();
+        groupCombo_->clear();
+    }
     editors_.clear();
     receiverLabels_.clear();
     rowLabels_.clear();
@@ -177,6 +301,8 @@ void SettingsView::rebuild() {
         help_->setPlainText(d ? tr("The %1 receiver has no settings this program knows.")
                                             .arg(qs(d->displayName))
                               : tr("Connect to a receiver: its settings appear here."));
+        tabs_->setCurrentWidget(help_);
+        updateGroupChooser();
         updateButtons();
         return;
     }
@@ -189,36 +315,25 @@ void SettingsView::rebuild() {
             auto *scroll = new QScrollArea(pages_);
             scroll->setObjectName("page:" + group);
             scroll->setWidgetResizable(true);
+            scroll->setFrameShape(QFrame::NoFrame);
+            scroll->viewport()->installEventFilter(this); // rows re-wrap when it resizes
             auto *page = new QWidget(scroll);
             form = new QFormLayout(page);
+            // Labels beside their editors while both fit, above them when they do not
+            // (updateRowWrapping): every label whole and every editor at its full size.
+            form->setRowWrapPolicy(QFormLayout::DontWrapRows);
+            form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
+            form->setLabelAlignment(Qt::AlignLeft | Qt::AlignVCenter);
             scroll->setWidget(page);
             pages_->addWidget(scroll);
             groups_->addItem(group);
+            groupCombo_->addItem(group);
         }
-        SettingEditor *e = makeSettingEditor(def, nullptr);
-        const std::string key(def.key);
-        auto *label =
-                new QLabel(qs(def.label) + (def.unit.empty() ? "" : " (" + qs(def.unit) + ")"));
-        label->setToolTip(qs(def.help));
-        auto *receiver = new QLabel;
-        receiver->setObjectName("receiver:" + qs(def.key));
-        receiver->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        auto *cell = new QWidget;
-        auto *v = new QVBoxLayout(cell);
-        v->setContentsMargins(0, 0, 0, 0);
-        v->setSpacing(1);
-        v->addWidget(e);
-        v->addWidget(receiver);
-        form->addRow(label, cell);
-        if (def.access == SettingAccess::ReadOnly) e->setEnabled(false);
-        editors_[key] = e;
-        receiverLabels_[key] = receiver;
-        rowLabels_[key] = label;
-        connect(e, &SettingEditor::edited, this, [this, e] { onEdited(e); });
-        auto *filter = new FocusHelp(e, [this, e] { showHelp(e->def()); });
-        e->input()->installEventFilter(filter);
-        label->installEventFilter(new FocusHelp(label, [this, e] { showHelp(e->def()); }));
+        addRow(form, def);
     }
+    // The group list is as wide as its longest name (and a scroll bar), no wider.
+    groups_->setFixedWidth(groups_->sizeHintForColumn(0) + 2 * groups_->frameWidth() +
+                           groups_->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 8);
     // BASEXYZ ⇄ BASEBLH: each coordinate editor fills itself from the other form.
     std::vector<CoordinateEditor *> coords;
     for (auto &[key, e] : editors_)
@@ -255,15 +370,53 @@ void SettingsView::rebuild() {
     }
     delete reset_->menu();
     reset_->setMenu(resets);
-    groups_->setCurrentRow(0);
+    showGroup(0);
     help_->setPlainText(tr("%1: select a setting to see its help.").arg(qs(d->displayName)));
+    applyFilter(filter_->text());
+    updateGroupChooser();
+    updateRowWrapping();
     refreshValues();
     updateButtons();
 }
 
+void SettingsView::addRow(QFormLayout *form, const SettingDef &def) {
+    SettingEditor *e = makeSettingEditor(def, nullptr);
+    // An editor never gets less than it asks for: the row wraps (or the page scrolls) instead.
+    e->setMinimumWidth(e->sizeHint().width());
+    const std::string key(def.key);
+    auto *label = new QLabel(qs(def.label) + (def.unit.empty() ? "" : " (" + qs(def.unit) + ")"));
+    label->setObjectName("label:" + qs(def.key));
+    label->setProperty("settingKey", qs(def.key));
+    label->setToolTip(qs(def.help));
+    label->setBuddy(e->input());
+    auto *receiver = new QLabel;
+    receiver->setObjectName("receiver:" + qs(def.key));
+    receiver->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    receiver->setForegroundRole(QPalette::PlaceholderText);
+    // The receiver's value beside the editor; below it for the wide coordinate editors.
+    auto *cell = new QWidget;
+    QBoxLayout *box = qobject_cast<CoordinateEditor *>(e)
+                              ? static_cast<QBoxLayout *>(new QVBoxLayout(cell))
+                              : static_cast<QBoxLayout *>(new QHBoxLayout(cell));
+    box->setContentsMargins(0, 0, 0, 0);
+    box->setSpacing(8);
+    box->addWidget(e);
+    box->addWidget(receiver);
+    box->addStretch(1);
+    form->addRow(label, cell);
+    if (def.access == SettingAccess::ReadOnly) e->setEnabled(false);
+    editors_[key] = e;
+    receiverLabels_[key] = receiver;
+    rowLabels_[key] = label;
+    connect(e, &SettingEditor::edited, this, [this, e] { onEdited(e); });
+    auto *filter = new FocusHelp(e, [this, e] { showHelp(e->def()); });
+    e->input()->installEventFilter(filter);
+    label->installEventFilter(new FocusHelp(label, [this, e] { showHelp(e->def()); }));
+}
+
 void SettingsView::refreshValues() {
     for (auto &[key, e] : editors_) {
-        receiverLabels_[key]->setText(tr("Receiver: %1").arg(engine_->displayValue(key)));
+        receiverLabels_[key]->setText(tr("receiver: %1").arg(engine_->displayValue(key)));
         if (edits_.count(key)) {
             // Still an edit only while it differs from the receiver.
             const auto rv = engine_->receiverValue(key);

@@ -1,10 +1,12 @@
 #pragma once
 // SettingsView: the settings dock. Generated from the connected dialect's schema: one page per
-// group, the right editor per setting, the receiver's value beside it, help as tooltips and in
-// a help pane. Edited values are highlighted against the receiver's. Read / Apply / Revert /
-// Save to flash / Restore defaults / Reset (confirmed), presets, profile import (with its
-// difference) and export; each command's outcome and each setting's verification listed.
-// Knows no vendor: the schema, the engine and the presets table say everything.
+// group (a list beside the form when the dock is wide, a combo box above it when narrow), the
+// right editor per setting at its full size with the receiver's value beside it, labels beside
+// or above their editors as the width allows, help as tooltips and in a pane below the form. Edited
+// values are highlighted against the receiver's. Read / Apply / Revert / Save to flash / Restore
+// defaults / Reset (confirmed), presets, profile import (with its difference) and export; each
+// command's outcome and each setting's verification listed. Knows no vendor: the schema, the engine
+// and the presets table say everything.
 #include "settings_engine.h"
 
 #include <QWidget>
@@ -12,7 +14,11 @@
 #include <functional>
 #include <map>
 
+class QComboBox;
+class QFormLayout;
 class QLabel;
+class QLineEdit;
+class QSplitter;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
@@ -50,8 +56,17 @@ public:
     bool importProfile(const QString &path, QString *error = nullptr); // edits = its difference
     bool exportProfile(const QString &path, QString *error = nullptr);
 
+protected:
+    void resizeEvent(QResizeEvent *e) override;
+    bool eventFilter(QObject *watched, QEvent *e) override;
+
 private:
     void rebuild();
+    void addRow(QFormLayout *form, const SettingDef &def);
+    void showGroup(int index);
+    void updateGroupChooser();
+    void updateRowWrapping();
+    void applyFilter(const QString &text);
     void refreshValues();
     void setEdited(const std::string &key, bool edited);
     void onEdited(SettingEditor *e);
@@ -63,6 +78,10 @@ private:
     config::SettingsEngine *engine_;
     Confirm confirm_;
     QListWidget *groups_;
+    QComboBox *groupCombo_;
+    QLineEdit *filter_;
+    QSplitter *split_;
+    bool splitSized_ = false;
     QStackedWidget *pages_;
     QTextBrowser *help_;
     QTabWidget *tabs_;
