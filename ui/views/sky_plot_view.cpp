@@ -11,6 +11,8 @@
 #include <QToolTip>
 #include <QtMath>
 
+#include <numeric>
+
 namespace gnss::ui {
 
 void drawConstellationMarker(QPainter &p, Constellation c, QPointF o, double s) {
@@ -130,7 +132,77 @@ QVector<SkyPlotView::Marker> SkyPlotView::markers() const {
             m.tooltip += '\n' + line;
         }
     }
+    if (showLabels_) placeLabels(out);
     return out;
+}
+
+double SkyPlotView::markerSize() const {
+    return std::max(9.0, QFontMetricsF(font()).height() * 0.9);
+}
+
+QFont SkyPlotView::labelFont() const {
+    QFont small = font();
+    small.setPointSizeF(font().pointSizeF() * 0.8);
+    return small;
+}
+
+void SkyPlotView::placeLabels(QVector<Marker> &ms) const {
+    const QFontMetricsF fm(labelFont());
+    const double size = markerSize();
+    const QRectF bounds = rect();
+    // Markers are obstacles too: a label never hides a satellite.
+    QVector<QRectF> taken;
+    taken.reserve(ms.size() * 2);
+    for (const Marker &m : ms)
+        taken.push_back(
+                QRectF(m.pos - QPointF(size * 0.65, size * 0.65), QSizeF(size * 1.3, size * 1.3)));
+    // Used satellites first, then the strongest: when there is no room, the weak lose their label.
+    QVector<int> order(ms.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        if (ms[a].used != ms[b].used) return ms[a].used;
+        return ms[a].snr > ms[b].snr;
+    });
+    for (int i : order) {
+        Marker &m = ms[i];
+        m.text = m.snr >= 0 ? QStringLiteral("%1 %2").arg(m.label).arg(m.snr) : m.label;
+        const QSizeF ts(fm.horizontalAdvance(m.text) + 2, fm.height());
+        const double gap = size * 0.7;
+        // Candidate places: the eight around the marker, then the same further out (with a
+        // leader line back to the marker).
+        const QPointF offsets[] = {
+                {gap, -ts.height() / 2},
+                {-gap - ts.width(), -ts.height() / 2},
+                {-ts.width() / 2, -gap - ts.height()},
+                {-ts.width() / 2, gap},
+                {gap * 0.7, -gap * 0.7 - ts.height()},
+                {gap * 0.7, gap * 0.7},
+                {-gap * 0.7 - ts.width(), -gap * 0.7 - ts.height()},
+                {-gap * 0.7 - ts.width(), gap * 0.7},
+        };
+        m.labelRect = {};
+        for (double reach : {1.0, 2.2}) {
+            for (const QPointF &o : offsets) {
+                const QPointF shift = reach == 1.0 ? QPointF()
+                                                   : o / std::max(1.0, std::hypot(o.x(), o.y())) *
+                                                             gap * (reach - 1) * 1.5;
+                const QRectF r(m.pos + o + shift, ts);
+                if (!bounds.contains(r)) continue;
+                bool free = true;
+                for (int k = 0; k < taken.size() && free; ++k)
+                    if (k != i && taken[k].intersects(r)) free = false;
+                if (!free) continue;
+                m.labelRect = r;
+                m.leader = reach > 1.0;
+                break;
+            }
+            if (!m.labelRect.isNull()) break;
+        }
+        if (m.labelRect.isNull())
+            m.text.clear(); // no room: the tooltip still names it
+        else
+            taken.push_back(m.labelRect);
+    }
 }
 
 void SkyPlotView::paintEvent(QPaintEvent *) {
@@ -204,10 +276,10 @@ void SkyPlotView::paintEvent(QPaintEvent *) {
     }
 
     // Satellites.
-    const double size = std::max(9.0, fm.height() * 0.9);
-    QFont small = font();
-    small.setPointSizeF(font().pointSizeF() * 0.8);
-    for (const Marker &m : markers()) {
+    const double size = markerSize();
+    const QFont small = labelFont();
+    const auto ms = markers();
+    for (const Marker &m : ms) {
         QColor col = style::constellationColor(m.sat.system);
         if (m.snr < 0) { // in view, no signal: dashed and dimmed
             col.setAlpha(120);
@@ -221,15 +293,24 @@ void SkyPlotView::paintEvent(QPaintEvent *) {
             p.setBrush(Qt::NoBrush);
         }
         drawConstellationMarker(p, m.sat.system, m.pos, size);
-        if (showLabels_) {
-            p.setPen(text);
-            p.setFont(small);
-            const QString l =
-                    m.snr >= 0 ? QStringLiteral("%1 %2").arg(m.label).arg(m.snr) : m.label;
-            p.drawText(m.pos + QPointF(size * 0.7, -size * 0.4), l);
-            p.setFont(font());
-        }
     }
+    // Labels after every marker, in the places found for them.
+    p.setFont(small);
+    for (const Marker &m : ms) {
+        if (m.text.isEmpty()) continue;
+        if (m.leader) {
+            p.setPen(QPen(grid, 1));
+            const QPointF to = m.labelRect.center();
+            const QPointF dir = (to - m.pos) /
+                                std::max(1.0, std::hypot(to.x() - m.pos.x(), to.y() - m.pos.y()));
+            p.drawLine(m.pos + dir * size * 0.7,
+                       QPointF(std::clamp(m.pos.x(), m.labelRect.left(), m.labelRect.right()),
+                               std::clamp(m.pos.y(), m.labelRect.top(), m.labelRect.bottom())));
+        }
+        p.setPen(text);
+        p.drawText(m.labelRect, Qt::AlignCenter, m.text);
+    }
+    p.setFont(font());
 }
 
 bool SkyPlotView::event(QEvent *e) {

@@ -38,8 +38,13 @@ public:
         bool used = false;
         QString label;
         QString tooltip;
+        QString text;        // the label as drawn ("G05 42"); empty when it had no room
+        QRectF labelRect;    // where it is drawn; null when dropped
+        bool leader = false; // drawn away from its marker, with a line to it
     };
-    // What the next paint draws (for tests and the tooltip).
+    // What the next paint draws (for tests and the tooltip), labels placed so that none
+    // overlaps another label or a marker: a label with no free place is dropped (the marker
+    // keeps its tooltip).
     QVector<Marker> markers() const;
 
     QSize sizeHint() const override { return {420, 420}; }
@@ -52,6 +57,9 @@ protected:
 
 private:
     QPointF project(double azimuth, double elevation) const;
+    double markerSize() const;
+    QFont labelFont() const;
+    void placeLabels(QVector<Marker> &markers) const;
     double radius() const;
     QPointF center() const;
 
