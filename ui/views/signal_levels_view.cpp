@@ -23,14 +23,9 @@ SignalLevelsView::SignalLevelsView(SatelliteModel *model, QWidget *parent)
     repaintTimer_.start();
 }
 
-QRectF SignalLevelsView::plotArea() const {
+SignalLevelsView::Layout SignalLevelsView::layout() const {
+    Layout out;
     const QFontMetricsF fm(font());
-    const double left = fm.horizontalAdvance(QStringLiteral("60")) + 8;
-    return QRectF(left, fm.height() * 0.6, width() - left - 4, height() - fm.height() * 3.4);
-}
-
-QVector<SignalLevelsView::Bar> SignalLevelsView::layoutBars() const {
-    QVector<Bar> bars;
     const auto &rows = model_->rows(); // sorted by constellation, PRN, signal
     // Order within a constellation: by signal, then PRN (so each signal's bars stand together).
     QVector<int> order;
@@ -43,37 +38,71 @@ QVector<SignalLevelsView::Bar> SignalLevelsView::layoutBars() const {
         if (x.signalId != y.signalId) return x.signalId < y.signalId;
         return x.sat.prn < y.sat.prn;
     });
-    if (order.isEmpty()) return bars;
+    const double left = fm.horizontalAdvance(QStringLiteral("60")) + 8;
+    const double plotWidth = width() - left - 4;
     // Gaps between groups (constellation or signal changes).
     int groups = 0;
     for (int i = 1; i < order.size(); ++i) {
         const auto &a = rows[size_t(order[i - 1])], &b = rows[size_t(order[i])];
         if (a.sat.system != b.sat.system || a.signalId != b.signalId) ++groups;
     }
-    const QRectF area = plotArea();
-    const double slotCount = order.size() + groups * 0.8;
-    const double w = area.width() / slotCount;
-    double x = area.left();
+    const double slot = order.isEmpty() ? plotWidth : plotWidth / (order.size() + groups * 0.8);
+    // Ids: the normal font shrunk to no less than 7 pt; level when the widest fits its slot, on
+    // end when a line of text fits it, else on end and thinned out.
+    out.idFont = font();
+    QString widest = QStringLiteral("G00");
+    for (int i : order) {
+        const QString id = QString::fromStdString(satelliteLabel(rows[size_t(i)].sat));
+        if (id.size() > widest.size()) widest = id;
+    }
+    QFontMetricsF ifm(out.idFont);
+    while (ifm.horizontalAdvance(widest) > slot - 2 && out.idFont.pointSizeF() > 7) {
+        out.idFont.setPointSizeF(std::max(7.0, out.idFont.pointSizeF() - 0.5));
+        ifm = QFontMetricsF(out.idFont);
+    }
+    const double textWidth = ifm.horizontalAdvance(widest);
+    out.rotated = textWidth > slot - 2;
+    if (out.rotated) out.every = std::max(1, int(std::ceil((ifm.height() + 1) / slot)));
+    const double idBand = (out.rotated ? textWidth : ifm.height()) + 4;
+    out.area = QRectF(left, fm.height() * 0.6, plotWidth,
+                      std::max(10.0, height() - fm.height() * 0.6 - idBand - fm.height() * 1.4));
+    if (order.isEmpty()) return out;
+
+    double x = out.area.left();
+    int inGroup = 0;
     for (int i = 0; i < order.size(); ++i) {
         const auto &r = rows[size_t(order[i])];
         if (i > 0) {
             const auto &prev = rows[size_t(order[i - 1])];
-            if (prev.sat.system != r.sat.system || prev.signalId != r.signalId) x += w * 0.8;
+            if (prev.sat.system != r.sat.system || prev.signalId != r.signalId) {
+                x += slot * 0.8;
+                inGroup = 0;
+            }
         }
         const double snr = std::clamp(double(r.snr.value_or(0)), 0.0, kMaxSnr);
-        const double h = area.height() * snr / kMaxSnr;
-        bars.push_back({order[i], QRectF(x + w * 0.12, area.bottom() - h, w * 0.76, h),
-                        SatelliteModel::label(r)});
-        x += w;
+        const double h = out.area.height() * snr / kMaxSnr;
+        Bar b{order[i], QRectF(x + slot * 0.12, out.area.bottom() - h, slot * 0.76, h),
+              SatelliteModel::label(r), QString(), QRectF()};
+        if (inGroup % out.every == 0) {
+            b.id = QString::fromStdString(satelliteLabel(r.sat));
+            const double cx = x + slot / 2, top = out.area.bottom() + 2;
+            const double tw = ifm.horizontalAdvance(b.id), th = ifm.height();
+            b.idRect = out.rotated ? QRectF(cx - th / 2, top, th, tw)
+                                   : QRectF(cx - tw / 2, top, tw, th);
+        }
+        out.bars.push_back(b);
+        x += slot;
+        ++inGroup;
     }
-    return bars;
+    return out;
 }
 
 void SignalLevelsView::paintEvent(QPaintEvent *) {
     dirty_ = false;
     QPainter p(this);
     const QPalette pal = palette();
-    const QRectF area = plotArea();
+    const Layout lay = layout();
+    const QRectF &area = lay.area;
     const QFontMetricsF fm(font());
     p.fillRect(area, pal.color(QPalette::Base));
     // SNR grid every 10 dB-Hz.
@@ -85,19 +114,15 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
         p.drawText(QRectF(0, y - fm.height() / 2, area.left() - 4, fm.height()),
                    Qt::AlignRight | Qt::AlignVCenter, QString::number(s));
     }
-    const auto bars = layoutBars();
+    const auto &bars = lay.bars;
     if (bars.isEmpty()) {
         p.setPen(pal.color(QPalette::PlaceholderText));
         p.drawText(area, Qt::AlignCenter, tr("No satellites in view"));
         return;
     }
     const auto &rows = model_->rows();
-    QFont small = font();
-    const double barWidth = bars.front().rect.width();
-    small.setPointSizeF(std::max(6.0, std::min(font().pointSizeF(), barWidth * 0.45)));
-    p.setFont(small);
-    const QFontMetricsF sfm(small);
-    const bool vertical = sfm.horizontalAdvance(QStringLiteral("G00")) > barWidth * 1.3;
+    p.setFont(lay.idFont);
+    const QFontMetricsF sfm(lay.idFont);
     for (const Bar &b : bars) {
         const auto &r = rows[size_t(b.row)];
         const QColor col = style::constellationColor(r.sat.system);
@@ -110,25 +135,26 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
         }
         if (b.rect.height() > 0) p.drawRect(b.rect);
         p.setPen(pal.color(QPalette::WindowText));
-        if (r.snr && b.rect.height() > sfm.height() && !vertical)
+        // The SNR above the bar when it fits level across it.
+        const QString snr = QString::number(r.snr.value_or(0));
+        if (r.snr && b.rect.height() > sfm.height() &&
+            sfm.horizontalAdvance(snr) <= b.rect.width() + 4)
             p.drawText(QRectF(b.rect.left() - 4, b.rect.top() - sfm.height(), b.rect.width() + 8,
                               sfm.height()),
-                       Qt::AlignCenter, QString::number(*r.snr));
-        // Id below the bar.
-        const QString id = QString::fromStdString(satelliteLabel(r.sat));
-        if (vertical) {
+                       Qt::AlignCenter, snr);
+        if (b.id.isEmpty()) continue;
+        if (lay.rotated) {
+            // Read from top to bottom, centred on the bar.
             p.save();
-            p.translate(b.rect.center().x() + sfm.ascent() / 2, area.bottom() + 3);
+            p.translate(b.idRect.left() + sfm.descent(), b.idRect.top());
             p.rotate(90);
-            p.drawText(QPointF(0, 0), id);
+            p.drawText(QPointF(0, 0), b.id);
             p.restore();
         } else {
-            p.drawText(
-                    QRectF(b.rect.left() - 6, area.bottom() + 2, b.rect.width() + 12, sfm.height()),
-                    Qt::AlignCenter, id);
+            p.drawText(b.idRect, Qt::AlignCenter, b.id);
         }
     }
-    // Signal names under each group.
+    // Signal names under each group, fitted to its span.
     p.setFont(font());
     int start = 0;
     for (int i = 1; i <= bars.size(); ++i) {

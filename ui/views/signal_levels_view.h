@@ -1,6 +1,8 @@
 #pragma once
 // SignalLevelsView: one SNR bar per satellite and signal, grouped by constellation and signal,
-// used satellites filled, tracked ones outlined, ids below. Repaints on a timer, from the model.
+// used satellites filled, tracked ones outlined, ids below. Ids stay legible at any width:
+// level while they fit their slot, turned on end when they do not, and when even that is too
+// crowded only every n-th id of a group is written. Repaints on a timer, from the model.
 #include <QTimer>
 #include <QWidget>
 
@@ -17,9 +19,19 @@ public:
         int row;       // model row
         QRectF rect;   // the bar at its full SNR height
         QString label; // "G05", "G05 L5"
+        QString id;    // written below the bar ("G05"); empty when thinned out
+        QRectF idRect; // where the id is written (turned on end when `rotated`)
     };
-    // The bars the next paint draws, in order (for tests).
-    QVector<Bar> layoutBars() const;
+    struct Layout {
+        QRectF area; // the plot
+        QVector<Bar> bars;
+        QFont idFont;
+        bool rotated = false; // ids turned on end
+        int every = 1;        // one id in `every` is written
+    };
+    // What the next paint draws (for tests).
+    Layout layout() const;
+    QVector<Bar> layoutBars() const { return layout().bars; }
 
     QSize sizeHint() const override { return {600, 220}; }
     QSize minimumSizeHint() const override { return {200, 120}; }
@@ -28,7 +40,6 @@ protected:
     void paintEvent(QPaintEvent *) override;
 
 private:
-    QRectF plotArea() const;
     SatelliteModel *model_;
     QTimer repaintTimer_;
     bool dirty_ = true;
