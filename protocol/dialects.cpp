@@ -12,6 +12,8 @@ const Dialect &nmeaDialect() {
             .id = "nmea",
             .displayName = "NMEA-0183",
             .rules = standardSentenceRules(),
+            // A standard query (NMEA 0183 "Q"): the computer (CC) asks the GPS (GP) for a GGA.
+            .consoleExample = "$CCGPQ,GGA",
     };
     return d;
 }

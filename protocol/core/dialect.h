@@ -141,6 +141,8 @@ struct Dialect {
     std::string_view probeCommand;
     // Command names the console offers to complete ("PNVGRTK", "GPSGG,RQUERY", ...).
     std::span<const std::string_view> commandNames;
+    // The example the console's send box shows: a harmless command this receiver answers.
+    std::string_view consoleExample;
     // Default serial speed of the receiver.
     int defaultBaud = 0;
     // A proprietary prefix the user may rename on the receiver ("PNMRX"); empty when fixed.

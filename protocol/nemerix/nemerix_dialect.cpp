@@ -30,6 +30,7 @@ const Dialect &dialect() {
             // PNMRX600 with its real checksum (the spec prints *00).
             .probeCommand = "$PNMRX600*6F",
             .commandNames = kCommandNames,
+            .consoleExample = "$PNMRX600",
             // "9600 baud rate, 8 bits data, 1 start, 1 stop, no parity" (2.1.8).
             .defaultBaud = 9600,
             // "The PNMRX part may be replaced by a configured alternative" (Extensions spec).

@@ -41,6 +41,7 @@ const Dialect &dialect() {
             .extractSettings = extractSettings,
             .probeCommand = "$PNVGVER*4E",
             .commandNames = kCommands,
+            .consoleExample = "$PNVGVER",
             .defaultBaud = 115200, // Table 1 / section 1.1
     };
     return d;

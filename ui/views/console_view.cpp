@@ -88,7 +88,7 @@ ConsoleView::ConsoleView(ConsoleModel *model, QWidget *parent) : QWidget(parent)
     auto *send = new QHBoxLayout;
     input_ = new QLineEdit(this);
     input_->setObjectName("consoleInput");
-    input_->setPlaceholderText(tr("Command to send, e.g. $PNVGVER (the checksum is added)"));
+    setExample({});
     input_->setFont(mono);
     input_->installEventFilter(this);
     completions_ = new QStringListModel(this);
@@ -114,6 +114,13 @@ void ConsoleView::setCommandNames(const QStringList &names) {
     QStringList withDollar;
     for (const QString &n : names) withDollar << (n.startsWith('$') ? n : '$' + n);
     completions_->setStringList(withDollar);
+}
+
+void ConsoleView::setExample(const QString &example) {
+    input_->setPlaceholderText(
+            example.isEmpty()
+                    ? tr("Command to send (the checksum is added)")
+                    : tr("Command to send, e.g. %1 (the checksum is added)").arg(example));
 }
 
 void ConsoleView::setHistory(const QStringList &history) {

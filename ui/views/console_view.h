@@ -24,6 +24,8 @@ public:
 
     // Command names offered for completion (the connected dialect's).
     void setCommandNames(const QStringList &names);
+    // The connected receiver's example command for the send box's hint (empty: none known).
+    void setExample(const QString &example);
     void setHistory(const QStringList &history);
     QStringList history() const { return history_; }
     void setFilter(const QString &addressPattern);
