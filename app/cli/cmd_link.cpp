@@ -137,6 +137,27 @@ std::unique_ptr<link::Transport> makeSource(const Args &args, int baud, bool all
     return r;
 }
 
+// Link events on standard error; a link that cannot be opened and will not be retried ends the
+// command with status 1.
+void reportLinkEvents(link::Connection &conn, const char *note) {
+    QObject::connect(&conn, &link::Connection::openFailed, [note](const QString &why, int retryMs) {
+        if (retryMs <= 0) {
+            std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
+            QCoreApplication::exit(1);
+            return;
+        }
+        std::fprintf(stderr, "gnss-cli: %s; trying again in %d s%s\n", utf8(why).c_str(),
+                     (retryMs + 500) / 1000, note);
+    });
+    QObject::connect(&conn, &link::Connection::linkLost, [note](const QString &why, int retryMs) {
+        std::fprintf(stderr, "gnss-cli: link lost: %s; trying again in %d s%s\n",
+                     utf8(why).c_str(), (retryMs + 500) / 1000, note);
+    });
+    QObject::connect(&conn, &link::Connection::linkRestored, [](const QString &what) {
+        std::fprintf(stderr, "gnss-cli: link back: %s\n", utf8(what).c_str());
+    });
+}
+
 bool openOrSay(link::Transport &t) {
     if (t.open()) return true;
     std::fprintf(stderr, "gnss-cli: %s\n", utf8(t.errorString()).c_str());
@@ -270,12 +291,7 @@ int cmdMonitor(const CliContext &ctx, int argc, char **argv) {
         writeSentenceEventJson(w, ev);
         printLine(out);
     });
-    QObject::connect(&conn, &link::Connection::linkLost, [](const QString &why) {
-        std::fprintf(stderr, "gnss-cli: link lost: %s; retrying every second\n", utf8(why).c_str());
-    });
-    QObject::connect(&conn, &link::Connection::linkRestored, [](const QString &what) {
-        std::fprintf(stderr, "gnss-cli: link back: %s\n", utf8(what).c_str());
-    });
+    reportLinkEvents(conn, "");
     if (replay)
         QObject::connect(replay, &link::ReplayTransport::finished,
                          [] { QCoreApplication::exit(0); });
@@ -304,13 +320,7 @@ int cmdRecord(const CliContext &ctx, int argc, char **argv) {
     auto source = makeSource(args, baud > 0 ? baud : 9600, false);
     if (!source) return 2;
     link::Connection conn(std::move(source), ctx.registry);
-    QObject::connect(&conn, &link::Connection::linkLost, [](const QString &why) {
-        std::fprintf(stderr, "gnss-cli: link lost: %s; retrying every second (recording goes on)\n",
-                     utf8(why).c_str());
-    });
-    QObject::connect(&conn, &link::Connection::linkRestored, [](const QString &what) {
-        std::fprintf(stderr, "gnss-cli: link back: %s\n", utf8(what).c_str());
-    });
+    reportLinkEvents(conn, " (recording goes on)");
     if (!conn.startRecording(QString::fromStdString(*outPath))) {
         std::fprintf(stderr, "gnss-cli: %s\n", utf8(conn.recorder()->errorString()).c_str());
         return 1;
@@ -392,6 +402,7 @@ int cmdSend(const CliContext &ctx, int argc, char **argv) {
                          printLine(out);
                      });
     QObject::connect(queue, &link::CommandQueue::idle, [] { QCoreApplication::exit(0); });
+    reportLinkEvents(conn, "");
     if (!conn.open()) {
         std::fprintf(stderr, "gnss-cli: %s\n", utf8(conn.transport()->errorString()).c_str());
         return 1;

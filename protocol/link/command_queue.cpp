@@ -72,7 +72,10 @@ CommandQueue::CommandQueue(Transport *transport, QObject *parent)
     if (transport) {
         connect(transport, &Transport::bytesReceived, this, &CommandQueue::onBytes);
         connect(transport, &Transport::stateChanged, this, [this](Transport::State s) {
-            if (s != Transport::State::Open) onLinkDown();
+            if (s == Transport::State::Open)
+                startNext(); // commands queued while the link was being opened
+            else if (s != Transport::State::Connecting)
+                onLinkDown();
         });
     }
 }
@@ -143,6 +146,8 @@ const ReplyRule *CommandQueue::ruleFor(const Sentence &command) const {
 
 void CommandQueue::startNext() {
     if (isBusy() || queue_.empty()) return;
+    // A link still being opened (a TCP connect): the commands wait for it, in order.
+    if (transport_ && transport_->isConnecting()) return;
     current_ = std::move(queue_.front());
     queue_.pop_front();
     command_.parse(current_->line);

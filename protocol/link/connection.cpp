@@ -9,10 +9,11 @@ Connection::Connection(std::unique_ptr<Transport> transport, const DialectRegist
     std::vector<const Dialect *> all(registry.dialects().begin(), registry.dialects().end());
     queue_.setOtherDialects(all);
     queue_.setDialect(decoder_.dialect());
-    retry_.setInterval(1000);
+    retry_.setSingleShot(true);
     connect(&retry_, &QTimer::timeout, this, &Connection::tryReconnect);
     connect(transport_.get(), &Transport::bytesReceived, this, &Connection::onBytes);
     connect(transport_.get(), &Transport::stateChanged, this, &Connection::onState);
+    lastState_ = transport_->state();
 }
 
 Connection::~Connection() {
@@ -20,9 +21,20 @@ Connection::~Connection() {
     recorder_.close(); // flush before the transport goes
 }
 
+void Connection::setReconnectDelays(int firstMs, int maxMs) {
+    firstRetryMs_ = std::max(1, firstMs);
+    maxRetryMs_ = std::max(firstRetryMs_, maxMs);
+    nextRetryMs_ = firstRetryMs_;
+}
+
 bool Connection::open() {
     userClosed_ = false;
     attempts_ = 0;
+    nextRetryMs_ = firstRetryMs_;
+    if (transport_->isOpen() || transport_->isConnecting()) {
+        everOpen_ = everOpen_ || transport_->isOpen();
+        return true; // handed over open, or already on its way
+    }
     return transport_->open();
 }
 
@@ -52,24 +64,59 @@ void Connection::onBytes(const QByteArray &bytes) {
     }
 }
 
+int Connection::scheduleRetry() {
+    if (!autoReconnect_ || userClosed_) return 0;
+    const int delay = nextRetryMs_;
+    nextRetryMs_ = std::min(maxRetryMs_, nextRetryMs_ * 2);
+    retry_.start(delay);
+    return delay;
+}
+
 void Connection::onState(Transport::State s) {
-    if (s == Transport::State::Lost) {
-        decoder_.finish(); // a sentence cut by the drop is counted, not glued to the next one
-        emit linkLost(transport_->errorString());
-        if (autoReconnect_ && !userClosed_) {
-            attempts_ = 0;
-            retry_.start();
+    const Transport::State before = lastState_;
+    lastState_ = s;
+    switch (s) {
+    case Transport::State::Open:
+        retry_.stop();
+        nextRetryMs_ = firstRetryMs_; // a link that came up starts the backoff afresh
+        if (everOpen_) {
+            emit linkRestored(transport_->description());
+        } else {
+            everOpen_ = true;
+            emit opened(transport_->description());
         }
+        break;
+    case Transport::State::Lost: {
+        decoder_.finish(); // a sentence cut by the drop is counted, not glued to the next one
+        const int delay = scheduleRetry();
+        emit linkLost(transport_->errorString(), delay);
+        break;
+    }
+    case Transport::State::Closed:
+        // An opening in the background that failed (not one closed on purpose).
+        if (before == Transport::State::Connecting && !userClosed_) {
+            const int delay = scheduleRetry();
+            emit openFailed(transport_->errorString(), delay);
+        }
+        break;
+    case Transport::State::Connecting: break;
     }
 }
 
+void Connection::retryNow() {
+    if (!retry_.isActive()) return;
+    retry_.stop();
+    tryReconnect();
+}
+
 void Connection::tryReconnect() {
-    if (userClosed_) return retry_.stop();
+    if (userClosed_) return;
     ++attempts_;
     emit reconnectAttempt(attempts_);
-    if (transport_->open()) {
-        retry_.stop();
-        emit linkRestored(transport_->description());
+    if (!transport_->open()) {
+        // Failed at once (a serial device still absent): wait longer before the next try.
+        const int delay = scheduleRetry();
+        emit openFailed(transport_->errorString(), delay);
     }
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // Connection: one receiver link and everything that runs on it: the transport, the decoder, the
-// command queue and (when asked) the recorder. When the link drops it says so, tries again every
-// second (a serial device is looked up by its serial number, so it is found again under a new
-// port name) and carries on; the recording continues into the same files with a gap mark.
+// command queue and (when asked) the recorder. When the link drops, or a connection in the
+// background fails, it says so and tries again after 1, 2, 4 ... 30 s (a serial device is looked
+// up by its serial number, so it is found again under a new port name); nothing waits in the
+// caller's thread. The recording continues into the same files with a gap mark.
 #include "command_queue.h"
 #include "core/stream_decoder.h"
 #include "recorder.h"
@@ -21,10 +22,12 @@ class Connection : public QObject {
 public:
     using SentenceHandler = std::function<void(const SentenceEvent &)>;
 
+    // `transport` may already be open (a port handed over by baud detection).
     Connection(std::unique_ptr<Transport> transport, const DialectRegistry &registry,
                DecoderOptions options = {}, QObject *parent = nullptr);
     ~Connection() override;
 
+    // Opens the link, or starts opening it (see Transport::open): false when it failed at once.
     bool open();
     void close();
 
@@ -40,13 +43,22 @@ public:
     bool startRecording(const QString &path, bool append = false);
     void stopRecording() { recorder_.close(); }
 
-    void setReconnectInterval(int ms) { retry_.setInterval(ms); }
+    // The first wait before trying again and the longest (the wait doubles in between).
+    void setReconnectDelays(int firstMs, int maxMs);
     void setAutoReconnect(bool on) { autoReconnect_ = on; }
+    // Tries again now instead of at the planned time (a device was plugged in).
+    void retryNow();
     bool isReconnecting() const { return retry_.isActive(); }
+    // How long until the next attempt, in ms (0 when none is planned).
+    int nextRetryMs() const { return retry_.isActive() ? retry_.remainingTime() : 0; }
     quint64 bytesReceived() const { return bytes_; }
 
 signals:
-    void linkLost(const QString &reason);
+    // The link is up for the first time (after a connection made in the background).
+    void opened(const QString &description);
+    // An attempt to open (the first or a retry) failed; `retryMs` until the next (0: none).
+    void openFailed(const QString &reason, int retryMs);
+    void linkLost(const QString &reason, int retryMs);
     void reconnectAttempt(int attempt);
     void linkRestored(const QString &description);
     void dialectDetected(const QString &dialectId);
@@ -55,6 +67,8 @@ private:
     void onBytes(const QByteArray &bytes);
     void onState(Transport::State s);
     void tryReconnect();
+    // Plans the next attempt; returns its delay in ms (0 when none is planned).
+    int scheduleRetry();
 
     std::unique_ptr<Transport> transport_;
     const DialectRegistry &registry_;
@@ -63,8 +77,11 @@ private:
     Recorder recorder_;
     SentenceHandler handler_;
     QTimer retry_;
+    int firstRetryMs_ = 1000, maxRetryMs_ = 30000, nextRetryMs_ = 1000;
     bool autoReconnect_ = true;
     bool userClosed_ = true;
+    bool everOpen_ = false;
+    Transport::State lastState_ = Transport::State::Closed;
     int attempts_ = 0;
     quint64 bytes_ = 0;
     const Dialect *announced_ = nullptr;

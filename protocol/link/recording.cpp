@@ -17,14 +17,24 @@ QString indexPathFor(const QString &nmeaPath) {
     return nmeaPath + QStringLiteral(".idx");
 }
 
-bool loadRecording(const QString &nmeaPath, Recording &out, QString &error) {
+bool loadRecording(const QString &nmeaPath, Recording &out, QString &error,
+                   const std::atomic<bool> *cancel) {
     out = {};
-    QFile data(nmeaPath);
-    if (!data.open(QIODevice::ReadOnly)) {
-        error = tr("Cannot read %1: %2").arg(nmeaPath, data.errorString());
+    auto data = std::make_shared<QFile>(nmeaPath);
+    if (!data->open(QIODevice::ReadOnly)) {
+        error = tr("Cannot read %1: %2").arg(nmeaPath, data->errorString());
         return false;
     }
-    out.bytes = data.readAll();
+    if (data->size() > 0) {
+        uchar *map = data->map(0, data->size());
+        if (!map) {
+            error = tr("Cannot map %1: %2").arg(nmeaPath, data->errorString());
+            return false;
+        }
+        out.bytes = QByteArray::fromRawData(reinterpret_cast<const char *>(map),
+                                            static_cast<qsizetype>(data->size()));
+    }
+    out.file = std::move(data);
     QFile index(indexPathFor(nmeaPath));
     if (!index.exists()) return true;
     if (!index.open(QIODevice::ReadOnly)) {
@@ -35,6 +45,7 @@ bool loadRecording(const QString &nmeaPath, Recording &out, QString &error) {
     qint64 expectedOffset = 0, lastMs = 0;
     int lineNo = 0;
     while (!index.atEnd()) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return false;
         const QByteArray raw = index.readLine();
         ++lineNo;
         const QByteArray line = raw.endsWith('\n') ? raw.chopped(1) : raw;

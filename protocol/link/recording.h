@@ -10,7 +10,11 @@
 #include <QByteArray>
 #include <QString>
 
+#include <atomic>
+#include <memory>
 #include <vector>
+
+class QFile;
 
 namespace gnss::link {
 
@@ -29,7 +33,10 @@ struct RecordedEvent {
 };
 
 struct Recording {
-    QByteArray bytes;                  // FILE.nmea
+    // FILE.nmea, memory-mapped (not read into memory): `bytes` is a view of `file`'s mapping and
+    // lives as long as a copy of `file` does.
+    std::shared_ptr<QFile> file;
+    QByteArray bytes;
     std::vector<RecordedChunk> chunks; // empty when there is no index
     std::vector<RecordedEvent> events; // sent commands and gaps, in order
     bool hasIndex = false;
@@ -38,9 +45,11 @@ struct Recording {
 // The index file next to a recording: "FILE.nmea" → "FILE.nmea.idx".
 QString indexPathFor(const QString &nmeaPath);
 
-// Reads FILE (and FILE.idx when present). Bytes past the last indexed chunk (a recorder that
+// Maps FILE and reads FILE.idx when present. Bytes past the last indexed chunk (a recorder that
 // died before writing its last index line) become one chunk at the last known time. Returns
-// false with `error` set when the file cannot be read or the index contradicts it.
-bool loadRecording(const QString &nmeaPath, Recording &out, QString &error);
+// false with `error` set when the file cannot be read or the index contradicts it. Safe to call
+// from a worker thread; `cancel` (when given) stops it early (returns false, error empty).
+bool loadRecording(const QString &nmeaPath, Recording &out, QString &error,
+                   const std::atomic<bool> *cancel = nullptr);
 
 } // namespace gnss::link

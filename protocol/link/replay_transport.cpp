@@ -38,7 +38,21 @@ double sentenceTime(std::string_view line) {
     return -1;
 }
 
+// At most this much is delivered per tick when playing as fast as possible, so a big log
+// streams through the event loop instead of arriving as one block.
+constexpr qint64 kMaxBytesPerTick = 4 << 20;
+// Lines of one time make one slice up to this size (so that an untimed log is not one slice).
+constexpr qint64 kMaxSliceBytes = 64 << 10;
+
 } // namespace
+
+struct ReplayTransport::Loaded {
+    Recording recording;
+    std::vector<Slice> timeline;
+    Timing effective = Timing::Auto;
+    QString error;
+    bool cancelled = false;
+};
 
 ReplayTransport::ReplayTransport(QString path, Timing timing, QObject *parent)
     : Transport(parent), path_(std::move(path)), timing_(timing) {
@@ -47,29 +61,81 @@ ReplayTransport::ReplayTransport(QString path, Timing timing, QObject *parent)
     connect(&timer_, &QTimer::timeout, this, &ReplayTransport::tick);
 }
 
+ReplayTransport::~ReplayTransport() {
+    stopLoader();
+}
+
+void ReplayTransport::stopLoader() {
+    if (!loader_.joinable()) return;
+    cancelLoad_ = true; // the worker looks at it every few thousand lines
+    loader_.join();
+    cancelLoad_ = false;
+}
+
 bool ReplayTransport::open() {
-    QString error;
-    if (!loadRecording(path_, recording_, error)) {
-        fail(error, false);
-        return false;
-    }
-    if (timing_ == Timing::HostTime && !recording_.hasIndex) {
-        fail(tr("%1 has no timestamp index (%2): replay it with sentence times instead")
-                     .arg(path_, indexPathFor(path_)),
+    stopLoader();
+    timer_.stop();
+    const QFileInfo info(path_);
+    if (!info.isFile() || !info.isReadable()) {
+        fail(tr("Cannot read %1: %2")
+                     .arg(path_, info.exists() ? tr("permission denied") : tr("no such file")),
              false);
         return false;
     }
-    buildTimeline();
-    next_ = nextEvent_ = 0;
-    finishedSignalled_ = false;
-    anchorPos_ = 0;
-    setState(State::Open);
-    restartClock();
-    if (!paused_) timer_.start();
+    setState(State::Connecting);
+    const int generation = ++loadGeneration_;
+    loader_ = std::thread([this, path = path_, timing = timing_, generation] {
+        auto loaded = std::make_shared<Loaded>();
+        int lastPercent = -1;
+        auto progress = [this, &lastPercent](int percent) {
+            if (percent == lastPercent) return;
+            lastPercent = percent;
+            QMetaObject::invokeMethod(
+                    this, [this, percent] { emit openingProgress(percent); }, Qt::QueuedConnection);
+        };
+        if (!loadRecording(path, loaded->recording, loaded->error, &cancelLoad_)) {
+            loaded->cancelled = loaded->error.isEmpty();
+        } else if (timing == Timing::HostTime && !loaded->recording.hasIndex) {
+            loaded->error = tr("%1 has no timestamp index (%2): replay it with sentence times "
+                               "instead")
+                                    .arg(path, indexPathFor(path));
+        } else {
+            loaded->cancelled = !buildTimeline(loaded->recording, timing, loaded->effective,
+                                               loaded->timeline, cancelLoad_, progress);
+        }
+        // Back on the transport's thread (dropped if the transport is gone by then).
+        QMetaObject::invokeMethod(
+                this,
+                [this, loaded, generation] {
+                    if (generation == loadGeneration_) finishOpen(loaded); // not a stale one
+                },
+                Qt::QueuedConnection);
+    });
     return true;
 }
 
+void ReplayTransport::finishOpen(const std::shared_ptr<Loaded> &loaded) {
+    if (loader_.joinable()) loader_.join(); // it has posted this and is ending
+    if (state() != State::Connecting || loaded->cancelled) return;
+    if (!loaded->error.isEmpty()) {
+        fail(loaded->error, false);
+        return;
+    }
+    recording_ = std::move(loaded->recording);
+    timeline_ = std::move(loaded->timeline);
+    effective_ = loaded->effective;
+    next_ = nextEvent_ = 0;
+    finishedSignalled_ = false;
+    anchorPos_ = 0;
+    emit openingProgress(100);
+    setState(State::Open);
+    restartClock();
+    if (!paused_) timer_.start();
+}
+
 void ReplayTransport::close() {
+    stopLoader();
+    ++loadGeneration_; // a result already posted is not applied
     timer_.stop();
     setState(State::Closed);
 }
@@ -78,43 +144,49 @@ QString ReplayTransport::description() const {
     return tr("replay of %1").arg(QFileInfo(path_).fileName());
 }
 
-void ReplayTransport::buildTimeline() {
-    timeline_.clear();
-    effective_ = timing_ == Timing::Auto
-                         ? (recording_.hasIndex ? Timing::HostTime : Timing::SentenceTime)
-                         : timing_;
-    if (effective_ == Timing::HostTime) {
-        const qint64 t0 = recording_.chunks.empty() ? 0 : recording_.chunks.front().hostMs;
-        for (const auto &c : recording_.chunks)
-            timeline_.push_back({std::max(0.0, (c.hostMs - t0) / 1000.0), c.offset, c.length});
-        return;
+bool ReplayTransport::buildTimeline(const Recording &recording, Timing timing, Timing &effective,
+                                    std::vector<Slice> &timeline, const std::atomic<bool> &cancel,
+                                    const std::function<void(int)> &progress) {
+    timeline.clear();
+    effective = timing == Timing::Auto
+                        ? (recording.hasIndex ? Timing::HostTime : Timing::SentenceTime)
+                        : timing;
+    if (effective == Timing::HostTime) {
+        const qint64 t0 = recording.chunks.empty() ? 0 : recording.chunks.front().hostMs;
+        for (const auto &c : recording.chunks)
+            timeline.push_back({std::max(0.0, (c.hostMs - t0) / 1000.0), c.offset, c.length});
+        return true;
     }
-    // One slice per line, timed by the last sentence time seen (the first one for lines before).
-    const QByteArray &b = recording_.bytes;
-    std::vector<std::pair<qint64, qint64>> lines;
-    std::vector<double> times;
+    // Lines timed by the last sentence time seen (the first one for lines before it); the lines
+    // of one time are one slice (an epoch's sentences arrive together).
+    const QByteArray &b = recording.bytes;
+    const qint64 size = b.size();
+    double first = -1, last = -1, dayOffset = 0;
     qint64 start = 0;
-    while (start < b.size()) {
+    int lines = 0;
+    auto add = [&](double at, qint64 offset, qint64 length) {
+        if (!timeline.empty() && timeline.back().t == at &&
+            timeline.back().offset + timeline.back().length == offset &&
+            timeline.back().length < kMaxSliceBytes)
+            timeline.back().length += length;
+        else
+            timeline.push_back({at, offset, length});
+    };
+    while (start < size) {
+        if (++lines % 4096 == 0) {
+            if (cancel.load(std::memory_order_relaxed)) return false;
+            progress(static_cast<int>(start * 100 / size));
+        }
         qint64 end = b.indexOf('\n', start);
-        end = end < 0 ? b.size() : end + 1;
-        lines.emplace_back(start, end - start);
+        end = end < 0 ? size : end + 1;
         std::string_view text(b.constData() + start, static_cast<std::size_t>(end - start));
         while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.remove_suffix(1);
         const auto dollar = text.find_first_of("$!");
-        times.push_back(effective_ == Timing::AsFast || dollar == std::string_view::npos
-                                ? -1
-                                : sentenceTime(text.substr(dollar)));
-        start = end;
-    }
-    double first = -1, last = -1, dayOffset = 0;
-    for (double t : times)
+        double t = effective == Timing::AsFast || dollar == std::string_view::npos
+                           ? -1
+                           : sentenceTime(text.substr(dollar));
         if (t >= 0) {
-            first = t;
-            break;
-        }
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        double t = times[i];
-        if (t >= 0) {
+            if (first < 0) first = t;
             t += dayOffset;
             if (last >= 0 && t < last - 43200) { // past midnight
                 dayOffset += 86400;
@@ -123,9 +195,10 @@ void ReplayTransport::buildTimeline() {
             if (last >= 0 && t < last) t = last; // out of order: never go back in time
             last = t;
         }
-        const double at = last >= 0 ? last - first : 0;
-        timeline_.push_back({at, lines[i].first, lines[i].second});
+        add(last >= 0 ? last - first : 0, start, end - start);
+        start = end;
     }
+    return true;
 }
 
 double ReplayTransport::duration() const {
@@ -194,7 +267,9 @@ void ReplayTransport::tick() {
     if (state() != State::Open) return timer_.stop();
     const double now = effective_ == Timing::AsFast ? duration() + 1 : position();
     std::size_t end = next_;
-    while (end < timeline_.size() && timeline_[end].t <= now) ++end;
+    qint64 bytes = 0;
+    while (end < timeline_.size() && timeline_[end].t <= now && bytes < kMaxBytesPerTick)
+        bytes += timeline_[end++].length;
     deliverUpTo(end);
 }
 

@@ -2,11 +2,20 @@
 // ReplayTransport: a recorded log played back as if it came from the receiver, at its original
 // pace (the recorded host timestamps from FILE.idx, or, for a plain NMEA log, the UTC times in
 // its sentences), faster or slower, paused, stepped or sought. Replays read only: write() fails.
+//
+// open() maps the file and times it on a worker thread (Connecting, with progress), so opening a
+// big log never holds up the thread the transport lives in; it turns Open when the timeline is
+// ready. Nothing of the log is copied into memory but the bytes being delivered.
 #include "recording.h"
 #include "transport.h"
 
 #include <QElapsedTimer>
 #include <QTimer>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <thread>
 
 namespace gnss::link {
 
@@ -22,6 +31,7 @@ public:
     Q_ENUM(Timing)
 
     explicit ReplayTransport(QString path, Timing timing = Timing::Auto, QObject *parent = nullptr);
+    ~ReplayTransport() override;
 
     bool open() override;
     void close() override;
@@ -54,6 +64,8 @@ signals:
     // A command sent or a gap noted in the recording, reached during playback.
     void recordedEvent(const gnss::link::RecordedEvent &event);
     void finished();
+    // While opening: how much of the log has been timed, 0-100.
+    void openingProgress(int percent);
 
 protected:
     bool writeBytes(const QByteArray &) override { return false; }
@@ -63,7 +75,13 @@ private:
         double t; // seconds from the start of the recording
         qint64 offset, length;
     };
-    void buildTimeline();
+    struct Loaded; // what the worker thread hands back
+    // Times the recording (runs on the worker thread); false when cancelled.
+    static bool buildTimeline(const Recording &recording, Timing timing, Timing &effective,
+                              std::vector<Slice> &timeline, const std::atomic<bool> &cancel,
+                              const std::function<void(int)> &progress);
+    void finishOpen(const std::shared_ptr<Loaded> &loaded);
+    void stopLoader();
     void tick();
     void deliverUpTo(std::size_t end);
     void restartClock();
@@ -80,6 +98,9 @@ private:
     double anchorPos_ = 0; // recording time at the last (re)start of the clock
     QElapsedTimer clock_;
     QTimer timer_;
+    std::thread loader_;
+    std::atomic<bool> cancelLoad_{false};
+    int loadGeneration_ = 0; // which open() a worker's result belongs to
 };
 
 } // namespace gnss::link

@@ -2,18 +2,44 @@
 
 namespace gnss::link {
 
+namespace {
+constexpr int kDefaultConnectTimeoutMs = 5000;
+}
+
 TcpTransport::TcpTransport(QString host, quint16 port, QObject *parent)
     : Transport(parent), host_(std::move(host)), port_(port) {
+    connectTimer_.setSingleShot(true);
+    connectTimer_.setInterval(kDefaultConnectTimeoutMs);
+    connect(&connectTimer_, &QTimer::timeout, this, [this] {
+        if (state() != State::Connecting) return;
+        abortSocket();
+        fail(tr("Cannot connect to %1: no answer within %2 s")
+                     .arg(description())
+                     .arg(connectTimer_.interval() / 1000.0),
+             false);
+    });
+    connect(&socket_, &QTcpSocket::connected, this, [this] {
+        connectTimer_.stop();
+        setState(State::Open);
+    });
     connect(&socket_, &QTcpSocket::readyRead, this, [this] {
         const QByteArray bytes = socket_.readAll();
         if (!bytes.isEmpty()) emit bytesReceived(bytes);
     });
     connect(&socket_, &QTcpSocket::disconnected, this, [this] {
-        if (closing_) return;
+        if (closing_ || state() != State::Open) return;
         fail(tr("%1: the connection was closed by the other side").arg(description()), true);
     });
     connect(&socket_, &QTcpSocket::errorOccurred, this, [this](QAbstractSocket::SocketError e) {
-        if (closing_ || e == QAbstractSocket::RemoteHostClosedError) return; // disconnected()
+        if (closing_) return;
+        if (state() == State::Connecting) {
+            connectTimer_.stop();
+            const QString why = socket_.errorString();
+            abortSocket();
+            fail(tr("Cannot connect to %1: %2").arg(description(), why), false);
+            return;
+        }
+        if (e == QAbstractSocket::RemoteHostClosedError) return; // disconnected() says it
         if (state() == State::Open)
             fail(tr("%1: %2").arg(description(), socket_.errorString()), true);
     });
@@ -37,26 +63,23 @@ bool TcpTransport::parseHostPort(const QString &text, QString &host, quint16 &po
     return true;
 }
 
-bool TcpTransport::open() {
+void TcpTransport::abortSocket() {
     closing_ = true;
     socket_.abort();
     closing_ = false;
-    socket_.connectToHost(host_, port_);
-    if (!socket_.waitForConnected(connectTimeoutMs_)) {
-        fail(tr("Cannot connect to %1: %2").arg(description(), socket_.errorString()), false);
-        closing_ = true;
-        socket_.abort();
-        closing_ = false;
-        return false;
-    }
-    setState(State::Open);
-    return true;
+}
+
+bool TcpTransport::open() {
+    abortSocket();
+    setState(State::Connecting);
+    connectTimer_.start();
+    socket_.connectToHost(host_, port_); // the result arrives as connected() or errorOccurred()
+    return state() != State::Closed;
 }
 
 void TcpTransport::close() {
-    closing_ = true;
-    socket_.abort();
-    closing_ = false;
+    connectTimer_.stop();
+    abortSocket();
     setState(State::Closed);
 }
 

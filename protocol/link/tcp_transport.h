@@ -1,9 +1,12 @@
 #pragma once
 // TcpTransport: a receiver behind a TCP client connection (serial-to-Ethernet servers, remote
-// receivers, gnss-sim --tcp). open() connects and waits up to the connect timeout.
+// receivers, gnss-sim --tcp). open() starts connecting and returns at once: the transport is
+// Connecting until the socket connects (Open) or fails or times out (Closed, with the reason).
+// Nothing here waits, so a GUI stays responsive with an unreachable host.
 #include "transport.h"
 
 #include <QTcpSocket>
+#include <QTimer>
 
 namespace gnss::link {
 
@@ -19,16 +22,19 @@ public:
     bool open() override;
     void close() override;
     QString description() const override;
-    void setConnectTimeout(int ms) { connectTimeoutMs_ = ms; }
+    // How long a connection attempt may take before it is given up.
+    void setConnectTimeout(int ms) { connectTimer_.setInterval(ms); }
 
 protected:
     bool writeBytes(const QByteArray &bytes) override;
 
 private:
+    void abortSocket();
+
     QString host_;
     quint16 port_;
-    int connectTimeoutMs_ = 3000;
     QTcpSocket socket_;
+    QTimer connectTimer_;
     bool closing_ = false;
 };
 

@@ -26,6 +26,7 @@ void Transport::fail(const QString &message, bool lost) {
     error_ = message;
     emit errorOccurred(message);
     if (lost && state_ == State::Open) setState(State::Lost);
+    if (state_ == State::Connecting) setState(State::Closed);
 }
 
 } // namespace gnss::link

@@ -12,16 +12,20 @@ class Transport : public QObject {
     Q_OBJECT
 public:
     enum class State {
-        Closed, // not open (never opened, or closed on purpose)
-        Open,   // bytes flow
-        Lost,   // was open and went away (unplugged, peer hung up, I/O error)
+        Closed,     // not open (never opened, closed on purpose, or an opening that failed)
+        Connecting, // opening in the background (a TCP connect, a log being indexed)
+        Open,       // bytes flow
+        Lost,       // was open and went away (unplugged, peer hung up, I/O error)
     };
     Q_ENUM(State)
 
     explicit Transport(QObject *parent = nullptr);
     ~Transport() override;
 
-    // Opens the source. Returns false with errorString() set (and errorOccurred emitted).
+    // Opens the source, or starts opening it: true when it is Open, or Connecting (then it
+    // becomes Open, or Closed with errorString() set and errorOccurred emitted, later). Returns
+    // false with errorString() set (and errorOccurred emitted) when it fails at once. Never
+    // blocks: a transport that needs time connects in the background.
     virtual bool open() = 0;
     virtual void close() = 0;
     // Queues bytes for the receiver; returns false when they cannot be sent (closed, read-only).
@@ -41,6 +45,7 @@ public:
 
     State state() const { return state_; }
     bool isOpen() const { return state_ == State::Open; }
+    bool isConnecting() const { return state_ == State::Connecting; }
     QString errorString() const { return error_; }
 
 signals:
@@ -52,7 +57,8 @@ signals:
 protected:
     virtual bool writeBytes(const QByteArray &bytes) = 0;
     void setState(State s);
-    // Records and signals an error; `lost` also moves an open transport to Lost.
+    // Records and signals an error; `lost` also moves an open transport to Lost. An opening in
+    // the background that fails goes back to Closed.
     void fail(const QString &message, bool lost);
 
 private:

@@ -56,6 +56,10 @@ struct Arrivals {
     QElapsedTimer clock;
     void attach(ReplayTransport &r) {
         clock.start();
+        // Pace is measured from the moment the log is open (it is timed in the background).
+        QObject::connect(&r, &Transport::stateChanged, [this](Transport::State s) {
+            if (s == Transport::State::Open) clock.restart();
+        });
         QObject::connect(&r, &Transport::bytesReceived, [this](const QByteArray &b) {
             bytes += b;
             at.append(clock.elapsed());
@@ -79,7 +83,7 @@ private slots:
         QSignalSpy finished(&r, &ReplayTransport::finished);
         got.attach(r);
         QVERIFY(r.open());
-        QVERIFY(finished.wait(2000));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 2000);
         QCOMPARE(got.bytes, epoch(0) + epoch(1) + epoch(2));
         QCOMPARE(events.size(), 1);
         QCOMPARE(events[0].text, QStringLiteral("$PNVGVER*4E"));
@@ -94,6 +98,7 @@ private slots:
         got.attach(r);
         QSignalSpy finished(&r, &ReplayTransport::finished);
         QVERIFY(r.open());
+        QTRY_VERIFY(r.isOpen());
         QCOMPARE(r.timing(), ReplayTransport::Timing::HostTime);
         QCOMPARE(r.duration(), 1.0);
         QVERIFY(finished.wait(3000));
@@ -111,6 +116,7 @@ private slots:
         got.attach(r);
         QSignalSpy finished(&r, &ReplayTransport::finished);
         QVERIFY(r.open());
+        QTRY_VERIFY(r.isOpen());
         QCOMPARE(r.timing(), ReplayTransport::Timing::SentenceTime);
         QCOMPARE(r.duration(), 2.0);
         QVERIFY(finished.wait(3000));
@@ -128,6 +134,7 @@ private slots:
         got.attach(r);
         r.pause();
         QVERIFY(r.open());
+        QTRY_VERIFY(r.isOpen());
         QTest::qWait(100);
         QVERIFY(got.bytes.isEmpty());
         QVERIFY(r.step());
@@ -144,6 +151,7 @@ private slots:
         got.attach(r);
         r.pause();
         QVERIFY(r.open());
+        QTRY_VERIFY(r.isOpen());
         r.seek(3.0);
         QVERIFY(r.step());
         QCOMPARE(got.bytes, epoch(3));
@@ -164,6 +172,65 @@ private slots:
         ReplayTransport r(QStringLiteral("/nonexistent/x.nmea"));
         QVERIFY(!r.open());
         QVERIFY(r.errorString().contains("/nonexistent/x.nmea"));
+    }
+
+    void aBigLogOpensInTheBackgroundWithProgress() {
+        // 40 MB of epochs: open() returns at once (Connecting), progress comes, then Open and
+        // the bytes, byte-exact, without the file being read on this thread.
+        QTemporaryDir dir;
+        const QString path = dir.filePath("big.nmea");
+        QByteArray all;
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            QByteArray block;
+            for (int i = 0; i < 60; ++i) block += epoch(i);
+            while (all.size() < 40'000'000) all += block;
+            f.write(all);
+        }
+        ReplayTransport r(path, ReplayTransport::Timing::AsFast);
+        QSignalSpy progress(&r, &ReplayTransport::openingProgress);
+        QSignalSpy finished(&r, &ReplayTransport::finished);
+        Arrivals got;
+        got.attach(r);
+        QElapsedTimer t;
+        t.start();
+        QVERIFY(r.open());
+        const qint64 openMs = t.elapsed();
+        QCOMPARE(r.state(), Transport::State::Connecting);
+        QVERIFY2(openMs < 200, QByteArray::number(openMs)); // no scan in open() itself
+        QTRY_VERIFY_WITH_TIMEOUT(r.isOpen(), 30000);
+        QVERIFY(!progress.isEmpty());
+        QCOMPARE(progress.last().at(0).toInt(), 100);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+        QCOMPARE(got.bytes.size(), all.size());
+        QVERIFY(got.bytes == all);
+        QVERIFY(got.at.size() > 5); // streamed in pieces, not one block
+    }
+
+    void anIndexThatContradictsTheDataFailsAfterOpening() {
+        QTemporaryDir dir;
+        const QString path = makeRecorded(dir);
+        QFile idx(indexPathFor(path));
+        QVERIFY(idx.open(QIODevice::Append));
+        idx.write("R 1710496801000 999999 10\n");
+        idx.close();
+        ReplayTransport r(path);
+        QSignalSpy errors(&r, &Transport::errorOccurred);
+        QVERIFY(r.open());
+        QTRY_COMPARE(r.state(), Transport::State::Closed);
+        QCOMPARE(errors.size(), 1);
+        QVERIFY2(r.errorString().contains(".idx"), qPrintable(r.errorString()));
+    }
+
+    void closingWhileOpeningStopsTheWorker() {
+        QTemporaryDir dir;
+        ReplayTransport r(makePlain(dir, 5));
+        QVERIFY(r.open());
+        r.close();
+        QCOMPARE(r.state(), Transport::State::Closed);
+        QTest::qWait(50);
+        QCOMPARE(r.state(), Transport::State::Closed); // a late result is not applied
     }
 };
 

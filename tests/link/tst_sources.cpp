@@ -2,6 +2,7 @@
 // detection and a command without any serial port) and a TCP client against gnss-sim --tcp.
 #include "baud_detector.h"
 #include "command_queue.h"
+#include "connection.h"
 #include "dialects.h"
 #include "sim_process.h"
 #include "tcp_transport.h"
@@ -10,9 +11,16 @@
 #include "simulator_transport.h"
 #endif
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTest>
+#include <QTimer>
 
 using namespace gnss;
 using namespace gnss::link;
@@ -23,6 +31,63 @@ const DialectRegistry &registry() {
     static const DialectRegistry r = makeBuiltinRegistry();
     return r;
 }
+
+// A TCP port on 127.0.0.1 with nobody listening.
+quint16 closedPort() {
+    QTcpServer probe;
+    probe.listen(QHostAddress::LocalHost);
+    const quint16 port = probe.serverPort();
+    probe.close();
+    return port;
+}
+
+// A TCP port on 127.0.0.1 that takes no new connection: it listens with a backlog of one and
+// that one place is taken, so further connection attempts get no answer at all.
+struct SilentListener {
+    int fd = -1;
+    QList<int> fillers;
+    quint16 port = 0;
+    SilentListener() {
+        fd = ::socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in a{};
+        a.sin_family = AF_INET;
+        a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t len = sizeof a;
+        if (::bind(fd, reinterpret_cast<sockaddr *>(&a), sizeof a) != 0 || ::listen(fd, 0) != 0 ||
+            ::getsockname(fd, reinterpret_cast<sockaddr *>(&a), &len) != 0)
+            return;
+        port = ntohs(a.sin_port);
+        for (int i = 0; i < 3; ++i) { // fill the queue (never accepted)
+            const int c = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK, 0);
+            ::connect(c, reinterpret_cast<sockaddr *>(&a), sizeof a);
+            fillers.append(c);
+        }
+        QTest::qWait(100);
+    }
+    ~SilentListener() {
+        for (int c : fillers) ::close(c);
+        if (fd >= 0) ::close(fd);
+    }
+};
+
+// Watches the event loop: the longest gap between the ticks of a 10 ms timer.
+struct LoopWatch {
+    QTimer timer;
+    QElapsedTimer clock;
+    qint64 last = 0, worst = 0;
+    int ticks = 0;
+    LoopWatch() {
+        timer.setInterval(10);
+        QObject::connect(&timer, &QTimer::timeout, [this] {
+            const qint64 now = clock.elapsed();
+            worst = std::max(worst, now - last);
+            last = now;
+            ++ticks;
+        });
+        clock.start();
+        timer.start();
+    }
+};
 
 } // namespace
 
@@ -77,6 +142,76 @@ private slots:
         sim.waitForFinished(3000);
         QTRY_COMPARE_WITH_TIMEOUT(tcp.state(), Transport::State::Lost, 5000);
         QVERIFY(!tcp.errorString().isEmpty());
+    }
+
+    void tcpConnectsInTheBackgroundAndSaysWhyItFailed() {
+        LoopWatch watch;
+        TcpTransport tcp(QStringLiteral("127.0.0.1"), closedPort());
+        QSignalSpy errors(&tcp, &Transport::errorOccurred);
+        QElapsedTimer t;
+        t.start();
+        QVERIFY(tcp.open());
+        QVERIFY2(t.elapsed() < 100, QByteArray::number(t.elapsed())); // returned at once
+        QCOMPARE(tcp.state(), Transport::State::Connecting);
+        QTRY_COMPARE_WITH_TIMEOUT(tcp.state(), Transport::State::Closed, 5000);
+        QCOMPARE(errors.size(), 1);
+        QVERIFY2(tcp.errorString().contains("127.0.0.1"), qPrintable(tcp.errorString()));
+        QVERIFY2(tcp.errorString().contains("refused", Qt::CaseInsensitive),
+                 qPrintable(tcp.errorString()));
+        QVERIFY2(watch.worst < 200, QByteArray::number(watch.worst));
+    }
+
+    void aSilentHostTimesOutWithoutBlocking() {
+        // A listening socket whose accept queue is full never answers a new connection (the
+        // kernel drops the SYN): the attempt is given up after the connect timeout, and the
+        // event loop runs throughout.
+        SilentListener silent;
+        QVERIFY(silent.port > 0);
+        LoopWatch watch;
+        TcpTransport tcp(QStringLiteral("127.0.0.1"), silent.port);
+        tcp.setConnectTimeout(400);
+        QElapsedTimer t;
+        t.start();
+        QVERIFY(tcp.open());
+        QVERIFY(t.elapsed() < 100);
+        QTRY_COMPARE_WITH_TIMEOUT(tcp.state(), Transport::State::Closed, 3000);
+        QVERIFY2(t.elapsed() >= 350, QByteArray::number(t.elapsed()));
+        QVERIFY2(tcp.errorString().contains("no answer"), qPrintable(tcp.errorString()));
+        QVERIFY2(watch.worst < 200, QByteArray::number(watch.worst));
+    }
+
+    void aConnectionRetriesAClosedPortWithGrowingWaits() {
+        LoopWatch watch;
+        Connection conn(std::make_unique<TcpTransport>(QStringLiteral("127.0.0.1"), closedPort()),
+                        registry());
+        conn.setReconnectDelays(50, 200);
+        QList<int> waits;
+        connect(&conn, &Connection::openFailed,
+                [&](const QString &, int retryMs) { waits.append(retryMs); });
+        QVERIFY(conn.open());
+        QTRY_VERIFY_WITH_TIMEOUT(waits.size() >= 5, 5000);
+        QCOMPARE(waits.mid(0, 5), (QList<int>{50, 100, 200, 200, 200}));
+        QVERIFY(conn.isReconnecting());
+        conn.close();
+        QVERIFY(!conn.isReconnecting());
+        QVERIFY2(watch.worst < 200, QByteArray::number(watch.worst));
+    }
+
+    void commandsQueuedWhileConnectingWaitForTheLink() {
+        if (test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        const quint16 port = closedPort();
+        QProcess sim;
+        sim.start(test::simPath(), {"--dialect", "nvs", "--tcp", QString::number(port)});
+        QVERIFY(sim.waitForReadyRead(5000));
+        Connection conn(std::make_unique<TcpTransport>(QStringLiteral("127.0.0.1"), port),
+                        registry());
+        QVERIFY(conn.open());
+        conn.commands()->setDialect(registry().find("nvs"));
+        conn.commands()->enqueue("PNVGVER"); // before the socket has connected
+        QTRY_COMPARE_WITH_TIMEOUT(conn.commands()->history().size(), 1, 5000);
+        QCOMPARE(int(conn.commands()->history().first().outcome), int(CommandOutcome::Accepted));
+        sim.terminate();
+        sim.waitForFinished(3000);
     }
 
     void hostPortIsParsed() {
