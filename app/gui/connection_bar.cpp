@@ -29,6 +29,9 @@ ConnectionBar::ConnectionBar(link::PortWatcher *ports, QWidget *parent)
     baud_->addItem(tr("auto"), 0);
     for (int b : kBauds) baud_->addItem(QString::number(b), b);
     addWidget(baud_);
+    baudNote_ = new QLabel(this);
+    baudNote_->setObjectName("baudNote");
+    addWidget(baudNote_);
     button_ = new QPushButton(tr("Connect"), this);
     button_->setObjectName("connectButton");
     addWidget(button_);
@@ -116,6 +119,11 @@ void ConnectionBar::select(const SourceSpec &spec) {
         baud_->setCurrentIndex(b >= 0 ? b : 0);
     }
     baud_->setEnabled(spec.kind == SourceSpec::Kind::Serial);
+}
+
+void ConnectionBar::setBaudNote(const QString &text, const QString &tooltip) {
+    baudNote_->setText(text.isEmpty() ? QString() : QStringLiteral(" %1 ").arg(text));
+    baudNote_->setToolTip(tooltip);
 }
 
 void ConnectionBar::setConnected(bool connected) {

@@ -7,6 +7,7 @@
 #include <QToolBar>
 
 class QComboBox;
+class QLabel;
 class QPushButton;
 
 namespace gnss::link {
@@ -23,6 +24,8 @@ public:
     SourceSpec selection() const;
     void select(const SourceSpec &spec);
     void setConnected(bool connected);
+    // A note beside the baud rate: the rate being tried, the rate found ("auto → 38400").
+    void setBaudNote(const QString &text, const QString &tooltip = {});
 
 signals:
     void connectRequested(const gnss::app::SourceSpec &spec);
@@ -33,6 +36,7 @@ private:
     link::PortWatcher *ports_;
     QComboBox *source_;
     QComboBox *baud_;
+    QLabel *baudNote_;
     QPushButton *button_;
     bool connected_ = false;
     SourceSpec extra_; // a TCP or replay source chosen by the user

@@ -9,7 +9,15 @@
 #include "link/tcp_transport.h"
 #include "models/receiver_session.h"
 
+#include <QStringList>
+
 namespace gnss::app {
+
+namespace {
+QString seconds(int ms) {
+    return QString::number((ms + 500) / 1000);
+}
+} // namespace
 
 ConnectionController::ConnectionController(const DialectRegistry &registry,
                                            ui::ReceiverSession *session, QObject *parent)
@@ -30,67 +38,98 @@ void ConnectionController::setState(State s, const QString &text) {
 bool ConnectionController::connectTo(const SourceSpec &spec) {
     disconnectFromSource();
     spec_ = spec;
+    detectedBaud_ = 0;
+    detectionDetail_.clear();
     if (!spec.valid()) {
         setState(State::Failed, tr("No source chosen"));
         return false;
     }
-    if (spec.kind == SourceSpec::Kind::Serial && spec.baud == 0) {
-        // Baud "auto": try the likely rates before opening for real.
-        auto transport =
-                std::make_unique<link::SerialTransport>(link::SerialSettings{spec.name, 9600});
-        if (!transport->open()) {
-            setState(State::Failed,
-                     tr("Cannot open %1: %2").arg(spec.name, transport->errorString()));
-            return false;
-        }
-        detector_ = std::make_unique<link::BaudDetector>(transport.get());
-        auto *raw = transport.release();
-        raw->setParent(detector_.get());
-        connect(detector_.get(), &link::BaudDetector::tryingRate, this, [this](int baud) {
-            setState(State::Detecting, tr("Detecting baud rate: trying %1…").arg(baud));
-        });
-        connect(detector_.get(), &link::BaudDetector::finished, this,
-                &ConnectionController::onDetection);
-        setState(State::Detecting, tr("Detecting baud rate…"));
-        detector_->start();
-        return true;
+    if (spec.kind == SourceSpec::Kind::Serial && spec.baud == 0) return detectBaud();
+    return openWith(makeTransport(spec.baud));
+}
+
+bool ConnectionController::detectBaud() {
+    // Baud "auto": the port is opened once; the detector tries the likely rates on it and hands
+    // it over, open, at the rate it found (no close and reopen, which a lock could refuse).
+    auto transport = std::make_unique<link::SerialTransport>(
+            link::SerialSettings{spec_.name, link::BaudDetector::likelyRates(0).front()});
+    if (!transport->open()) {
+        setState(State::Failed, tr("Cannot open %1: %2").arg(spec_.name, transport->errorString()));
+        return false;
     }
-    return openWith(spec.baud);
+    detecting_ = std::move(transport);
+    detector_ = std::make_unique<link::BaudDetector>(detecting_.get());
+    connect(detector_.get(), &link::BaudDetector::tryingRate, this, [this](int baud) {
+        QStringList tried;
+        for (const auto &a : detector_->result().tried)
+            if (a.baud != baud) tried << attemptText(a);
+        setState(State::Detecting,
+                 tried.isEmpty()
+                         ? tr("%1: detecting the baud rate: trying %2…").arg(spec_.name).arg(baud)
+                         : tr("%1: detecting the baud rate: %2; trying %3…")
+                                   .arg(spec_.name, tried.join(QStringLiteral(", ")))
+                                   .arg(baud));
+        emit detectingRate(baud);
+    });
+    connect(detector_.get(), &link::BaudDetector::finished, this,
+            &ConnectionController::onDetection);
+    setState(State::Detecting, tr("%1: detecting the baud rate…").arg(spec_.name));
+    detector_->start();
+    return true;
+}
+
+QString ConnectionController::attemptText(const link::BaudAttempt &a) {
+    if (a.validSentences > 0) return tr("%1 (valid NMEA)").arg(a.baud);
+    if (a.bytes == 0) return tr("%1 (no data)").arg(a.baud);
+    return tr("%1 (data, no valid sentence)").arg(a.baud);
 }
 
 void ConnectionController::onDetection(const link::BaudDetection &result) {
-    // The detector's transport is closed with it; the real connection opens at the found rate.
+    // The detector is done with the port (deleted later: this runs inside its signal).
     detector_.release()->deleteLater();
+    std::unique_ptr<link::Transport> port = std::move(detecting_);
     if (!result.found) {
-        setState(State::Failed, result.error);
+        QStringList tried;
+        for (const auto &a : result.tried) tried << attemptText(a);
+        detectionDetail_ = tr("Baud rate not found: %1").arg(tried.join(QStringLiteral(", ")));
+        port->close();
+        port.release()->deleteLater();
+        setState(State::Failed, tr("%1: %2").arg(spec_.name, result.error));
+        emit detectionFinished(0);
         return;
     }
-    openWith(result.baud);
+    detectedBaud_ = result.baud;
+    QStringList tried;
+    for (const auto &a : result.tried) tried << attemptText(a);
+    detectionDetail_ = tr("Baud rate detected: %1").arg(tried.join(QStringLiteral(", ")));
+    emit detectionFinished(result.baud);
+    openWith(std::move(port));
 }
 
-bool ConnectionController::openWith(int baud) {
-    std::unique_ptr<link::Transport> transport;
+std::unique_ptr<link::Transport> ConnectionController::makeTransport(int baud) {
     switch (spec_.kind) {
     case SourceSpec::Kind::Serial:
-        transport = std::make_unique<link::SerialTransport>(link::SerialSettings{spec_.name, baud});
-        break;
+        return std::make_unique<link::SerialTransport>(link::SerialSettings{spec_.name, baud});
     case SourceSpec::Kind::Tcp: {
-        const int colon = spec_.name.lastIndexOf(':');
-        const quint16 port = quint16(spec_.name.mid(colon + 1).toUInt());
-        if (colon <= 0 || port == 0) {
-            setState(State::Failed, tr("TCP source must be HOST:PORT, got '%1'").arg(spec_.name));
-            return false;
-        }
-        transport = std::make_unique<link::TcpTransport>(spec_.name.left(colon), port);
-        break;
+        QString host;
+        quint16 port = 0;
+        if (!link::TcpTransport::parseHostPort(spec_.name, host, port)) return nullptr;
+        return std::make_unique<link::TcpTransport>(host, port);
     }
-    case SourceSpec::Kind::Replay:
-        transport = std::make_unique<link::ReplayTransport>(spec_.name);
-        break;
-    case SourceSpec::Kind::Simulator:
-        transport = std::make_unique<link::SimulatorTransport>(spec_.name);
-        break;
-    case SourceSpec::Kind::None: return false;
+    case SourceSpec::Kind::Replay: return std::make_unique<link::ReplayTransport>(spec_.name);
+    case SourceSpec::Kind::Simulator: return std::make_unique<link::SimulatorTransport>(spec_.name);
+    case SourceSpec::Kind::None: break;
+    }
+    return nullptr;
+}
+
+bool ConnectionController::openWith(std::unique_ptr<link::Transport> transport) {
+    if (!transport) {
+        setState(State::Failed,
+                 spec_.kind == SourceSpec::Kind::Tcp
+                         ? tr("TCP source must be HOST:PORT, got '%1'").arg(spec_.name)
+                         : tr("Cannot open %1").arg(spec_.displayName()));
+        return false;
     }
     DecoderOptions options;
     if (spec_.kind == SourceSpec::Kind::Simulator) options.dialect = spec_.name.toStdString();
@@ -102,13 +141,24 @@ bool ConnectionController::openWith(int baud) {
             &ui::ReceiverSession::noteBytes);
     c->setSentenceHandler(
             [this, c](const SentenceEvent &ev) { session_->consume(ev, c->decoder().dialect()); });
-    connect(c, &link::Connection::linkLost, this, [this](const QString &why) {
-        setState(State::Reconnecting, tr("Link lost: %1 — retrying every second").arg(why));
+    connect(c, &link::Connection::opened, this, [this](const QString &d) { setConnected(d); });
+    connect(c, &link::Connection::openFailed, this, [this](const QString &why, int retryMs) {
+        setState(State::Reconnecting,
+                 retryMs > 0 ? tr("%1 — trying again in %2 s").arg(why, seconds(retryMs)) : why);
+    });
+    connect(c, &link::Connection::linkLost, this, [this](const QString &why, int retryMs) {
+        setState(State::Reconnecting,
+                 tr("Link lost: %1 — trying again in %2 s").arg(why, seconds(retryMs)));
+    });
+    connect(c, &link::Connection::reconnectAttempt, this, [this, c](int attempt) {
+        setState(State::Reconnecting, tr("Reconnecting to %1 (attempt %2)…")
+                                              .arg(c->transport()->description())
+                                              .arg(attempt));
     });
     connect(c, &link::Connection::linkRestored, this,
-            [this](const QString &d) { setState(State::Connected, tr("Connected: %1").arg(d)); });
+            [this](const QString &d) { setConnected(d); });
     // Once the dialect is known, ask the receiver who it is (model, firmware) with its probe.
-    connect(c, &link::Connection::dialectDetected, this, [this, c](const QString &id) {
+    connect(c, &link::Connection::dialectDetected, this, [this](const QString &id) {
         if (const Dialect *d = registry_.find(id.toStdString()); d && !d->probeCommand.empty())
             send(QByteArray(d->probeCommand.data(), qsizetype(d->probeCommand.size())));
     });
@@ -122,20 +172,42 @@ bool ConnectionController::openWith(int baud) {
                                                              : r.detail),
                         ok);
             });
+    if (auto *replay = qobject_cast<link::ReplayTransport *>(c->transport()))
+        connect(replay, &link::ReplayTransport::openingProgress, this, [this](int percent) {
+            if (state_ == State::Connecting)
+                setState(State::Connecting,
+                         tr("Opening %1… %2%").arg(spec_.displayName()).arg(percent));
+        });
     if (!c->open()) {
         setState(State::Failed,
                  tr("Cannot open %1: %2").arg(spec_.displayName(), c->transport()->errorString()));
         return false;
     }
-    setState(State::Connected, tr("Connected: %1").arg(c->transport()->description()));
+    if (c->transport()->isOpen())
+        setConnected(c->transport()->description());
+    else
+        setState(State::Connecting, spec_.kind == SourceSpec::Kind::Replay
+                                            ? tr("Opening %1…").arg(spec_.displayName())
+                                            : tr("Connecting to %1…").arg(spec_.displayName()));
     return true;
+}
+
+void ConnectionController::setConnected(const QString &description) {
+    setState(State::Connected, detectedBaud_ > 0 ? tr("Connected: %1 (detected)").arg(description)
+                                                 : tr("Connected: %1").arg(description));
+}
+
+void ConnectionController::retryNow() {
+    if (connection_) connection_->retryNow();
 }
 
 void ConnectionController::disconnectFromSource() {
     if (detector_) {
+        detector_->disconnect(this); // cancelled on purpose: not a failure to report
         detector_->cancel();
         detector_.reset();
     }
+    detecting_.reset();
     if (connection_) {
         connection_->close();
         connection_.reset();

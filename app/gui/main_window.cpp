@@ -33,6 +33,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyleFactory>
@@ -60,10 +61,23 @@ MainWindow::MainWindow(const DialectRegistry &registry, QSettings *settings, QWi
     connect(bar_, &ConnectionBar::disconnectRequested, controller_,
             &ConnectionController::disconnectFromSource);
     connect(controller_, &ConnectionController::stateChanged, this, [this] {
-        bar_->setConnected(controller_->state() != ConnectionController::State::Disconnected &&
-                           controller_->state() != ConnectionController::State::Failed);
+        const auto s = controller_->state();
+        bar_->setConnected(s != ConnectionController::State::Disconnected &&
+                           s != ConnectionController::State::Failed);
+        // The baud note belongs to a detection: gone with a source that had none.
+        if (controller_->detectedBaud() == 0 && s != ConnectionController::State::Detecting &&
+            s != ConnectionController::State::Failed)
+            bar_->setBaudNote({});
         updateStatus();
     });
+    connect(controller_, &ConnectionController::detectingRate, this,
+            [this](int baud) { bar_->setBaudNote(tr("trying %1…").arg(baud)); });
+    connect(controller_, &ConnectionController::detectionFinished, this, [this](int baud) {
+        bar_->setBaudNote(baud > 0 ? tr("→ %1").arg(baud) : tr("not found"),
+                          controller_->detectionDetail());
+    });
+    // A device plugged in: a link waiting to reconnect tries at once.
+    connect(ports_, &link::PortWatcher::portsChanged, controller_, &ConnectionController::retryNow);
     connect(controller_, &ConnectionController::commandFinished, this,
             [this](const QString &summary, bool ok) {
                 statusBar()->showMessage(ok ? summary : tr("Command: %1").arg(summary), 8000);
@@ -72,7 +86,15 @@ MainWindow::MainWindow(const DialectRegistry &registry, QSettings *settings, QWi
     statusTimer->setInterval(500);
     connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
     statusTimer->start();
-    resize(1400, 900);
+    // 1400x900 where the screen has room; on a smaller screen (a 1280x800 laptop) the whole
+    // available area, maximised, never a window larger than the screen.
+    const QSize preferred(1400, 900);
+    const QRect avail = screen() ? screen()->availableGeometry() : QRect(QPoint(), preferred);
+    resize(preferred.boundedTo(avail.size()));
+    if (avail.width() < preferred.width() || avail.height() < preferred.height()) {
+        move(avail.topLeft());
+        setWindowState(windowState() | Qt::WindowMaximized);
+    }
     defaultState_ = saveState();
     restoreLayout();
 }
@@ -94,13 +116,16 @@ void MainWindow::createModels() {
     controller_ = new ConnectionController(registry_, session_, this);
 }
 
-QDockWidget *MainWindow::addDock(QWidget *w, const QString &title, const QString &objectName,
-                                 Qt::DockWidgetArea area) {
+QDockWidget *MainWindow::addDock(QWidget *w, const QString &title, const QString &fullTitle,
+                                 const QString &objectName, Qt::DockWidgetArea area) {
+    // Tabs show the short title (whole even at 1280 px); the View menu the full one.
     auto *d = new QDockWidget(title, this);
     d->setObjectName(objectName);
     d->setWidget(w);
     d->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
                    QDockWidget::DockWidgetFloatable);
+    d->toggleViewAction()->setText(fullTitle);
+    d->toggleViewAction()->setToolTip(fullTitle);
     addDockWidget(area, d);
     return d;
 }
@@ -111,34 +136,37 @@ QDockWidget *MainWindow::dock(const QString &objectName) const {
 
 void MainWindow::createDocks() {
     sky_ = new ui::SkyPlotView(satellites_, this);
-    auto *skyDock = addDock(sky_, tr("Sky plot"), "skyDock", Qt::LeftDockWidgetArea);
-    auto *fixDock = addDock(new ui::FixView(stateModel_, this), tr("Fix and position"), "fixDock",
-                            Qt::RightDockWidgetArea);
+    auto *skyDock =
+            addDock(sky_, tr("Sky plot"), tr("Sky plot"), "skyDock", Qt::LeftDockWidgetArea);
+    auto *fixDock = addDock(new ui::FixView(stateModel_, this), tr("Fix"), tr("Fix and position"),
+                            "fixDock", Qt::RightDockWidgetArea);
     auto *signalDock = addDock(new ui::SignalLevelsView(satellites_, this), tr("Signal levels"),
-                               "signalDock", Qt::BottomDockWidgetArea);
+                               tr("Signal levels"), "signalDock", Qt::BottomDockWidgetArea);
     auto *table = new QTableView(this);
     table->setObjectName("satelliteTable");
     table->setModel(satellites_);
     table->verticalHeader()->hide();
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    auto *satDock = addDock(table, tr("Satellites"), "satellitesDock", Qt::RightDockWidgetArea);
+    auto *satDock = addDock(table, tr("Satellites"), tr("Satellites"), "satellitesDock",
+                            Qt::RightDockWidgetArea);
     consoleView_ = new ui::ConsoleView(console_, this);
-    auto *consoleDock =
-            addDock(consoleView_, tr("Console"), "consoleDock", Qt::BottomDockWidgetArea);
-    auto *statsDock = addDock(new ui::MessageStatsView(messages_, this), tr("Message statistics"),
-                              "statsDock", Qt::BottomDockWidgetArea);
-    auto *infoDock = addDock(new ui::ReceiverInfoView(stateModel_, this),
+    auto *consoleDock = addDock(consoleView_, tr("Console"), tr("Console"), "consoleDock",
+                                Qt::BottomDockWidgetArea);
+    auto *statsDock = addDock(new ui::MessageStatsView(messages_, this), tr("Statistics"),
+                              tr("Message statistics"), "statsDock", Qt::BottomDockWidgetArea);
+    auto *infoDock = addDock(new ui::ReceiverInfoView(stateModel_, this), tr("Receiver"),
                              tr("Receiver information"), "infoDock", Qt::RightDockWidgetArea);
     rtk_ = new ui::RtkView(stateModel_, this);
-    auto *rtkDock = addDock(rtk_, tr("RTK"), "rtkDock", Qt::RightDockWidgetArea);
+    auto *rtkDock = addDock(rtk_, tr("RTK"), tr("RTK"), "rtkDock", Qt::RightDockWidgetArea);
     charts_ = new ui::ChartsView(stateModel_, this);
-    auto *chartsDock = addDock(charts_, tr("Charts"), "chartsDock", Qt::BottomDockWidgetArea);
+    auto *chartsDock =
+            addDock(charts_, tr("Charts"), tr("Charts"), "chartsDock", Qt::BottomDockWidgetArea);
     splitDockWidget(skyDock, signalDock, Qt::Vertical);
     auto *deviationDock = addDock(new ui::DeviationView(stateModel_, this), tr("Deviation"),
-                                  "deviationDock", Qt::LeftDockWidgetArea);
+                                  tr("Deviation"), "deviationDock", Qt::LeftDockWidgetArea);
     auto *attitudeDock =
-            addDock(new ui::AttitudeView(stateModel_, this), tr("Attitude and time marks"),
-                    "attitudeDock", Qt::RightDockWidgetArea);
+            addDock(new ui::AttitudeView(stateModel_, this), tr("Attitude"),
+                    tr("Attitude and time marks"), "attitudeDock", Qt::RightDockWidgetArea);
     tabifyDockWidget(skyDock, deviationDock);
     skyDock->raise();
     tabifyDockWidget(fixDock, rtkDock);
@@ -148,8 +176,8 @@ void MainWindow::createDocks() {
     // Receiver settings: the engine follows the connection and the dialect it speaks.
     auto *settingsEngine = new config::SettingsEngine(this);
     tabifyDockWidget(attitudeDock,
-                     addDock(new ui::SettingsView(settingsEngine, this), tr("Receiver settings"),
-                             "settingsDock", Qt::RightDockWidgetArea));
+                     addDock(new ui::SettingsView(settingsEngine, this), tr("Settings"),
+                             tr("Receiver settings"), "settingsDock", Qt::RightDockWidgetArea));
     connect(session_, &ui::ReceiverSession::dialectChanged, settingsEngine,
             [this, settingsEngine](const Dialect *d) {
                 settingsEngine->attach(controller_->connection(), d);
@@ -172,6 +200,9 @@ void MainWindow::createDocks() {
         if (d)
             for (auto n : d->commandNames) names << QString::fromLatin1(n.data(), int(n.size()));
         consoleView_->setCommandNames(names);
+        consoleView_->setExample(
+                d ? QString::fromLatin1(d->consoleExample.data(), int(d->consoleExample.size()))
+                  : QString());
         // The sky plot draws the elevation mask: the schema's default until the receiver's own
         // value is read (below).
         if (const SettingDef *m = elevationMaskSetting(d)) {
@@ -288,6 +319,7 @@ void MainWindow::createStatusBar() {
 
 void MainWindow::updateStatus() {
     stateLabel_->setText(controller_->stateText());
+    stateLabel_->setToolTip(controller_->detectionDetail());
     const Dialect *d = session_->dialect();
     const ReceiverIdentity &id = stateModel_->state().identity;
     QString who = d ? QString::fromLatin1(d->displayName.data(), int(d->displayName.size()))

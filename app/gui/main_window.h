@@ -61,8 +61,8 @@ private:
     void createDocks();
     void createMenus();
     void createStatusBar();
-    QDockWidget *addDock(QWidget *w, const QString &title, const QString &objectName,
-                         Qt::DockWidgetArea area);
+    QDockWidget *addDock(QWidget *w, const QString &title, const QString &fullTitle,
+                         const QString &objectName, Qt::DockWidgetArea area);
     void updateStatus();
     void applyTheme(const QString &theme);
     void toggleRecording(bool on);
