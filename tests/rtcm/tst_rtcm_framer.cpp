@@ -107,6 +107,25 @@ private slots:
         QCOMPARE(crc24q(p + 4, 5, crc24q(p, 4)), std::uint32_t(0xCDE703));
     }
 
+    void crc24qAgreesWithTheBitwiseDefinitionAtEveryLength() {
+        // The definition, one bit at a time, against the table-driven code (eight bytes a step,
+        // then one at a time): every length up to 100 covers every split.
+        auto bitwise = [](const std::uint8_t *p, std::size_t n) {
+            std::uint32_t crc = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                crc ^= std::uint32_t(p[i]) << 16;
+                for (int b = 0; b < 8; ++b) {
+                    crc <<= 1;
+                    if (crc & 0x1000000) crc ^= 0x1864CFB;
+                }
+            }
+            return crc & 0xFFFFFF;
+        };
+        const std::string data = randomBytes(100, 99);
+        const auto *p = reinterpret_cast<const std::uint8_t *>(data.data());
+        for (std::size_t n = 0; n <= data.size(); ++n) QCOMPARE(crc24q(p, n), bitwise(p, n));
+    }
+
     void thePublished1005ExampleIsOneGoodFrame() {
         const auto r = frameWhole(kExample1005);
         QCOMPARE(r.frames.size(), std::size_t(1));
