@@ -1,7 +1,6 @@
 // Broadcast ephemerides: which satellite, which issue (week, IODE/IODC, toc/toe, health). The
 // orbit and clock terms in between are skipped by their widths; the payload must hold them all.
-#include "bit_reader.h"
-#include "rtcm_messages.h"
+#include "message_decoders.h"
 
 namespace gnss::rtcm {
 namespace {

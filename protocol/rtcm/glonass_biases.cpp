@@ -1,6 +1,5 @@
 // 1230: GLONASS L1 and L2 code-phase biases (what a rover needs to mix GLONASS receivers).
-#include "bit_reader.h"
-#include "rtcm_messages.h"
+#include "message_decoders.h"
 
 namespace gnss::rtcm {
 

@@ -1,6 +1,5 @@
 // Multiple Signal Messages (MSM1..MSM7) of every system: header decoded, body length checked.
-#include "bit_reader.h"
-#include "rtcm_messages.h"
+#include "message_decoders.h"
 
 #include <bit>
 

@@ -1,6 +1,5 @@
 // decodeMessage: reads DF002 and hands the payload to the family's decoder.
-#include "bit_reader.h"
-#include "rtcm_messages.h"
+#include "message_decoders.h"
 
 namespace gnss::rtcm {
 namespace {

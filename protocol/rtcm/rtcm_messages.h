@@ -130,12 +130,4 @@ unsigned msmPrn(System system, unsigned satelliteId);
 std::size_t msmBodyBits(unsigned msmType, unsigned satellites, unsigned cells);
 inline constexpr std::size_t kMsmHeaderBits = 169; // before the cell mask
 
-// Per-family decoders (each file holds one family). `r` is positioned after DF002.
-class BitReader;
-void decodeStationArp(BitReader &r, RtcmMessage &m);
-void decodeAntennaInfo(BitReader &r, RtcmMessage &m);
-void decodeMsm(BitReader &r, RtcmMessage &m);
-void decodeEphemeris(BitReader &r, RtcmMessage &m);
-void decodeGlonassBiases(BitReader &r, RtcmMessage &m);
-
 } // namespace gnss::rtcm

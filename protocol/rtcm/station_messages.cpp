@@ -1,7 +1,6 @@
 // Reference station messages: 1005/1006 (antenna reference point) and 1007/1008/1033 (antenna
 // and receiver descriptors).
-#include "bit_reader.h"
-#include "rtcm_messages.h"
+#include "message_decoders.h"
 
 namespace gnss::rtcm {
 
