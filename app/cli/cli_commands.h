@@ -24,5 +24,7 @@ int cmdRecord(const CliContext &ctx, int argc, char **argv);
 int cmdSend(const CliContext &ctx, int argc, char **argv);
 // Receiver settings (cmd_config.cpp): get, set, export, apply, diff.
 int cmdConfig(const CliContext &ctx, int argc, char **argv);
+// RTCM 3 streams (cmd_rtcm.cpp): one JSON object per message, counts on standard error.
+int cmdRtcm(const CliContext &ctx, int argc, char **argv);
 
 } // namespace gnss::cli

@@ -35,6 +35,8 @@ constexpr Command kCommands[] = {
         {"config", gnss::cli::cmdConfig,
          "config --port P [--baud B] | --sim D  get [KEY...] | set KEY=VALUE... | export FILE | "
          "apply FILE | diff FILE | action save|defaults|cold|warm|hot"},
+        {"rtcm", gnss::cli::cmdRtcm,
+         "rtcm [FILE|-]   one JSON object per RTCM 3 message; counts on stderr"},
 };
 
 void usage(std::FILE *f) {

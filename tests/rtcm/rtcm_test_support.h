@@ -1,0 +1,75 @@
+#pragma once
+// Small helpers shared by the RTCM suites: hex fixtures, frames ↔ payloads.
+#include "rtcm/rtcm_framer.h"
+#include "rtcm/rtcm_messages.h"
+
+#include <cctype>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rtcm_test {
+
+// "D3 00 13 3E ..." → bytes (spaces ignored).
+inline std::string fromHex(std::string_view hex) {
+    std::string out;
+    int high = -1;
+    for (const char c : hex) {
+        if (std::isspace(static_cast<unsigned char>(c))) continue;
+        const int v = std::isdigit(static_cast<unsigned char>(c))
+                              ? c - '0'
+                              : std::toupper(static_cast<unsigned char>(c)) - 'A' + 10;
+        if (high < 0) {
+            high = v;
+        } else {
+            out.push_back(static_cast<char>(high << 4 | v));
+            high = -1;
+        }
+    }
+    return out;
+}
+
+inline std::span<const std::uint8_t> bytesOf(std::string_view s) {
+    return {reinterpret_cast<const std::uint8_t *>(s.data()), s.size()};
+}
+
+// The payload of one whole frame (header and CRC dropped).
+inline std::span<const std::uint8_t> payloadOf(std::string_view frame) {
+    return bytesOf(frame.substr(3, frame.size() - 6));
+}
+
+inline gnss::rtcm::RtcmMessage decodeFrame(std::string_view frame) {
+    return gnss::rtcm::decodeMessage(payloadOf(frame));
+}
+
+// Every frame the framer finds in `data` fed in chunks of the given sizes (cycled).
+struct Framed {
+    std::vector<std::string> frames;
+    gnss::rtcm::RtcmFramerStats stats;
+};
+
+inline Framed frameInChunks(std::string_view data, const std::vector<std::size_t> &sizes) {
+    gnss::rtcm::RtcmFramer framer;
+    Framed r;
+    auto keep = [&r](const gnss::rtcm::RtcmFrame &f) {
+        r.frames.emplace_back(reinterpret_cast<const char *>(f.bytes.data()), f.bytes.size());
+    };
+    std::size_t pos = 0, k = 0;
+    while (pos < data.size()) {
+        const std::size_t n =
+                std::min(std::max<std::size_t>(sizes[k++ % sizes.size()], 1), data.size() - pos);
+        framer.feed(data.substr(pos, n), keep);
+        pos += n;
+    }
+    framer.finish(keep);
+    r.stats = framer.stats();
+    return r;
+}
+
+inline Framed frameWhole(std::string_view data) {
+    return frameInChunks(data, {data.size() + 1});
+}
+
+} // namespace rtcm_test
