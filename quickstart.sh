@@ -21,6 +21,8 @@ packages=(
   # Qt6Gui's CMake config looks for OpenGL headers (WrapOpenGL).
   libgl-dev
   libbenchmark-dev fonts-dejavu-core
+  # The smoke test runs the real binary on an X server: xvfb-run (xvfb) needs xauth.
+  xvfb xauth
 )
 
 missing=()

@@ -67,6 +67,97 @@ private slots:
         QVERIFY(!view.grab().toImage().isNull());
     }
 
+    void skyLabelsNeverOverlapEvenInCrowdsOfSixty_data() {
+        QTest::addColumn<int>("size");
+        for (int size : {160, 240, 320, 420, 700}) QTest::addRow("%dpx", size) << size;
+    }
+    void skyLabelsNeverOverlapEvenInCrowdsOfSixty() {
+        // 60 satellites, a third of them in tight clusters of three (the spots where labels of
+        // close satellites used to be drawn on top of each other).
+        QFETCH(int, size);
+        ui::SatelliteModel model;
+        Epoch e;
+        const Constellation systems[] = {Constellation::Gps, Constellation::Glonass,
+                                         Constellation::Galileo, Constellation::BeiDou,
+                                         Constellation::Sbas};
+        for (int i = 0; i < 60; ++i) {
+            const Constellation sys = systems[i % 5];
+            const int prn = sys == Constellation::Sbas ? 120 + i / 5 : 1 + i / 5;
+            const bool cluster = i < 21;
+            const double el = cluster ? 30 + (i / 3) * 7 + (i % 3) * 0.5 : 5 + (i * 37) % 85;
+            const double az = cluster ? (i / 3) * 50 + (i % 3) * 1.0 : (i * 71) % 360;
+            e.satellites.push_back({{sys, prn}, 0, int(el), int(az), 30 + i % 20, i % 2 == 0});
+        }
+        model.update(e, 1000);
+        ui::SkyPlotView view(&model);
+        view.resize(size, size);
+        const auto ms = view.markers();
+        QCOMPARE(ms.size(), 60);
+        const double body = 8;
+        int labelled = 0;
+        for (int i = 0; i < ms.size(); ++i) {
+            QVERIFY(!ms[i].tooltip.isEmpty()); // a dropped label still has its tooltip
+            if (ms[i].labelRect.isNull()) {
+                QVERIFY(ms[i].text.isEmpty());
+                continue;
+            }
+            ++labelled;
+            QVERIFY(view.rect().contains(ms[i].labelRect.toAlignedRect()));
+            for (int j = 0; j < ms.size(); ++j) {
+                if (j == i) continue;
+                QVERIFY2(!ms[j].labelRect.isNull() ? !ms[i].labelRect.intersects(ms[j].labelRect)
+                                                   : true,
+                         qPrintable(ms[i].text + " over " + ms[j].text));
+                // Never over another satellite's marker either.
+                const QRectF other(ms[j].pos - QPointF(body / 2, body / 2), QSizeF(body, body));
+                QVERIFY2(!ms[i].labelRect.intersects(other),
+                         qPrintable(ms[i].text + " hides " + ms[j].label));
+            }
+        }
+        qInfo("%d px: %d of 60 labels placed", size, labelled);
+        // Room decides how many: all of them in a big plot, most in a docked one.
+        if (size >= 700) QCOMPARE(labelled, 60);
+        if (size >= 420) QVERIFY2(labelled >= 45, qPrintable(QString::number(labelled)));
+        QVERIFY(!view.grab().isNull());
+    }
+
+    void signalIdsStayLegibleAtAnyWidth_data() {
+        QTest::addColumn<int>("width");
+        for (int w : {160, 240, 320, 480, 640, 900, 1400, 2000}) QTest::addRow("%dpx", w) << w;
+    }
+    void signalIdsStayLegibleAtAnyWidth() {
+        QFETCH(int, width);
+        ui::SatelliteModel model;
+        Epoch e;
+        for (int i = 0; i < 60; ++i)
+            e.satellites.push_back({{i < 30 ? Constellation::Gps : Constellation::Sbas,
+                                     i < 30 ? i + 1 : 120 + i - 30},
+                                    0,
+                                    45,
+                                    (i * 6) % 360,
+                                    25 + i % 25,
+                                    true});
+        model.update(e, 1000);
+        ui::SignalLevelsView view(&model);
+        view.resize(width, 220);
+        const auto lay = view.layout();
+        QCOMPARE(lay.bars.size(), 60);
+        int written = 0;
+        for (int i = 0; i < lay.bars.size(); ++i) {
+            if (lay.bars[i].id.isEmpty()) continue;
+            ++written;
+            QVERIFY(lay.bars[i].idRect.bottom() <= view.height());
+            for (int j = i + 1; j < lay.bars.size(); ++j)
+                if (!lay.bars[j].id.isEmpty())
+                    QVERIFY2(!lay.bars[i].idRect.intersects(lay.bars[j].idRect),
+                             qPrintable(lay.bars[i].id + " runs into " + lay.bars[j].id));
+        }
+        // Every id written while there is room for it; some, evenly spread, when there is not.
+        if (width >= 900) QCOMPARE(written, 60);
+        QVERIFY(written >= 60 / lay.every - 2);
+        QVERIFY(!view.grab().isNull());
+    }
+
     void satellitesOutOfViewAreKeptThenDropped() {
         ui::SatelliteModel model;
         model.setKeepAfterLostMs(5000);

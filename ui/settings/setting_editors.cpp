@@ -1,5 +1,6 @@
 #include "setting_editors.h"
 
+#include <QAbstractItemView>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -9,6 +10,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QStyle>
 
 #include <cmath>
 #include <limits>
@@ -86,10 +88,37 @@ private:
     QDoubleSpinBox *box_;
 };
 
+// A combo box as wide as the value it shows (not as its longest option, which can be a sentence:
+// "Base station with automatic antenna position averaging"); the list it opens is as wide as
+// every option. It never gets less than that width, so the value shown is always whole.
+class FittingComboBox : public QComboBox {
+public:
+    explicit FittingComboBox(QWidget *parent) : QComboBox(parent) {
+        setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        setMinimumContentsLength(kMinChars);
+        connect(this, &QComboBox::currentIndexChanged, this, [this] { updateGeometry(); });
+    }
+    QSize sizeHint() const override {
+        QSize s = QComboBox::sizeHint(); // kMinChars wide
+        const int text = fontMetrics().horizontalAdvance(currentText());
+        const int chars = fontMetrics().horizontalAdvance(QLatin1Char('x')) * kMinChars;
+        return {s.width() + std::max(0, text - chars), s.height()};
+    }
+    QSize minimumSizeHint() const override { return sizeHint(); }
+    void showPopup() override {
+        view()->setMinimumWidth(view()->sizeHintForColumn(0) + 2 * view()->frameWidth() +
+                                style()->pixelMetric(QStyle::PM_ScrollBarExtent));
+        QComboBox::showPopup();
+    }
+
+private:
+    static constexpr int kMinChars = 8;
+};
+
 class EnumEditor : public SettingEditor {
 public:
     EnumEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
-        box_ = new QComboBox(this);
+        box_ = new FittingComboBox(this);
         for (const auto &o : def.options) {
             const QString label = qs(o.label);
             box_->addItem(label == qs(o.value) ? label : QString("%1 (%2)").arg(label, qs(o.value)),
@@ -205,6 +234,10 @@ void SettingEditor::finish(QWidget *input) {
         l->addWidget(input, 1);
     }
     input->setObjectName(qs(def_.key));
+    // Spin boxes and line edits keep the width they ask for (the form wraps or scrolls instead
+    // of squeezing them); combo boxes do so by themselves (FittingComboBox).
+    if (qobject_cast<QAbstractSpinBox *>(input) || qobject_cast<QLineEdit *>(input))
+        input->setMinimumWidth(input->sizeHint().width());
     QString tip = qs(def_.help);
     if (def_.min || def_.max)
         tip += "\n" + tr("Range: %1 to %2 %3")

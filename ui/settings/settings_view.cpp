@@ -95,6 +95,9 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     });
     profiles_->setMenu(profileMenu);
     cancel_ = new QPushButton(tr("Cancel"), this);
+    read_->setObjectName("settingsRead");
+    apply_->setObjectName("settingsApply");
+    revert_->setObjectName("settingsRevert");
     for (QWidget *w : std::initializer_list<QWidget *>{read_, apply_, revert_, save_, defaults_,
                                                        reset_, presets_, profiles_})
         bar->addWidget(w);
@@ -228,25 +231,43 @@ void SettingsView::updateGroupChooser() {
 }
 
 void SettingsView::updateRowWrapping() {
-    // One policy per page, so its rows read alike: labels beside the editors when the widest
-    // label and the widest editor fit side by side, every label above its editor otherwise.
+    // One arrangement per page, so its rows read alike, the widest that fits the view:
+    //   labels beside editors, receiver values beside editors;
+    //   labels above editors, receiver values beside editors;
+    //   labels above editors, receiver values below editors.
     for (int page = 0; page < pages_->count(); ++page) {
         auto *scroll = qobject_cast<QScrollArea *>(pages_->widget(page));
         auto *form = scroll ? qobject_cast<QFormLayout *>(scroll->widget()->layout()) : nullptr;
         if (!form) continue;
-        int labels = 0, fields = 0;
+        int labels = 0, beside = 0, stacked = 0;
         for (int row = 0; row < form->rowCount(); ++row) {
             if (QLayoutItem *l = form->itemAt(row, QFormLayout::LabelRole))
                 labels = std::max(labels, l->sizeHint().width());
-            if (QLayoutItem *f = form->itemAt(row, QFormLayout::FieldRole))
-                fields = std::max(fields, f->minimumSize().width());
+            QLayoutItem *f = form->itemAt(row, QFormLayout::FieldRole);
+            auto *box =
+                    f && f->widget() ? qobject_cast<QBoxLayout *>(f->widget()->layout()) : nullptr;
+            if (!box || box->count() < 2) continue;
+            const int editor = box->itemAt(0)->minimumSize().width();
+            const int value = box->itemAt(1)->sizeHint().width();
+            const bool coordinates = f->widget()->property("stacked").toBool();
+            beside = std::max(beside, coordinates ? std::max(editor, value)
+                                                  : editor + box->spacing() + value);
+            stacked = std::max(stacked, std::max(editor, value));
         }
         const QMargins m = form->contentsMargins();
-        const int needed = labels + form->horizontalSpacing() + fields + m.left() + m.right();
-        const int available = scroll->viewport()->width();
-        const auto policy =
-                needed <= available ? QFormLayout::DontWrapRows : QFormLayout::WrapAllRows;
+        const int available = scroll->viewport()->width() - m.left() - m.right();
+        const bool labelsBeside = labels + form->horizontalSpacing() + beside <= available;
+        const bool valuesBeside = labelsBeside || beside <= available;
+        const auto policy = labelsBeside ? QFormLayout::DontWrapRows : QFormLayout::WrapAllRows;
         if (form->rowWrapPolicy() != policy) form->setRowWrapPolicy(policy);
+        for (int row = 0; row < form->rowCount(); ++row) {
+            QLayoutItem *f = form->itemAt(row, QFormLayout::FieldRole);
+            auto *box =
+                    f && f->widget() ? qobject_cast<QBoxLayout *>(f->widget()->layout()) : nullptr;
+            if (!box || f->widget()->property("stacked").toBool()) continue;
+            const auto dir = valuesBeside ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom;
+            if (box->direction() != dir) box->setDirection(dir);
+        }
     }
 }
 
@@ -380,9 +401,9 @@ void SettingsView::rebuild() {
 }
 
 void SettingsView::addRow(QFormLayout *form, const SettingDef &def) {
+    // An editor never gets less than it asks for (see SettingEditor): the row wraps, or the
+    // page scrolls, instead.
     SettingEditor *e = makeSettingEditor(def, nullptr);
-    // An editor never gets less than it asks for: the row wraps (or the page scrolls) instead.
-    e->setMinimumWidth(e->sizeHint().width());
     const std::string key(def.key);
     auto *label = new QLabel(qs(def.label) + (def.unit.empty() ? "" : " (" + qs(def.unit) + ")"));
     label->setObjectName("label:" + qs(def.key));
@@ -395,9 +416,10 @@ void SettingsView::addRow(QFormLayout *form, const SettingDef &def) {
     receiver->setForegroundRole(QPalette::PlaceholderText);
     // The receiver's value beside the editor; below it for the wide coordinate editors.
     auto *cell = new QWidget;
-    QBoxLayout *box = qobject_cast<CoordinateEditor *>(e)
-                              ? static_cast<QBoxLayout *>(new QVBoxLayout(cell))
-                              : static_cast<QBoxLayout *>(new QHBoxLayout(cell));
+    const bool coordinates = qobject_cast<CoordinateEditor *>(e) != nullptr;
+    cell->setProperty("stacked", coordinates); // always the value below (updateRowWrapping)
+    auto *box =
+            new QBoxLayout(coordinates ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight, cell);
     box->setContentsMargins(0, 0, 0, 0);
     box->setSpacing(8);
     box->addWidget(e);

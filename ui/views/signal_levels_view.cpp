@@ -69,30 +69,29 @@ SignalLevelsView::Layout SignalLevelsView::layout() const {
     if (order.isEmpty()) return out;
 
     double x = out.area.left();
-    int inGroup = 0;
+    double lastIdRight = -1e9; // ids are written left to right, each clear of the one before
     for (int i = 0; i < order.size(); ++i) {
         const auto &r = rows[size_t(order[i])];
         if (i > 0) {
             const auto &prev = rows[size_t(order[i - 1])];
-            if (prev.sat.system != r.sat.system || prev.signalId != r.signalId) {
-                x += slot * 0.8;
-                inGroup = 0;
-            }
+            if (prev.sat.system != r.sat.system || prev.signalId != r.signalId) x += slot * 0.8;
         }
         const double snr = std::clamp(double(r.snr.value_or(0)), 0.0, kMaxSnr);
         const double h = out.area.height() * snr / kMaxSnr;
         Bar b{order[i], QRectF(x + slot * 0.12, out.area.bottom() - h, slot * 0.76, h),
               SatelliteModel::label(r), QString(), QRectF()};
-        if (inGroup % out.every == 0) {
-            b.id = QString::fromStdString(satelliteLabel(r.sat));
-            const double cx = x + slot / 2, top = out.area.bottom() + 2;
-            const double tw = ifm.horizontalAdvance(b.id), th = ifm.height();
-            b.idRect = out.rotated ? QRectF(cx - th / 2, top, th, tw)
-                                   : QRectF(cx - tw / 2, top, tw, th);
+        const QString id = QString::fromStdString(satelliteLabel(r.sat));
+        const double cx = x + slot / 2, top = out.area.bottom() + 2;
+        const double tw = ifm.horizontalAdvance(id), th = ifm.height();
+        const QRectF idRect =
+                out.rotated ? QRectF(cx - th / 2, top, th, tw) : QRectF(cx - tw / 2, top, tw, th);
+        if (idRect.left() > lastIdRight + 1) { // else thinned out: no room beside the last
+            b.id = id;
+            b.idRect = idRect;
+            lastIdRight = idRect.right();
         }
         out.bars.push_back(b);
         x += slot;
-        ++inGroup;
     }
     return out;
 }

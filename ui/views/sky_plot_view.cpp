@@ -163,13 +163,10 @@ void SkyPlotView::placeLabels(QVector<Marker> &ms) const {
         if (ms[a].used != ms[b].used) return ms[a].used;
         return ms[a].snr > ms[b].snr;
     });
-    for (int i : order) {
-        Marker &m = ms[i];
-        m.text = m.snr >= 0 ? QStringLiteral("%1 %2").arg(m.label).arg(m.snr) : m.label;
-        const QSizeF ts(fm.horizontalAdvance(m.text) + 2, fm.height());
-        const double gap = size * 0.7;
-        // Candidate places: the eight around the marker, then the same further out (with a
-        // leader line back to the marker).
+    const double gap = size * 0.7;
+    // The first free place for a label of size `ts` near marker i: the eight places around it,
+    // then the same further out (drawn with a leader line back to the marker).
+    auto place = [&](int i, QSizeF ts, bool &leader) -> QRectF {
         const QPointF offsets[] = {
                 {gap, -ts.height() / 2},
                 {-gap - ts.width(), -ts.height() / 2},
@@ -180,28 +177,39 @@ void SkyPlotView::placeLabels(QVector<Marker> &ms) const {
                 {-gap * 0.7 - ts.width(), -gap * 0.7 - ts.height()},
                 {-gap * 0.7 - ts.width(), gap * 0.7},
         };
-        m.labelRect = {};
         for (double reach : {1.0, 2.2}) {
             for (const QPointF &o : offsets) {
                 const QPointF shift = reach == 1.0 ? QPointF()
                                                    : o / std::max(1.0, std::hypot(o.x(), o.y())) *
                                                              gap * (reach - 1) * 1.5;
-                const QRectF r(m.pos + o + shift, ts);
+                const QRectF r(ms[i].pos + o + shift, ts);
                 if (!bounds.contains(r)) continue;
                 bool free = true;
                 for (int k = 0; k < taken.size() && free; ++k)
                     if (k != i && taken[k].intersects(r)) free = false;
-                if (!free) continue;
-                m.labelRect = r;
-                m.leader = reach > 1.0;
-                break;
+                if (free) {
+                    leader = reach > 1.0;
+                    return r;
+                }
             }
-            if (!m.labelRect.isNull()) break;
         }
-        if (m.labelRect.isNull())
-            m.text.clear(); // no room: the tooltip still names it
-        else
+        return {};
+    };
+    for (int i : order) {
+        Marker &m = ms[i];
+        // "G05 42" where it fits, else just "G05" (the SNR is in the tooltip), else nothing.
+        QStringList texts;
+        if (m.snr >= 0) texts << QStringLiteral("%1 %2").arg(m.label).arg(m.snr);
+        texts << m.label;
+        m.labelRect = {};
+        m.text.clear();
+        for (const QString &t : texts) {
+            m.labelRect = place(i, QSizeF(fm.horizontalAdvance(t) + 2, fm.height()), m.leader);
+            if (m.labelRect.isNull()) continue;
+            m.text = t;
             taken.push_back(m.labelRect);
+            break;
+        }
     }
 }
 
