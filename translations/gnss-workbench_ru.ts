@@ -4,47 +4,47 @@
 <context>
     <name>FixType</name>
     <message>
-        <location filename="../ui/style/gnss_style.cpp" line="37"/>
+        <location filename="../ui/style/gnss_style.cpp" line="+37"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
     <message>
-        <location filename="../ui/style/gnss_style.cpp" line="38"/>
+        <location line="+1"/>
         <source>Estimated</source>
         <translation>Счисление</translation>
     </message>
     <message>
-        <location filename="../ui/style/gnss_style.cpp" line="39"/>
+        <location line="+1"/>
         <source>2D</source>
         <translation>2D</translation>
     </message>
     <message>
-        <location filename="../ui/style/gnss_style.cpp" line="40"/>
+        <location line="+1"/>
         <source>3D</source>
         <translation>3D</translation>
     </message>
     <message>
-        <location filename="../ui/style/gnss_style.cpp" line="41"/>
+        <location line="+1"/>
         <source>DGNSS</source>
         <translation>DGNSS</translation>
     </message>
     <message>
-        <location filename="../ui/style/gnss_style.cpp" line="42"/>
+        <location line="+1"/>
         <source>RTK float</source>
         <translation>RTK float</translation>
     </message>
     <message>
-        <location filename="../ui/style/gnss_style.cpp" line="43"/>
+        <location line="+1"/>
         <source>RTK fixed</source>
         <translation>RTK fixed</translation>
     </message>
     <message>
-        <location filename="../ui/style/gnss_style.cpp" line="44"/>
+        <location line="+1"/>
         <source>Fixed position</source>
         <translation>Фиксированные координаты</translation>
     </message>
     <message>
-        <location filename="../ui/style/gnss_style.cpp" line="45"/>
+        <location line="+1"/>
         <source>Simulator</source>
         <translation>Симулятор</translation>
     </message>
@@ -52,85 +52,221 @@
 <context>
     <name>Hemisphere</name>
     <message>
-        <location filename="../ui/views/value_format.cpp" line="39"/>
+        <location filename="../ui/views/value_format.cpp" line="+45"/>
         <source>N</source>
         <translation>с. ш.</translation>
     </message>
     <message>
-        <location filename="../ui/views/value_format.cpp" line="39"/>
+        <location line="+1"/>
         <source>S</source>
         <translation>ю. ш.</translation>
     </message>
     <message>
-        <location filename="../ui/views/value_format.cpp" line="43"/>
+        <location line="+4"/>
         <source>E</source>
         <translation>в. д.</translation>
     </message>
     <message>
-        <location filename="../ui/views/value_format.cpp" line="43"/>
+        <location line="+1"/>
         <source>W</source>
         <translation>з. д.</translation>
     </message>
 </context>
 <context>
+    <name>QObject</name>
+    <message>
+        <location filename="../app/cli/cmd_config.cpp" line="+116"/>
+        <source>reading the settings failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n command(s) failed</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>config needs one of --port P or --sim DIALECT</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--baud expects a speed such as 9600 or 115200, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>unknown dialect &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>this gnss-cli was built without the simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>the receiver&apos;s dialect was not recognised (%1); give --dialect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the %1 dialect has no settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>unknown setting &apos;%1&apos; (gnss-cli schema %2 lists them)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>config needs an action: get, set, export, apply, diff or action</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>set expects KEY=VALUE, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>set needs at least one KEY=VALUE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>config %1 needs one FILE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>config action needs one of save, defaults, cold, warm, hot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown config action &apos;%1&apos;: get, set, export, apply, diff or action</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>unknown action &apos;%1&apos;: save, defaults, cold, warm or hot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>%n setting(s) of the %1 receiver written to %2</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../protocol/config/settings_profile.cpp" line="+46"/>
+        <source>not a settings profile: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not a settings profile (format is &apos;%1&apos;, expected &apos;%2&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>profile version %1 is not supported (this program reads version 1 to %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the profile is for dialect &apos;%1&apos;, the receiver speaks &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: the value must be a string</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>the profile names settings the %1 dialect cannot set: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>cannot read %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>StartupOptions</name>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="10"/>
+        <location filename="../app/gui/startup_options.cpp" line="+11"/>
         <source>Configure and monitor GNSS receivers.</source>
         <translation>Настройка и мониторинг приёмников ГНСС.</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="15"/>
+        <location line="+4"/>
         <source>Serial port.</source>
         <translation>Последовательный порт.</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="18"/>
+        <location line="+3"/>
         <source>Baud rate (default: auto).</source>
         <translation>Скорость порта (по умолчанию: автоопределение).</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="22"/>
+        <location line="+2"/>
         <source>TCP source HOST:PORT.</source>
         <translation>Источник TCP ХОСТ:ПОРТ.</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="26"/>
+        <location line="+3"/>
         <source>Replay a recorded log.</source>
         <translation>Воспроизвести записанный журнал.</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="30"/>
+        <location line="+4"/>
         <source>Built-in simulated receiver: nvs, geostar, nemerix, nmea.</source>
         <translation>Встроенный имитатор приёмника: nvs, geostar, nemerix, nmea.</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="35"/>
+        <location line="+5"/>
         <source>Save an image of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="39"/>
+        <location line="+4"/>
         <source>Quit after this many seconds.</source>
         <translation>Выйти через указанное число секунд.</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="60"/>
+        <location line="+20"/>
         <source>Invalid baud rate: %1</source>
         <translation>Неверная скорость порта: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="69"/>
+        <location line="+9"/>
         <source>Invalid --quit-after: %1</source>
         <translation>Неверное значение --quit-after: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="76"/>
+        <location line="+7"/>
         <source>Unknown simulated receiver &apos;%1&apos; (use %2)</source>
         <translation>Неизвестный имитатор приёмника «%1» (допустимо: %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="84"/>
+        <location line="+8"/>
         <source>Give one source at most: --port, --tcp, --replay or --sim.</source>
         <translation>Укажите не более одного источника: --port, --tcp, --replay или --sim.</translation>
     </message>
@@ -138,90 +274,92 @@
 <context>
     <name>gnss::app::ConnectionBar</name>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="18"/>
+        <location filename="../app/gui/connection_bar.cpp" line="+18"/>
         <source>Connection</source>
         <translation>Подключение</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="20"/>
+        <location line="+2"/>
         <source>Source </source>
         <translation>Источник </translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="26"/>
+        <location line="+6"/>
         <source>  Baud </source>
         <translation>  Скорость </translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="29"/>
+        <location line="+3"/>
         <source>auto</source>
         <translation>авто</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="32"/>
-        <location filename="../app/gui/connection_bar.cpp" line="118"/>
+        <location line="+6"/>
+        <location line="+96"/>
         <source>Connect</source>
         <translation>Подключить</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="45"/>
+        <location line="-82"/>
         <source>TCP source</source>
         <translation>Источник TCP</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="45"/>
+        <location line="+0"/>
         <source>Host and port (HOST:PORT):</source>
         <translation>Хост и порт (ХОСТ:ПОРТ):</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="50"/>
+        <location line="+6"/>
         <source>Open Log</source>
-        <translation type="unfinished">Открыть журнал</translation>
+        <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="51"/>
+        <location line="+0"/>
         <source>NMEA logs (*.nmea *.log *.txt);;All files (*)</source>
-        <translation type="unfinished">Журналы NMEA (*.nmea *.log *.txt);;Все файлы (*)</translation>
+        <translation>Журналы NMEA (*.nmea *.log *.txt);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="71"/>
+        <location line="+22"/>
         <source>%1
 Manufacturer: %2
 Serial number: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+Производитель: %2
+Серийный номер: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="79"/>
+        <location line="+8"/>
         <source>Simulated NVS NV08C-RTK</source>
         <translation>Имитатор NVS NV08C-RTK</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="80"/>
+        <location line="+1"/>
         <source>Simulated GeoStar GeoS-5</source>
         <translation>Имитатор GeoStar GeoS-5</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="81"/>
+        <location line="+1"/>
         <source>Simulated Nemerix VT002</source>
         <translation>Имитатор Nemerix VT002</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="82"/>
+        <location line="+1"/>
         <source>Simulated NMEA receiver</source>
         <translation>Имитатор приёмника NMEA</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="86"/>
+        <location line="+6"/>
         <source>TCP…</source>
         <translation>TCP…</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="87"/>
+        <location line="+1"/>
         <source>Open log…</source>
         <translation>Открыть журнал…</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="118"/>
+        <location line="+36"/>
         <source>Disconnect</source>
         <translation>Отключить</translation>
     </message>
@@ -229,55 +367,120 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::ConnectionController</name>
     <message>
-        <location filename="../app/gui/connection_controller.cpp" line="17"/>
-        <location filename="../app/gui/connection_controller.cpp" line="124"/>
+        <location filename="../app/gui/connection_controller.cpp" line="+25"/>
+        <location line="+191"/>
         <source>Not connected</source>
-        <translation type="unfinished">Нет подключения</translation>
+        <translation>Нет подключения</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_controller.cpp" line="32"/>
+        <location line="-172"/>
         <source>No source chosen</source>
-        <translation type="unfinished"></translation>
+        <translation>Источник не выбран</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_controller.cpp" line="39"/>
-        <location filename="../app/gui/connection_controller.cpp" line="107"/>
+        <location line="+13"/>
+        <location line="+126"/>
         <source>Cannot open %1: %2</source>
         <translation>Не удаётся открыть %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_controller.cpp" line="46"/>
-        <source>Detecting baud rate: trying %1…</source>
-        <translation>Определение скорости: пробуем %1…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/connection_controller.cpp" line="48"/>
-        <source>Detecting baud rate…</source>
-        <translation>Определение скорости…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/connection_controller.cpp" line="75"/>
+        <location line="-53"/>
         <source>TCP source must be HOST:PORT, got &apos;%1&apos;</source>
         <translation>Источник TCP задаётся как ХОСТ:ПОРТ, получено «%1»</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_controller.cpp" line="94"/>
-        <source>Link lost: %1 — retrying every second</source>
-        <translation>Связь потеряна: %1 — повтор каждую секунду</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/connection_controller.cpp" line="96"/>
-        <location filename="../app/gui/connection_controller.cpp" line="110"/>
+        <location line="+67"/>
         <source>Connected: %1</source>
         <translation>Подключено: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_controller.cpp" line="104"/>
+        <location line="-100"/>
+        <location line="+73"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_controller.cpp" line="129"/>
+        <location line="-102"/>
+        <source>%1: detecting the baud rate: trying %2…</source>
+        <translation>%1: определение скорости: проверяется %2…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: detecting the baud rate: %2; trying %3…</source>
+        <translation>%1: определение скорости: %2; проверяется %3…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: detecting the baud rate…</source>
+        <translation>%1: определение скорости…</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (valid NMEA)</source>
+        <translation>%1 (корректный NMEA)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (no data)</source>
+        <translation>%1 (нет данных)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (data, no valid sentence)</source>
+        <translation>%1 (данные есть, корректных сообщений нет)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Baud rate not found: %1</source>
+        <translation>Скорость не найдена: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Baud rate detected: %1</source>
+        <translation>Скорость определена: %1</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Cannot open %1</source>
+        <translation>Не удаётся открыть %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 — trying again in %2 s</source>
+        <translation>%1 — повтор через %2 с</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Link lost: %1 — trying again in %2 s</source>
+        <translation>Связь потеряна: %1 — повтор через %2 с</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reconnecting to %1 (attempt %2)…</source>
+        <translation>Повторное подключение к %1 (попытка %2)…</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Opening %1… %2%</source>
+        <translation>Открытие %1… %2%</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Opening %1…</source>
+        <translation>Открытие %1…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connecting to %1…</source>
+        <translation>Подключение к %1…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Connected: %1 (detected)</source>
+        <translation>Подключено: %1 (определено)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Not connected: nothing was sent</source>
         <translation>Нет подключения: ничего не отправлено</translation>
     </message>
@@ -285,378 +488,849 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="46"/>
+        <location filename="../app/gui/main_window.cpp" line="+47"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="170"/>
+        <location line="+193"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location line="+1"/>
         <source>&amp;Open Log...</source>
         <translation>&amp;Открыть журнал...</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location line="+15"/>
         <source>&amp;Quit</source>
         <translation>В&amp;ыход</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location line="+3"/>
         <source>&amp;Receiver</source>
         <translation>&amp;Приёмник</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location line="+2"/>
         <source>&amp;Connect</source>
         <translation>&amp;Подключить</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location line="+1"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location line="+1"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Отключить</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="194"/>
+        <location line="+1"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196"/>
+        <location line="+2"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="216"/>
+        <location line="+23"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location line="+1"/>
         <source>&amp;About GNSS Workbench</source>
         <translation>&amp;О программе GNSS Workbench</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location line="+7"/>
         <source>About &amp;Qt</source>
         <translation>О &amp;Qt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="172"/>
+        <location line="-54"/>
         <source>Open Log</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="66"/>
-        <source>Command: %1</source>
-        <translation type="unfinished"></translation>
+        <location line="-169"/>
+        <source>trying %1…</source>
+        <translation>проверка %1…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="106"/>
+        <location line="+2"/>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not found</source>
+        <translation>не найдена</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Command: %1</source>
+        <translation>Команда: %1</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="107"/>
+        <location line="+1"/>
         <source>Fix and position</source>
         <translation>Решение и координаты</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="108"/>
+        <location line="+0"/>
+        <source>Fix</source>
+        <translation>Решение</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+1"/>
         <source>Signal levels</source>
         <translation>Уровни сигналов</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="115"/>
+        <location line="+6"/>
         <source>Satellites</source>
         <translation>Спутники</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="117"/>
+        <location line="+3"/>
         <source>Console</source>
         <translation>Консоль</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="118"/>
+        <location line="+2"/>
+        <source>Statistics</source>
+        <translation>Статистика</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Message statistics</source>
         <translation>Статистика сообщений</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="120"/>
+        <location line="+1"/>
+        <source>Receiver</source>
+        <translation>Приёмник</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Receiver information</source>
         <translation>Сведения о приёмнике</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="123"/>
+        <location line="+2"/>
         <source>RTK</source>
         <translation>RTK</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="125"/>
+        <location line="+3"/>
         <source>Charts</source>
         <translation>Графики</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="127"/>
+        <location line="+2"/>
+        <location line="+1"/>
         <source>Deviation</source>
         <translation>Разброс</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="129"/>
+        <location line="+2"/>
+        <source>Attitude</source>
+        <translation>Ориентация</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Attitude and time marks</source>
         <translation>Ориентация и метки времени</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="139"/>
-        <source>Receiver settings</source>
-        <translation type="unfinished"></translation>
+        <location line="+10"/>
+        <source>Settings</source>
+        <translation>Настройки</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <location line="+1"/>
+        <source>Receiver settings</source>
+        <translation>Настройки приёмника</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location line="+47"/>
         <source>NMEA logs (*.nmea *.log *.txt);;All files (*)</source>
         <translation>Журналы NMEA (*.nmea *.log *.txt);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location line="+8"/>
         <source>&amp;Record...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Запись...</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="183"/>
+        <location line="+2"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location line="+18"/>
         <source>Sky plot &amp;tracks</source>
         <translation>&amp;Треки на небосводе</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location line="+3"/>
         <source>&amp;Reset layout</source>
         <translation>&amp;Сбросить расположение</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="204"/>
+        <location line="+1"/>
         <source>T&amp;heme</source>
         <translation>&amp;Оформление</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location line="+3"/>
         <source>Follow the system</source>
         <translation>Как в системе</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location line="+1"/>
         <source>Light</source>
         <translation>Светлое</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location line="+0"/>
         <source>Dark</source>
         <translation>Тёмное</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <location line="+13"/>
         <source>About GNSS Workbench</source>
         <translation>О программе GNSS Workbench</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="219"/>
+        <location line="+1"/>
         <source>&lt;b&gt;GNSS Workbench&lt;/b&gt; %1&lt;br&gt;Configure and monitor NVS NV08C-RTK, GeoStar GeoS-5, Nemerix and NMEA-0183 receivers.</source>
         <translation>&lt;b&gt;GNSS Workbench&lt;/b&gt; %1&lt;br&gt;Настройка и мониторинг приёмников NVS NV08C-RTK, GeoStar GeoS-5, Nemerix и NMEA-0183.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250"/>
-        <source>dialect: —</source>
-        <translation type="unfinished"></translation>
+        <location line="+33"/>
+        <source>NMEA-0183 (no vendor sentences)</source>
+        <translation>NMEA-0183 (без фирменных сообщений)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="252"/>
+        <location line="+1"/>
+        <source>dialect: —</source>
+        <translation>диалект: —</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source> (firmware %1)</source>
         <translation> (прошивка %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="255"/>
+        <location line="+3"/>
         <source>%1 B/s · %2 sentences/s</source>
         <translation>%1 Б/с · %2 предл./с</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="256"/>
+        <location line="+3"/>
         <source>checksum errors: %1</source>
         <translation>ошибок контрольной суммы: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="259"/>
+        <location line="+3"/>
         <source>● REC</source>
         <translation>● ЗАПИСЬ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="263"/>
+        <location line="+5"/>
         <source>No fix</source>
-        <translation type="unfinished">Нет решения</translation>
+        <translation>Нет решения</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="274"/>
+        <location line="+13"/>
         <source>Record to</source>
-        <translation type="unfinished"></translation>
+        <translation>Записывать в</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="275"/>
+        <location line="+0"/>
         <source>NMEA logs (*.nmea)</source>
         <translation>Журналы NMEA (*.nmea)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <location line="+3"/>
         <source>Record</source>
         <translation>Запись</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <location line="+1"/>
         <source>Cannot record to %1: connect to a receiver first, and check the folder is writable.</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся записывать в %1: сначала подключитесь к приёмнику и проверьте, что папка доступна для записи.</translation>
     </message>
 </context>
 <context>
     <name>gnss::app::SourceSpec</name>
     <message>
-        <location filename="../app/gui/source_spec.cpp" line="45"/>
+        <location filename="../app/gui/source_spec.cpp" line="+45"/>
         <source>%1 at %2 baud</source>
         <translation>%1 на %2 бод</translation>
     </message>
     <message>
-        <location filename="../app/gui/source_spec.cpp" line="45"/>
+        <location line="+0"/>
         <source>%1 (baud: auto)</source>
         <translation>%1 (скорость: авто)</translation>
     </message>
     <message>
-        <location filename="../app/gui/source_spec.cpp" line="46"/>
+        <location line="+1"/>
         <source>TCP %1</source>
         <translation>TCP %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/source_spec.cpp" line="47"/>
+        <location line="+1"/>
         <source>Replay %1</source>
         <translation>Воспроизведение %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/source_spec.cpp" line="48"/>
+        <location line="+1"/>
         <source>Simulated %1</source>
         <translation>Имитатор %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/source_spec.cpp" line="51"/>
+        <location line="+3"/>
         <source>No source</source>
         <translation>Нет источника</translation>
     </message>
 </context>
 <context>
+    <name>gnss::config::SettingsEngine</name>
+    <message>
+        <location filename="../protocol/config/settings_engine.cpp" line="+31"/>
+        <source>verified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not taken</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not reported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sent (write-only, not verifiable)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not applied (command failed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>the link changed during the operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>%1 (set here; write-only, not read back)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown (write-only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>no receiver dialect known yet: connect to a receiver first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not connected to a receiver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>Read settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+81"/>
+        <source>unknown setting &apos;%1&apos; of the %2 dialect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Apply settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 cannot be set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the %1 dialect has no settings encoder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>nothing was sent: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Action</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the %1 receiver has no &apos;%2&apos; command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+100"/>
+        <source>could not read back: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>Apply profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the profile is for dialect &apos;%1&apos;, the receiver speaks &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link</name>
+    <message>
+        <location filename="../protocol/link/recording.cpp" line="+25"/>
+        <location line="+16"/>
+        <source>Cannot read %1: %2</source>
+        <translation>Не удаётся прочитать %1: %2</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>Cannot map %1: %2</source>
+        <translation>Не удаётся отобразить в память %1: %2</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1, line %2: %3</source>
+        <translation>%1, строка %2: %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not an index line</source>
+        <translation>это не строка индекса</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>bad length</source>
+        <translation>неверная длина</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>chunk starts at %1, expected %2</source>
+        <translation>блок начинается с %1, ожидалось %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>chunk ends past the end of the data file</source>
+        <translation>блок выходит за конец файла данных</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>unknown record &apos;%1&apos;</source>
+        <translation>неизвестная запись «%1»</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::BaudDetector</name>
+    <message>
+        <location filename="../protocol/link/baud_detector.cpp" line="+29"/>
+        <source>Baud detection needs an open serial port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Baud detection cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <source>No data at any rate (tried %1 baud): check the cable, the port and that the receiver is powered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Data but never a valid sentence at %1 baud: wrong framing (data bits, parity, stop bits) or the receiver is not sending NMEA?</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::CommandQueue</name>
+    <message>
+        <location filename="../protocol/link/command_queue.cpp" line="+46"/>
+        <location line="+196"/>
+        <source>accepted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-193"/>
+        <source>refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>timed out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>link lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Not a sentence: %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>cancelled before the receiver answered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>cancelled before it was sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>not connected: the command was not sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 cannot send commands</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>could not write to %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>sent; the receiver does not answer this command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sent; no known reply to wait for</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>the port now runs at %1 baud; the receiver talks at that rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no valid data at %1 baud after the change; the receiver still talks at %2 baud, so the port is back at %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>the receiver refused it: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>accepted; the speed was already %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>no valid data at %1 baud after the change, nor back at %2 baud: check the receiver and the cable, then detect the baud rate again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
+        <source>no answer after %n attempt(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the link closed before the answer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the link was lost before the answer: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>not sent: the link was lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::Recorder</name>
+    <message>
+        <location filename="../protocol/link/recorder.cpp" line="+24"/>
+        <location line="+5"/>
+        <location line="+82"/>
+        <source>Cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-46"/>
+        <source>link lost: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>link back: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::ReplayTransport</name>
+    <message>
+        <location filename="../protocol/link/replay_transport.cpp" line="+80"/>
+        <source>Cannot read %1: %2</source>
+        <translation>Не удаётся прочитать %1: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>permission denied</source>
+        <translation>нет прав доступа</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no such file</source>
+        <translation>файл не найден</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1 has no timestamp index (%2): replay it with sentence times instead</source>
+        <translation>У %1 нет индекса времени (%2): воспроизводите его по времени в сообщениях</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>replay of %1</source>
+        <translation>воспроизведение %1</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::SerialTransport</name>
+    <message>
+        <location filename="../protocol/link/serial_transport.cpp" line="+50"/>
+        <source>Cannot open %1: %2</source>
+        <translation type="unfinished">Не удаётся открыть %1: %2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1 at %2 baud</source>
+        <translation type="unfinished">%1 на %2 бод</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::SimulatorTransport</name>
+    <message>
+        <location filename="../protocol/link/simulator_transport.cpp" line="+21"/>
+        <source>The simulator has no receiver of dialect &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>simulated %1 receiver at %2 baud</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>The simulated receiver hung up</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::TcpTransport</name>
+    <message>
+        <location filename="../protocol/link/tcp_transport.cpp" line="+16"/>
+        <source>Cannot connect to %1: no answer within %2 s</source>
+        <translation>Не удаётся подключиться к %1: нет ответа за %2 с</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: the connection was closed by the other side</source>
+        <translation>%1: соединение закрыто другой стороной</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot connect to %1: %2</source>
+        <translation>Не удаётся подключиться к %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::VendorDetector</name>
+    <message>
+        <location filename="../protocol/link/vendor_detector.cpp" line="+24"/>
+        <source>Vendor detection needs an open link</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+111"/>
+        <source>No valid sentence and no answer to any probe: check the baud rate and that the receiver sends NMEA</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>gnss::ui::AttitudeView</name>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="42"/>
+        <location filename="../ui/views/attitude_view.cpp" line="+42"/>
         <source>Attitude</source>
         <translation>Ориентация</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="45"/>
+        <location line="+3"/>
         <source>Roll</source>
         <translation>Крен</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="46"/>
+        <location line="+1"/>
         <source>Pitch</source>
         <translation>Тангаж</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="47"/>
+        <location line="+1"/>
         <source>Yaw</source>
         <translation>Рыскание</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="48"/>
+        <location line="+1"/>
         <source>Time (UTC)</source>
         <translation>Время (UTC)</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="51"/>
+        <location line="+3"/>
         <source>Acceleration</source>
         <translation>Ускорение</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="54"/>
+        <location line="+3"/>
         <source>North</source>
         <translation>Север</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="55"/>
+        <location line="+1"/>
         <source>East</source>
         <translation>Восток</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="56"/>
+        <location line="+1"/>
         <source>Down</source>
         <translation>Вниз</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="61"/>
+        <location line="+5"/>
         <source>Time marks (newest first)</source>
         <translation>Метки времени (новые сверху)</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="68"/>
+        <location line="+7"/>
         <source>Counter</source>
         <translation>Счётчик</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="68"/>
+        <location line="+0"/>
         <source>GPS time of week (s)</source>
         <translation>Время недели GPS (с)</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="68"/>
+        <location line="+0"/>
         <source>UTC</source>
         <translation>UTC</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="69"/>
+        <location line="+1"/>
         <source>Latitude</source>
         <translation>Широта</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="69"/>
+        <location line="+0"/>
         <source>Longitude</source>
         <translation>Долгота</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="69"/>
+        <location line="+0"/>
         <source>Altitude MSL (m)</source>
         <translation>Высота над уровнем моря (м)</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="105"/>
+        <location line="+36"/>
         <source>m/s²</source>
         <translation>м/с²</translation>
     </message>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="123"/>
+        <location line="+18"/>
         <source>No time marks yet</source>
         <translation>Меток времени пока нет</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/views/attitude_view.cpp" line="124"/>
+        <location line="+1"/>
         <source>%n time mark(s)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -668,27 +1342,27 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ChartsView</name>
     <message>
-        <location filename="../ui/views/charts_view.cpp" line="106"/>
+        <location filename="../ui/views/charts_view.cpp" line="+106"/>
         <source>Series</source>
         <translation>Ряды</translation>
     </message>
     <message>
-        <location filename="../ui/views/charts_view.cpp" line="118"/>
+        <location line="+12"/>
         <source>Window</source>
         <translation>Окно</translation>
     </message>
     <message>
-        <location filename="../ui/views/charts_view.cpp" line="123"/>
+        <location line="+5"/>
         <source> min</source>
         <translation> мин</translation>
     </message>
     <message>
-        <location filename="../ui/views/charts_view.cpp" line="307"/>
+        <location line="+184"/>
         <source>minutes before the latest epoch</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/charts_view.cpp" line="308"/>
+        <location line="+1"/>
         <source>seconds before the latest epoch</source>
         <translation type="unfinished"></translation>
     </message>
@@ -696,42 +1370,47 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ConsoleView</name>
     <message>
-        <location filename="../ui/views/console_view.cpp" line="32"/>
+        <location filename="../ui/views/console_view.cpp" line="+32"/>
         <source>Filter by address (e.g. GGA|PNVG)</source>
         <translation>Фильтр по адресу (например, GGA|PNVG)</translation>
     </message>
     <message>
-        <location filename="../ui/views/console_view.cpp" line="38"/>
+        <location line="+6"/>
         <source>Pause</source>
         <translation>Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/views/console_view.cpp" line="44"/>
+        <location line="+6"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ui/views/console_view.cpp" line="46"/>
+        <location line="+2"/>
         <source>Show the raw bytes received, including binary data</source>
         <translation>Показать принятые байты, включая двоичные данные</translation>
     </message>
     <message>
-        <location filename="../ui/views/console_view.cpp" line="51"/>
+        <location line="+5"/>
         <source>Clear</source>
         <translation>Очистить</translation>
     </message>
     <message>
-        <location filename="../ui/views/console_view.cpp" line="91"/>
-        <source>Command to send, e.g. $PNVGVER (the checksum is added)</source>
-        <translation>Команда для отправки, например $PNVGVER (контрольная сумма добавляется)</translation>
-    </message>
-    <message>
-        <location filename="../ui/views/console_view.cpp" line="101"/>
+        <location line="+50"/>
         <source>Send</source>
         <translation>Отправить</translation>
     </message>
     <message>
-        <location filename="../ui/views/console_view.cpp" line="134"/>
+        <location line="+21"/>
+        <source>Command to send (the checksum is added)</source>
+        <translation>Команда для отправки (контрольная сумма добавляется)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Command to send, e.g. %1 (the checksum is added)</source>
+        <translation>Команда для отправки, например %1 (контрольная сумма добавляется)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -739,124 +1418,167 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CoordinateEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="222"/>
-        <source> m (X)</source>
-        <translation type="unfinished"></translation>
+        <location filename="../ui/settings/setting_editors.cpp" line="+265"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+8"/>
+        <source> m</source>
+        <translation> м</translation>
     </message>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="223"/>
-        <source> m (Y)</source>
-        <translation type="unfinished"></translation>
+        <location line="-7"/>
+        <source>X</source>
+        <translation>X</translation>
     </message>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="224"/>
-        <source> m (Z)</source>
-        <translation type="unfinished"></translation>
+        <location line="+1"/>
+        <source>Y</source>
+        <translation>Y</translation>
     </message>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="232"/>
-        <source> m (ellipsoid)</source>
-        <translation type="unfinished"></translation>
+        <location line="+1"/>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Height above the WGS-84 ellipsoid</source>
+        <translation>Высота над эллипсоидом WGS-84</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>N</source>
+        <translation>с. ш.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>S</source>
+        <translation>ю. ш.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>E</source>
+        <translation>в. д.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>W</source>
+        <translation>з. д.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latitude</source>
+        <translation>Широта</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Longitude</source>
+        <translation>Долгота</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ellipsoidal height</source>
+        <translation>Высота над эллипсоидом</translation>
     </message>
 </context>
 <context>
     <name>gnss::ui::DeviationView</name>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="84"/>
+        <location filename="../ui/views/deviation_view.cpp" line="+84"/>
         <source>No position yet</source>
         <translation>Координат пока нет</translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="123"/>
+        <location line="+39"/>
         <source>East (m)</source>
         <translation>Восток (м)</translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="128"/>
+        <location line="+5"/>
         <source>North (m)</source>
         <translation>Север (м)</translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="152"/>
-        <location filename="../ui/views/deviation_view.cpp" line="260"/>
+        <location line="+35"/>
+        <location line="+108"/>
         <source>CEP50</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="153"/>
-        <location filename="../ui/views/deviation_view.cpp" line="261"/>
+        <location line="-107"/>
+        <location line="+108"/>
         <source>CEP95</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="154"/>
-        <location filename="../ui/views/deviation_view.cpp" line="262"/>
+        <location line="-107"/>
+        <location line="+108"/>
         <source>2DRMS</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="219"/>
+        <location line="-43"/>
         <source>Reference</source>
         <translation>Опорная точка</translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="221"/>
+        <location line="+2"/>
         <source>Centre on a known position instead of the mean of the positions</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="224"/>
+        <location line="+3"/>
         <source>latitude, e.g. 55.7512 N</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="227"/>
+        <location line="+3"/>
         <source>longitude, e.g. 37.6181 E</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="232"/>
+        <location line="+5"/>
         <source>How many of the latest positions are kept</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="233"/>
+        <location line="+1"/>
         <source>Reset</source>
         <translation>Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="239"/>
-        <location filename="../ui/views/deviation_view.cpp" line="263"/>
+        <location line="+6"/>
+        <location line="+24"/>
         <source>Points</source>
         <translation>Точки</translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="264"/>
+        <location line="+1"/>
         <source>Centre:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="269"/>
+        <location line="+5"/>
         <source>Mean offset:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="363"/>
+        <location line="+94"/>
         <source>Reference not used: type degrees such as 55.75123456 N and 37.61812345 E (or signed, -33.9 for south). Centred on the mean.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="382"/>
+        <location line="+19"/>
         <source>reference %1, %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="382"/>
+        <location line="+0"/>
         <source>mean %1, %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="387"/>
+        <location line="+5"/>
         <source>%1 east, %2 north</source>
         <translation type="unfinished"></translation>
     </message>
@@ -864,88 +1586,88 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::FixView</name>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="30"/>
+        <location filename="../ui/views/fix_view.cpp" line="+30"/>
         <source>Degrees</source>
         <translation>Градусы</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="30"/>
+        <location line="+0"/>
         <source>Deg min sec</source>
         <translation>Град. мин. сек.</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="37"/>
+        <location line="+8"/>
         <source>Latitude</source>
         <translation>Широта</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="38"/>
+        <location line="+1"/>
         <source>Longitude</source>
         <translation>Долгота</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="39"/>
+        <location line="+1"/>
         <source>Altitude (sea level)</source>
         <translation>Высота (над уровнем моря)</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="40"/>
+        <location line="+1"/>
         <source>Altitude (ellipsoid)</source>
         <translation>Высота (над эллипсоидом)</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="41"/>
+        <location line="+1"/>
         <source>Satellites used / in view</source>
         <translation>Спутники: в решении / видимые</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="42"/>
+        <location line="+1"/>
         <source>PDOP / HDOP / VDOP</source>
         <translation>PDOP / HDOP / VDOP</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="43"/>
+        <location line="+1"/>
         <source>UTC</source>
         <translation>UTC</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="44"/>
+        <location line="+1"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="45"/>
+        <location line="+1"/>
         <source>Course</source>
         <translation>Курс</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="46"/>
+        <location line="+1"/>
         <source>Age of corrections</source>
         <translation>Возраст поправок</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="47"/>
+        <location line="+1"/>
         <source>Base station</source>
         <translation>Базовая станция</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="84"/>
+        <location line="+37"/>
         <source>No data</source>
         <translation>Нет данных</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="92"/>
-        <location filename="../ui/views/fix_view.cpp" line="93"/>
+        <location line="+9"/>
+        <location line="+1"/>
         <source>m</source>
         <translation>м</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="110"/>
+        <location line="+22"/>
         <source>%1 m/s  (%2 km/h)</source>
         <translation>%1 м/с  (%2 км/ч)</translation>
     </message>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="116"/>
+        <location line="+6"/>
         <source>s</source>
         <translation>с</translation>
     </message>
@@ -953,37 +1675,37 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::MessageStatsModel</name>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="52"/>
+        <location filename="../ui/models/message_stats_model.cpp" line="+57"/>
         <source>Address</source>
         <translation>Адрес</translation>
     </message>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="53"/>
+        <location line="+1"/>
         <source>Count</source>
         <translation>Количество</translation>
     </message>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="54"/>
+        <location line="+1"/>
         <source>Rate (Hz)</source>
         <translation>Частота (Гц)</translation>
     </message>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="55"/>
+        <location line="+1"/>
         <source>Last seen (UTC)</source>
         <translation>Последнее (UTC)</translation>
     </message>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="56"/>
+        <location line="+1"/>
         <source>Checksum errors</source>
         <translation>Ошибки КС</translation>
     </message>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="57"/>
+        <location line="+1"/>
         <source>Decode errors</source>
         <translation>Ошибки разбора</translation>
     </message>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="58"/>
+        <location line="+1"/>
         <source>Unknown</source>
         <translation>Неизвестные</translation>
     </message>
@@ -991,42 +1713,42 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ReceiverInfoView</name>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="48"/>
+        <location filename="../ui/views/receiver_info_view.cpp" line="+48"/>
         <source>Item</source>
         <translation>Параметр</translation>
     </message>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="48"/>
+        <location line="+0"/>
         <source>Value</source>
         <translation>Значение</translation>
     </message>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="95"/>
+        <location line="+50"/>
         <source>Receiver: not identified yet</source>
         <translation>Приёмник: ещё не опознан</translation>
     </message>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="97"/>
+        <location line="+3"/>
         <source>&lt;b&gt;%1 %2&lt;/b&gt;&lt;br&gt;Firmware: %3%4</source>
         <translation>&lt;b&gt;%1 %2&lt;/b&gt;&lt;br&gt;Прошивка: %3%4</translation>
     </message>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="101"/>
+        <location line="+6"/>
         <source>&lt;br&gt;Hardware: %1</source>
         <translation>&lt;br&gt;Аппаратура: %1</translation>
     </message>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="104"/>
+        <location line="+4"/>
         <source>Jamming: not reported</source>
         <translation>Помехи: не сообщаются</translation>
     </message>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="107"/>
+        <location line="+3"/>
         <source>Jamming: DETECTED</source>
         <translation>Помехи: ОБНАРУЖЕНЫ</translation>
     </message>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="110"/>
+        <location line="+4"/>
         <source>Jamming: none detected</source>
         <translation>Помехи: не обнаружены</translation>
     </message>
@@ -1034,223 +1756,223 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::RtkView</name>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="46"/>
+        <location filename="../ui/views/rtk_view.cpp" line="+46"/>
         <source>This receiver has not reported RTK information.</source>
         <translation>Приёмник не сообщал сведений RTK.</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="66"/>
+        <location line="+20"/>
         <source>Mode:</source>
         <translation>Режим:</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="74"/>
+        <location line="+8"/>
         <source>Alarm when corrections are older than</source>
         <translation>Тревога, если поправки старше</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="80"/>
+        <location line="+6"/>
         <source> s</source>
         <translation> с</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="87"/>
+        <location line="+7"/>
         <source>Base station</source>
         <translation>Базовая станция</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="88"/>
+        <location line="+1"/>
         <source>Correction age</source>
         <translation>Возраст поправок</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="89"/>
+        <location line="+1"/>
         <source>Distance to base</source>
         <translation>Расстояние до базы</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="90"/>
+        <location line="+1"/>
         <source>Base station id</source>
         <translation>Номер базовой станции</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="91"/>
+        <location line="+1"/>
         <source>RTCM messages</source>
         <translation>Сообщения RTCM</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="92"/>
+        <location line="+1"/>
         <source>RTCM good</source>
         <translation>RTCM без ошибок</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="93"/>
+        <location line="+1"/>
         <source>RTCM errors</source>
         <translation>Ошибки RTCM</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="96"/>
+        <location line="+3"/>
         <source>Baseline base → rover</source>
         <translation>Базовая линия база → ровер</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="97"/>
-        <location filename="../ui/views/rtk_view.cpp" line="109"/>
+        <location line="+1"/>
+        <location line="+12"/>
         <source>North</source>
         <translation>Север</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="98"/>
-        <location filename="../ui/views/rtk_view.cpp" line="110"/>
+        <location line="-11"/>
+        <location line="+12"/>
         <source>East</source>
         <translation>Восток</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="99"/>
-        <location filename="../ui/views/rtk_view.cpp" line="111"/>
+        <location line="-11"/>
+        <location line="+12"/>
         <source>Vertical</source>
         <translation>Вертикаль</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="100"/>
-        <location filename="../ui/views/rtk_view.cpp" line="108"/>
+        <location line="-11"/>
+        <location line="+8"/>
         <source>Length</source>
         <translation>Длина</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="101"/>
+        <location line="-7"/>
         <source>Course</source>
         <translation>Курс</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="102"/>
-        <location filename="../ui/views/rtk_view.cpp" line="107"/>
+        <location line="+1"/>
+        <location line="+5"/>
         <source>Pitch</source>
         <translation>Тангаж</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="105"/>
+        <location line="-2"/>
         <source>Heading (antenna baseline)</source>
         <translation>Курс (линия антенн)</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="106"/>
-        <location filename="../ui/views/rtk_view.cpp" line="121"/>
+        <location line="+1"/>
+        <location line="+15"/>
         <source>Heading</source>
         <translation>Курс</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="114"/>
+        <location line="-7"/>
         <source>Standard deviations</source>
         <translation>СКО</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="115"/>
+        <location line="+1"/>
         <source>Latitude</source>
         <translation>Широта</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="116"/>
+        <location line="+1"/>
         <source>Longitude</source>
         <translation>Долгота</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="117"/>
+        <location line="+1"/>
         <source>Height</source>
         <translation>Высота</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="118"/>
+        <location line="+1"/>
         <source>Velocity north</source>
         <translation>Скорость на север</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="119"/>
+        <location line="+1"/>
         <source>Velocity east</source>
         <translation>Скорость на восток</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="120"/>
+        <location line="+1"/>
         <source>Velocity up</source>
         <translation>Скорость вверх</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="124"/>
+        <location line="+4"/>
         <source>Receiver DOPs</source>
         <translation>Геометрические факторы приёмника</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="125"/>
+        <location line="+1"/>
         <source>GDOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="126"/>
+        <location line="+1"/>
         <source>PDOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="127"/>
+        <location line="+1"/>
         <source>HDOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="128"/>
+        <location line="+1"/>
         <source>VDOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="129"/>
+        <location line="+1"/>
         <source>TDOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="130"/>
+        <location line="+1"/>
         <source>NDOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="131"/>
+        <location line="+1"/>
         <source>EDOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="190"/>
+        <location line="+59"/>
         <source>Autonomous</source>
         <translation>Автономный</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="191"/>
+        <location line="+1"/>
         <source>Differential</source>
         <translation>Дифференциальный</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="209"/>
+        <location line="+18"/>
         <source>m</source>
         <translation>м</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="209"/>
+        <location line="+0"/>
         <source>m/s</source>
         <translation>м/с</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="215"/>
+        <location line="+6"/>
         <source>s</source>
         <translation>с</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="261"/>
+        <location line="+46"/>
         <source>Correction age: %1</source>
         <translation>Возраст поправок: %1</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="263"/>
+        <location line="+2"/>
         <source>Corrections too old: %1 s &gt; %2 s</source>
         <translation>Поправки устарели: %1 с &gt; %2 с</translation>
     </message>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="267"/>
+        <location line="+4"/>
         <source>Corrections OK: %1 s</source>
         <translation>Поправки в норме: %1 с</translation>
     </message>
@@ -1258,52 +1980,52 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SatelliteModel</name>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="61"/>
+        <location filename="../ui/models/satellite_model.cpp" line="+62"/>
         <source>yes</source>
         <translation>да</translation>
     </message>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="61"/>
+        <location line="+0"/>
         <source>no</source>
         <translation>нет</translation>
     </message>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="76"/>
+        <location line="+16"/>
         <source>System</source>
         <translation>Система</translation>
     </message>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="77"/>
+        <location line="+1"/>
         <source>Satellite</source>
         <translation>Спутник</translation>
     </message>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="78"/>
+        <location line="+1"/>
         <source>Signal</source>
         <translation>Сигнал</translation>
     </message>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="79"/>
+        <location line="+1"/>
         <source>Elev. (°)</source>
         <translation>Угол места (°)</translation>
     </message>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="80"/>
+        <location line="+1"/>
         <source>Azim. (°)</source>
         <translation>Азимут (°)</translation>
     </message>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="81"/>
+        <location line="+1"/>
         <source>SNR (dB-Hz)</source>
         <translation>С/Ш (дБГц)</translation>
     </message>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="82"/>
+        <location line="+1"/>
         <source>Used</source>
         <translation>В решении</translation>
     </message>
     <message>
-        <location filename="../ui/models/satellite_model.cpp" line="83"/>
+        <location line="+1"/>
         <source>Last seen (UTC)</source>
         <translation>Последнее (UTC)</translation>
     </message>
@@ -1311,327 +2033,344 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SettingEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="209"/>
+        <location filename="../ui/settings/setting_editors.cpp" line="-40"/>
         <source>Range: %1 to %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Диапазон: от %1 до %2 %3</translation>
     </message>
 </context>
 <context>
     <name>gnss::ui::SettingsView</name>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="60"/>
+        <location filename="../ui/settings/settings_view.cpp" line="+66"/>
         <source>Read</source>
         <translation>Прочитать</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="61"/>
+        <location line="+1"/>
         <source>Read every setting the receiver reports</source>
-        <translation type="unfinished"></translation>
+        <translation>Прочитать все настройки, которые сообщает приёмник</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="62"/>
+        <location line="+1"/>
         <source>Apply</source>
         <translation>Применить</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="63"/>
+        <location line="+1"/>
         <source>Send the edited values (only what differs), then read them back</source>
-        <translation type="unfinished"></translation>
+        <translation>Отправить изменённые значения (только отличающиеся) и прочитать их обратно</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="64"/>
+        <location line="+1"/>
         <source>Revert</source>
         <translation>Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="65"/>
+        <location line="+1"/>
         <source>Forget the edits: show the receiver&apos;s values again</source>
-        <translation type="unfinished"></translation>
+        <translation>Отменить правки: снова показать значения приёмника</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="66"/>
+        <location line="+1"/>
         <source>Save to flash</source>
         <translation>Сохранить во флэш</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="67"/>
+        <location line="+1"/>
         <source>Restore defaults</source>
         <translation>Заводские настройки</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="69"/>
+        <location line="+2"/>
         <source>Reset</source>
         <translation>Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="72"/>
+        <location line="+3"/>
         <source>Presets</source>
         <translation>Предустановки</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="75"/>
-        <location filename="../ui/settings/settings_view.cpp" line="114"/>
+        <location line="+3"/>
+        <location line="+62"/>
         <source>Profile</source>
         <translation>Профиль</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="78"/>
+        <location line="-59"/>
         <source>Import and compare...</source>
-        <translation type="unfinished"></translation>
+        <translation>Импортировать и сравнить...</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="79"/>
+        <location line="+1"/>
         <source>Import settings profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Импорт профиля настроек</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="80"/>
-        <location filename="../ui/settings/settings_view.cpp" line="86"/>
+        <location line="+1"/>
+        <location line="+6"/>
         <source>Settings profiles (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Профили настроек (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="84"/>
+        <location line="-2"/>
         <source>Export...</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспорт...</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="85"/>
+        <location line="+1"/>
         <source>Export settings profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспорт профиля настроек</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="91"/>
+        <location line="+6"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="110"/>
-        <source>Command / setting</source>
-        <translation type="unfinished"></translation>
+        <location line="+17"/>
+        <source>Find a setting</source>
+        <translation>Найти настройку</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="110"/>
+        <location line="+25"/>
+        <source>Command / setting</source>
+        <translation>Команда / настройка</translation>
+    </message>
+    <message>
+        <location line="+0"/>
         <source>Outcome</source>
         <translation>Результат</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="110"/>
+        <location line="+0"/>
         <source>Detail</source>
         <translation>Подробности</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="114"/>
+        <location line="+4"/>
         <source>Setting</source>
         <translation>Параметр</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="114"/>
+        <location line="+0"/>
         <source>Receiver</source>
         <translation>Приёмник</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="116"/>
+        <location line="+2"/>
+        <source>Help</source>
+        <translation>Справка</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Outcomes</source>
         <translation>Результаты</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="117"/>
+        <location line="+1"/>
         <source>Profile difference</source>
-        <translation type="unfinished"></translation>
+        <translation>Отличия профиля</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="177"/>
+        <location line="+154"/>
+        <source>No setting matches &quot;%1&quot;.</source>
+        <translation>Нет настроек, содержащих «%1».</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>The %1 receiver has no settings this program knows.</source>
-        <translation type="unfinished"></translation>
+        <translation>У приёмника %1 нет настроек, известных программе.</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="179"/>
+        <location line="+2"/>
         <source>Connect to a receiver: its settings appear here.</source>
         <translation>Подключите приёмник: здесь появятся его настройки.</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="232"/>
+        <location line="+44"/>
         <source>From %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Из %1</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="234"/>
+        <location line="+2"/>
         <source>Convert the %1 position to this form (WGS-84)</source>
-        <translation type="unfinished"></translation>
+        <translation>Пересчитать положение %1 в эту форму (WGS-84)</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="259"/>
+        <location line="+25"/>
         <source>%1: select a setting to see its help.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: выберите настройку, чтобы увидеть справку.</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="266"/>
-        <source>Receiver: %1</source>
-        <translation type="unfinished"></translation>
+        <location line="+46"/>
+        <source>receiver: %1</source>
+        <translation>в приёмнике: %1</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="309"/>
+        <location line="+43"/>
         <source>Range: %1 to %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Диапазон: от %1 до %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="314"/>
+        <location line="+5"/>
         <source>Default: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>По умолчанию: %1</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="315"/>
+        <location line="+1"/>
         <source>Written with: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Записывается командой: %1</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="316"/>
+        <location line="+1"/>
         <source>Read back: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Чтение: %1</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="318"/>
+        <location line="+2"/>
         <source>cannot be read back (write-only)</source>
-        <translation type="unfinished"></translation>
+        <translation>не читается (только запись)</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="346"/>
+        <location line="+28"/>
         <source>Reading the receiver&apos;s settings...</source>
         <translation>Чтение настроек приёмника...</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="353"/>
+        <location line="+7"/>
         <source>Nothing to apply: no value was changed.</source>
         <translation>Нечего применять: значения не изменены.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/settings/settings_view.cpp" line="356"/>
+        <location line="+3"/>
         <source>Applying %n setting(s)...</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Применяется %n настройка...</numerusform>
+            <numerusform>Применяются %n настройки...</numerusform>
+            <numerusform>Применяется %n настроек...</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="371"/>
+        <location line="+15"/>
         <source>Edits reverted.</source>
-        <translation type="unfinished"></translation>
+        <translation>Правки отменены.</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="378"/>
+        <location line="+7"/>
         <source>This receiver has no such command.</source>
-        <translation type="unfinished"></translation>
+        <translation>У этого приёмника нет такой команды.</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="383"/>
+        <location line="+5"/>
         <source>%1 on the %2?
 
 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 на приёмнике %2?
+
+%3</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="386"/>
+        <location line="+3"/>
         <source>%1...</source>
-        <translation type="unfinished"></translation>
+        <translation>%1...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/settings/settings_view.cpp" line="401"/>
+        <location line="+15"/>
         <source>Preset &quot;%1&quot; loaded: %n setting(s) differ from the receiver. Apply sends them.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Предустановка «%1» загружена: %n настройка отличается от приёмника. «Применить» отправит её.</numerusform>
+            <numerusform>Предустановка «%1» загружена: %n настройки отличаются от приёмника. «Применить» отправит их.</numerusform>
+            <numerusform>Предустановка «%1» загружена: %n настроек отличаются от приёмника. «Применить» отправит их.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="428"/>
+        <location line="+27"/>
         <source>The receiver already has every setting of %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>В приёмнике уже установлены все настройки из %1.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/settings/settings_view.cpp" line="429"/>
+        <location line="+1"/>
         <source>%n setting(s) of the profile differ from the receiver (model %1, firmware %2); they are loaded as edits: Apply sends them.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n настройка профиля отличается от приёмника (модель %1, прошивка %2); она загружена как правка: «Применить» отправит её.</numerusform>
+            <numerusform>%n настройки профиля отличаются от приёмника (модель %1, прошивка %2); они загружены как правки: «Применить» отправит их.</numerusform>
+            <numerusform>%n настроек профиля отличаются от приёмника (модель %1, прошивка %2); они загружены как правки: «Применить» отправит их.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="439"/>
+        <location line="+10"/>
         <source>Not connected to a receiver.</source>
-        <translation type="unfinished"></translation>
+        <translation>Нет подключения к приёмнику.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/settings/settings_view.cpp" line="444"/>
+        <location line="+5"/>
         <source>%n setting(s) exported to %1.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n настройка экспортирована в %1.</numerusform>
+            <numerusform>%n настройки экспортированы в %1.</numerusform>
+            <numerusform>%n настроек экспортировано в %1.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="451"/>
+        <location line="+7"/>
         <source>done</source>
-        <translation type="unfinished"></translation>
+        <translation>выполнено</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="451"/>
+        <location line="+0"/>
         <source>problems</source>
         <translation>есть ошибки</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="464"/>
+        <location line="+13"/>
         <source>receiver reports %1</source>
-        <translation type="unfinished"></translation>
+        <translation>приёмник сообщает %1</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="475"/>
+        <location line="+11"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="477"/>
+        <location line="+2"/>
         <source>%1: cancelled.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: отменено.</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="479"/>
+        <location line="+2"/>
         <source>Nothing to send: the receiver already has these values.</source>
-        <translation type="unfinished"></translation>
+        <translation>Отправлять нечего: в приёмнике уже эти значения.</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="481"/>
+        <location line="+2"/>
         <source>%1: %2 command(s) failed, %3 setting(s) did not take; see Outcomes.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: команд с ошибкой: %2, не принятых настроек: %3; см. «Результаты».</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/settings/settings_view.cpp" line="486"/>
+        <location line="+5"/>
         <source>%1: done (%n command(s)).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1: выполнено (%n команда).</numerusform>
+            <numerusform>%1: выполнено (%n команды).</numerusform>
+            <numerusform>%1: выполнено (%n команд).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="504"/>
+        <location line="+18"/>
         <source>Write the settings in force to the receiver&apos;s flash</source>
-        <translation type="unfinished"></translation>
+        <translation>Записать действующие настройки во флэш-память приёмника</translation>
     </message>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="505"/>
+        <location line="+1"/>
         <source>This receiver has no command to save its settings</source>
-        <translation type="unfinished"></translation>
+        <translation>У этого приёмника нет команды сохранения настроек</translation>
     </message>
 </context>
 <context>
     <name>gnss::ui::SignalLevelsView</name>
     <message>
-        <location filename="../ui/views/signal_levels_view.cpp" line="89"/>
+        <location filename="../ui/views/signal_levels_view.cpp" line="+119"/>
         <source>No satellites in view</source>
         <translation>Нет видимых спутников</translation>
     </message>
@@ -1639,53 +2378,54 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SkyPlotView</name>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="92"/>
+        <location filename="../ui/views/sky_plot_view.cpp" line="+110"/>
         <source>%1: SNR %2 dB-Hz%3</source>
         <translation>%1: С/Ш %2 дБГц%3</translation>
     </message>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="94"/>
+        <location line="+2"/>
         <source>, used</source>
         <translation>, в решении</translation>
     </message>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="103"/>
+        <location line="+9"/>
         <source>%1 (%2)
 elevation %3°, azimuth %4°</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2)
+угол места %3°, азимут %4°</translation>
     </message>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="147"/>
+        <location line="+123"/>
         <source>N</source>
         <translation>С</translation>
     </message>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="148"/>
+        <location line="+1"/>
         <source>S</source>
         <translation>Ю</translation>
     </message>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="149"/>
+        <location line="+1"/>
         <source>E</source>
         <translation>В</translation>
     </message>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="150"/>
+        <location line="+1"/>
         <source>W</source>
         <translation>З</translation>
     </message>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="242"/>
+        <location line="+103"/>
         <source>Show tracks</source>
         <translation>Показывать треки</translation>
     </message>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="246"/>
+        <location line="+4"/>
         <source>Show labels</source>
         <translation>Показывать подписи</translation>
     </message>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="250"/>
+        <location line="+4"/>
         <source>Constellations</source>
         <translation>Системы</translation>
     </message>
@@ -1693,97 +2433,97 @@ elevation %3°, azimuth %4°</source>
 <context>
     <name>gnss::ui::TextEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="166"/>
+        <location filename="../ui/settings/setting_editors.cpp" line="-46"/>
         <source>items separated by &apos;;&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>элементы через «;»</translation>
     </message>
 </context>
 <context>
     <name>gnss::ui::TimeSeriesModel</name>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="145"/>
-        <location filename="../ui/models/time_series_model.cpp" line="181"/>
+        <location filename="../ui/models/time_series_model.cpp" line="+145"/>
+        <location line="+36"/>
         <source>Satellites used</source>
         <translation>Спутники в решении</translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="146"/>
+        <location line="-35"/>
         <source>HDOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="147"/>
+        <location line="+1"/>
         <source>PDOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="148"/>
-        <location filename="../ui/models/time_series_model.cpp" line="183"/>
+        <location line="+1"/>
+        <location line="+35"/>
         <source>Fix type</source>
         <translation>Тип решения</translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="149"/>
+        <location line="-34"/>
         <source>Std. dev. latitude</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="150"/>
+        <location line="+1"/>
         <source>Std. dev. longitude</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="151"/>
+        <location line="+1"/>
         <source>Std. dev. height</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="152"/>
+        <location line="+1"/>
         <source>Baseline length</source>
         <translation>Длина базовой линии</translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="153"/>
+        <location line="+1"/>
         <source>Altitude above sea level</source>
         <translation>Высота над уровнем моря</translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="154"/>
+        <location line="+1"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="158"/>
+        <location line="+4"/>
         <source>Mean SNR %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="182"/>
+        <location line="+24"/>
         <source>DOP</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="184"/>
+        <location line="+2"/>
         <source>Mean SNR (dB-Hz)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="185"/>
+        <location line="+1"/>
         <source>Standard deviation (m)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="186"/>
+        <location line="+1"/>
         <source>Baseline length (m)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="187"/>
+        <location line="+1"/>
         <source>Altitude above sea level (m)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="188"/>
+        <location line="+1"/>
         <source>Speed (m/s)</source>
         <translation type="unfinished"></translation>
     </message>

@@ -387,6 +387,11 @@ void MainWindow::applyTheme(const QString &theme) {
         p.setColor(QPalette::Mid, QColor(0x6b, 0x6f, 0x75));
         p.setColor(QPalette::Midlight, QColor(0x45, 0x48, 0x4d));
         p.setColor(QPalette::PlaceholderText, QColor(0x9a, 0x9e, 0xa5));
+        // Disabled controls (the source box while connected) must look disabled in the dark too.
+        const QColor disabled(0x7a, 0x7e, 0x85);
+        for (auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
+            p.setColor(QPalette::Disabled, role, disabled);
+        p.setColor(QPalette::Disabled, QPalette::Button, QColor(0x2f, 0x31, 0x35));
     } else {
         p = QApplication::style()->standardPalette();
     }

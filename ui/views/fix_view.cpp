@@ -102,8 +102,9 @@ void FixView::refresh() {
                 ++inView;
             }
     }
-    sats_->setText(QStringLiteral("%1 / %2").arg(fmt::integer(e.satsUsed),
-                                                 any ? QString::number(inView) : fmt::dash()));
+    // In view: "—" when the receiver sends no satellites in view (no GSV), never 0.
+    sats_->setText(QStringLiteral("%1 / %2").arg(
+            fmt::integer(e.satsUsed), any && inView > 0 ? QString::number(inView) : fmt::dash()));
     dops_->setText(
             QStringLiteral("%1 / %2 / %3")
                     .arg(fmt::number(e.pdop, 2), fmt::number(e.hdop, 2), fmt::number(e.vdop, 2)));
