@@ -1,5 +1,6 @@
 // The main window: menus and docks present, start-up options, layout saved and restored, and the
 // built-in simulated receiver reaching every model through the real connection path.
+#include "app_transports.h"
 #include "config/settings_engine.h"
 #include "connection_controller.h"
 #include "dialects.h"
@@ -24,6 +25,7 @@ class TestMainWindow : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     gnss::DialectRegistry registry_ = gnss::makeBuiltinRegistry();
+    gnss::link::TransportFactory transports_ = gnss::app::makeTransportFactory();
 
     std::unique_ptr<QSettings> settings() {
         return std::make_unique<QSettings>(dir_.filePath("settings.ini"), QSettings::IniFormat);
@@ -32,7 +34,7 @@ class TestMainWindow : public QObject {
 private slots:
     void mainWindowHasItsMenusAndDocks() {
         auto s = settings();
-        gnss::app::MainWindow w(registry_, s.get());
+        gnss::app::MainWindow w(registry_, transports_, s.get());
         QStringList titles;
         for (QAction *a : w.menuBar()->actions()) titles << a->text().remove('&');
         QCOMPARE(titles, (QStringList{"File", "Receiver", "View", "Help"}));
@@ -44,7 +46,7 @@ private slots:
 
     void simulatedReceiverReachesTheModels() {
         auto s = settings();
-        gnss::app::MainWindow w(registry_, s.get());
+        gnss::app::MainWindow w(registry_, transports_, s.get());
         w.show();
         w.connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nvs"});
         QTRY_VERIFY_WITH_TIMEOUT(w.stateModel()->epochCount() >= 3, 10000);
@@ -57,7 +59,7 @@ private slots:
 
     void skyPlotDrawsTheReceiversElevationMask() {
         auto s = settings();
-        gnss::app::MainWindow w(registry_, s.get());
+        gnss::app::MainWindow w(registry_, transports_, s.get());
         w.show();
         w.connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nvs"});
         auto *engine = w.findChild<gnss::config::SettingsEngine *>();
@@ -70,7 +72,7 @@ private slots:
 
     void closingWithACommandInFlightIsSafe() {
         auto s = settings();
-        auto w = std::make_unique<gnss::app::MainWindow>(registry_, s.get());
+        auto w = std::make_unique<gnss::app::MainWindow>(registry_, transports_, s.get());
         w->show();
         w->connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nvs"});
         QString why;
@@ -81,7 +83,7 @@ private slots:
     void layoutAndLastConnectionAreRestored() {
         {
             auto s = settings();
-            gnss::app::MainWindow w(registry_, s.get());
+            gnss::app::MainWindow w(registry_, transports_, s.get());
             w.show();
             w.connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nmea"});
             w.dock("consoleDock")->hide();
@@ -89,7 +91,7 @@ private slots:
         }
         auto s = settings();
         QCOMPARE(s->value("connection/last").toString(), QString("sim:nmea"));
-        gnss::app::MainWindow w(registry_, s.get());
+        gnss::app::MainWindow w(registry_, transports_, s.get());
         w.show();
         QVERIFY(w.dock("consoleDock")->isHidden());
         QVERIFY(w.dock("skyDock")->isVisible());
@@ -101,12 +103,12 @@ private slots:
         QString err;
         auto o = parseStartupOptions({"gnss-workbench", "--sim", "nvs", "--screenshot",
                                       "/tmp/x.png", "--quit-after", "2.5"},
-                                     err);
+                                     gnss::app::simulatedDialects(), err);
         QVERIFY2(o, qPrintable(err));
         QCOMPARE(o->sim, QString("nvs"));
         QCOMPARE(o->quitAfter, 2.5);
         o = parseStartupOptions({"gnss-workbench", "--port", "/dev/ttyUSB0", "--baud", "115200"},
-                                err);
+                                gnss::app::simulatedDialects(), err);
         QVERIFY(o);
         QCOMPARE(o->baud, 115200);
         QCOMPARE(SourceSpec::fromString("serial:/dev/ttyUSB0@115200").baud, 115200);
@@ -123,7 +125,7 @@ private slots:
     void badStartupOptionsAreRefused() {
         QFETCH(QStringList, args);
         QString err;
-        QVERIFY(!parseStartupOptions(args, err));
+        QVERIFY(!parseStartupOptions(args, gnss::app::simulatedDialects(), err));
         QVERIFY(!err.isEmpty());
     }
 };

@@ -5,10 +5,16 @@
 
 #include <string_view>
 
+namespace gnss::link {
+class TransportFactory;
+}
+
 namespace gnss::cli {
 
 struct CliContext {
     const DialectRegistry &registry;
+    // The sources the link commands can open (serial, TCP, replay, the simulator).
+    const link::TransportFactory *transports = nullptr;
 };
 
 int cmdDecode(const CliContext &ctx, int argc, char **argv);

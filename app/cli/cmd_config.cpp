@@ -1,7 +1,7 @@
 // gnss-cli config: a receiver's settings from the command line, on the settings engine
 // (protocol/config) that the settings dock uses.
 //
-//   gnss-cli config (--port P [--baud B] | --sim DIALECT) [--dialect D] get [KEY...]
+//   gnss-cli config (--port P [--baud B] | --tcp H:P | --sim DIALECT) [--dialect D] get [KEY...]
 //   ... set KEY=VALUE...     apply; one JSON line per command, then the verification
 //   ... export FILE          read everything, write a versioned JSON profile
 //   ... apply FILE           apply the profile's difference; non-zero if anything was refused
@@ -14,16 +14,13 @@
 #include "core/json_writer.h"
 #include "core/stream_decoder.h"
 
-#include "baud_detector.h"
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "cli_source.h"
 #include "command_queue.h"
-#include "serial_transport.h"
+#include "sentence_stream.h"
 #include "settings_engine.h"
 #include "vendor_detector.h"
-#ifdef GNSS_HAVE_SIM
-#include "simulator_transport.h"
-#endif
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -124,29 +121,25 @@ bool reportRead(const OperationReport &r) {
 }
 
 struct Link {
-    std::unique_ptr<link::Transport> transport;
+    std::unique_ptr<link::Connection> connection;
     const Dialect *dialect = nullptr;
 };
 
-// Opens --port or --sim, finds the speed and the dialect; nullptr transport with a message.
+// Opens the source (any the application knows), finds the speed and the dialect; an empty Link
+// after saying why.
 Link openLink(const CliContext &ctx, const Args &args) {
     Link l;
-    const auto port = args.option("port");
-    const auto sim = args.option("sim");
-    if ((port ? 1 : 0) + (sim ? 1 : 0) != 1) {
-        say(QObject::tr("config needs one of --port P or --sim DIALECT"));
+    std::string error;
+    const auto spec = sourceFromArgs(args,
+                                     {link::SourceSpec::Kind::Serial, link::SourceSpec::Kind::Tcp,
+                                      link::SourceSpec::Kind::Simulator},
+                                     error);
+    if (!spec) {
+        say(QString::fromStdString(error));
         return {};
     }
-    int baud = 0;
-    if (const auto b = args.option("baud")) {
-        baud = QString::fromStdString(*b).toInt();
-        if (baud < 300 || baud > 4000000) {
-            say(QObject::tr("--baud expects a speed such as 9600 or 115200, got '%1'")
-                        .arg(QString::fromStdString(*b)));
-            return {};
-        }
-    }
-    const std::string dialectId = args.option("dialect").value_or(sim ? *sim : "auto");
+    const std::string dialectId = args.option("dialect").value_or(
+            spec->kind == link::SourceSpec::Kind::Simulator ? spec->name.toStdString() : "auto");
     if (dialectId != "auto") {
         l.dialect = ctx.registry.find(dialectId);
         if (!l.dialect) {
@@ -154,43 +147,16 @@ Link openLink(const CliContext &ctx, const Args &args) {
             return {};
         }
     }
-    if (sim) {
-#ifdef GNSS_HAVE_SIM
-        l.transport =
-                std::make_unique<link::SimulatorTransport>(QString::fromStdString(*sim), 1, baud);
-#else
-        say(QObject::tr("this gnss-cli was built without the simulator"));
+    OpenOptions o;
+    o.autoReconnect = false;
+    QString why;
+    l.connection = openConnection(ctx, *spec, o, why);
+    if (!l.connection) {
+        say(why);
         return {};
-#endif
-    } else {
-        link::SerialSettings s;
-        s.portName = QString::fromStdString(*port);
-        s.baud = baud > 0 ? baud : 9600;
-        l.transport = std::make_unique<link::SerialTransport>(s);
-    }
-    if (!l.transport->open()) {
-        say(l.transport->errorString());
-        return {};
-    }
-    if (port && baud <= 0) {
-        link::BaudDetector detector(l.transport.get());
-        detector.setCandidates(link::BaudDetector::likelyRates(0));
-        QEventLoop loop;
-        link::BaudDetection found;
-        QObject::connect(&detector, &link::BaudDetector::finished,
-                         [&](const link::BaudDetection &d) {
-                             found = d;
-                             loop.quit();
-                         });
-        QTimer::singleShot(0, &detector, &link::BaudDetector::start);
-        loop.exec();
-        if (!found.found) {
-            say(found.error);
-            return {};
-        }
     }
     if (!l.dialect) {
-        link::VendorDetector vendor(l.transport.get(), ctx.registry);
+        link::VendorDetector vendor(l.connection->stream());
         QEventLoop loop;
         link::VendorIdentity id;
         QObject::connect(&vendor, &link::VendorDetector::finished,
@@ -213,6 +179,7 @@ Link openLink(const CliContext &ctx, const Args &args) {
                                            static_cast<qsizetype>(l.dialect->id.size()))));
         return {};
     }
+    l.connection->stream()->setDialect(l.dialect);
     return l;
 }
 
@@ -310,11 +277,10 @@ int cmdConfig(const CliContext &ctx, int argc, char **argv) {
     char *qargv[] = {name, nullptr};
     QCoreApplication app(qargc, qargv);
     Link l = openLink(ctx, args);
-    if (!l.transport) return 1;
-    link::CommandQueue queue(l.transport.get());
-    queue.setDialect(l.dialect);
+    if (!l.connection) return 1;
+    l.connection->commands()->setDialect(l.dialect);
     SettingsEngine engine;
-    engine.attach(&queue, l.dialect, l.transport.get());
+    engine.attach(l.connection.get(), l.dialect);
 
     if (action == "get") return get(engine, rest);
     if (action == "set") {

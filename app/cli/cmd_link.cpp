@@ -7,13 +7,13 @@
 #include "baud_detector.h"
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "cli_source.h"
 #include "connection.h"
 #include "core/json_writer.h"
 #include "core/sentence_builder.h"
 #include "port_watcher.h"
 #include "replay_transport.h"
-#include "serial_transport.h"
-#include "tcp_transport.h"
+#include "sentence_stream.h"
 #include "vendor_detector.h"
 
 #include <QCoreApplication>
@@ -87,54 +87,26 @@ bool numberOption(const Args &args, const char *name, double &out) {
     return true;
 }
 
-bool baudOption(const Args &args, int &baud) {
-    const auto v = args.option("baud");
-    if (!v) return true;
-    bool ok = false;
-    baud = QString::fromStdString(*v).toInt(&ok);
-    if (!ok || baud < 300 || baud > 4000000) {
-        std::fprintf(stderr, "gnss-cli: --baud expects a speed such as 9600 or 115200, got '%s'\n",
-                     v->c_str());
-        return false;
-    }
-    return true;
-}
+using Kind = link::SourceSpec::Kind;
 
-// The source named by --port/--tcp/--replay (exactly one); nullptr with a message when wrong.
-std::unique_ptr<link::Transport> makeSource(const Args &args, int baud, bool allowReplay) {
-    const auto port = args.option("port");
-    const auto tcp = args.option("tcp");
-    const auto replay = allowReplay ? args.option("replay") : std::nullopt;
-    const int given = (port ? 1 : 0) + (tcp ? 1 : 0) + (replay ? 1 : 0);
-    if (given != 1) {
-        std::fprintf(stderr, allowReplay ? "gnss-cli: give one of --port P, --tcp HOST:PORT or "
-                                           "--replay FILE\n"
-                                         : "gnss-cli: give one of --port P or --tcp HOST:PORT\n");
+// The command's source from its arguments, opened (nullptr after saying why on standard error).
+std::unique_ptr<link::Connection> open(const CliContext &ctx, const Args &args,
+                                       std::initializer_list<Kind> allowed,
+                                       const OpenOptions &options, int &rc) {
+    std::string error;
+    const auto spec = sourceFromArgs(args, allowed, error);
+    if (!spec) {
+        std::fprintf(stderr, "gnss-cli: %s\n", error.c_str());
+        rc = 2;
         return nullptr;
     }
-    if (port) {
-        link::SerialSettings s;
-        s.portName = QString::fromStdString(*port);
-        s.baud = baud;
-        return std::make_unique<link::SerialTransport>(s);
+    QString why;
+    auto conn = openConnection(ctx, *spec, options, why);
+    if (!conn) {
+        std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
+        rc = 1;
     }
-    if (tcp) {
-        QString host;
-        quint16 p = 0;
-        if (!link::TcpTransport::parseHostPort(QString::fromStdString(*tcp), host, p)) {
-            std::fprintf(stderr, "gnss-cli: --tcp expects HOST:PORT, got '%s'\n", tcp->c_str());
-            return nullptr;
-        }
-        return std::make_unique<link::TcpTransport>(host, p);
-    }
-    auto r = std::make_unique<link::ReplayTransport>(QString::fromStdString(*replay));
-    double speed = 1;
-    if (!numberOption(args, "speed", speed)) return nullptr;
-    if (speed > 0) r->setSpeed(speed);
-    if (args.flag("fast"))
-        r = std::make_unique<link::ReplayTransport>(QString::fromStdString(*replay),
-                                                    link::ReplayTransport::Timing::AsFast);
-    return r;
+    return conn;
 }
 
 // Link events on standard error; a link that cannot be opened and will not be retried ends the
@@ -150,18 +122,12 @@ void reportLinkEvents(link::Connection &conn, const char *note) {
                      (retryMs + 500) / 1000, note);
     });
     QObject::connect(&conn, &link::Connection::linkLost, [note](const QString &why, int retryMs) {
-        std::fprintf(stderr, "gnss-cli: link lost: %s; trying again in %d s%s\n",
-                     utf8(why).c_str(), (retryMs + 500) / 1000, note);
+        std::fprintf(stderr, "gnss-cli: link lost: %s; trying again in %d s%s\n", utf8(why).c_str(),
+                     (retryMs + 500) / 1000, note);
     });
     QObject::connect(&conn, &link::Connection::linkRestored, [](const QString &what) {
         std::fprintf(stderr, "gnss-cli: link back: %s\n", utf8(what).c_str());
     });
-}
-
-bool openOrSay(link::Transport &t) {
-    if (t.open()) return true;
-    std::fprintf(stderr, "gnss-cli: %s\n", utf8(t.errorString()).c_str());
-    return false;
 }
 
 void writeBaudTries(JsonWriter &w, const link::BaudDetection &d) {
@@ -201,38 +167,33 @@ int cmdPorts(const CliContext &, int argc, char **argv) {
 int cmdProbe(const CliContext &ctx, int argc, char **argv) {
     Args args(argc, argv, 2, {});
     if (!parseArgs(args)) return 2;
-    int baud = 0;
-    if (!baudOption(args, baud)) return 2;
-    if (!args.option("port")) {
-        std::fprintf(stderr, "gnss-cli: probe needs --port P\n");
-        return 2;
-    }
     EventLoop loop;
-    auto source = makeSource(args, baud > 0 ? baud : 9600, false);
-    if (!source || !openOrSay(*source)) return source ? 1 : 2;
-
-    link::BaudDetector baudDetector(source.get());
-    baudDetector.setCandidates(link::BaudDetector::likelyRates(baud));
-    link::VendorDetector vendor(source.get(), ctx.registry);
     link::BaudDetection found;
-    link::VendorIdentity id;
-    QObject::connect(&baudDetector, &link::BaudDetector::finished,
-                     [&](const link::BaudDetection &d) {
-                         found = d;
-                         if (!d.found) return QCoreApplication::exit(1);
-                         vendor.start();
-                     });
-    QObject::connect(&vendor, &link::VendorDetector::finished, [&](const link::VendorIdentity &v) {
-        id = v;
-        QCoreApplication::exit(v.found ? 0 : 1);
-    });
-    QTimer::singleShot(0, &baudDetector, &link::BaudDetector::start);
-    const int rc = loop.exec();
+    OpenOptions o;
+    o.autoReconnect = false;
+    o.detection = &found;
+    int rc = 0;
+    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Simulator}, o, rc);
+    if (!conn && found.tried.empty()) return rc;
 
+    link::VendorIdentity id;
+    if (conn) {
+        link::VendorDetector vendor(conn->stream());
+        QObject::connect(&vendor, &link::VendorDetector::finished,
+                         [&](const link::VendorIdentity &v) {
+                             id = v;
+                             QCoreApplication::exit(v.found ? 0 : 1);
+                         });
+        QTimer::singleShot(0, &vendor, &link::VendorDetector::start);
+        rc = loop.exec();
+    }
+    const auto port = args.option("port");
     std::string out;
     JsonWriter w(out);
-    w.beginObject().field("port", *args.option("port"));
-    w.field("baud", found.found ? std::optional<int>(found.baud) : std::nullopt);
+    w.beginObject().field("source",
+                          port ? *port : utf8(conn ? conn->transport()->description() : QString()));
+    const int baud = found.found ? found.baud : (conn ? conn->transport()->baud() : 0);
+    w.field("baud", baud > 0 ? std::optional<int>(baud) : std::nullopt);
     w.field("dialect", id.found ? std::optional<std::string>(utf8(id.dialect)) : std::nullopt);
     w.field("dialect_name",
             id.found ? std::optional<std::string>(utf8(id.dialectName)) : std::nullopt);
@@ -245,62 +206,61 @@ int cmdProbe(const CliContext &ctx, int argc, char **argv) {
     w.field("reply",
             id.reply.isEmpty() ? std::nullopt : std::optional<std::string>(utf8(id.reply)));
     writeBaudTries(w, found);
-    const QString error = !found.found ? found.error : id.error;
+    const QString error = !conn ? found.error : id.error;
     w.field("error", error.isEmpty() ? std::nullopt : std::optional<std::string>(utf8(error)));
     w.endObject();
     printLine(out);
     if (rc != 0 && !error.isEmpty()) std::fprintf(stderr, "gnss-cli: %s\n", utf8(error).c_str());
-    return rc == 0 ? 0 : 1;
+    return conn && rc == 0 ? 0 : 1;
 }
 
 int cmdMonitor(const CliContext &ctx, int argc, char **argv) {
     Args args(argc, argv, 2, {"epochs", "lenient", "fast"});
     if (!parseArgs(args)) return 2;
-    int baud = 0;
     double duration = 0;
-    if (!baudOption(args, baud) || !numberOption(args, "duration", duration)) return 2;
-    DecoderOptions options;
-    options.dialect = args.option("dialect").value_or("auto");
-    options.lenient = args.flag("lenient");
-    if (options.dialect != "auto" && !ctx.registry.find(options.dialect)) {
-        std::fprintf(stderr, "gnss-cli: unknown dialect '%s'\n", options.dialect.c_str());
+    if (!numberOption(args, "duration", duration)) return 2;
+    OpenOptions o;
+    o.decoder.dialect = args.option("dialect").value_or("auto");
+    o.decoder.lenient = args.flag("lenient");
+    if (o.decoder.dialect != "auto" && !ctx.registry.find(o.decoder.dialect)) {
+        std::fprintf(stderr, "gnss-cli: unknown dialect '%s'\n", o.decoder.dialect.c_str());
         return 2;
     }
     EventLoop loop;
-    auto source = makeSource(args, baud > 0 ? baud : 9600, true);
-    if (!source) return 2;
-    auto *replay = qobject_cast<link::ReplayTransport *>(source.get());
-    link::Connection conn(std::move(source), ctx.registry, options);
+    // Nothing is missed: the decoder is listened to before the link opens.
+    o.waitUntilOpen = false;
+    int rc = 0;
+    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Replay, Kind::Simulator}, o, rc);
+    if (!conn) return rc;
+    auto *replay = qobject_cast<link::ReplayTransport *>(conn->transport());
     const bool epochs = args.flag("epochs");
-    EpochAssembler assembler(conn.decoder().dialect());
+    EpochAssembler assembler(conn->stream()->dialect());
     auto onEpoch = [](const Epoch &e) {
         std::string out;
         JsonWriter w(out);
         e.writeJson(w);
         printLine(out);
     };
-    conn.setSentenceHandler([&](const SentenceEvent &ev) {
-        if (epochs) {
-            if (!ev.message) return;
-            assembler.setDialect(conn.decoder().dialect());
-            assembler.add(ev.sentence, *ev.message, onEpoch);
-            return;
-        }
-        std::string out;
-        JsonWriter w(out);
-        writeSentenceEventJson(w, ev);
-        printLine(out);
-    });
-    reportLinkEvents(conn, "");
+    link::Connection *c = conn.get();
+    QObject::connect(c->stream(), &link::SentenceStream::sentenceDecoded,
+                     [&, c](const SentenceEvent &ev) {
+                         if (epochs) {
+                             if (!ev.message) return;
+                             assembler.setDialect(c->stream()->dialect());
+                             assembler.add(ev.sentence, *ev.message, onEpoch);
+                             return;
+                         }
+                         std::string out;
+                         JsonWriter w(out);
+                         writeSentenceEventJson(w, ev);
+                         printLine(out);
+                     });
+    reportLinkEvents(*c, "");
     if (replay)
         QObject::connect(replay, &link::ReplayTransport::finished,
                          [] { QCoreApplication::exit(0); });
-    if (!conn.open()) {
-        std::fprintf(stderr, "gnss-cli: %s\n", utf8(conn.transport()->errorString()).c_str());
-        return 1;
-    }
     loop.stopAfter(duration);
-    const int rc = loop.exec();
+    rc = loop.exec();
     if (epochs) assembler.flush(onEpoch);
     return rc == 130 ? 0 : rc;
 }
@@ -308,32 +268,29 @@ int cmdMonitor(const CliContext &ctx, int argc, char **argv) {
 int cmdRecord(const CliContext &ctx, int argc, char **argv) {
     Args args(argc, argv, 2, {});
     if (!parseArgs(args)) return 2;
-    int baud = 0;
     double duration = 0;
-    if (!baudOption(args, baud) || !numberOption(args, "duration", duration)) return 2;
+    if (!numberOption(args, "duration", duration)) return 2;
     const auto outPath = args.option("out");
     if (!outPath) {
         std::fprintf(stderr, "gnss-cli: record needs --out FILE\n");
         return 2;
     }
     EventLoop loop;
-    auto source = makeSource(args, baud > 0 ? baud : 9600, false);
-    if (!source) return 2;
-    link::Connection conn(std::move(source), ctx.registry);
-    reportLinkEvents(conn, " (recording goes on)");
-    if (!conn.startRecording(QString::fromStdString(*outPath))) {
-        std::fprintf(stderr, "gnss-cli: %s\n", utf8(conn.recorder()->errorString()).c_str());
-        return 1;
-    }
-    if (!conn.open()) {
-        std::fprintf(stderr, "gnss-cli: %s\n", utf8(conn.transport()->errorString()).c_str());
+    OpenOptions o;
+    o.waitUntilOpen = false;
+    int rc = 0;
+    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Simulator}, o, rc);
+    if (!conn) return rc;
+    reportLinkEvents(*conn, " (recording goes on)");
+    if (!conn->startRecording(QString::fromStdString(*outPath))) {
+        std::fprintf(stderr, "gnss-cli: %s\n", utf8(conn->recorder()->errorString()).c_str());
         return 1;
     }
     loop.stopAfter(duration);
-    const int rc = loop.exec();
-    conn.stopRecording();
+    rc = loop.exec();
+    conn->stopRecording();
     std::fprintf(stderr, "gnss-cli: recorded %lld bytes to %s (index: %s)\n",
-                 static_cast<long long>(conn.bytesReceived()), outPath->c_str(),
+                 static_cast<long long>(conn->bytesReceived()), outPath->c_str(),
                  utf8(link::indexPathFor(QString::fromStdString(*outPath))).c_str());
     return rc == 130 ? 0 : rc;
 }
@@ -341,9 +298,7 @@ int cmdRecord(const CliContext &ctx, int argc, char **argv) {
 int cmdSend(const CliContext &ctx, int argc, char **argv) {
     Args args(argc, argv, 2, {});
     if (!parseArgs(args)) return 2;
-    int baud = 0;
     double timeout = -1;
-    if (!baudOption(args, baud)) return 2;
     if (args.option("timeout") && !numberOption(args, "timeout", timeout)) return 2;
     if (args.positionals().empty()) {
         std::fprintf(stderr, "gnss-cli: send needs at least one SENTENCE\n");
@@ -365,13 +320,13 @@ int cmdSend(const CliContext &ctx, int argc, char **argv) {
         return 2;
     }
     EventLoop loop;
-    auto source = makeSource(args, baud > 0 ? baud : 9600, false);
-    if (!source) return 2;
-    DecoderOptions options;
-    options.dialect = dialectId;
-    link::Connection conn(std::move(source), ctx.registry, options);
-    conn.setAutoReconnect(false);
-    link::CommandQueue *queue = conn.commands();
+    OpenOptions o;
+    o.decoder.dialect = dialectId;
+    o.autoReconnect = false;
+    int rc = 0;
+    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Simulator}, o, rc);
+    if (!conn) return rc;
+    link::CommandQueue *queue = conn->commands();
     if (dialect) queue->setDialect(dialect);
     int failures = 0;
     QObject::connect(
@@ -402,15 +357,11 @@ int cmdSend(const CliContext &ctx, int argc, char **argv) {
                          printLine(out);
                      });
     QObject::connect(queue, &link::CommandQueue::idle, [] { QCoreApplication::exit(0); });
-    reportLinkEvents(conn, "");
-    if (!conn.open()) {
-        std::fprintf(stderr, "gnss-cli: %s\n", utf8(conn.transport()->errorString()).c_str());
-        return 1;
-    }
-    link::CommandOptions o;
-    if (timeout >= 0) o.timeoutMs = static_cast<int>(timeout * 1000);
-    for (const auto &typed : args.positionals()) queue->enqueue(QString::fromStdString(typed), o);
-    const int rc = loop.exec();
+    reportLinkEvents(*conn, "");
+    link::CommandOptions co;
+    if (timeout >= 0) co.timeoutMs = static_cast<int>(timeout * 1000);
+    for (const auto &typed : args.positionals()) queue->enqueue(QString::fromStdString(typed), co);
+    rc = loop.exec();
     if (rc != 0) return rc;
     return failures == 0 ? 0 : 1;
 }

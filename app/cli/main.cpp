@@ -1,4 +1,5 @@
 // gnss-cli: headless GNSS Workbench. See docs/cli.md.
+#include "app_transports.h"
 #include "cli_commands.h"
 
 #include <cstdio>
@@ -58,7 +59,8 @@ int main(int argc, char **argv) {
         return argc < 2 ? 2 : 0;
     }
     const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
-    const gnss::cli::CliContext ctx{registry};
+    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory();
+    const gnss::cli::CliContext ctx{registry, &transports};
     for (const auto &c : kCommands)
         if (c.name == argv[1]) return c.run(ctx, argc, argv);
     std::fprintf(stderr, "gnss-cli: unknown command '%s'\n\n", argv[1]);

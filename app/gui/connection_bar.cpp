@@ -1,5 +1,7 @@
 #include "connection_bar.h"
 
+#include "core/baud_rates.h"
+#include "core/dialect_registry.h"
 #include "link/port_watcher.h"
 
 #include <QComboBox>
@@ -11,11 +13,12 @@
 namespace gnss::app {
 namespace {
 enum ItemRole { SpecRole = Qt::UserRole + 1 };
-constexpr int kBauds[] = {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600};
 } // namespace
 
-ConnectionBar::ConnectionBar(link::PortWatcher *ports, QWidget *parent)
-    : QToolBar(tr("Connection"), parent), ports_(ports) {
+ConnectionBar::ConnectionBar(link::PortWatcher *ports, const DialectRegistry &registry,
+                             QStringList simulated, QWidget *parent)
+    : QToolBar(tr("Connection"), parent), ports_(ports), registry_(registry),
+      simulated_(std::move(simulated)) {
     setObjectName("connectionBar");
     addWidget(new QLabel(tr("Source "), this));
     source_ = new QComboBox(this);
@@ -27,7 +30,7 @@ ConnectionBar::ConnectionBar(link::PortWatcher *ports, QWidget *parent)
     baud_ = new QComboBox(this);
     baud_->setObjectName("baudCombo");
     baud_->addItem(tr("auto"), 0);
-    for (int b : kBauds) baud_->addItem(QString::number(b), b);
+    for (int b : kStandardBauds) baud_->addItem(QString::number(b), b);
     addWidget(baud_);
     baudNote_ = new QLabel(this);
     baudNote_->setObjectName("baudNote");
@@ -79,17 +82,14 @@ void ConnectionBar::rebuildSources() {
                                  Qt::ToolTipRole);
         }
     }
-    const struct {
-        const char *id;
-        const char *label;
-    } sims[] = {{"nvs", QT_TR_NOOP("Simulated NVS NV08C-RTK")},
-                {"geostar", QT_TR_NOOP("Simulated GeoStar GeoS-5")},
-                {"nemerix", QT_TR_NOOP("Simulated Nemerix VT002")},
-                {"nmea", QT_TR_NOOP("Simulated NMEA receiver")}};
-    for (const auto &s : sims)
-        source_->addItem(
-                tr(s.label),
-                SourceSpec{SourceSpec::Kind::Simulator, QString::fromLatin1(s.id)}.toString());
+    // The simulated receivers: one per dialect the simulator plays, named by its record.
+    for (const QString &id : simulated_) {
+        const Dialect *d = registry_.find(id.toStdString());
+        const QString name =
+                d ? QString::fromUtf8(d->displayName.data(), qsizetype(d->displayName.size())) : id;
+        source_->addItem(tr("Simulated %1").arg(name),
+                         SourceSpec{SourceSpec::Kind::Simulator, id}.toString());
+    }
     if (extra_.valid()) source_->addItem(extra_.displayName(), extra_.toString());
     source_->addItem(tr("TCP…"), QStringLiteral("tcp?"));
     source_->addItem(tr("Open log…"), QStringLiteral("replay?"));

@@ -2,24 +2,32 @@
 // ConnectionBar: where the data comes from — serial ports (refreshed by themselves when a device
 // is plugged or unplugged), the built-in simulated receivers, TCP, a log to replay — the baud
 // rate with "auto", and Connect / Disconnect.
-#include "source_spec.h"
+#include "link/source_spec.h"
 
+#include <QStringList>
 #include <QToolBar>
 
 class QComboBox;
 class QLabel;
 class QPushButton;
 
-namespace gnss::link {
+namespace gnss {
+class DialectRegistry;
+namespace link {
 class PortWatcher;
 }
+} // namespace gnss
 
 namespace gnss::app {
+
+using link::SourceSpec;
 
 class ConnectionBar : public QToolBar {
     Q_OBJECT
 public:
-    explicit ConnectionBar(link::PortWatcher *ports, QWidget *parent = nullptr);
+    // `simulated`: the dialects the built-in simulator plays (listed as sources).
+    ConnectionBar(link::PortWatcher *ports, const DialectRegistry &registry, QStringList simulated,
+                  QWidget *parent = nullptr);
 
     SourceSpec selection() const;
     void select(const SourceSpec &spec);
@@ -28,12 +36,14 @@ public:
     void setBaudNote(const QString &text, const QString &tooltip = {});
 
 signals:
-    void connectRequested(const gnss::app::SourceSpec &spec);
+    void connectRequested(const gnss::link::SourceSpec &spec);
     void disconnectRequested();
 
 private:
     void rebuildSources();
     link::PortWatcher *ports_;
+    const DialectRegistry &registry_;
+    QStringList simulated_;
     QComboBox *source_;
     QComboBox *baud_;
     QLabel *baudNote_;

@@ -1,15 +1,11 @@
 #include "connection_controller.h"
 
 #include "core/dialect_registry.h"
-#include "link/baud_detector.h"
 #include "link/connection.h"
+#include "link/link_opener.h"
 #include "link/replay_transport.h"
-#include "link/serial_transport.h"
-#include "link/simulator_transport.h"
-#include "link/tcp_transport.h"
+#include "link/sentence_stream.h"
 #include "models/receiver_session.h"
-
-#include <QStringList>
 
 namespace gnss::app {
 
@@ -20,9 +16,25 @@ QString seconds(int ms) {
 } // namespace
 
 ConnectionController::ConnectionController(const DialectRegistry &registry,
+                                           const link::TransportFactory &transports,
                                            ui::ReceiverSession *session, QObject *parent)
-    : QObject(parent), registry_(registry), session_(session) {
+    : QObject(parent), registry_(registry), transports_(transports), session_(session),
+      opener_(std::make_unique<link::LinkOpener>(transports, registry)) {
     stateText_ = tr("Not connected");
+    connect(opener_.get(), &link::LinkOpener::tryingRate, this, [this](int baud) {
+        // The rates before this one, with what was seen there.
+        const int before = int(opener_->detection().tried.size()) - 1;
+        const QString tried = link::LinkOpener::attemptsText(opener_->detection(), before);
+        setState(State::Detecting,
+                 before <= 0
+                         ? tr("%1: detecting the baud rate: trying %2…").arg(spec_.name).arg(baud)
+                         : tr("%1: detecting the baud rate: %2; trying %3…")
+                                   .arg(spec_.name, tried)
+                                   .arg(baud));
+        emit detectingRate(baud);
+    });
+    connect(opener_.get(), &link::LinkOpener::ready, this, &ConnectionController::onOpenerReady);
+    connect(opener_.get(), &link::LinkOpener::failed, this, &ConnectionController::onOpenerFailed);
 }
 
 ConnectionController::~ConnectionController() {
@@ -44,103 +56,53 @@ bool ConnectionController::connectTo(const SourceSpec &spec) {
         setState(State::Failed, tr("No source chosen"));
         return false;
     }
-    if (spec.kind == SourceSpec::Kind::Serial && spec.baud == 0) return detectBaud();
-    return openWith(makeTransport(spec.baud));
+    if (spec.kind == SourceSpec::Kind::Serial && spec.baud == 0)
+        setState(State::Detecting, tr("%1: detecting the baud rate…").arg(spec.name));
+    opener_->start(spec);
+    return state_ != State::Failed;
 }
 
-bool ConnectionController::detectBaud() {
-    // Baud "auto": the port is opened once; the detector tries the likely rates on it and hands
-    // it over, open, at the rate it found (no close and reopen, which a lock could refuse).
-    auto transport = std::make_unique<link::SerialTransport>(
-            link::SerialSettings{spec_.name, link::BaudDetector::likelyRates(0).front()});
-    if (!transport->open()) {
-        setState(State::Failed, tr("Cannot open %1: %2").arg(spec_.name, transport->errorString()));
-        return false;
-    }
-    detecting_ = std::move(transport);
-    detector_ = std::make_unique<link::BaudDetector>(detecting_.get());
-    connect(detector_.get(), &link::BaudDetector::tryingRate, this, [this](int baud) {
-        QStringList tried;
-        for (const auto &a : detector_->result().tried)
-            if (a.baud != baud) tried << attemptText(a);
-        setState(State::Detecting,
-                 tried.isEmpty()
-                         ? tr("%1: detecting the baud rate: trying %2…").arg(spec_.name).arg(baud)
-                         : tr("%1: detecting the baud rate: %2; trying %3…")
-                                   .arg(spec_.name, tried.join(QStringLiteral(", ")))
-                                   .arg(baud));
-        emit detectingRate(baud);
-    });
-    connect(detector_.get(), &link::BaudDetector::finished, this,
-            &ConnectionController::onDetection);
-    setState(State::Detecting, tr("%1: detecting the baud rate…").arg(spec_.name));
-    detector_->start();
-    return true;
-}
-
-QString ConnectionController::attemptText(const link::BaudAttempt &a) {
-    if (a.validSentences > 0) return tr("%1 (valid NMEA)").arg(a.baud);
-    if (a.bytes == 0) return tr("%1 (no data)").arg(a.baud);
-    return tr("%1 (data, no valid sentence)").arg(a.baud);
-}
-
-void ConnectionController::onDetection(const link::BaudDetection &result) {
-    // The detector is done with the port (deleted later: this runs inside its signal).
-    detector_.release()->deleteLater();
-    std::unique_ptr<link::Transport> port = std::move(detecting_);
-    if (!result.found) {
-        QStringList tried;
-        for (const auto &a : result.tried) tried << attemptText(a);
-        detectionDetail_ = tr("Baud rate not found: %1").arg(tried.join(QStringLiteral(", ")));
-        port->close();
-        port.release()->deleteLater();
-        setState(State::Failed, tr("%1: %2").arg(spec_.name, result.error));
-        emit detectionFinished(0);
+void ConnectionController::onOpenerFailed(const QString &why) {
+    if (opener_->detection().tried.empty()) {
+        setState(State::Failed, tr("Cannot open %1: %2").arg(spec_.displayName(), why));
         return;
     }
-    detectedBaud_ = result.baud;
-    QStringList tried;
-    for (const auto &a : result.tried) tried << attemptText(a);
-    detectionDetail_ = tr("Baud rate detected: %1").arg(tried.join(QStringLiteral(", ")));
-    emit detectionFinished(result.baud);
-    openWith(std::move(port));
+    detectionDetail_ =
+            tr("Baud rate not found: %1").arg(link::LinkOpener::attemptsText(opener_->detection()));
+    setState(State::Failed, tr("%1: %2").arg(spec_.name, why));
+    emit detectionFinished(0);
 }
 
-std::unique_ptr<link::Transport> ConnectionController::makeTransport(int baud) {
-    switch (spec_.kind) {
-    case SourceSpec::Kind::Serial:
-        return std::make_unique<link::SerialTransport>(link::SerialSettings{spec_.name, baud});
-    case SourceSpec::Kind::Tcp: {
-        QString host;
-        quint16 port = 0;
-        if (!link::TcpTransport::parseHostPort(spec_.name, host, port)) return nullptr;
-        return std::make_unique<link::TcpTransport>(host, port);
+void ConnectionController::onOpenerReady() {
+    if (!opener_->detection().tried.empty()) {
+        detectedBaud_ = opener_->detection().baud;
+        detectionDetail_ = tr("Baud rate detected: %1")
+                                   .arg(link::LinkOpener::attemptsText(opener_->detection()));
+        emit detectionFinished(detectedBaud_);
     }
-    case SourceSpec::Kind::Replay: return std::make_unique<link::ReplayTransport>(spec_.name);
-    case SourceSpec::Kind::Simulator: return std::make_unique<link::SimulatorTransport>(spec_.name);
-    case SourceSpec::Kind::None: break;
-    }
-    return nullptr;
-}
-
-bool ConnectionController::openWith(std::unique_ptr<link::Transport> transport) {
-    if (!transport) {
-        setState(State::Failed,
-                 spec_.kind == SourceSpec::Kind::Tcp
-                         ? tr("TCP source must be HOST:PORT, got '%1'").arg(spec_.name)
-                         : tr("Cannot open %1").arg(spec_.displayName()));
-        return false;
-    }
-    DecoderOptions options;
-    if (spec_.kind == SourceSpec::Kind::Simulator) options.dialect = spec_.name.toStdString();
-    session_->reset(options);
-    connection_ = std::make_unique<link::Connection>(std::move(transport), registry_, options);
+    connection_ = opener_->takeConnection();
     link::Connection *c = connection_.get();
+    session_->reset();
     session_->setCounterSource(&c->decoder());
+    wire(c);
+    if (!c->open()) {
+        setState(State::Failed,
+                 tr("Cannot open %1: %2").arg(spec_.displayName(), c->transport()->errorString()));
+        return;
+    }
+    if (c->transport()->isOpen())
+        setConnected(c->transport()->description());
+    else
+        setState(State::Connecting, spec_.kind == SourceSpec::Kind::Replay
+                                            ? tr("Opening %1…").arg(spec_.displayName())
+                                            : tr("Connecting to %1…").arg(spec_.displayName()));
+}
+
+void ConnectionController::wire(link::Connection *c) {
     connect(c->transport(), &link::Transport::bytesReceived, session_,
             &ui::ReceiverSession::noteBytes);
-    c->setSentenceHandler(
-            [this, c](const SentenceEvent &ev) { session_->consume(ev, c->decoder().dialect()); });
+    connect(c->stream(), &link::SentenceStream::sentenceDecoded, session_,
+            [this, c](const SentenceEvent &ev) { session_->consume(ev, c->stream()->dialect()); });
     connect(c, &link::Connection::opened, this, [this](const QString &d) { setConnected(d); });
     connect(c, &link::Connection::openFailed, this, [this](const QString &why, int retryMs) {
         setState(State::Reconnecting,
@@ -178,18 +140,6 @@ bool ConnectionController::openWith(std::unique_ptr<link::Transport> transport) 
                 setState(State::Connecting,
                          tr("Opening %1… %2%").arg(spec_.displayName()).arg(percent));
         });
-    if (!c->open()) {
-        setState(State::Failed,
-                 tr("Cannot open %1: %2").arg(spec_.displayName(), c->transport()->errorString()));
-        return false;
-    }
-    if (c->transport()->isOpen())
-        setConnected(c->transport()->description());
-    else
-        setState(State::Connecting, spec_.kind == SourceSpec::Kind::Replay
-                                            ? tr("Opening %1…").arg(spec_.displayName())
-                                            : tr("Connecting to %1…").arg(spec_.displayName()));
-    return true;
 }
 
 void ConnectionController::setConnected(const QString &description) {
@@ -202,12 +152,7 @@ void ConnectionController::retryNow() {
 }
 
 void ConnectionController::disconnectFromSource() {
-    if (detector_) {
-        detector_->disconnect(this); // cancelled on purpose: not a failure to report
-        detector_->cancel();
-        detector_.reset();
-    }
-    detecting_.reset();
+    opener_->cancel();
     if (connection_) {
         connection_->close();
         connection_.reset();

@@ -1,10 +1,11 @@
 #pragma once
 // ConnectionController: turns a SourceSpec into a live link::Connection wired to the session:
-// bytes and decoded sentences to the models, commands from the console through the command
-// queue, baud detection for serial ports with "auto" (the port it opened is handed over, open,
-// at the rate found), connections made in the background, reconnects with growing waits and
-// recording, each step reported in words. Nothing here blocks the thread it runs in.
-#include "source_spec.h"
+// decoded sentences (from the link's one decoder) to the models, commands from the console
+// through the command queue, baud detection for serial ports with "auto" (LinkOpener: the port it
+// opened is handed over, open, at the rate found), connections made in the background,
+// reconnects with growing waits and recording, each step reported in words. Nothing here blocks
+// the thread it runs in.
+#include "link/source_spec.h"
 
 #include <QObject>
 #include <memory>
@@ -13,10 +14,8 @@ namespace gnss {
 class DialectRegistry;
 namespace link {
 class Connection;
-class BaudDetector;
-class Transport;
-struct BaudAttempt;
-struct BaudDetection;
+class LinkOpener;
+class TransportFactory;
 struct CommandResult;
 } // namespace link
 namespace ui {
@@ -26,14 +25,16 @@ class ReceiverSession;
 
 namespace gnss::app {
 
+using link::SourceSpec;
+
 class ConnectionController : public QObject {
     Q_OBJECT
 public:
     enum class State { Disconnected, Detecting, Connecting, Connected, Reconnecting, Failed };
     Q_ENUM(State)
 
-    ConnectionController(const DialectRegistry &registry, ui::ReceiverSession *session,
-                         QObject *parent = nullptr);
+    ConnectionController(const DialectRegistry &registry, const link::TransportFactory &transports,
+                         ui::ReceiverSession *session, QObject *parent = nullptr);
     ~ConnectionController() override;
 
     bool connectTo(const SourceSpec &spec);
@@ -42,6 +43,7 @@ public:
     State state() const { return state_; }
     QString stateText() const { return stateText_; }
     link::Connection *connection() const { return connection_.get(); }
+    const link::TransportFactory &transports() const { return transports_; }
     // The rate baud detection found for this connection (0: none ran or none was found).
     int detectedBaud() const { return detectedBaud_; }
     // What baud detection tried and saw at each rate, in words (empty when none ran).
@@ -67,18 +69,16 @@ signals:
 private:
     void setState(State s, const QString &text);
     void setConnected(const QString &description);
-    bool detectBaud();
-    std::unique_ptr<link::Transport> makeTransport(int baud);
-    bool openWith(std::unique_ptr<link::Transport> transport);
-    void onDetection(const link::BaudDetection &result);
-    static QString attemptText(const link::BaudAttempt &a);
+    void onOpenerReady();
+    void onOpenerFailed(const QString &why);
+    void wire(link::Connection *c);
 
     const DialectRegistry &registry_;
+    const link::TransportFactory &transports_;
     ui::ReceiverSession *session_;
     SourceSpec spec_;
+    std::unique_ptr<link::LinkOpener> opener_;
     std::unique_ptr<link::Connection> connection_;
-    std::unique_ptr<link::Transport> detecting_; // the port baud detection has open
-    std::unique_ptr<link::BaudDetector> detector_;
     int detectedBaud_ = 0;
     QString detectionDetail_;
     State state_ = State::Disconnected;

@@ -1,4 +1,5 @@
 // gnss-workbench: the GUI entry point.
+#include "app_transports.h"
 #include "dialects.h"
 #include "main_window.h"
 #include "startup_options.h"
@@ -28,7 +29,8 @@ int main(int argc, char **argv) {
         QApplication::installTranslator(&appTranslator);
 
     QString error;
-    const auto options = gnss::app::parseStartupOptions(QApplication::arguments(), error);
+    const auto options = gnss::app::parseStartupOptions(QApplication::arguments(),
+                                                        gnss::app::simulatedDialects(), error);
     if (!options) {
         std::fprintf(stderr, "gnss-workbench: %s\n", qPrintable(error));
         return 2;
@@ -36,8 +38,9 @@ int main(int argc, char **argv) {
 
     QApplication::setWindowIcon(gnss::style::appIcon());
     const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
+    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory();
     QSettings settings;
-    gnss::app::MainWindow window(registry, &settings);
+    gnss::app::MainWindow window(registry, transports, &settings);
     window.show();
     using gnss::app::SourceSpec;
     SourceSpec start;

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "app_transports.h"
 #include "connection_bar.h"
 #include "connection_controller.h"
 #include "core/dialect_registry.h"
@@ -42,8 +43,9 @@
 
 namespace gnss::app {
 
-MainWindow::MainWindow(const DialectRegistry &registry, QSettings *settings, QWidget *parent)
-    : QMainWindow(parent), registry_(registry), settings_(settings) {
+MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFactory &transports,
+                       QSettings *settings, QWidget *parent)
+    : QMainWindow(parent), registry_(registry), transports_(transports), settings_(settings) {
     setWindowTitle(tr("GNSS Workbench"));
     setObjectName("MainWindow");
     setDockNestingEnabled(true);
@@ -51,7 +53,7 @@ MainWindow::MainWindow(const DialectRegistry &registry, QSettings *settings, QWi
     createModels();
     ports_ = new link::PortWatcher({}, this);
     ports_->start();
-    bar_ = new ConnectionBar(ports_, this);
+    bar_ = new ConnectionBar(ports_, registry_, simulatedDialects(), this);
     addToolBar(Qt::TopToolBarArea, bar_);
     createDocks();
     createMenus();
@@ -113,7 +115,7 @@ void MainWindow::createModels() {
     console_ = new ui::ConsoleModel(this);
     session_ = new ui::ReceiverSession(registry_, {stateModel_, satellites_, messages_, console_},
                                        this);
-    controller_ = new ConnectionController(registry_, session_, this);
+    controller_ = new ConnectionController(registry_, transports_, session_, this);
 }
 
 QDockWidget *MainWindow::addDock(QWidget *w, const QString &title, const QString &fullTitle,

@@ -1,7 +1,7 @@
 #pragma once
 // MainWindow: menus, docks, the connection bar and the status bar. It wires models, views and
 // the connection; it does not decode or draw.
-#include "source_spec.h"
+#include "link/source_spec.h"
 
 #include <QMainWindow>
 
@@ -15,7 +15,8 @@ struct Dialect;
 struct SettingDef;
 namespace link {
 class PortWatcher;
-}
+class TransportFactory;
+} // namespace link
 namespace ui {
 class ConsoleModel;
 class ConsoleView;
@@ -31,14 +32,18 @@ class ChartsView;
 
 namespace gnss::app {
 
+using link::SourceSpec;
+
 class ConnectionBar;
 class ConnectionController;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    // `settings` keeps the layout, the last connection and view options between runs.
-    MainWindow(const DialectRegistry &registry, QSettings *settings, QWidget *parent = nullptr);
+    // `transports` makes the links the connection bar offers; `settings` keeps the layout, the
+    // last connection and view options between runs.
+    MainWindow(const DialectRegistry &registry, const link::TransportFactory &transports,
+               QSettings *settings, QWidget *parent = nullptr);
     ~MainWindow() override;
 
     ConnectionController *controller() const { return controller_; }
@@ -69,6 +74,7 @@ private:
     static const SettingDef *elevationMaskSetting(const Dialect *d);
 
     const DialectRegistry &registry_;
+    const link::TransportFactory &transports_;
     QSettings *settings_;
     link::PortWatcher *ports_ = nullptr;
     ui::ReceiverStateModel *stateModel_ = nullptr;

@@ -5,7 +5,8 @@
 
 namespace gnss::app {
 
-std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments, QString &error) {
+std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
+                                                  const QStringList &simulated, QString &error) {
     QCommandLineParser p;
     p.setApplicationDescription(
             QCoreApplication::translate("StartupOptions", "Configure and monitor GNSS receivers."));
@@ -24,8 +25,8 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments, 
             "file");
     const QCommandLineOption sim(
             "sim",
-            QCoreApplication::translate(
-                    "StartupOptions", "Built-in simulated receiver: nvs, geostar, nemerix, nmea."),
+            QCoreApplication::translate("StartupOptions", "Built-in simulated receiver: %1.")
+                    .arg(simulated.join(QStringLiteral(", "))),
             "dialect");
     const QCommandLineOption shot(
             "screenshot",
@@ -67,11 +68,10 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments, 
             return std::nullopt;
         }
     }
-    static const QStringList kSims{"nvs", "geostar", "nemerix", "nmea"};
-    if (!o.sim.isEmpty() && !kSims.contains(o.sim)) {
+    if (!o.sim.isEmpty() && !simulated.contains(o.sim)) {
         error = QCoreApplication::translate("StartupOptions",
                                             "Unknown simulated receiver '%1' (use %2)")
-                        .arg(o.sim, kSims.join(", "));
+                        .arg(o.sim, simulated.join(", "));
         return std::nullopt;
     }
     const int sources = int(!o.port.isEmpty()) + int(!o.tcp.isEmpty()) + int(!o.replay.isEmpty()) +

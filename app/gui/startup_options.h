@@ -17,6 +17,8 @@ struct StartupOptions {
 };
 
 // Parses the arguments; on error returns nullopt with `error` set (already translated).
-std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments, QString &error);
+// `simulated`: the dialects the built-in simulator plays (what --sim accepts).
+std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
+                                                  const QStringList &simulated, QString &error);
 
 } // namespace gnss::app

@@ -78,21 +78,17 @@ void SettingsEngine::attach(link::CommandQueue *queue, const Dialect *dialect,
     if (newQueue) {
         QObject::disconnect(queueConnection_);
         queue_ = queue;
-        if (queue)
+        QObject::disconnect(replyConnection_);
+        replyValues_.clear();
+        if (queue) {
             queueConnection_ = connect(queue, &link::CommandQueue::commandFinished, this,
                                        &SettingsEngine::onCommandFinished);
+            replyConnection_ = connect(queue, &link::CommandQueue::replyDecoded, this,
+                                       &SettingsEngine::onReplyDecoded);
+        }
     }
     if (dialect != dialect_) {
         dialect_ = dialect;
-        registry_.reset();
-        decoder_.reset();
-        if (dialect) {
-            registry_ = std::make_unique<DialectRegistry>(std::vector<const Dialect *>{dialect});
-            DecoderOptions o;
-            o.dialect = std::string(dialect->id);
-            o.lenient = dialect->checksumOptional;
-            decoder_ = std::make_unique<StreamDecoder>(*registry_, o);
-        }
         reported_.clear();
         written_.clear();
         identity_ = {};
@@ -420,17 +416,19 @@ void SettingsEngine::onCommandFinished(const link::CommandResult &r) {
     if (pending_.empty()) phaseDone();
 }
 
+void SettingsEngine::onReplyDecoded(int id, const SentenceEvent &ev) {
+    // The link decoded the reply once; the dialect reads its values and identity from that.
+    if (!pending_.count(id) || !ev.message || !dialect_) return;
+    std::vector<KeyValue> &out = replyValues_[id];
+    if (dialect_->extractSettings) dialect_->extractSettings(*ev.message, out);
+    if (dialect_->updateState) dialect_->updateState(*ev.message, identity_);
+}
+
 void SettingsEngine::absorb(const link::CommandResult &r) {
-    if (!decoder_ || r.replies.isEmpty()) return;
-    std::vector<KeyValue> out;
-    for (const QString &line : r.replies) {
-        const std::string text = line.toStdString();
-        decoder_->decodeLine(text, [&](const SentenceEvent &ev) {
-            if (!ev.message) return;
-            if (dialect_->extractSettings) dialect_->extractSettings(*ev.message, out);
-            if (dialect_->updateState) dialect_->updateState(*ev.message, identity_);
-        });
-    }
+    const auto found = replyValues_.find(r.id);
+    if (found == replyValues_.end()) return;
+    const std::vector<KeyValue> out = std::move(found->second);
+    replyValues_.erase(found);
     // A list reported one item per sentence (NVS PNVGIDL SHOW) is joined with ';'.
     std::set<std::string> seen;
     for (const auto &kv : out) {

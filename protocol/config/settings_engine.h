@@ -19,6 +19,7 @@
 
 #include "command_queue.h"
 #include "core/dialect.h"
+#include "core/stream_decoder.h"
 #include "state/receiver_state.h"
 
 #include <QObject>
@@ -35,11 +36,6 @@ namespace gnss::link {
 class Connection;
 class Transport;
 } // namespace gnss::link
-
-namespace gnss {
-class DialectRegistry;
-class StreamDecoder;
-} // namespace gnss
 
 namespace gnss::config {
 
@@ -151,6 +147,7 @@ private:
     bool begin(Operation op, const QString &title);
     bool enqueue(const std::vector<std::string> &sentences);
     void onCommandFinished(const link::CommandResult &r);
+    void onReplyDecoded(int id, const SentenceEvent &ev);
     void absorb(const link::CommandResult &r);
     void phaseDone();
     void startVerify();
@@ -162,10 +159,9 @@ private:
 
     QPointer<link::CommandQueue> queue_;
     QPointer<link::Transport> transport_;
-    QMetaObject::Connection queueConnection_;
+    QMetaObject::Connection queueConnection_, replyConnection_;
     const Dialect *dialect_ = nullptr;
-    std::unique_ptr<DialectRegistry> registry_;
-    std::unique_ptr<StreamDecoder> decoder_;
+    std::map<int, std::vector<KeyValue>> replyValues_; // per command, from its decoded replies
     std::map<std::string, std::string, std::less<>> reported_, written_;
     ReceiverState identity_;
 

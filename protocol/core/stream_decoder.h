@@ -60,6 +60,8 @@ public:
     void feed(std::string_view bytes, Handler handler);
     // End of stream (counts a dangling partial sentence).
     void finish() { framer_.finish(); }
+    // Forgets a partial sentence without counting it (a baud switch: what came before is noise).
+    void resetFraming() { framer_.reset(); }
     // Decodes one already-framed line (no terminator).
     void decodeLine(std::string_view line, Handler handler);
 

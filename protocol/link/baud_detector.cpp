@@ -1,20 +1,21 @@
 #include "baud_detector.h"
 
+#include "core/baud_rates.h"
 #include "core/sentence.h"
+#include "sentence_stream.h"
 #include "transport.h"
 
 #include <QStringList>
 
 namespace gnss::link {
 
-BaudDetector::BaudDetector(Transport *transport, QObject *parent)
-    : QObject(parent), transport_(transport) {
+BaudDetector::BaudDetector(SentenceStream *stream, QObject *parent)
+    : QObject(parent), stream_(stream), transport_(stream ? stream->transport() : nullptr) {
     timer_.setSingleShot(true);
 }
 
 QList<int> BaudDetector::likelyRates(int current) {
-    // Receivers' defaults first (115200: NVS, GeoStar; 9600: NMEA, Nemerix), then the rest.
-    QList<int> rates{115200, 9600, 38400, 57600, 4800, 19200, 230400, 460800, 921600};
+    QList<int> rates(kDetectionBauds.begin(), kDetectionBauds.end());
     if (current > 0) {
         rates.removeAll(current);
         rates.prepend(current);
@@ -25,14 +26,18 @@ QList<int> BaudDetector::likelyRates(int current) {
 void BaudDetector::start() {
     result_ = {};
     if (candidates_.isEmpty()) candidates_ = likelyRates(transport_ ? transport_->baud() : 0);
-    if (!transport_ || !transport_->isOpen() || transport_->baud() <= 0) {
+    if (!stream_ || !transport_ || !transport_->isOpen() || transport_->baud() <= 0) {
         result_.error = tr("Baud detection needs an open serial port");
         emit finished(result_);
         return;
     }
     running_ = true;
     index_ = -1;
+    // Bytes are counted from the transport (a rate that gives bytes but no sentence says
+    // something); sentences from the stream.
     bytesConnection_ = connect(transport_, &Transport::bytesReceived, this, &BaudDetector::onBytes);
+    eventConnection_ =
+            connect(stream_, &SentenceStream::sentenceDecoded, this, &BaudDetector::onEvent);
     tryNext();
 }
 
@@ -55,7 +60,7 @@ void BaudDetector::tryNext() {
     connect(&timer_, &QTimer::timeout, this, [this] {
         if (!running_) return;
         transport_->discardInput();
-        framer_.reset();
+        stream_->resetFraming();
         listening_ = true;
         if (!probe_.isEmpty()) transport_->write(probe_ + "\r\n");
         timer_.disconnect();
@@ -67,16 +72,16 @@ void BaudDetector::tryNext() {
 
 void BaudDetector::onBytes(const QByteArray &bytes) {
     if (!running_ || !listening_ || result_.tried.empty()) return;
+    result_.tried.back().bytes += bytes.size();
+}
+
+void BaudDetector::onEvent(const SentenceEvent &event) {
+    if (!running_ || !listening_ || result_.tried.empty()) return;
     BaudAttempt &a = result_.tried.back();
-    a.bytes += bytes.size();
-    framer_.feed(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
-                 [&](std::string_view line) {
-                     Sentence s;
-                     if (s.parse(line) && s.checksum() == ChecksumStatus::Ok)
-                         ++a.validSentences;
-                     else
-                         ++a.badSentences;
-                 });
+    if (event.sentence.checksum() == ChecksumStatus::Ok)
+        ++a.validSentences;
+    else
+        ++a.badSentences;
     if (a.validSentences >= required_) {
         timer_.stop();
         result_.baud = a.baud;
@@ -93,6 +98,7 @@ void BaudDetector::done(bool found) {
     listening_ = false;
     timer_.stop();
     disconnect(bytesConnection_);
+    disconnect(eventConnection_);
     result_.found = found;
     if (!found && result_.error.isEmpty()) {
         QStringList rates;

@@ -4,7 +4,7 @@
 // settles on the first that gives them. When none does it says which rates it tried and what it
 // saw, so the user knows whether to check the cable (nothing at all) or the framing/protocol
 // (bytes, but never a valid sentence).
-#include "core/framer.h"
+#include "core/stream_decoder.h"
 
 #include <QElapsedTimer>
 #include <QList>
@@ -16,6 +16,7 @@
 
 namespace gnss::link {
 
+class SentenceStream;
 class Transport;
 
 struct BaudAttempt {
@@ -35,7 +36,9 @@ struct BaudDetection {
 class BaudDetector : public QObject {
     Q_OBJECT
 public:
-    explicit BaudDetector(Transport *transport, QObject *parent = nullptr);
+    // Changes the speed of `stream`'s transport and counts the sentences `stream` (the link's
+    // one decoder) finds at each speed.
+    explicit BaudDetector(SentenceStream *stream, QObject *parent = nullptr);
 
     // Every rate from 4800 to 921600, `current` first, then the common receiver defaults.
     static QList<int> likelyRates(int current);
@@ -60,9 +63,11 @@ signals:
 private:
     void tryNext();
     void onBytes(const QByteArray &bytes);
+    void onEvent(const SentenceEvent &event);
     void rateDone();
     void done(bool found);
 
+    QPointer<SentenceStream> stream_;
     QPointer<Transport> transport_;
     QList<int> candidates_;
     int index_ = -1;
@@ -72,10 +77,9 @@ private:
     QByteArray probe_;
     bool running_ = false;
     bool listening_ = false;
-    Framer framer_;
     BaudDetection result_;
     QTimer timer_;
-    QMetaObject::Connection bytesConnection_;
+    QMetaObject::Connection bytesConnection_, eventConnection_;
 };
 
 } // namespace gnss::link

@@ -1,5 +1,9 @@
 #include "command_queue.h"
 
+#include "sentence_stream.h"
+
+#include "core/baud_rates.h"
+
 #include "core/sentence_builder.h"
 #include "transport.h"
 
@@ -10,9 +14,6 @@
 namespace gnss::link {
 
 namespace {
-
-constexpr std::array kStandardBauds = {4800,   9600,   19200,  38400, 57600,
-                                       115200, 230400, 460800, 921600};
 
 // A standard query, $ttllQ,sss (NMEA 0183 "query sentence"), is answered by sentence sss.
 ReplyVerdict classifyStandardQuery(const Sentence &command, const Sentence &reply,
@@ -65,12 +66,12 @@ QString outcomeName(CommandOutcome outcome) {
     return QCoreApplication::translate("gnss::link::CommandQueue", text);
 }
 
-CommandQueue::CommandQueue(Transport *transport, QObject *parent)
-    : QObject(parent), transport_(transport) {
+CommandQueue::CommandQueue(Transport *transport, SentenceStream *stream, QObject *parent)
+    : QObject(parent), transport_(transport), stream_(stream) {
     timer_.setSingleShot(true);
     connect(&timer_, &QTimer::timeout, this, &CommandQueue::onTimeout);
+    if (stream) connect(stream, &SentenceStream::sentenceDecoded, this, &CommandQueue::onEvent);
     if (transport) {
-        connect(transport, &Transport::bytesReceived, this, &CommandQueue::onBytes);
         connect(transport, &Transport::stateChanged, this, [this](Transport::State s) {
             if (s == Transport::State::Open)
                 startNext(); // commands queued while the link was being opened
@@ -194,15 +195,10 @@ void CommandQueue::sendCurrent() {
     timer_.start(std::max(timeout, 1));
 }
 
-void CommandQueue::onBytes(const QByteArray &bytes) {
-    framer_.feed(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
-                 [this](std::string_view line) { onLine(line); });
-}
-
-void CommandQueue::onLine(std::string_view line) {
+void CommandQueue::onEvent(const SentenceEvent &event) {
     if (!current_ || phase_ == Phase::PreSwitch) return;
-    Sentence reply;
-    if (!reply.parse(line)) return;
+    const Sentence &reply = event.sentence;
+    const std::string_view line = reply.line();
     const bool checksumOk =
             reply.checksum() == ChecksumStatus::Ok ||
             (reply.checksum() == ChecksumStatus::Missing && dialect_ && dialect_->checksumOptional);
@@ -232,6 +228,7 @@ void CommandQueue::onLine(std::string_view line) {
     const QString text = QString::fromLatin1(line.data(), static_cast<qsizetype>(line.size()));
     result_.replies.append(text);
     emit replyReceived(current_->id, text);
+    emit replyDecoded(current_->id, event);
     switch (v) {
     case ReplyVerdict::Partial: timer_.start(); break; // more to come: the timeout starts again
     case ReplyVerdict::Accepted:
@@ -287,7 +284,7 @@ void CommandQueue::beginBaudSwitch(int delayMs) {
 void CommandQueue::switchTo(int baud) {
     transport_->setBaud(baud);
     transport_->discardInput();
-    framer_.reset();
+    if (stream_) stream_->resetFraming();
     emit baudChanged(baud);
     // A receiver with its output off still answers its probe: ask for traffic.
     if (dialect_ && !dialect_->probeCommand.empty())

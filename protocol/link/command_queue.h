@@ -9,8 +9,8 @@
 // to the old rate and say what happened. Losing the link fails the command in flight and every
 // command queued behind it (they were meant to run in order).
 #include "core/dialect.h"
-#include "core/framer.h"
 #include "core/sentence.h"
+#include "core/stream_decoder.h"
 
 #include <QElapsedTimer>
 #include <QList>
@@ -25,6 +25,7 @@
 namespace gnss::link {
 
 class Transport;
+class SentenceStream;
 
 enum class CommandOutcome {
     Accepted,  // the receiver answered yes (or confirmed the new baud)
@@ -61,7 +62,9 @@ struct CommandResult {
 class CommandQueue : public QObject {
     Q_OBJECT
 public:
-    explicit CommandQueue(Transport *transport, QObject *parent = nullptr);
+    // Commands are written to `transport`; replies are read from `stream`, the link's one
+    // decoder (the queue decodes nothing itself).
+    CommandQueue(Transport *transport, SentenceStream *stream, QObject *parent = nullptr);
     ~CommandQueue() override;
 
     // The dialect whose reply rules apply first; `others` are searched when it has no rule for
@@ -86,6 +89,8 @@ public:
 signals:
     void commandSent(int id, const QString &sentence, int attempt);
     void replyReceived(int id, const QString &line);
+    // The same reply as decoded by the link (the message is valid only during the signal).
+    void replyDecoded(int id, const gnss::SentenceEvent &event);
     void commandFinished(const gnss::link::CommandResult &result);
     void baudChanged(int baud);
     void idle();
@@ -100,8 +105,7 @@ private:
 
     void startNext();
     void sendCurrent();
-    void onBytes(const QByteArray &bytes);
-    void onLine(std::string_view line);
+    void onEvent(const SentenceEvent &event);
     void onTimeout();
     void onLinkDown();
     void finish(CommandOutcome outcome, const QString &detail);
@@ -111,6 +115,7 @@ private:
     int baudFromCommand() const;
 
     QPointer<Transport> transport_;
+    QPointer<SentenceStream> stream_;
     const Dialect *dialect_ = nullptr;
     std::vector<const Dialect *> others_;
     std::deque<Pending> queue_;
@@ -121,7 +126,6 @@ private:
     CommandResult result_;
     Phase phase_ = Phase::Waiting;
     int targetBaud_ = 0;
-    Framer framer_;
     QTimer timer_;
     QElapsedTimer elapsed_;
     QList<CommandResult> history_;

@@ -5,13 +5,16 @@ namespace gnss::link {
 Connection::Connection(std::unique_ptr<Transport> transport, const DialectRegistry &registry,
                        DecoderOptions options, QObject *parent)
     : QObject(parent), transport_(std::move(transport)), registry_(registry),
-      decoder_(registry, std::move(options)), queue_(transport_.get()) {
+      stream_(transport_.get(), registry, std::move(options)), queue_(transport_.get(), &stream_) {
     std::vector<const Dialect *> all(registry.dialects().begin(), registry.dialects().end());
     queue_.setOtherDialects(all);
-    queue_.setDialect(decoder_.dialect());
+    queue_.setDialect(stream_.dialect());
     retry_.setSingleShot(true);
     connect(&retry_, &QTimer::timeout, this, &Connection::tryReconnect);
-    connect(transport_.get(), &Transport::bytesReceived, this, &Connection::onBytes);
+    connect(&stream_, &SentenceStream::dialectChanged, this, [this](const Dialect *d) {
+        queue_.setDialect(d);
+        if (d) emit dialectDetected(QString::fromUtf8(d->id.data(), qsizetype(d->id.size())));
+    });
     connect(transport_.get(), &Transport::stateChanged, this, &Connection::onState);
     lastState_ = transport_->state();
 }
@@ -50,20 +53,6 @@ bool Connection::startRecording(const QString &path, bool append) {
     return true;
 }
 
-void Connection::onBytes(const QByteArray &bytes) {
-    bytes_ += static_cast<quint64>(bytes.size());
-    decoder_.feed(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
-                  [this](const SentenceEvent &ev) {
-                      if (handler_) handler_(ev);
-                  });
-    if (decoder_.dialect() != announced_) {
-        announced_ = decoder_.dialect();
-        queue_.setDialect(announced_);
-        if (announced_)
-            emit dialectDetected(QString::fromUtf8(announced_->id.data(), announced_->id.size()));
-    }
-}
-
 int Connection::scheduleRetry() {
     if (!autoReconnect_ || userClosed_) return 0;
     const int delay = nextRetryMs_;
@@ -87,7 +76,7 @@ void Connection::onState(Transport::State s) {
         }
         break;
     case Transport::State::Lost: {
-        decoder_.finish(); // a sentence cut by the drop is counted, not glued to the next one
+        stream_.finish(); // a sentence cut by the drop is counted, not glued to the next one
         const int delay = scheduleRetry();
         emit linkLost(transport_->errorString(), delay);
         break;

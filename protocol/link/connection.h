@@ -1,5 +1,6 @@
 #pragma once
-// Connection: one receiver link and everything that runs on it: the transport, the decoder, the
+// Connection: one receiver link and everything that runs on it: the transport, its one decoder
+// (SentenceStream: every listener subscribes there, nothing decodes the bytes again), the
 // command queue and (when asked) the recorder. When the link drops, or a connection in the
 // background fails, it says so and tries again after 1, 2, 4 ... 30 s (a serial device is looked
 // up by its serial number, so it is found again under a new port name); nothing waits in the
@@ -7,6 +8,7 @@
 #include "command_queue.h"
 #include "core/stream_decoder.h"
 #include "recorder.h"
+#include "sentence_stream.h"
 #include "transport.h"
 
 #include <QObject>
@@ -20,8 +22,6 @@ namespace gnss::link {
 class Connection : public QObject {
     Q_OBJECT
 public:
-    using SentenceHandler = std::function<void(const SentenceEvent &)>;
-
     // `transport` may already be open (a port handed over by baud detection).
     Connection(std::unique_ptr<Transport> transport, const DialectRegistry &registry,
                DecoderOptions options = {}, QObject *parent = nullptr);
@@ -32,12 +32,11 @@ public:
     void close();
 
     Transport *transport() const { return transport_.get(); }
+    // Every sentence received, decoded once (or with the reason it was not): subscribe here.
+    SentenceStream *stream() { return &stream_; }
+    StreamDecoder &decoder() { return stream_.decoder(); }
     CommandQueue *commands() { return &queue_; }
-    StreamDecoder &decoder() { return decoder_; }
     Recorder *recorder() { return &recorder_; }
-
-    // Every sentence received, decoded (or with the reason it was not).
-    void setSentenceHandler(SentenceHandler handler) { handler_ = std::move(handler); }
 
     // Records what arrives from now on (and every command sent) to FILE + FILE.idx.
     bool startRecording(const QString &path, bool append = false);
@@ -51,7 +50,7 @@ public:
     bool isReconnecting() const { return retry_.isActive(); }
     // How long until the next attempt, in ms (0 when none is planned).
     int nextRetryMs() const { return retry_.isActive() ? retry_.remainingTime() : 0; }
-    quint64 bytesReceived() const { return bytes_; }
+    quint64 bytesReceived() const { return stream_.bytesReceived(); }
 
 signals:
     // The link is up for the first time (after a connection made in the background).
@@ -64,7 +63,6 @@ signals:
     void dialectDetected(const QString &dialectId);
 
 private:
-    void onBytes(const QByteArray &bytes);
     void onState(Transport::State s);
     void tryReconnect();
     // Plans the next attempt; returns its delay in ms (0 when none is planned).
@@ -72,10 +70,9 @@ private:
 
     std::unique_ptr<Transport> transport_;
     const DialectRegistry &registry_;
-    StreamDecoder decoder_;
+    SentenceStream stream_;
     CommandQueue queue_;
     Recorder recorder_;
-    SentenceHandler handler_;
     QTimer retry_;
     int firstRetryMs_ = 1000, maxRetryMs_ = 30000, nextRetryMs_ = 1000;
     bool autoReconnect_ = true;
@@ -83,8 +80,6 @@ private:
     bool everOpen_ = false;
     Transport::State lastState_ = Transport::State::Closed;
     int attempts_ = 0;
-    quint64 bytes_ = 0;
-    const Dialect *announced_ = nullptr;
 };
 
 } // namespace gnss::link

@@ -2,17 +2,14 @@
 
 #include "command_queue.h"
 #include "core/json_writer.h"
+#include "sentence_stream.h"
 #include "state/receiver_state.h"
 #include "transport.h"
 
-#include <QJsonDocument>
-#include <QJsonObject>
-
 namespace gnss::link {
 
-VendorDetector::VendorDetector(Transport *transport, const DialectRegistry &registry,
-                               QObject *parent)
-    : QObject(parent), transport_(transport), registry_(registry) {
+VendorDetector::VendorDetector(SentenceStream *stream, QObject *parent)
+    : QObject(parent), stream_(stream), transport_(stream ? stream->transport() : nullptr) {
     timer_.setSingleShot(true);
 }
 
@@ -20,26 +17,19 @@ VendorDetector::~VendorDetector() = default;
 
 void VendorDetector::start() {
     result_ = {};
-    if (!transport_ || !transport_->isOpen()) {
+    if (!stream_ || !transport_ || !transport_->isOpen()) {
         result_.error = tr("Vendor detection needs an open link");
         emit finished(result_);
         return;
     }
-    decoder_ = std::make_unique<StreamDecoder>(registry_);
     running_ = true;
     sawValid_ = false;
     probing_ = passive_ = nullptr;
-    bytesConnection_ =
-            connect(transport_, &Transport::bytesReceived, this, &VendorDetector::onBytes);
+    eventConnection_ =
+            connect(stream_, &SentenceStream::sentenceDecoded, this, &VendorDetector::onEvent);
     timer_.disconnect();
     connect(&timer_, &QTimer::timeout, this, &VendorDetector::passiveDone);
     timer_.start(passiveMs_);
-}
-
-void VendorDetector::onBytes(const QByteArray &bytes) {
-    if (!running_) return;
-    decoder_->feed(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
-                   [this](const SentenceEvent &ev) { onEvent(ev); });
 }
 
 void VendorDetector::onEvent(const SentenceEvent &ev) {
@@ -66,25 +56,21 @@ void VendorDetector::onEvent(const SentenceEvent &ev) {
         JsonWriter w(json);
         ev.message->writeJson(w);
         result_.replyJson = QString::fromStdString(json);
-        // The dialect's own reading of its reply (the one the views show); field names as a
-        // fallback for a dialect without one.
+        // The dialect's own reading of its reply, the one the views show.
         ReceiverState st;
-        if (probing_->updateState && probing_->updateState(*ev.message, st) &&
-            !st.identity.model.empty()) {
+        if (probing_->updateState && probing_->updateState(*ev.message, st)) {
             result_.model = QString::fromStdString(st.identity.model);
             result_.firmware = QString::fromStdString(st.identity.firmware);
             if (!st.identity.hardware.empty())
                 result_.firmware +=
                         QStringLiteral(" (%1)").arg(QString::fromStdString(st.identity.hardware));
-        } else {
-            readIdentity(result_.replyJson, result_);
         }
     }
     done();
 }
 
 void VendorDetector::passiveDone() {
-    passive_ = decoder_->dialect();
+    passive_ = stream_ ? stream_->dialect() : nullptr;
     toProbe_.clear();
     if (passive_) {
         result_.found = true;
@@ -94,7 +80,7 @@ void VendorDetector::passiveDone() {
         result_.method = QStringLiteral("passive");
         if (!passive_->probeCommand.empty()) toProbe_.push_back(passive_);
     } else {
-        for (const Dialect *d : registry_.dialects())
+        for (const Dialect *d : stream_->registry().dialects())
             if (!d->probeCommand.empty()) toProbe_.push_back(d);
     }
     if (!active_ || !transport_->canWrite()) toProbe_.clear();
@@ -121,10 +107,10 @@ void VendorDetector::probeNext() {
 void VendorDetector::done() {
     running_ = false;
     timer_.stop();
-    disconnect(bytesConnection_);
+    disconnect(eventConnection_);
     if (!result_.found) {
         if (sawValid_) {
-            const Dialect *nmea = registry_.find("nmea");
+            const Dialect *nmea = stream_ ? stream_->registry().find("nmea") : nullptr;
             result_.found = true;
             result_.dialect = QStringLiteral("nmea");
             result_.dialectName =
@@ -137,26 +123,6 @@ void VendorDetector::done() {
         }
     }
     emit finished(result_);
-}
-
-void VendorDetector::readIdentity(const QString &replyJson, VendorIdentity &id) {
-    const QJsonObject o = QJsonDocument::fromJson(replyJson.toUtf8()).object();
-    auto text = [&](const char *key) { return o.value(QLatin1String(key)).toString(); };
-    QString model = text("model");
-    if (model.isEmpty()) model = text("receiver_name");
-    if (model.isEmpty() && !text("device").isEmpty())
-        model = (text("manufacturer") + QLatin1Char(' ') + text("device")).trimmed();
-    QString firmware = text("firmware");
-    if (firmware.isEmpty() && !text("rtk_fw").isEmpty()) {
-        firmware = text("rtk_fw");
-        if (!text("csm_fw").isEmpty())
-            firmware += QStringLiteral(" (%1 %2)")
-                                .arg(text("csm_hw"), text("csm_fw"))
-                                .replace(QStringLiteral("( "), QStringLiteral("("));
-    }
-    if (firmware.isEmpty()) firmware = text("version");
-    id.model = model;
-    id.firmware = firmware;
 }
 
 } // namespace gnss::link

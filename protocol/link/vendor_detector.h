@@ -1,10 +1,12 @@
 #pragma once
 // VendorDetector: which receiver family is on the line, and when it says so, its model and
-// firmware. Passive first: the proprietary sentences in its output name the dialect (the
-// StreamDecoder's detection). Then active: each dialect's probe (PNVGVER, $GPSGG,RQUERY,
-// PNMRX600...) with a short timeout, the answer matched by that dialect's reply rule. A known
-// dialect is still probed once, for model and firmware.
+// firmware. Passive first: the proprietary sentences in its output name the dialect (detected
+// by the link's own decoder, which this listens to). Then active: each dialect's probe (PNVGVER,
+// $GPSGG,RQUERY, PNMRX600...) with a short timeout, the answer matched by that dialect's reply
+// rule, and model and firmware read by that dialect's own updateState (nothing here knows a
+// vendor's fields). A known dialect is still probed once, for model and firmware.
 #include "core/dialect_registry.h"
+#include "core/sentence.h"
 #include "core/stream_decoder.h"
 
 #include <QObject>
@@ -15,6 +17,7 @@
 
 namespace gnss::link {
 
+class SentenceStream;
 class Transport;
 
 struct VendorIdentity {
@@ -32,8 +35,8 @@ struct VendorIdentity {
 class VendorDetector : public QObject {
     Q_OBJECT
 public:
-    VendorDetector(Transport *transport, const DialectRegistry &registry,
-                   QObject *parent = nullptr);
+    // Listens to `stream` (the link's decoder) and writes probes to its transport.
+    explicit VendorDetector(SentenceStream *stream, QObject *parent = nullptr);
     ~VendorDetector() override;
 
     void setPassiveMs(int ms) { passiveMs_ = ms; }
@@ -44,23 +47,17 @@ public:
     void start();
     const VendorIdentity &result() const { return result_; }
 
-    // Model and firmware from a decoded identity reply (its JSON: model/receiver_name/device,
-    // firmware/rtk_fw/version...), whichever dialect it comes from.
-    static void readIdentity(const QString &replyJson, VendorIdentity &id);
-
 signals:
     void finished(const gnss::link::VendorIdentity &identity);
 
 private:
-    void onBytes(const QByteArray &bytes);
     void onEvent(const SentenceEvent &ev);
     void passiveDone();
     void probeNext();
     void done();
 
+    QPointer<SentenceStream> stream_;
     QPointer<Transport> transport_;
-    const DialectRegistry &registry_;
-    std::unique_ptr<StreamDecoder> decoder_;
     int passiveMs_ = 1500;
     int probeTimeoutMs_ = 800;
     bool active_ = true;
@@ -74,7 +71,7 @@ private:
     const Dialect *passive_ = nullptr;
     VendorIdentity result_;
     QTimer timer_;
-    QMetaObject::Connection bytesConnection_;
+    QMetaObject::Connection eventConnection_;
 };
 
 } // namespace gnss::link

@@ -4,6 +4,7 @@
 // label whole, every editor at its size and inside the view, docked and floated), an edit made
 // in the form and applied reaches the simulator (read back from it), the sky plot's labels do
 // not collide, and a TCP source with nobody listening leaves the window responsive.
+#include "app_transports.h"
 #include "config/settings_engine.h"
 #include "connection_bar.h"
 #include "connection_controller.h"
@@ -108,6 +109,7 @@ struct LoopWatch {
 class TstWindowAcceptance : public QObject {
     Q_OBJECT
     DialectRegistry registry_ = makeBuiltinRegistry();
+    link::TransportFactory transports_ = app::makeTransportFactory();
     QTemporaryDir dir_;
     std::unique_ptr<link::test::SimProcess> sim_;
     std::unique_ptr<QSettings> settings_;
@@ -175,7 +177,7 @@ private slots:
                 QStringList{"--dialect", "nvs", "--baud", "38400", "--seed", "5"});
         if (!sim_->ok()) QSKIP(qPrintable("gnss-sim: " + sim_->error));
         settings_ = std::make_unique<QSettings>(dir_.filePath("s.ini"), QSettings::IniFormat);
-        w_ = std::make_unique<app::MainWindow>(registry_, settings_.get());
+        w_ = std::make_unique<app::MainWindow>(registry_, transports_, settings_.get());
         w_->show();
         QVERIFY(QTest::qWaitForWindowExposed(w_.get()));
         // As from the command line with --port and no --baud: the connection bar's "auto".

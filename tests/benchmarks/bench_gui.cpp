@@ -66,11 +66,19 @@ struct Fixture {
     gnss::ui::MessageStatsModel messages;
     gnss::ui::ConsoleModel console;
     gnss::ui::ReceiverSession session{registry, {&state, &satellites, &messages, &console}};
+    gnss::StreamDecoder decoder{registry}; // the link's decoder, as in the application
     std::vector<QByteArray> epochs;
     Fixture() {
+        session.setCounterSource(&decoder);
         for (int i = 0; i < 200; ++i) epochs.push_back(epochBytes(i));
-        for (int i = 0; i < 10; ++i) session.feed(epochs[size_t(i)]);
+        for (int i = 0; i < 10; ++i) feed(epochs[size_t(i)]);
         session.refresh();
+    }
+    void feed(const QByteArray &bytes) {
+        session.noteBytes(bytes);
+        decoder.feed(
+                std::string_view(bytes.constData(), std::size_t(bytes.size())),
+                [this](const gnss::SentenceEvent &ev) { session.consume(ev, decoder.dialect()); });
     }
 };
 
@@ -83,7 +91,7 @@ void BM_EpochIntoModels(benchmark::State &st) {
     Fixture &f = fixture();
     std::size_t i = 0;
     for (auto _ : st) {
-        f.session.feed(f.epochs[i++ % f.epochs.size()]);
+        f.feed(f.epochs[i++ % f.epochs.size()]);
         if (i % 2 == 0) f.session.refresh(); // the session's 100 ms timer at 20 Hz
     }
     st.counters["satellites"] = f.satellites.rowCount();
@@ -113,7 +121,7 @@ BENCHMARK(BM_PaintSignalLevels)->Unit(benchmark::kMicrosecond);
 void BM_PaintDeviation(benchmark::State &st) {
     Fixture &f = fixture();
     gnss::ui::DeviationView view(&f.state);
-    for (int i = 0; i < 3600; ++i) f.session.feed(f.epochs[size_t(i) % f.epochs.size()]);
+    for (int i = 0; i < 3600; ++i) f.feed(f.epochs[size_t(i) % f.epochs.size()]);
     view.resize(600, 500);
     QImage img(view.size(), QImage::Format_ARGB32_Premultiplied);
     for (auto _ : st) {

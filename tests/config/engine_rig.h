@@ -1,9 +1,10 @@
 #pragma once
-// A settings engine on the in-process simulator: transport, command queue, engine, and a way to
-// run one operation to its end.
+// A settings engine on the in-process simulator: transport, its decoder, command queue, engine,
+// and a way to run one operation to its end.
 #include "dialects.h"
 
 #include "command_queue.h"
+#include "sentence_stream.h"
 #include "settings_engine.h"
 #include "simulator_transport.h"
 
@@ -21,7 +22,8 @@ inline const DialectRegistry &registry() {
 
 struct EngineRig {
     explicit EngineRig(const QString &dialectId)
-        : dialect(registry().find(dialectId.toStdString())), sim(dialectId, 7), queue(&sim) {
+        : dialect(registry().find(dialectId.toStdString())), sim(dialectId, 7),
+          stream(&sim, registry()), queue(&sim, &stream) {
         sim.setSpeed(2.0);
         opened = sim.open();
         queue.setDialect(dialect);
@@ -43,6 +45,7 @@ struct EngineRig {
 
     const Dialect *dialect;
     link::SimulatorTransport sim;
+    link::SentenceStream stream;
     link::CommandQueue queue;
     SettingsEngine engine;
     bool opened = false;

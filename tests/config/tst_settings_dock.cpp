@@ -1,9 +1,10 @@
 // The settings dock in the main window: present, and filled from the simulated receiver as soon
 // as the connection knows its dialect (the real connection path, offscreen).
+#include "app_transports.h"
 #include "dialects.h"
+#include "link/source_spec.h"
 #include "main_window.h"
 #include "settings/settings_view.h"
-#include "source_spec.h"
 
 #include <QDockWidget>
 #include <QLabel>
@@ -19,7 +20,8 @@ private slots:
         QTemporaryDir dir;
         QSettings settings(dir.filePath("settings.ini"), QSettings::IniFormat);
         const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
-        gnss::app::MainWindow w(registry, &settings);
+        const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory();
+        gnss::app::MainWindow w(registry, transports, &settings);
         QDockWidget *dock = w.dock("settingsDock");
         QVERIFY(dock);
         auto *view = qobject_cast<gnss::ui::SettingsView *>(dock->widget());

@@ -51,7 +51,8 @@ private slots:
         FakeTransport link(9600);
         link.open();
         FakeReceiver rx(link, rate);
-        BaudDetector d(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        BaudDetector d(&stream);
         d.setListenMs(200);
         QSignalSpy finished(&d, &BaudDetector::finished);
         d.start();
@@ -66,7 +67,8 @@ private slots:
         FakeTransport link(9600);
         link.open();
         FakeReceiver rx(link, 0, true);
-        BaudDetector d(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        BaudDetector d(&stream);
         d.setCandidates({9600, 115200});
         d.setListenMs(100);
         QSignalSpy finished(&d, &BaudDetector::finished);
@@ -82,7 +84,8 @@ private slots:
         FakeTransport link(9600);
         link.open();
         FakeReceiver rx(link, 1); // no rate works
-        BaudDetector d(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        BaudDetector d(&stream);
         d.setCandidates({9600, 4800});
         d.setListenMs(150);
         QSignalSpy finished(&d, &BaudDetector::finished);
@@ -97,7 +100,8 @@ private slots:
     void probeIsSentAtEachRate() {
         FakeTransport link(9600);
         link.open();
-        BaudDetector d(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        BaudDetector d(&stream);
         d.setCandidates({9600, 4800});
         d.setListenMs(50);
         d.setProbe("$PNVGVER*4E");

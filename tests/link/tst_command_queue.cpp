@@ -47,7 +47,8 @@ private slots:
             if (w.startsWith("$PNVGVER"))
                 t.feed("$GPGGA,partial" + line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
         };
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         QSignalSpy finished(&q, &CommandQueue::commandFinished);
         const int id = q.enqueue("PNVGVER");
@@ -70,7 +71,8 @@ private slots:
         link.responder = [](FakeTransport &t, const QByteArray &w) {
             if (w.startsWith("$PNVGRTK")) t.feed(line("PNVGRTK,PVTRATE,5")); // asked for 10
         };
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         q.enqueue("$PNVGRTK,PVTRATE,10");
         QVERIFY(waitForHistory(q, 1));
@@ -82,7 +84,8 @@ private slots:
     void silenceTimesOutAfterEveryRetry() {
         FakeTransport link;
         link.open();
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         QSignalSpy sent(&q, &CommandQueue::commandSent);
         CommandOptions o;
@@ -103,7 +106,8 @@ private slots:
         link.responder = [&](FakeTransport &t, const QByteArray &) {
             if (++seen == 2) t.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
         };
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         CommandOptions o;
         o.timeoutMs = 40;
@@ -116,7 +120,8 @@ private slots:
     void commandsGoOneAtATimeInOrder() {
         FakeTransport link;
         link.open();
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         q.enqueue("PNVGVER");
         q.enqueue("GPGPQ,PNVGTST");
@@ -137,7 +142,8 @@ private slots:
         link.responder = [](FakeTransport &t, const QByteArray &) {
             t.feed("$PNVGVER,NVS,RTK,0207,CSM24,0405*00\r\n");
         };
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         CommandOptions o;
         o.timeoutMs = 40;
@@ -150,7 +156,8 @@ private slots:
     void commandWithoutReplyCountsAsSent() {
         FakeTransport link;
         link.open();
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         q.enqueue("PNVGRST,W");
         QVERIFY(waitForHistory(q, 1));
@@ -163,7 +170,8 @@ private slots:
         link.responder = [](FakeTransport &t, const QByteArray &) {
             t.feed(line("GPSGG,RQUERY,GEOS-5,V.5.102,150324,0000,0000,0000"));
         };
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setOtherDialects({&dialectById("nvs"), &dialectById("geostar")});
         q.enqueue("$GPSGG,RQUERY");
         QVERIFY(waitForHistory(q, 1));
@@ -177,7 +185,8 @@ private slots:
             t.feed(line("GPRMC,100000.00,A,5540.0000,N,03730.0000,E,0.0,0.0,150324,,,A"));
             t.feed(line("GPGLL,5540.0000,N,03730.0000,E,100000.00,A,A"));
         };
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.enqueue("GPGPQ,GLL");
         QVERIFY(waitForHistory(q, 1));
         QCOMPARE(q.history().first().outcome, CommandOutcome::Accepted);
@@ -187,7 +196,8 @@ private slots:
     void malformedSentenceIsRefusedBeforeSending() {
         FakeTransport link;
         link.open();
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         QString error;
         QCOMPARE(q.enqueue("PNVG\x01VER", {}, &error), -1);
         QVERIFY(error.contains("not allowed"));
@@ -200,7 +210,8 @@ private slots:
     void cancelStopsTheRunningAndTheQueuedCommand() {
         FakeTransport link;
         link.open();
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         const int a = q.enqueue("PNVGVER");
         const int b = q.enqueue("GPGPQ,PNVGTST");
@@ -219,7 +230,8 @@ private slots:
     void lostLinkFailsTheRunningAndEveryQueuedCommand() {
         FakeTransport link;
         link.open();
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         q.enqueue("PNVGVER");
         q.enqueue("GPGPQ,PNVGTST");
@@ -245,7 +257,8 @@ private slots:
             if (w.startsWith("$PNVGVER") && t.baud() == 38400)
                 t.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
         };
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         QSignalSpy bauds(&q, &CommandQueue::baudChanged);
         q.enqueue("PNVGRZA,1,38400,1");
@@ -267,7 +280,8 @@ private slots:
             if (w.startsWith("$PNVGVER") && t.baud() == 115200)
                 t.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
         };
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         CommandOptions o;
         o.confirmMs = 100;
@@ -286,7 +300,8 @@ private slots:
         link.responder = [](FakeTransport &t, const QByteArray &w) {
             if (w.startsWith("$PNVGRZA")) t.feed(line("PNVGRZA,1,38400,1"));
         };
-        CommandQueue q(&link);
+        SentenceStream stream(&link, test::builtinRegistry());
+        CommandQueue q(&link, &stream);
         q.setDialect(&dialectById("nvs"));
         CommandOptions o;
         o.confirmMs = 60;

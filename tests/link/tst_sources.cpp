@@ -4,12 +4,11 @@
 #include "command_queue.h"
 #include "connection.h"
 #include "dialects.h"
+#include "sentence_stream.h"
 #include "sim_process.h"
+#include "simulator_transport.h"
 #include "tcp_transport.h"
 #include "vendor_detector.h"
-#ifdef GNSS_HAVE_SIM
-#include "simulator_transport.h"
-#endif
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -95,12 +94,10 @@ class TstSources : public QObject {
     Q_OBJECT
 private slots:
     void inProcessSimulatorIsDetectedAndCommanded() {
-#ifndef GNSS_HAVE_SIM
-        QSKIP("gnss_sim is not built");
-#else
         SimulatorTransport sim(QStringLiteral("nvs"), 3, 9600); // receiver at 115200
         QVERIFY2(sim.open(), qPrintable(sim.errorString()));
-        BaudDetector baud(&sim);
+        SentenceStream stream(&sim, registry());
+        BaudDetector baud(&stream);
         baud.setListenMs(500);
         QSignalSpy baudDone(&baud, &BaudDetector::finished);
         baud.start();
@@ -108,19 +105,18 @@ private slots:
         QVERIFY2(baud.result().found, qPrintable(baud.result().error));
         QCOMPARE(baud.result().baud, 115200);
 
-        VendorDetector vendor(&sim, registry());
+        VendorDetector vendor(&stream);
         QSignalSpy vendorDone(&vendor, &VendorDetector::finished);
         vendor.start();
         QVERIFY(vendorDone.wait(10000));
         QCOMPARE(vendor.result().dialect, QStringLiteral("nvs"));
         QVERIFY(!vendor.result().firmware.isEmpty());
 
-        CommandQueue q(&sim);
+        CommandQueue q(&sim, &stream);
         q.setDialect(registry().find("nvs"));
         q.enqueue("PNVGVER");
         QTRY_COMPARE_WITH_TIMEOUT(q.history().size(), 1, 5000);
         QCOMPARE(int(q.history().first().outcome), int(CommandOutcome::Accepted));
-#endif
     }
 
     void tcpClientReadsGnssSimAndNoticesItLeaving() {

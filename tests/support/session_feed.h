@@ -1,6 +1,8 @@
 #pragma once
-// Test helper: models + session, fed with sentences (checksums added).
+// Test helper: models + session, fed with sentences (checksums added) through a decoder of
+// its own, as the link's decoder feeds the session in the application.
 #include "core/sentence_builder.h"
+#include "core/stream_decoder.h"
 #include "dialects.h"
 #include "models/console_model.h"
 #include "models/message_stats_model.h"
@@ -21,6 +23,15 @@ struct SessionFixture {
     ui::MessageStatsModel messages;
     ui::ConsoleModel console;
     ui::ReceiverSession session{registry, {&state, &satellites, &messages, &console}};
+    StreamDecoder decoder{registry};
+
+    SessionFixture() { session.setCounterSource(&decoder); }
+
+    void feedBytes(const QByteArray &bytes) {
+        session.noteBytes(bytes);
+        decoder.feed(std::string_view(bytes.constData(), std::size_t(bytes.size())),
+                     [this](const SentenceEvent &ev) { session.consume(ev, decoder.dialect()); });
+    }
 
     // Each body gets "$" and its checksum unless it already starts with '$'.
     void feed(std::initializer_list<std::string> lines) {
@@ -29,7 +40,7 @@ struct SessionFixture {
             bytes += QByteArray::fromStdString(l.rfind('$', 0) == 0 ? l : buildSentence(l));
             bytes += "\r\n";
         }
-        session.feed(bytes);
+        feedBytes(bytes);
         session.refresh();
     }
 };

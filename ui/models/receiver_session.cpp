@@ -13,11 +13,10 @@ ReceiverSession::ReceiverSession(const DialectRegistry &registry, SessionModels 
     refreshTimer_.start();
 }
 
-void ReceiverSession::reset(const DecoderOptions &options) {
-    decoder_ = std::make_unique<StreamDecoder>(registry_, options);
+void ReceiverSession::reset() {
     counterSource_ = nullptr;
-    tracker_ = std::make_unique<StateTracker>(decoder_->dialect());
-    lastDialect_ = decoder_->dialect();
+    tracker_ = std::make_unique<StateTracker>(nullptr);
+    lastDialect_ = nullptr;
     counters_ = {};
     bytesAtLastRate_ = sentencesAtLastRate_ = 0;
     lastRateMs_ = QDateTime::currentMSecsSinceEpoch();
@@ -28,31 +27,17 @@ void ReceiverSession::reset(const DecoderOptions &options) {
     emit dialectChanged(lastDialect_);
 }
 
-void ReceiverSession::feed(const QByteArray &bytes) {
-    noteBytes(bytes);
-    decoder_->feed(std::string_view(bytes.constData(), size_t(bytes.size())),
-                   [this](const SentenceEvent &ev) { onSentence(ev, decoder_->dialect()); });
-}
-
 void ReceiverSession::noteBytes(const QByteArray &bytes) {
-    counters_.bytes += quint64(bytes.size());
     if (models_.console) models_.console->appendRaw(bytes);
 }
 
 void ReceiverSession::consume(const SentenceEvent &ev, const Dialect *dialect) {
-    onSentence(ev, dialect);
-}
-
-void ReceiverSession::onSentence(const SentenceEvent &ev, const Dialect *dialect) {
     if (dialect != lastDialect_) {
         lastDialect_ = dialect;
         tracker_->setDialect(dialect);
         emit dialectChanged(dialect);
     }
-    ++counters_.sentences;
     const Sentence &s = ev.sentence;
-    if (s.checksum() == ChecksumStatus::Bad) ++counters_.checksumErrors;
-    if (!ev.message && !ev.unknown && s.checksum() != ChecksumStatus::Bad) ++counters_.decodeErrors;
     if (models_.console && !models_.console->paused()) {
         ConsoleLine l;
         l.ms = QDateTime::currentMSecsSinceEpoch();
@@ -89,12 +74,26 @@ void ReceiverSession::noteSent(const QByteArray &sentence) {
     models_.console->append(std::move(l));
 }
 
+void ReceiverSession::updateCounts() {
+    // The decoder's own counts: one place, whatever listens to it.
+    if (!counterSource_) return;
+    LinkCounters c = counters_;
+    c.bytes = counterSource_->framerStats().bytesIn;
+    c.sentences = c.checksumErrors = c.decodeErrors = 0;
+    for (const AddressStats &a : counterSource_->addressStats()) {
+        c.sentences += a.sentences;
+        c.checksumErrors += a.checksumBad;
+        c.decodeErrors += a.decodeErrors;
+    }
+    counters_ = c;
+}
+
 void ReceiverSession::refresh() {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     if (models_.console) models_.console->flush();
-    if (models_.messages)
-        models_.messages->refresh(
-                (counterSource_ ? counterSource_ : decoder_.get())->addressStats(), now);
+    updateCounts();
+    if (models_.messages && counterSource_)
+        models_.messages->refresh(counterSource_->addressStats(), now);
     if (now - lastRateMs_ >= 1000) {
         const double dt = double(now - lastRateMs_) / 1000.0;
         counters_.bytesPerSecond = double(counters_.bytes - bytesAtLastRate_) / dt;

@@ -1,11 +1,13 @@
 #pragma once
-// ReceiverSession: bytes from a receiver in, models updated out.
+// ReceiverSession: decoded sentences in, models updated out.
 //
-//   bytes → StreamDecoder → console lines (batched)
-//                         → StateTracker → once per epoch: ReceiverStateModel, SatelliteModel
-//         decoder counters → MessageStatsModel (on a timer)
+//   link's decoder → sentence events → console lines (batched)
+//                                    → StateTracker → once per epoch: ReceiverStateModel,
+//                                                     SatelliteModel
+//   link's decoder counters → MessageStatsModel, byte/sentence/error counts (on a timer)
 //
-// The session knows no vendor; the dialect comes from the decoder (chosen or detected).
+// The session decodes nothing: it listens to the one decoder of the link (or of a test), and
+// its counts are that decoder's. It knows no vendor; the dialect comes with each sentence.
 #include "console_model.h"
 #include "core/stream_decoder.h"
 #include "message_stats_model.h"
@@ -41,14 +43,11 @@ public:
     ReceiverSession(const DialectRegistry &registry, SessionModels models,
                     QObject *parent = nullptr);
 
-    // Starts over (new connection): decoder, state and models are reset.
-    void reset(const DecoderOptions &options = {});
-    // Bytes received from the receiver, decoded by the session's own decoder (replays in tests,
-    // or any source without a decoder of its own).
-    void feed(const QByteArray &bytes);
+    // Starts over (new connection): state and models are reset, the counts forgotten.
+    void reset();
 
-    // With a link that decodes itself (link::Connection): its raw bytes (hex view, byte rate)
-    // and each decoded sentence, and the decoder whose counters the statistics show.
+    // The link's raw bytes (hex view), each sentence its decoder decoded, and that decoder (its
+    // counts are the session's: bytes, sentences, checksum and decode errors, per address).
     void noteBytes(const QByteArray &bytes);
     void consume(const SentenceEvent &ev, const Dialect *dialect);
     void setCounterSource(const StreamDecoder *decoder) { counterSource_ = decoder; }
@@ -59,18 +58,16 @@ public:
 
     const Dialect *dialect() const { return lastDialect_; }
     const LinkCounters &counters() const { return counters_; }
-    const StreamDecoder *decoder() const { return decoder_.get(); }
 
 signals:
     void dialectChanged(const gnss::Dialect *dialect);
     void countersChanged();
 
 private:
-    void onSentence(const SentenceEvent &ev, const Dialect *dialect);
+    void updateCounts();
 
     const DialectRegistry &registry_;
     SessionModels models_;
-    std::unique_ptr<StreamDecoder> decoder_;
     const StreamDecoder *counterSource_ = nullptr;
     std::unique_ptr<StateTracker> tracker_;
     const Dialect *lastDialect_ = nullptr;

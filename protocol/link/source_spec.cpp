@@ -2,7 +2,7 @@
 
 #include <QCoreApplication>
 
-namespace gnss::app {
+namespace gnss::link {
 
 QString SourceSpec::toString() const {
     switch (kind) {
@@ -51,4 +51,4 @@ QString SourceSpec::displayName() const {
     return tr("No source");
 }
 
-} // namespace gnss::app
+} // namespace gnss::link

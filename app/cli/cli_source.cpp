@@ -1,0 +1,153 @@
+#include "cli_source.h"
+
+#include "link_opener.h"
+#include "transport_factory.h"
+
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QTimer>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace gnss::cli {
+
+namespace {
+
+using Kind = link::SourceSpec::Kind;
+
+struct SourceOption {
+    Kind kind;
+    const char *option;
+    const char *usage;
+};
+constexpr SourceOption kSourceOptions[] = {
+        {Kind::Serial, "port", "--port P [--baud B]"},
+        {Kind::Tcp, "tcp", "--tcp HOST:PORT"},
+        {Kind::Replay, "replay", "--replay FILE [--speed X] [--fast]"},
+        {Kind::Simulator, "sim", "--sim DIALECT [--baud B]"},
+};
+
+bool allowedKind(std::initializer_list<Kind> allowed, Kind k) {
+    return std::find(allowed.begin(), allowed.end(), k) != allowed.end();
+}
+
+} // namespace
+
+std::string sourceOptionsText(std::initializer_list<Kind> allowed) {
+    std::string out;
+    for (const auto &o : kSourceOptions) {
+        if (!allowedKind(allowed, o.kind)) continue;
+        if (!out.empty()) out += " | ";
+        out += o.usage;
+    }
+    return out;
+}
+
+std::optional<link::SourceSpec>
+sourceFromArgs(const Args &args, std::initializer_list<Kind> allowed, std::string &error) {
+    std::optional<link::SourceSpec> found;
+    int given = 0;
+    for (const auto &o : kSourceOptions) {
+        const auto v = args.option(o.option);
+        if (!v) continue;
+        ++given;
+        if (!allowedKind(allowed, o.kind)) {
+            error = std::string("this command does not take --") + o.option;
+            return std::nullopt;
+        }
+        link::SourceSpec s;
+        s.kind = o.kind;
+        s.name = QString::fromStdString(*v);
+        found = s;
+    }
+    if (given != 1) {
+        error = "give one source: " + sourceOptionsText(allowed);
+        return std::nullopt;
+    }
+    if (const auto b = args.option("baud")) {
+        bool ok = false;
+        found->baud = QString::fromStdString(*b).toInt(&ok);
+        if (!ok || found->baud < 300 || found->baud > 4000000) {
+            error = "--baud expects a speed such as 9600 or 115200, got '" + *b + "'";
+            return std::nullopt;
+        }
+    }
+    if (const auto sp = args.option("speed")) {
+        bool ok = false;
+        found->speed = QString::fromStdString(*sp).toDouble(&ok);
+        if (!ok || found->speed <= 0) {
+            error = "--speed expects a factor above 0, got '" + *sp + "'";
+            return std::nullopt;
+        }
+    }
+    found->asFast = args.flag("fast");
+    return found;
+}
+
+std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
+                                                 const link::SourceSpec &spec,
+                                                 const OpenOptions &options, QString &error) {
+    if (!ctx.transports) {
+        error = QStringLiteral("no transports in this program");
+        return nullptr;
+    }
+    link::LinkOpener opener(*ctx.transports, ctx.registry);
+    QEventLoop loop;
+    bool failed = false;
+    QObject::connect(&opener, &link::LinkOpener::tryingRate, [&opener](int baud) {
+        const int before = int(opener.detection().tried.size()) - 1;
+        if (before > 0)
+            std::fprintf(
+                    stderr, "gnss-cli: baud %s; trying %d\n",
+                    link::LinkOpener::attemptsText(opener.detection(), before).toUtf8().constData(),
+                    baud);
+        else
+            std::fprintf(stderr, "gnss-cli: detecting the baud rate: trying %d\n", baud);
+    });
+    QObject::connect(&opener, &link::LinkOpener::ready, &loop, &QEventLoop::quit);
+    QObject::connect(&opener, &link::LinkOpener::failed, [&](const QString &why) {
+        failed = true;
+        error = why;
+        loop.quit();
+    });
+    opener.start(spec, options.decoder);
+    if (opener.isDetecting()) loop.exec();
+    if (options.detection) *options.detection = opener.detection();
+    if (failed) return nullptr;
+    std::unique_ptr<link::Connection> conn = opener.takeConnection();
+    if (!conn) {
+        error = QStringLiteral("no connection");
+        return nullptr;
+    }
+    if (!opener.detection().tried.empty())
+        std::fprintf(stderr, "gnss-cli: baud %d found (%s)\n", opener.detection().baud,
+                     link::LinkOpener::attemptsText(opener.detection()).toUtf8().constData());
+    conn->setAutoReconnect(options.autoReconnect);
+    if (!conn->open()) {
+        error = conn->transport()->errorString();
+        return nullptr;
+    }
+    if (options.waitUntilOpen && !conn->transport()->isOpen()) {
+        // A TCP connect or a log being indexed: wait for it, or for its failure.
+        QEventLoop wait;
+        QObject::connect(conn.get(), &link::Connection::opened, &wait, &QEventLoop::quit);
+        QObject::connect(conn.get(), &link::Connection::openFailed, &wait,
+                         [&](const QString &why, int) {
+                             error = why;
+                             wait.quit();
+                         });
+        QTimer::singleShot(options.openTimeoutMs, &wait, &QEventLoop::quit);
+        wait.exec();
+        if (!conn->transport()->isOpen()) {
+            if (error.isEmpty())
+                error = QStringLiteral("%1: not open after %2 s")
+                                .arg(conn->transport()->description())
+                                .arg(options.openTimeoutMs / 1000);
+            return nullptr;
+        }
+    }
+    return conn;
+}
+
+} // namespace gnss::cli

@@ -1,0 +1,44 @@
+#pragma once
+// The source every gnss-cli link command takes, named the same way everywhere:
+//   --port P [--baud B]        a serial port (without --baud: the speed is detected)
+//   --tcp HOST:PORT            a serial server or remote receiver
+//   --replay FILE [--speed X] [--fast]   a recorded log
+//   --sim DIALECT [--baud B]   a built-in simulated receiver
+// and opened through the application's one TransportFactory, as the GUI does (LinkOpener).
+// Qt Core: only the commands that need an event loop include this.
+#include "baud_detector.h"
+#include "cli_args.h"
+#include "cli_commands.h"
+#include "connection.h"
+#include "source_spec.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace gnss::cli {
+
+// The source named by the arguments; nullopt with `error` when none, several, or malformed.
+// `allowed` lists the kinds the command takes (a replay cannot take commands, for instance).
+std::optional<link::SourceSpec>
+sourceFromArgs(const Args &args, std::initializer_list<link::SourceSpec::Kind> allowed,
+               std::string &error);
+// The option names of the sources, for usage texts: "--port P | --tcp H:P | ...".
+std::string sourceOptionsText(std::initializer_list<link::SourceSpec::Kind> allowed);
+
+struct OpenOptions {
+    DecoderOptions decoder;
+    bool waitUntilOpen = true; // return only once bytes can flow (a TCP connect, a log indexed)
+    int openTimeoutMs = 15000;
+    bool autoReconnect = true;
+    link::BaudDetection *detection = nullptr; // out: what baud detection tried, when it ran
+};
+
+// Opens a connection to `spec` (baud detection for a serial port without a speed, each rate
+// reported on standard error); nullptr with `error` set when it cannot. Needs a running
+// QCoreApplication (it runs the event loop until the link is open).
+std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
+                                                 const link::SourceSpec &spec,
+                                                 const OpenOptions &options, QString &error);
+
+} // namespace gnss::cli
