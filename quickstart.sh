@@ -21,6 +21,8 @@ packages=(
   # Qt6Gui's CMake config looks for OpenGL headers (WrapOpenGL).
   libgl-dev
   libbenchmark-dev fonts-dejavu-core
+  # str2str (RTKLIB) is the real NTRIP 1 caster the corrections tests talk to.
+  rtklib
 )
 
 missing=()
