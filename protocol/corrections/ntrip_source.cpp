@@ -219,7 +219,10 @@ void NtripSource::sendGga() {
 }
 
 void NtripSource::fetchSourceTable() {
-    if (tableRequest_) tableRequest_->deleteLater();
+    if (tableRequest_) { // the newer request wins: the older one says nothing more
+        tableRequest_->abort();
+        tableRequest_->deleteLater();
+    }
     SourceTableQuery q;
     q.host = settings_.host;
     q.port = settings_.port;
