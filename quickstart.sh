@@ -23,6 +23,8 @@ packages=(
   libbenchmark-dev fonts-dejavu-core
   # The smoke test runs the real binary on an X server: xvfb-run (xvfb) needs xauth.
   xvfb xauth
+  # str2str (RTKLIB) is the real NTRIP 1 caster the corrections tests talk to.
+  rtklib
 )
 
 missing=()

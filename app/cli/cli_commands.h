@@ -32,5 +32,7 @@ int cmdSend(const CliContext &ctx, int argc, char **argv);
 int cmdConfig(const CliContext &ctx, int argc, char **argv);
 // RTCM 3 streams (cmd_rtcm.cpp): one JSON object per message, counts on standard error.
 int cmdRtcm(const CliContext &ctx, int argc, char **argv);
+// NTRIP casters (cmd_ntrip.cpp): the source table, or a mountpoint's RTCM as JSON and/or a file.
+int cmdNtrip(const CliContext &ctx, int argc, char **argv);
 
 } // namespace gnss::cli

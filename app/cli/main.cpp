@@ -38,6 +38,10 @@ constexpr Command kCommands[] = {
          "apply FILE | diff FILE | action save|defaults|cold|warm|hot"},
         {"rtcm", gnss::cli::cmdRtcm,
          "rtcm [FILE|-]   one JSON object per RTCM 3 message; counts on stderr"},
+        {"ntrip", gnss::cli::cmdNtrip,
+         "ntrip --caster H:P --mount M|--sourcetable|--nearest [--user U] [--password-env VAR]\n"
+         "        [--ntrip-version 1|2] [--gga auto|LAT,LON,H] [--out FILE] [--duration S] "
+         "[--quiet]"},
 };
 
 void usage(std::FILE *f) {

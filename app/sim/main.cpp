@@ -6,6 +6,7 @@
 // master sees with tcgetattr) is handed to the receiver: while it differs from the receiver's
 // baud the receiver sends garbage and ignores input, as a UART at the wrong speed would.
 // SIGHUP power-cycles the simulated receiver (settings come back from its flash).
+// With --rtcm-base the same loop carries an RTCM 3 base station's stream instead.
 #include "sim_args.h"
 
 #include <arpa/inet.h>
@@ -23,6 +24,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <memory>
 #include <string>
 
 using namespace gnss;
@@ -120,7 +122,15 @@ int main(int argc, char **argv) {
         std::fputs(simapp::kUsage, stdout);
         return 0;
     }
-    auto rx = sim::makeReceiver(args.dialect, args.options);
+    // Exactly one of the two: a receiver (dialect), or a base station's RTCM stream.
+    std::unique_ptr<sim::Receiver> rx;
+    std::unique_ptr<sim::RtcmBaseStation> base;
+    if (args.rtcmBase)
+        base = std::make_unique<sim::RtcmBaseStation>(args.base);
+    else
+        rx = sim::makeReceiver(args.dialect, args.options);
+    // A base has no UART of its own: its line runs at --baud, 115200 by default.
+    const int deviceBaud = rx ? rx->baud() : (args.options.baud > 0 ? args.options.baud : 115200);
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
     std::signal(SIGPIPE, SIG_IGN);
@@ -142,8 +152,8 @@ int main(int argc, char **argv) {
             termios t{};
             tcgetattr(slave, &t);
             cfmakeraw(&t);
-            cfsetispeed(&t, speedOf(rx->baud()));
-            cfsetospeed(&t, speedOf(rx->baud()));
+            cfsetispeed(&t, speedOf(deviceBaud));
+            cfsetospeed(&t, speedOf(deviceBaud));
             tcsetattr(slave, TCSANOW, &t);
             ::close(slave);
         }
@@ -196,7 +206,7 @@ int main(int argc, char **argv) {
         if (stdinIdx >= 0 && (fds[stdinIdx].revents & (POLLIN | POLLHUP))) {
             const ssize_t r = ::read(STDIN_FILENO, buf, sizeof buf);
             if (r <= 0) break; // standard input closed: stop
-            if (args.transport == simapp::Transport::Stdout)
+            if (args.transport == simapp::Transport::Stdout && rx)
                 rx->receive(std::string_view(buf, static_cast<std::size_t>(r)));
         }
         bool peerPresent = ioFd >= 0;
@@ -212,7 +222,7 @@ int main(int argc, char **argv) {
         if (ioIdx >= 0) {
             if (fds[ioIdx].revents & POLLIN) {
                 const ssize_t r = ::read(ioFd, buf, sizeof buf);
-                if (r > 0)
+                if (r > 0 && rx) // a base ignores what clients send (a caster's GGA)
                     rx->receive(std::string_view(buf, static_cast<std::size_t>(r)));
                 else if (!isPty && r == 0) { // TCP client left
                     ::close(ioFd);
@@ -225,26 +235,32 @@ int main(int argc, char **argv) {
             if (isPty && (fds[ioIdx].revents & POLLHUP)) ptyIdle = true;
         }
         if (ptyIdle) peerPresent = false;
-        if (isPty) {
+        if (isPty && rx) {
             termios t{};
             if (tcgetattr(ioFd, &t) == 0) rx->setLineBaud(baudOf(cfgetospeed(&t)));
         }
 
         if (g_powerCycle) {
             g_powerCycle = 0;
-            rx->powerCycle();
+            if (rx) rx->powerCycle();
         }
         const double now = monotonicSeconds();
-        rx->advance((now - last) * args.speed);
+        std::string out;
+        if (rx) {
+            rx->advance((now - last) * args.speed);
+            out = rx->takeOutput();
+        } else {
+            base->advance((now - last) * args.speed);
+            out = base->takeOutput();
+        }
         last = now;
-        std::string out = rx->takeOutput();
         if (peerPresent && ioFd >= 0) {
             outBuffer += out;
             flushTo(ioFd, outBuffer);
         } else {
             outBuffer.clear();
         }
-        if (rx->hungUp()) break; // the hang-up fault: drop the line
+        if (rx && rx->hungUp()) break; // the hang-up fault: drop the line
     }
     if (ioFd >= 0 && ioFd != STDOUT_FILENO) ::close(ioFd);
     if (listenFd >= 0) ::close(listenFd);

@@ -9,6 +9,8 @@ namespace gnss::simapp {
 const char *const kUsage =
         "usage: gnss-sim --dialect nvs|geostar|nemerix|nmea [--pty | --tcp PORT | --stdout]\n"
         "                [--seed N] [--speed X] [--baud B] [--faults SPEC]\n"
+        "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
+        "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--baud B]\n"
         "\n"
         "  --pty       create a pseudo-terminal; its device path is the first line of stdout\n"
         "  --tcp PORT  listen on 127.0.0.1:PORT (one client at a time)\n"
@@ -18,6 +20,11 @@ const char *const kUsage =
         "  --baud B    the receiver's starting baud; default: the receiver's own\n"
         "  --faults    badcs=P,truncate=P,binary=P,silence=D@T[/EVERY],noreply=CMD[+CMD],\n"
         "              slowreply=MS,hangup=SECONDS\n"
+        "  --rtcm-base an RTK base station instead of a receiver: RTCM 3 MSM4 for GPS (1074)\n"
+        "              and GLONASS (1084) and the position (1005) every second, 1230 every 10 s\n"
+        "  --base-position LAT,LON,H  the base's position (degrees, ellipsoidal metres);\n"
+        "              default 55.7512,37.6184,166.6\n"
+        "  --station ID  reference station id 0..4095 (default 1)\n"
         "Runs until killed or until standard input closes.\n";
 
 namespace {
@@ -26,6 +33,22 @@ template <class T> bool number(std::string_view s, T &out) {
     const char *end = s.data() + s.size();
     auto [p, ec] = std::from_chars(s.data(), end, out);
     return ec == std::errc() && p == end;
+}
+
+// "LAT,LON,H": a place on Earth.
+bool position(std::string_view s, sim::BaseStationConfig &base) {
+    double v[3];
+    for (int i = 0; i < 3; ++i) {
+        const auto comma = s.find(',');
+        if ((i < 2) != (comma != std::string_view::npos)) return false;
+        if (!number(s.substr(0, comma), v[i]) || !std::isfinite(v[i])) return false;
+        s = i < 2 ? s.substr(comma + 1) : std::string_view();
+    }
+    if (std::fabs(v[0]) > 90 || std::fabs(v[1]) > 180 || std::fabs(v[2]) > 100000) return false;
+    base.latDeg = v[0];
+    base.lonDeg = v[1];
+    base.height = v[2];
+    return true;
 }
 
 } // namespace
@@ -80,6 +103,21 @@ bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error, bool 
                 error = "--baud: expected a speed 300..921600, got '" + std::string(v) + "'";
                 return false;
             }
+        } else if (a == "--rtcm-base") {
+            out.rtcmBase = true;
+        } else if (a == "--base-position") {
+            if (!value(v)) return false;
+            if (!position(v, out.base)) {
+                error = "--base-position: expected LAT,LON,H in degrees and metres, got '" +
+                        std::string(v) + "'";
+                return false;
+            }
+        } else if (a == "--station") {
+            if (!value(v)) return false;
+            if (!number(v, out.base.stationId) || out.base.stationId > 4095) {
+                error = "--station: expected a station id 0..4095, got '" + std::string(v) + "'";
+                return false;
+            }
         } else if (a == "--faults") {
             if (!value(v)) return false;
             auto f = sim::parseFaults(v, error);
@@ -93,8 +131,16 @@ bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error, bool 
             return false;
         }
     }
+    out.base.seed = out.options.seed;
+    if (out.rtcmBase) {
+        if (!out.dialect.empty()) {
+            error = "--rtcm-base is a base station, not a receiver: leave out --dialect";
+            return false;
+        }
+        return true;
+    }
     if (out.dialect.empty()) {
-        error = "--dialect is required";
+        error = "--dialect is required (or --rtcm-base)";
         return false;
     }
     bool known = false;

@@ -1,6 +1,7 @@
 #pragma once
 // gnss-sim's command line, parsed apart from main() so it stays small and readable.
 #include "receiver.h"
+#include "rtcm_base_station.h"
 
 #include <string>
 
@@ -14,6 +15,9 @@ struct SimArgs {
     int tcpPort = 0;
     double speed = 1.0;
     sim::SimOptions options;
+    // --rtcm-base: an RTCM 3 base station's stream instead of a receiver (no --dialect).
+    bool rtcmBase = false;
+    sim::BaseStationConfig base;
 };
 
 extern const char *const kUsage;

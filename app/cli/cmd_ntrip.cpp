@@ -1,0 +1,364 @@
+// gnss-cli ntrip: an NTRIP caster from the command line. Prints its source table as JSON lines
+// (with each stream's distance when a position is given), or receives a mountpoint's RTCM and
+// prints one JSON line per message (the same objects as `gnss-cli rtcm`) and/or writes the raw
+// bytes to a file. A refusal (wrong password, unknown mountpoint ...) ends it with exit code 1
+// and the reason in words; a dropped connection is retried with the backoff and said on
+// standard error. The password is read from an environment variable, never from the command
+// line (where `ps` would show it), and is never printed.
+#include "rtcm/rtcm_json.h"
+#include "rtcm/rtcm_stream_decoder.h"
+
+#include "cli_args.h"
+#include "cli_commands.h"
+#include "core/json_writer.h"
+#include "ntrip/mountpoint_distance.h"
+#include "ntrip_source.h"
+#include "source_table_request.h"
+#include "tcp_transport.h"
+
+#include <QCoreApplication>
+#include <QTimer>
+
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace gnss::cli {
+namespace {
+
+volatile std::sig_atomic_t g_stop = 0;
+void onSignal(int) {
+    g_stop = 1;
+}
+
+// The event loop the command runs in; Ctrl-C or SIGTERM ends it (files flushed and closed).
+struct NtripEventLoop {
+    int argc = 1;
+    char name[9] = "gnss-cli";
+    char *argv[2] = {name, nullptr};
+    QCoreApplication app{argc, argv};
+    QTimer signalPoll;
+    NtripEventLoop() {
+        g_stop = 0;
+        std::signal(SIGINT, onSignal);
+        std::signal(SIGTERM, onSignal);
+        QObject::connect(&signalPoll, &QTimer::timeout, [] {
+            if (g_stop) QCoreApplication::exit(130);
+        });
+        signalPoll.start(100);
+    }
+};
+
+std::string utf8(const QString &s) {
+    return s.toStdString();
+}
+
+void say(const std::string &s) {
+    std::fprintf(stderr, "gnss-cli: %s\n", s.c_str());
+}
+
+void printLine(const std::string &s) {
+    std::fwrite(s.data(), 1, s.size(), stdout);
+    std::fputc('\n', stdout);
+    std::fflush(stdout);
+}
+
+// "LAT,LON,H" in degrees and metres.
+std::optional<ntrip::GgaPosition> parsePosition(const std::string &text) {
+    const QStringList parts = QString::fromStdString(text).split(QLatin1Char(','));
+    if (parts.size() != 3) return std::nullopt;
+    bool ok[3] = {};
+    ntrip::GgaPosition p;
+    p.latDeg = parts[0].toDouble(&ok[0]);
+    p.lonDeg = parts[1].toDouble(&ok[1]);
+    p.altitudeMsl = parts[2].toDouble(&ok[2]);
+    if (!ok[0] || !ok[1] || !ok[2] || std::fabs(p.latDeg) > 90 || std::fabs(p.lonDeg) > 180 ||
+        !std::isfinite(p.altitudeMsl))
+        return std::nullopt;
+    return p;
+}
+
+std::optional<double> km(const std::optional<ntrip::GgaPosition> &from,
+                         const ntrip::StreamEntry &s) {
+    const auto at = ntrip::entryPosition(s);
+    if (!from || !at) return std::nullopt;
+    return std::round(ntrip::greatCircleMetres(from->latDeg, from->lonDeg, at->first, at->second) /
+                      100.0) /
+           10.0;
+}
+
+void printTable(const ntrip::SourceTable &t, const std::optional<ntrip::GgaPosition> &from) {
+    for (const ntrip::StreamEntry &s : t.streams) {
+        std::string out;
+        JsonWriter w(out);
+        w.beginObject()
+                .field("type", "STR")
+                .field("mountpoint", s.mountpoint)
+                .field("identifier", s.identifier)
+                .field("format", s.format)
+                .field("format_details", s.formatDetails)
+                .field("carrier", s.carrier)
+                .field("nav_system", s.navSystem)
+                .field("network", s.network)
+                .field("country", s.country)
+                .field("latitude", s.latitude)
+                .field("longitude", s.longitude)
+                .field("nmea", s.wantsGga)
+                .field("solution", s.solution)
+                .field("generator", s.generator)
+                .field("compression", s.compression)
+                .field("authentication", s.authentication)
+                .field("fee", s.fee)
+                .field("bitrate", s.bitrate)
+                .field("misc", s.misc);
+        if (const auto d = km(from, s)) w.field("distance_km", *d);
+        w.endObject();
+        printLine(out);
+    }
+    for (const ntrip::CasterEntry &c : t.casters) {
+        std::string out;
+        JsonWriter w(out);
+        w.beginObject()
+                .field("type", "CAS")
+                .field("host", c.host)
+                .field("port", c.port)
+                .field("identifier", c.identifier)
+                .field("operator", c.casterOperator)
+                .field("nmea", c.nmea)
+                .field("country", c.country)
+                .field("latitude", c.latitude)
+                .field("longitude", c.longitude)
+                .field("fallback_host", c.fallbackHost)
+                .field("fallback_port", c.fallbackPort)
+                .field("misc", c.misc)
+                .endObject();
+        printLine(out);
+    }
+    for (const ntrip::NetworkEntry &n : t.networks) {
+        std::string out;
+        JsonWriter w(out);
+        w.beginObject()
+                .field("type", "NET")
+                .field("identifier", n.identifier)
+                .field("operator", n.networkOperator)
+                .field("authentication", n.authentication)
+                .field("fee", n.fee)
+                .field("web_net", n.webNet)
+                .field("web_str", n.webStr)
+                .field("web_reg", n.webReg)
+                .field("misc", n.misc)
+                .endObject();
+        printLine(out);
+    }
+    std::string summary;
+    JsonWriter w(summary);
+    w.beginObject()
+            .field("streams", static_cast<std::uint64_t>(t.streams.size()))
+            .field("casters", static_cast<std::uint64_t>(t.casters.size()))
+            .field("networks", static_cast<std::uint64_t>(t.networks.size()))
+            .field("complete", t.complete)
+            .field("short_records", t.shortRecords)
+            .field("bad_lines", t.badLines)
+            .field("long_lines", t.longLines)
+            .endObject();
+    std::fprintf(stderr, "%s\n", summary.c_str());
+}
+
+// Fetches the source table; nullopt (reason said) when the caster would not give it.
+std::optional<ntrip::SourceTable> fetchTable(const corrections::SourceTableQuery &q) {
+    corrections::SourceTableRequest request(q);
+    std::optional<ntrip::SourceTable> table;
+    QObject::connect(&request, &corrections::SourceTableRequest::received,
+                     [&](const ntrip::SourceTable &t) {
+                         table = t;
+                         QCoreApplication::exit(0);
+                     });
+    QObject::connect(&request, &corrections::SourceTableRequest::failed, [](const QString &why) {
+        say(utf8(why));
+        QCoreApplication::exit(1);
+    });
+    request.start();
+    QCoreApplication::exec();
+    return table;
+}
+
+struct Options {
+    QString host;
+    quint16 port = 0;
+    std::optional<std::string> mount;
+    bool sourcetable = false;
+    bool nearest = false;
+    QString user, password;
+    ntrip::NtripVersion version = ntrip::NtripVersion::V2;
+    std::optional<ntrip::GgaPosition> position; // --gga LAT,LON,H
+    std::optional<std::string> out;
+    double duration = 0;
+    bool quiet = false;
+};
+
+// Reads the options; false (with the reason said) when they do not make a command.
+bool readOptions(const Args &args, Options &o) {
+    if (!args.error().empty()) return say(args.error()), false;
+    if (!args.positionals().empty())
+        return say("ntrip takes no positional arguments (got '" + args.positionals()[0] + "')"),
+               false;
+    // Forwarding to a receiver is where --port P / --tcp H:P will go: a link::Transport whose
+    // write() gets every dataReceived (and whose fix feeds setRoverPosition for --gga auto).
+    if (args.option("port") || args.option("tcp"))
+        return say("ntrip: forwarding corrections to a receiver (--port/--tcp) is not available "
+                   "yet; use --out FILE"),
+               false;
+    const auto caster = args.option("caster");
+    if (!caster ||
+        !link::TcpTransport::parseHostPort(QString::fromStdString(*caster), o.host, o.port))
+        return say("ntrip needs --caster HOST:PORT"), false;
+    o.mount = args.option("mount");
+    o.sourcetable = args.flag("sourcetable");
+    o.nearest = args.flag("nearest");
+    if ((o.mount ? 1 : 0) + (o.sourcetable ? 1 : 0) + (o.nearest ? 1 : 0) != 1)
+        return say("ntrip: give one of --mount M, --sourcetable or --nearest"), false;
+    if (const auto u = args.option("user")) o.user = QString::fromStdString(*u);
+    if (const auto var = args.option("password-env")) {
+        const char *pw = std::getenv(var->c_str());
+        if (!pw) return say("ntrip: environment variable " + *var + " is not set"), false;
+        o.password = QString::fromLocal8Bit(pw);
+    }
+    if (const auto v = args.option("ntrip-version")) {
+        if (*v != "1" && *v != "2") return say("ntrip: --ntrip-version is 1 or 2"), false;
+        o.version = *v == "1" ? ntrip::NtripVersion::V1 : ntrip::NtripVersion::V2;
+    }
+    const std::string gga = args.option("gga").value_or("auto");
+    if (gga != "auto") {
+        o.position = parsePosition(gga);
+        if (!o.position)
+            return say("ntrip: --gga expects auto or LAT,LON,H (degrees, metres), got '" + gga +
+                       "'"),
+                   false;
+    }
+    if (o.nearest && !o.position)
+        return say("ntrip: --nearest needs the rover's position: --gga LAT,LON,H"), false;
+    o.out = args.option("out");
+    if (const auto d = args.option("duration")) {
+        bool ok = false;
+        o.duration = QString::fromStdString(*d).toDouble(&ok);
+        if (!ok || o.duration < 0) return say("ntrip: --duration expects seconds >= 0"), false;
+    }
+    o.quiet = args.flag("quiet");
+    return true;
+}
+
+int receive(const Options &o, const QString &mount, std::optional<bool> wantsGga) {
+    corrections::NtripSettings s;
+    s.host = o.host;
+    s.port = o.port;
+    s.mountpoint = mount;
+    s.user = o.user;
+    s.password = o.password;
+    s.version = o.version;
+    corrections::NtripSource source(s);
+    source.setMountpointWantsGga(wantsGga);
+    if (o.position)
+        source.setRoverPosition(*o.position);
+    else if (wantsGga.value_or(false))
+        say("note: " + mount.toStdString() +
+            " wants the rover's GGA; with --gga auto none is sent until forwarding to a "
+            "receiver gives a fix (use --gga LAT,LON,H)");
+
+    // Where the corrections go. A receiver (--port/--tcp) will be one more sink here.
+    std::vector<std::function<void(const QByteArray &)>> sinks;
+    std::FILE *file = nullptr;
+    if (o.out) {
+        file = std::fopen(o.out->c_str(), "wb");
+        if (!file) return say("cannot write " + *o.out), 1;
+        sinks.push_back([file](const QByteArray &b) {
+            std::fwrite(b.constData(), 1, std::size_t(b.size()), file);
+            std::fflush(file);
+        });
+    }
+    rtcm::RtcmStreamDecoder decoder;
+    const bool json = !o.quiet;
+    sinks.push_back([&decoder, json](const QByteArray &b) {
+        decoder.feed(std::string_view(b.constData(), std::size_t(b.size())),
+                     [json](const rtcm::RtcmMessage &m) {
+                         if (!json) return;
+                         std::string out;
+                         JsonWriter w(out);
+                         rtcm::writeRtcmJson(w, m);
+                         printLine(out);
+                     });
+    });
+    QObject::connect(&source, &corrections::CorrectionSource::dataReceived,
+                     [&sinks](const QByteArray &b) {
+                         for (auto &sink : sinks) sink(b);
+                     });
+    QObject::connect(&source, &corrections::CorrectionSource::stateChanged,
+                     [&source](corrections::CorrectionSource::State st) {
+                         using St = corrections::CorrectionSource::State;
+                         if (st == St::Receiving || st == St::WaitingToRetry)
+                             say(utf8(source.statusText()));
+                         if (st == St::Failed) {
+                             say(utf8(source.statusText()));
+                             QCoreApplication::exit(1);
+                         }
+                     });
+    if (o.duration > 0)
+        QTimer::singleShot(static_cast<int>(o.duration * 1000), [] { QCoreApplication::exit(0); });
+    source.start();
+    int rc = source.state() == corrections::CorrectionSource::State::Failed
+                     ? 1
+                     : QCoreApplication::exec();
+    source.stop();
+    if (file) std::fclose(file);
+    std::string summary;
+    JsonWriter w(summary);
+    rtcm::writeRtcmSummaryJson(w, decoder);
+    std::fprintf(stderr, "%s\n", summary.c_str());
+    if (rc == 0 && source.bytesReceived() == 0) {
+        say("no RTCM received from " + utf8(source.description()) + " in " +
+            std::to_string(static_cast<int>(o.duration)) + " s");
+        rc = 1;
+    }
+    return rc;
+}
+
+} // namespace
+
+int cmdNtrip(const CliContext &, int argc, char **argv) {
+    Args args(argc, argv, 2, {"sourcetable", "nearest", "quiet"});
+    Options o;
+    if (!readOptions(args, o)) return 2;
+    NtripEventLoop loop;
+
+    if (o.mount) return receive(o, QString::fromStdString(*o.mount), std::nullopt);
+
+    corrections::SourceTableQuery q;
+    q.host = o.host;
+    q.port = o.port;
+    q.version = o.version;
+    q.user = o.user;
+    q.password = o.password;
+    const auto table = fetchTable(q);
+    if (!table) return g_stop ? 130 : 1;
+    if (o.sourcetable) {
+        printTable(*table, o.position);
+        return 0;
+    }
+    const ntrip::NearestChoice c =
+            ntrip::nearestMountpoint(*table, o.position->latDeg, o.position->lonDeg);
+    if (!c.entry) {
+        say("no RTCM 3 mountpoint with a position in the source table of " + utf8(o.host) + ":" +
+            std::to_string(o.port));
+        return 1;
+    }
+    char km[32];
+    std::snprintf(km, sizeof km, "%.1f", c.distanceMetres / 1000.0);
+    say("nearest RTCM 3 mountpoint: " + c.entry->mountpoint + " (" + c.entry->identifier + ", " +
+        km + " km)");
+    return receive(o, QString::fromStdString(c.entry->mountpoint), c.entry->wantsGga);
+}
+
+} // namespace gnss::cli

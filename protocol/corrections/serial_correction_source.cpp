@@ -1,0 +1,61 @@
+#include "serial_correction_source.h"
+
+namespace gnss::corrections {
+
+SerialCorrectionSource::SerialCorrectionSource(QString portName, int baud, QObject *parent)
+    : CorrectionSource(parent), portName_(std::move(portName)), baud_(baud) {
+    connect(&port_, &QSerialPort::readyRead, this, [this] {
+        if (closing_) return;
+        const QByteArray bytes = port_.readAll();
+        if (bytes.isEmpty() || state() != State::Receiving) return;
+        if (bytesReceived() == 0) setStatus(tr("Receiving RTCM from %1").arg(description()));
+        deliver(bytes);
+    });
+    connect(&port_, &QSerialPort::errorOccurred, this, [this](QSerialPort::SerialPortError e) {
+        if (closing_ || e == QSerialPort::NoError || e == QSerialPort::TimeoutError || !isActive())
+            return;
+        const QString why = port_.errorString();
+        // A device that went away (unplugged) reports ResourceError: opened again later.
+        failed(tr("%1: %2").arg(description(), why), true);
+    });
+}
+
+SerialCorrectionSource::~SerialCorrectionSource() {
+    closing_ = true;
+    port_.close();
+}
+
+QString SerialCorrectionSource::description() const {
+    return tr("%1 at %2 baud").arg(portName_).arg(baud_);
+}
+
+void SerialCorrectionSource::openConnection() {
+    closeConnection();
+    setConnecting(tr("Opening %1").arg(description()));
+    port_.setPortName(portName_);
+    port_.setBaudRate(baud_);
+    port_.setDataBits(QSerialPort::Data8);
+    port_.setParity(QSerialPort::NoParity);
+    port_.setStopBits(QSerialPort::OneStop);
+    port_.setFlowControl(QSerialPort::NoFlowControl);
+    // Opening a local device does not wait on anything remote: it succeeds or fails at once.
+    closing_ = true; // the error signal of a failed open is reported below, once
+    const bool ok = port_.open(QIODevice::ReadOnly);
+    closing_ = false;
+    if (!ok) return failed(tr("Cannot open %1: %2").arg(description(), port_.errorString()), true);
+    setReceiving(tr("%1 open, waiting for RTCM").arg(description()));
+}
+
+void SerialCorrectionSource::closeConnection() {
+    closing_ = true;
+    if (port_.isOpen()) port_.close();
+    port_.clearError();
+    closing_ = false;
+}
+
+QString SerialCorrectionSource::stallText(bool) const {
+    return tr("No data on %1 for %2 s (is the radio receiving the base?)")
+            .arg(description(), QString::number(stallTimeout() / 1000.0));
+}
+
+} // namespace gnss::corrections

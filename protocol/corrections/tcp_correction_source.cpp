@@ -1,0 +1,52 @@
+#include "tcp_correction_source.h"
+
+namespace gnss::corrections {
+
+TcpCorrectionSource::TcpCorrectionSource(QString host, quint16 port, QObject *parent)
+    : CorrectionSource(parent), host_(std::move(host)), port_(port) {
+    connect(&socket_, &QTcpSocket::connected, this, [this] {
+        if (closing_ || !isActive()) return;
+        setReceiving(tr("Connected to %1, waiting for RTCM").arg(description()));
+    });
+    connect(&socket_, &QTcpSocket::readyRead, this, [this] {
+        if (closing_) return;
+        const QByteArray bytes = socket_.readAll();
+        if (!bytes.isEmpty() && state() == State::Receiving) {
+            if (bytesReceived() == 0) setStatus(tr("Receiving RTCM from %1").arg(description()));
+            deliver(bytes);
+        }
+    });
+    connect(&socket_, &QTcpSocket::disconnected, this, [this] {
+        if (closing_ || !isActive()) return;
+        failed(tr("%1 closed the connection").arg(description()), true);
+    });
+    connect(&socket_, &QTcpSocket::errorOccurred, this, [this](QAbstractSocket::SocketError e) {
+        if (closing_ || !isActive() || e == QAbstractSocket::RemoteHostClosedError) return;
+        failed(describeSocketError(e, description(), host_, socket_.errorString()), true);
+    });
+}
+
+TcpCorrectionSource::~TcpCorrectionSource() {
+    closing_ = true;
+    socket_.abort();
+}
+
+QString TcpCorrectionSource::description() const {
+    return (host_.contains(QLatin1Char(':')) ? QStringLiteral("[%1]:%2") : QStringLiteral("%1:%2"))
+            .arg(host_)
+            .arg(port_);
+}
+
+void TcpCorrectionSource::openConnection() {
+    closeConnection();
+    setConnecting(tr("Connecting to %1").arg(description()));
+    socket_.connectToHost(host_, port_);
+}
+
+void TcpCorrectionSource::closeConnection() {
+    closing_ = true;
+    socket_.abort();
+    closing_ = false;
+}
+
+} // namespace gnss::corrections

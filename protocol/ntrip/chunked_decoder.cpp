@@ -1,0 +1,153 @@
+#include "chunked_decoder.h"
+
+#include <algorithm>
+
+namespace gnss::ntrip {
+
+namespace {
+
+int hexValue(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+// The byte quoted in an error text: printable as itself, anything else as hex.
+std::string quoted(char c) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x21 && u < 0x7F) return std::string("'") + c + "'";
+    static const char hex[] = "0123456789ABCDEF";
+    return std::string("0x") + hex[u >> 4] + hex[u & 15];
+}
+
+} // namespace
+
+void ChunkedDecoder::fail(std::string why, char c) {
+    error_ = std::move(why) + " (got " + quoted(c) + ")";
+    state_ = State::Failed;
+    status_ = Status::Error;
+}
+
+ChunkedDecoder::Status ChunkedDecoder::feed(std::string_view in, std::string &out) {
+    std::size_t i = 0;
+    while (i < in.size()) {
+        const char c = in[i];
+        switch (state_) {
+        case State::SizeStart:
+            if (hexValue(c) < 0) {
+                fail("chunk size is not hexadecimal", c);
+                return status_;
+            }
+            size_ = static_cast<std::uint64_t>(hexValue(c));
+            state_ = State::Size;
+            break;
+        case State::Size:
+            if (hexValue(c) >= 0) {
+                size_ = size_ * 16 + static_cast<std::uint64_t>(hexValue(c));
+                if (size_ >= kMaxChunk) {
+                    fail("chunk size too large", c);
+                    return status_;
+                }
+                break;
+            }
+            [[fallthrough]];
+        case State::SizeSpace:
+            // After the digits: spaces (tolerated), ';' extensions, or the end of the line.
+            if (c == ' ' || c == '\t') {
+                state_ = State::SizeSpace;
+            } else if (c == ';') {
+                state_ = State::Extension;
+                lineLength_ = 0;
+            } else if (c == '\r') {
+                state_ = State::SizeLf;
+            } else if (c == '\n') {
+                state_ = State::SizeLf;
+                continue; // handled as the LF below
+            } else {
+                fail("chunk size line has a stray character", c);
+                return status_;
+            }
+            break;
+        case State::Extension:
+            if (c == '\r' || c == '\n') {
+                state_ = State::SizeLf;
+                if (c == '\n') continue;
+            } else if (++lineLength_ > kMaxLine) {
+                fail("chunk extension too long", c);
+                return status_;
+            }
+            break;
+        case State::SizeLf:
+            if (c != '\n') {
+                fail("chunk size line not ended by CR LF", c);
+                return status_;
+            }
+            if (size_ == 0) {
+                state_ = State::TrailerStart;
+                status_ = Status::Finished;
+            } else {
+                state_ = State::Data;
+                ++chunks_;
+            }
+            break;
+        case State::Data: {
+            const std::size_t n = static_cast<std::size_t>(
+                    std::min<std::uint64_t>(size_, static_cast<std::uint64_t>(in.size() - i)));
+            out.append(in.substr(i, n));
+            decoded_ += n;
+            size_ -= n;
+            i += n;
+            if (size_ == 0) state_ = State::DataCr;
+            continue;
+        }
+        case State::DataCr:
+            if (c == '\r') {
+                state_ = State::DataLf;
+            } else if (c == '\n') {
+                state_ = State::SizeStart;
+            } else {
+                fail("chunk data not followed by CR LF", c);
+                return status_;
+            }
+            break;
+        case State::DataLf:
+            if (c != '\n') {
+                fail("chunk data not followed by CR LF", c);
+                return status_;
+            }
+            state_ = State::SizeStart;
+            break;
+        case State::TrailerStart:
+            // After "0 CR LF": trailer lines, then an empty line. Tolerated as they come; the
+            // body is complete whatever follows.
+            if (c == '\r') {
+                state_ = State::TrailerEndLf;
+            } else if (c == '\n') {
+                state_ = State::Done;
+            } else {
+                state_ = State::Trailer;
+                lineLength_ = 1;
+            }
+            break;
+        case State::Trailer:
+            if (c == '\n') {
+                state_ = State::TrailerStart;
+            } else if (++lineLength_ > kMaxLine) {
+                state_ = State::Done; // not a trailer: the rest is ignored anyway
+                continue;
+            }
+            break;
+        case State::TrailerEndLf:
+            state_ = State::Done;
+            if (c != '\n') continue; // a lone CR: what follows is after the end
+            break;
+        case State::Done: afterEnd_ += in.size() - i; return status_;
+        case State::Failed: return status_;
+        }
+        ++i;
+    }
+    return status_;
+}
+
+} // namespace gnss::ntrip

@@ -1,0 +1,288 @@
+// NtripSource against a real NTRIP 1 caster: Debian's str2str (RTKLIB 2.4.3) as
+//   str2str -in tcpsvr://:IN -out 'ntripc://rover7:s3cret-pw@:PORT/MOUNT:MOUNT;RTCM 3.2;...' -b 1
+// fed by the test (frames pushed into IN) or by gnss-sim --rtcm-base --tcp. What RTKLIB's
+// caster does, found by trying it: "ICY 200 OK" and data, also to an HTTP/1.1 (NTRIP 2)
+// request; a bare "HTTP/1.0 401 Unauthorized" line then close for a wrong password; its source
+// table for an unknown mountpoint; bytes a client sends after the OK (the GGA) are relayed back
+// to the input (-b 1), while bytes sent with the request are lost (so the GGA goes up after the
+// reply). Skipped when str2str is not installed.
+#include "corrections_monitor.h"
+#include "ntrip_source.h"
+#include "rtcm_fixtures.h"
+#include "source_watch.h"
+#include "test_caster.h"
+
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTcpSocket>
+#include <QTest>
+
+using namespace gnss;
+using namespace gnss::corrections;
+using namespace corrections_test;
+using State = CorrectionSource::State;
+
+namespace {
+
+QString str2strPath() {
+    return QStandardPaths::findExecutable(QStringLiteral("str2str"));
+}
+
+QString simPath() {
+#ifdef GNSS_SIM_PATH
+    return QStringLiteral(GNSS_SIM_PATH);
+#else
+    return {};
+#endif
+}
+
+// Whether something accepts connections on 127.0.0.1:port (closed again at once).
+bool accepts(quint16 port) {
+    QTcpSocket s;
+    s.connectToHost(QStringLiteral("127.0.0.1"), port);
+    const bool ok = s.waitForConnected(200);
+    s.abort();
+    return ok;
+}
+
+bool waitUntilAccepting(quint16 port, int ms) {
+    QElapsedTimer t;
+    t.start();
+    while (t.elapsed() < ms) {
+        if (accepts(port)) return true;
+        QTest::qWait(50);
+    }
+    return false;
+}
+
+// str2str as an NTRIP 1 caster on `casterPort`, reading `input` (an RTKLIB stream path).
+struct Str2StrCaster {
+    QProcess proc;
+    quint16 casterPort = 0;
+    bool ok = false;
+    Str2StrCaster(const QString &input, quint16 port) : casterPort(port) {
+        proc.setProcessChannelMode(QProcess::MergedChannels);
+        proc.start(str2strPath(),
+                   {"-in", input, "-out",
+                    QString("ntripc://rover7:s3cret-pw@:%1/MOUNT:MOUNT;RTCM 3.2;1005(10);2;GPS;"
+                            "LOCAL;XXX;0.00;0.00;0;0;sim;none;B;N;9600;")
+                            .arg(port),
+                    "-b", "1"});
+        ok = proc.waitForStarted(5000) && waitUntilAccepting(port, 5000);
+    }
+    ~Str2StrCaster() { stop(); }
+    // str2str clears its stop flag when its main loop begins, so a SIGTERM that arrives while
+    // it is still starting is forgotten: it is sent again until it takes.
+    void stop() {
+        for (int i = 0; i < 15 && proc.state() != QProcess::NotRunning; ++i) {
+            proc.terminate();
+            proc.waitForFinished(200);
+        }
+        if (proc.state() != QProcess::NotRunning) {
+            proc.kill();
+            proc.waitForFinished(3000);
+        }
+    }
+};
+
+// The caster fed by the test: frames pushed into str2str's input port.
+struct FedCaster {
+    quint16 inPort = closedPort();
+    Str2StrCaster caster{QString("tcpsvr://:%1").arg(inPort), closedPort()};
+    QTcpSocket input;
+    QByteArray relayed; // what str2str relays back from the caster's clients (-b 1)
+    bool ok = false;
+    FedCaster() {
+        if (!caster.ok) return;
+        QObject::connect(&input, &QTcpSocket::readyRead, [this] { relayed += input.readAll(); });
+        input.connectToHost(QStringLiteral("127.0.0.1"), inPort);
+        ok = input.waitForConnected(3000);
+    }
+};
+
+NtripSettings settings(quint16 port, int version = 1) {
+    NtripSettings s;
+    s.host = QStringLiteral("127.0.0.1");
+    s.port = port;
+    s.mountpoint = QStringLiteral("MOUNT");
+    s.user = QStringLiteral("rover7");
+    s.password = QStringLiteral("s3cret-pw");
+    s.version = ntrip::NtripVersion(version);
+    return s;
+}
+
+#define REQUIRE_STR2STR()                                                                          \
+    do {                                                                                           \
+        if (str2strPath().isEmpty()) QSKIP("str2str (Debian package rtklib) is not installed");    \
+    } while (0)
+
+} // namespace
+
+class TstNtripStr2str : public QObject {
+    Q_OBJECT
+private slots:
+    void framesPushedIntoTheCasterArriveByteExact() {
+        REQUIRE_STR2STR();
+        FedCaster fed;
+        QVERIFY2(fed.ok, fed.caster.proc.readAll().constData());
+        NtripSource source(settings(fed.caster.casterPort));
+        SourceWatch watch(source);
+        CorrectionsMonitor monitor;
+        connect(&source, &CorrectionSource::dataReceived, [&](const QByteArray &b) {
+            monitor.feed(std::string_view(b.constData(), std::size_t(b.size())), 0);
+        });
+        source.start();
+        QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
+        QVERIFY2(source.statusText().contains("(NTRIP 1 (ICY))"), qPrintable(source.statusText()));
+        QTest::qWait(200); // str2str takes the client on at its next cycle
+        QByteArray sent;
+        for (const QByteArray &epoch : baseEpochs(5)) {
+            fed.input.write(epoch);
+            sent += epoch;
+            QTest::qWait(50);
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(watch.data.size(), sent.size(), 5000);
+        QCOMPARE(watch.data, sent);
+        QCOMPARE(monitor.crcErrors(), std::uint64_t(0));
+        QCOMPARE(monitor.messageType(1074, 0)->count, std::uint64_t(5));
+    }
+
+    void aWrongPasswordIsSaidInWords() {
+        REQUIRE_STR2STR();
+        FedCaster fed;
+        QVERIFY(fed.ok);
+        NtripSettings s = settings(fed.caster.casterPort);
+        s.password = QStringLiteral("not-the-password");
+        NtripSource source(s);
+        SourceWatch watch(source);
+        source.start();
+        QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Failed, 5000);
+        QVERIFY2(watch.errors.value(0).contains(
+                         "refused the user name or password for mountpoint MOUNT (401 "
+                         "Unauthorized, HTTP/1.0 reply)"),
+                 qPrintable(watch.errors.value(0)));
+        QVERIFY(!watch.said("not-the-password"));
+        QVERIFY(!watch.said("rover7"));
+    }
+
+    void anUnknownMountpointIsSaidInWords() {
+        REQUIRE_STR2STR();
+        FedCaster fed;
+        QVERIFY(fed.ok);
+        NtripSettings s = settings(fed.caster.casterPort);
+        s.mountpoint = QStringLiteral("NOPE");
+        NtripSource source(s);
+        SourceWatch watch(source);
+        source.start();
+        QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Failed, 5000);
+        QVERIFY2(watch.errors.value(0).contains("Mountpoint NOPE is not on") &&
+                         watch.errors.value(0).contains("(NTRIP 1 (SOURCETABLE) reply)"),
+                 qPrintable(watch.errors.value(0)));
+    }
+
+    void anNtrip2RequestIsAnsweredInNtrip1AndSaidSo() {
+        REQUIRE_STR2STR();
+        FedCaster fed;
+        QVERIFY(fed.ok);
+        NtripSource source(settings(fed.caster.casterPort, 2));
+        SourceWatch watch(source);
+        source.start();
+        QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
+        QVERIFY2(source.statusText().contains("asked NTRIP 2, the caster answered NTRIP 1 (ICY)"),
+                 qPrintable(source.statusText()));
+        QTest::qWait(200);
+        const QByteArray epoch = baseEpochs(1).first();
+        fed.input.write(epoch);
+        QTRY_COMPARE_WITH_TIMEOUT(watch.data, epoch, 5000); // not chunked: passed as it came
+    }
+
+    void theGgaUploadReachesTheCaster() {
+        REQUIRE_STR2STR();
+        FedCaster fed;
+        QVERIFY(fed.ok);
+        NtripSettings s = settings(fed.caster.casterPort);
+        s.ggaIntervalMs = 300;
+        NtripSource source(s);
+        ntrip::GgaPosition p;
+        p.latDeg = 55.7512;
+        p.lonDeg = 37.6184;
+        p.altitudeMsl = 152;
+        source.setRoverPosition(p);
+        source.start();
+        QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(fed.relayed.count("$GPGGA,") >= 2, 5000);
+        QVERIFY(fed.relayed.contains(",5545.07200,N,03737.10400,E,1,12,1.0,152.000,M,"));
+    }
+
+    void theSourceTableComesFromStr2str() {
+        REQUIRE_STR2STR();
+        FedCaster fed;
+        QVERIFY(fed.ok);
+        NtripSource source(settings(fed.caster.casterPort));
+        QSignalSpy got(&source, &NtripSource::sourceTableReceived);
+        source.fetchSourceTable();
+        QVERIFY(got.wait(5000));
+        const auto table = got.first().first().value<ntrip::SourceTable>();
+        QVERIFY(table.complete);
+        QCOMPARE(int(table.streams.size()), 1);
+        QCOMPARE(table.streams[0].mountpoint, std::string("MOUNT"));
+        QCOMPARE(table.streams[0].format, std::string("RTCM 3.2"));
+    }
+
+    void theCasterGoingAwayAndComingBackIsReconnected() {
+        REQUIRE_STR2STR();
+        const quint16 inPort = closedPort(), port = closedPort();
+        auto caster = std::make_unique<Str2StrCaster>(QString("tcpsvr://:%1").arg(inPort), port);
+        QVERIFY(caster->ok);
+        NtripSource source(settings(port));
+        source.setReconnectSettings({200, 800, 60000});
+        SourceWatch watch(source);
+        source.start();
+        QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
+        caster.reset(); // the caster stops mid-stream
+        QTRY_VERIFY_WITH_TIMEOUT(watch.errors.size() >= 2, 5000);
+        QVERIFY2(watch.errors[0].contains("closed the connection mid-stream"),
+                 qPrintable(watch.errors[0]));
+        QVERIFY2(watch.errors[1].contains("refused the connection"), qPrintable(watch.errors[1]));
+        caster = std::make_unique<Str2StrCaster>(QString("tcpsvr://:%1").arg(inPort), port);
+        QVERIFY(caster->ok);
+        QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
+        QTcpSocket input;
+        input.connectToHost(QStringLiteral("127.0.0.1"), inPort);
+        QVERIFY(input.waitForConnected(3000));
+        QTest::qWait(200);
+        const QByteArray epoch = baseEpochs(1).first();
+        input.write(epoch);
+        QTRY_COMPARE_WITH_TIMEOUT(watch.data, epoch, 5000);
+    }
+
+    void gnssSimBaseThroughStr2str() {
+        REQUIRE_STR2STR();
+        if (simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        const quint16 simPort = closedPort();
+        QProcess sim;
+        sim.start(simPath(), {"--rtcm-base", "--tcp", QString::number(simPort)});
+        QVERIFY(sim.waitForReadyRead(5000)); // it prints its address once listening
+        Str2StrCaster caster(QString("tcpcli://127.0.0.1:%1").arg(simPort), closedPort());
+        QVERIFY(caster.ok);
+        NtripSource source(settings(caster.casterPort));
+        CorrectionsMonitor monitor;
+        connect(&source, &CorrectionSource::dataReceived, [&](const QByteArray &b) {
+            monitor.feed(std::string_view(b.constData(), std::size_t(b.size())), 0);
+        });
+        source.start();
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.messageType(1074, 0).has_value() &&
+                                         monitor.messageType(1084, 0).has_value() &&
+                                         monitor.messageType(1005, 0).has_value(),
+                                 8000);
+        QCOMPARE(monitor.crcErrors(), std::uint64_t(0));
+        QCOMPARE(monitor.decodeErrors(), std::uint64_t(0));
+        sim.terminate();
+        sim.waitForFinished(3000);
+    }
+};
+
+QTEST_GUILESS_MAIN(TstNtripStr2str)
+#include "tst_ntrip_str2str.moc"
