@@ -262,12 +262,8 @@ int applyValues(SettingsEngine &engine, const std::function<bool()> &start) {
 
 } // namespace
 
-int cmdConfig(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!args.error().empty()) {
-        say(QString::fromStdString(args.error()));
-        return 2;
-    }
+int cmdConfig(const CliContext &ctx) {
+    const Args &args = ctx.args;
     const auto &pos = args.positionals();
     if (pos.empty()) {
         say(QObject::tr("config needs an action: get, set, export, apply, diff or action"));

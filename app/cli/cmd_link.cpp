@@ -67,14 +67,6 @@ std::string utf8(const QString &s) {
     return s.toStdString();
 }
 
-bool parseArgs(Args &args) {
-    if (!args.error().empty()) {
-        std::fprintf(stderr, "gnss-cli: %s\n", args.error().c_str());
-        return false;
-    }
-    return true;
-}
-
 bool numberOption(const Args &args, const char *name, double &out) {
     const auto v = args.option(name);
     if (!v) return true;
@@ -150,8 +142,8 @@ void reportLinkEvents(link::Connection &conn, const char *note) {
                      (retryMs + 500) / 1000, note);
     });
     QObject::connect(&conn, &link::Connection::linkLost, [note](const QString &why, int retryMs) {
-        std::fprintf(stderr, "gnss-cli: link lost: %s; trying again in %d s%s\n",
-                     utf8(why).c_str(), (retryMs + 500) / 1000, note);
+        std::fprintf(stderr, "gnss-cli: link lost: %s; trying again in %d s%s\n", utf8(why).c_str(),
+                     (retryMs + 500) / 1000, note);
     });
     QObject::connect(&conn, &link::Connection::linkRestored, [](const QString &what) {
         std::fprintf(stderr, "gnss-cli: link back: %s\n", utf8(what).c_str());
@@ -178,9 +170,7 @@ void writeBaudTries(JsonWriter &w, const link::BaudDetection &d) {
 
 } // namespace
 
-int cmdPorts(const CliContext &, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!parseArgs(args)) return 2;
+int cmdPorts(const CliContext &) {
     EventLoop loop;
     for (const link::PortInfo &p : link::systemPorts()) {
         std::string out;
@@ -198,9 +188,8 @@ int cmdPorts(const CliContext &, int argc, char **argv) {
     return 0;
 }
 
-int cmdProbe(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!parseArgs(args)) return 2;
+int cmdProbe(const CliContext &ctx) {
+    const Args &args = ctx.args;
     int baud = 0;
     if (!baudOption(args, baud)) return 2;
     if (!args.option("port")) {
@@ -253,9 +242,8 @@ int cmdProbe(const CliContext &ctx, int argc, char **argv) {
     return rc == 0 ? 0 : 1;
 }
 
-int cmdMonitor(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {"epochs", "lenient", "fast"});
-    if (!parseArgs(args)) return 2;
+int cmdMonitor(const CliContext &ctx) {
+    const Args &args = ctx.args;
     int baud = 0;
     double duration = 0;
     if (!baudOption(args, baud) || !numberOption(args, "duration", duration)) return 2;
@@ -305,9 +293,8 @@ int cmdMonitor(const CliContext &ctx, int argc, char **argv) {
     return rc == 130 ? 0 : rc;
 }
 
-int cmdRecord(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!parseArgs(args)) return 2;
+int cmdRecord(const CliContext &ctx) {
+    const Args &args = ctx.args;
     int baud = 0;
     double duration = 0;
     if (!baudOption(args, baud) || !numberOption(args, "duration", duration)) return 2;
@@ -338,9 +325,8 @@ int cmdRecord(const CliContext &ctx, int argc, char **argv) {
     return rc == 130 ? 0 : rc;
 }
 
-int cmdSend(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!parseArgs(args)) return 2;
+int cmdSend(const CliContext &ctx) {
+    const Args &args = ctx.args;
     int baud = 0;
     double timeout = -1;
     if (!baudOption(args, baud)) return 2;
