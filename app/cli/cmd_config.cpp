@@ -126,6 +126,7 @@ bool reportRead(const OperationReport &r) {
 struct Link {
     std::unique_ptr<link::Transport> transport;
     const Dialect *dialect = nullptr;
+    bool usageError = false; // no transport because the options were wrong (exit 2, not 1)
 };
 
 // Opens --port or --sim, finds the speed and the dialect; nullptr transport with a message.
@@ -135,7 +136,8 @@ Link openLink(const CliContext &ctx, const Args &args) {
     const auto sim = args.option("sim");
     if ((port ? 1 : 0) + (sim ? 1 : 0) != 1) {
         say(QObject::tr("config needs one of --port P or --sim DIALECT"));
-        return {};
+        l.usageError = true;
+        return l;
     }
     int baud = 0;
     if (const auto b = args.option("baud")) {
@@ -143,7 +145,8 @@ Link openLink(const CliContext &ctx, const Args &args) {
         if (baud < 300 || baud > 4000000) {
             say(QObject::tr("--baud expects a speed such as 9600 or 115200, got '%1'")
                         .arg(QString::fromStdString(*b)));
-            return {};
+            l.usageError = true;
+            return l;
         }
     }
     const std::string dialectId = args.option("dialect").value_or(sim ? *sim : "auto");
@@ -151,7 +154,8 @@ Link openLink(const CliContext &ctx, const Args &args) {
         l.dialect = ctx.registry.find(dialectId);
         if (!l.dialect) {
             say(QObject::tr("unknown dialect '%1'").arg(QString::fromStdString(dialectId)));
-            return {};
+            l.usageError = true;
+            return l;
         }
     }
     if (sim) {
@@ -306,7 +310,7 @@ int cmdConfig(const CliContext &ctx) {
     char *qargv[] = {name, nullptr};
     QCoreApplication app(qargc, qargv);
     Link l = openLink(ctx, args);
-    if (!l.transport) return 1;
+    if (!l.transport) return l.usageError ? 2 : 1;
     link::CommandQueue queue(l.transport.get());
     queue.setDialect(l.dialect);
     SettingsEngine engine;

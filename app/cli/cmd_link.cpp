@@ -26,13 +26,14 @@
 namespace gnss::cli {
 namespace {
 
-volatile std::sig_atomic_t g_stop = 0;
-void onSignal(int) {
-    g_stop = 1;
+volatile std::sig_atomic_t g_stop = 0; // the signal that asked to stop
+void onSignal(int signal) {
+    g_stop = signal;
 }
 
 // The QCoreApplication these commands need, plus Ctrl-C/SIGTERM ending the event loop (so
-// recordings are flushed and closed, not cut).
+// recordings are flushed and closed, not cut) with the status a shell gives a program the signal
+// killed: 128 + its number (130 for Ctrl-C), so scripts can tell an interruption from an end.
 struct EventLoop {
     int argc = 1;
     char name[9] = "gnss-cli";
@@ -44,7 +45,7 @@ struct EventLoop {
         std::signal(SIGINT, onSignal);
         std::signal(SIGTERM, onSignal);
         QObject::connect(&signalPoll, &QTimer::timeout, [] {
-            if (g_stop) QCoreApplication::exit(130);
+            if (g_stop) QCoreApplication::exit(128 + g_stop);
         });
         signalPoll.start(100);
     }
@@ -239,7 +240,7 @@ int cmdProbe(const CliContext &ctx) {
     w.endObject();
     printLine(out);
     if (rc != 0 && !error.isEmpty()) std::fprintf(stderr, "gnss-cli: %s\n", utf8(error).c_str());
-    return rc == 0 ? 0 : 1;
+    return rc == 0 || rc > 128 ? rc : 1;
 }
 
 int cmdMonitor(const CliContext &ctx) {
@@ -290,7 +291,7 @@ int cmdMonitor(const CliContext &ctx) {
     loop.stopAfter(duration);
     const int rc = loop.exec();
     if (epochs) assembler.flush(onEpoch);
-    return rc == 130 ? 0 : rc;
+    return rc;
 }
 
 int cmdRecord(const CliContext &ctx) {
@@ -322,7 +323,7 @@ int cmdRecord(const CliContext &ctx) {
     std::fprintf(stderr, "gnss-cli: recorded %lld bytes to %s (index: %s)\n",
                  static_cast<long long>(conn.bytesReceived()), outPath->c_str(),
                  utf8(link::indexPathFor(QString::fromStdString(*outPath))).c_str());
-    return rc == 130 ? 0 : rc;
+    return rc;
 }
 
 int cmdSend(const CliContext &ctx) {
