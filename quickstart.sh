@@ -21,6 +21,17 @@ packages=(
   # Qt6Gui's CMake config looks for OpenGL headers (WrapOpenGL).
   libgl-dev
   libbenchmark-dev fonts-dejavu-core
+  # The Debian package (cpack -G DEB) and its test (tests/package, ctest -L package):
+  # dpkg-shlibdeps computes its Depends, dpkg-parsechangelog reads its changelog;
+  dpkg-dev
+  # appstreamcli validates the AppStream metainfo;
+  appstream
+  # desktop-file-validate checks the desktop entry;
+  desktop-file-utils
+  # lintian checks the .deb as Debian does;
+  lintian
+  # man --warnings checks that the manual pages format cleanly.
+  man-db
 )
 
 missing=()
