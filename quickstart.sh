@@ -25,6 +25,17 @@ packages=(
   xvfb xauth
   # str2str (RTKLIB) is the real NTRIP 1 caster the corrections tests talk to.
   rtklib
+  # The Debian package (cpack -G DEB) and its test (tests/package, ctest -L package):
+  # dpkg-shlibdeps computes its Depends, dpkg-parsechangelog reads its changelog;
+  dpkg-dev
+  # appstreamcli validates the AppStream metainfo;
+  appstream
+  # desktop-file-validate checks the desktop entry;
+  desktop-file-utils
+  # lintian checks the .deb as Debian does;
+  lintian
+  # man --warnings checks that the manual pages format cleanly.
+  man-db
 )
 
 missing=()

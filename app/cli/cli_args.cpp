@@ -4,32 +4,67 @@
 
 namespace gnss::cli {
 
-Args::Args(int argc, char **argv, int first, std::vector<std::string_view> flags) {
+Args::Args(int argc, char **argv, int first, std::span<const OptionSpec> known) {
+    auto find = [&](std::string_view name) -> const OptionSpec * {
+        for (const OptionSpec &o : known)
+            if (o.name == name) return &o;
+        return nullptr;
+    };
+    bool optionsEnded = false;
     for (int i = first; i < argc; ++i) {
-        std::string_view a = argv[i];
-        if (a.size() > 2 && a.substr(0, 2) == "--") {
-            std::string name(a.substr(2));
-            std::string value;
-            const auto eq = name.find('=');
-            if (eq != std::string::npos) {
-                value = name.substr(eq + 1);
-                name.resize(eq);
-                options_.emplace_back(name, value);
-                continue;
-            }
-            if (std::find(flags.begin(), flags.end(), name) != flags.end()) {
+        const std::string_view a = argv[i];
+        if (optionsEnded || a == "-" || !a.starts_with('-')) {
+            positionals_.emplace_back(a);
+            continue;
+        }
+        if (a == "--") {
+            optionsEnded = true;
+            continue;
+        }
+        if (a == "-h") {
+            help_ = true;
+            continue;
+        }
+        if (!a.starts_with("--")) { // no short options besides -h: "-x" is a typo, not a file
+            fail("unknown option " + std::string(a));
+            continue;
+        }
+        std::string name(a.substr(2));
+        std::optional<std::string> inlineValue;
+        if (const auto eq = name.find('='); eq != std::string::npos) {
+            inlineValue = name.substr(eq + 1);
+            name.resize(eq);
+        }
+        if (name == "help" || name == "version") {
+            if (inlineValue) fail("option --" + name + " takes no value");
+            (name == "help" ? help_ : version_) = true;
+            continue;
+        }
+        const OptionSpec *spec = find(name);
+        if (!spec) {
+            fail("unknown option --" + name);
+            continue;
+        }
+        if (spec->value.empty()) {
+            if (inlineValue)
+                fail("option --" + name + " takes no value");
+            else
                 flags_.push_back(name);
-                continue;
-            }
-            if (i + 1 >= argc) {
-                error_ = "option --" + name + " needs a value";
-                return;
-            }
+            continue;
+        }
+        if (inlineValue) {
+            options_.emplace_back(name, *inlineValue);
+        } else if (i + 1 < argc && !std::string_view(argv[i + 1]).starts_with("--")) {
             options_.emplace_back(name, argv[++i]);
         } else {
-            positionals_.emplace_back(a);
+            fail("option --" + name + " needs a value (--" + name + " " + std::string(spec->value) +
+                 ")");
         }
     }
+}
+
+void Args::fail(std::string message) {
+    if (error_.empty()) error_ = std::move(message);
 }
 
 bool Args::flag(std::string_view name) const {

@@ -1,6 +1,7 @@
 #pragma once
-// gnss-cli subcommands. Each is a function from arguments to an exit code; main() holds the
-// table that names them.
+// gnss-cli subcommands. Each is a function from its parsed arguments to an exit code;
+// command_table.cpp names them, with the options each takes and its help.
+#include "cli_args.h"
 #include "dialects.h"
 
 #include <string_view>
@@ -13,26 +14,27 @@ namespace gnss::cli {
 
 struct CliContext {
     const DialectRegistry &registry;
+    const Args &args; // parsed against the command's options; no error, no --help
     // The sources the link commands can open (serial, TCP, replay, the simulator).
     const link::TransportFactory *transports = nullptr;
 };
 
-int cmdDecode(const CliContext &ctx, int argc, char **argv);
-int cmdEpochs(const CliContext &ctx, int argc, char **argv);
-int cmdStats(const CliContext &ctx, int argc, char **argv);
-int cmdSchema(const CliContext &ctx, int argc, char **argv);
-int cmdEncode(const CliContext &ctx, int argc, char **argv);
+int cmdDecode(const CliContext &ctx);
+int cmdEpochs(const CliContext &ctx);
+int cmdStats(const CliContext &ctx);
+int cmdSchema(const CliContext &ctx);
+int cmdEncode(const CliContext &ctx);
 // Link commands (cmd_link.cpp): live receivers over serial/TCP, replay, recording.
-int cmdPorts(const CliContext &ctx, int argc, char **argv);
-int cmdProbe(const CliContext &ctx, int argc, char **argv);
-int cmdMonitor(const CliContext &ctx, int argc, char **argv);
-int cmdRecord(const CliContext &ctx, int argc, char **argv);
-int cmdSend(const CliContext &ctx, int argc, char **argv);
+int cmdPorts(const CliContext &ctx);
+int cmdProbe(const CliContext &ctx);
+int cmdMonitor(const CliContext &ctx);
+int cmdRecord(const CliContext &ctx);
+int cmdSend(const CliContext &ctx);
 // Receiver settings (cmd_config.cpp): get, set, export, apply, diff.
-int cmdConfig(const CliContext &ctx, int argc, char **argv);
+int cmdConfig(const CliContext &ctx);
 // RTCM 3 streams (cmd_rtcm.cpp): one JSON object per message, counts on standard error.
-int cmdRtcm(const CliContext &ctx, int argc, char **argv);
+int cmdRtcm(const CliContext &ctx);
 // NTRIP casters (cmd_ntrip.cpp): the source table, or a mountpoint's RTCM as JSON and/or a file.
-int cmdNtrip(const CliContext &ctx, int argc, char **argv);
+int cmdNtrip(const CliContext &ctx);
 
 } // namespace gnss::cli

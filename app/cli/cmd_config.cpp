@@ -123,6 +123,7 @@ bool reportRead(const OperationReport &r) {
 struct Link {
     std::unique_ptr<link::Connection> connection;
     const Dialect *dialect = nullptr;
+    bool usageError = false; // no link because the options were wrong (exit 2, not 1)
 };
 
 // Opens the source (any the application knows), finds the speed and the dialect; an empty Link
@@ -136,7 +137,8 @@ Link openLink(const CliContext &ctx, const Args &args) {
                                      error);
     if (!spec) {
         say(QString::fromStdString(error));
-        return {};
+        l.usageError = true;
+        return l;
     }
     const std::string dialectId = args.option("dialect").value_or(
             spec->kind == link::SourceSpec::Kind::Simulator ? spec->name.toStdString() : "auto");
@@ -144,7 +146,8 @@ Link openLink(const CliContext &ctx, const Args &args) {
         l.dialect = ctx.registry.find(dialectId);
         if (!l.dialect) {
             say(QObject::tr("unknown dialect '%1'").arg(QString::fromStdString(dialectId)));
-            return {};
+            l.usageError = true;
+            return l;
         }
     }
     OpenOptions o;
@@ -229,12 +232,8 @@ int applyValues(SettingsEngine &engine, const std::function<bool()> &start) {
 
 } // namespace
 
-int cmdConfig(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!args.error().empty()) {
-        say(QString::fromStdString(args.error()));
-        return 2;
-    }
+int cmdConfig(const CliContext &ctx) {
+    const Args &args = ctx.args;
     const auto &pos = args.positionals();
     if (pos.empty()) {
         say(QObject::tr("config needs an action: get, set, export, apply, diff or action"));
@@ -277,7 +276,7 @@ int cmdConfig(const CliContext &ctx, int argc, char **argv) {
     char *qargv[] = {name, nullptr};
     QCoreApplication app(qargc, qargv);
     Link l = openLink(ctx, args);
-    if (!l.connection) return 1;
+    if (!l.connection) return l.usageError ? 2 : 1;
     l.connection->commands()->setDialect(l.dialect);
     SettingsEngine engine;
     engine.attach(l.connection.get(), l.dialect);

@@ -42,12 +42,8 @@ struct CommonOptions {
     bool json = false;
 };
 
-bool parseCommon(const CliContext &ctx, int argc, char **argv, CommonOptions &out) {
-    Args args(argc, argv, 2, {"lenient", "json"});
-    if (!args.error().empty()) {
-        std::fprintf(stderr, "gnss-cli: %s\n", args.error().c_str());
-        return false;
-    }
+bool parseCommon(const CliContext &ctx, CommonOptions &out) {
+    const Args &args = ctx.args;
     out.decoder.dialect = args.option("dialect").value_or("auto");
     if (out.decoder.dialect != "auto" && !ctx.registry.find(out.decoder.dialect)) {
         std::string known;
@@ -99,9 +95,9 @@ bool run(const CommonOptions &opt, StreamDecoder &dec, StreamDecoder::Handler ha
 
 } // namespace
 
-int cmdDecode(const CliContext &ctx, int argc, char **argv) {
+int cmdDecode(const CliContext &ctx) {
     CommonOptions opt;
-    if (!parseCommon(ctx, argc, argv, opt)) return 2;
+    if (!parseCommon(ctx, opt)) return 2;
     StreamDecoder dec(ctx.registry, opt.decoder);
     Output out;
     const bool ok = run(opt, dec, [&](const SentenceEvent &ev) {
@@ -112,9 +108,9 @@ int cmdDecode(const CliContext &ctx, int argc, char **argv) {
     return ok ? 0 : 1;
 }
 
-int cmdEpochs(const CliContext &ctx, int argc, char **argv) {
+int cmdEpochs(const CliContext &ctx) {
     CommonOptions opt;
-    if (!parseCommon(ctx, argc, argv, opt)) return 2;
+    if (!parseCommon(ctx, opt)) return 2;
     StreamDecoder dec(ctx.registry, opt.decoder);
     EpochAssembler assembler(dec.dialect());
     Output out;
@@ -132,11 +128,11 @@ int cmdEpochs(const CliContext &ctx, int argc, char **argv) {
     return ok ? 0 : 1;
 }
 
-int cmdStats(const CliContext &ctx, int argc, char **argv) {
+int cmdStats(const CliContext &ctx) {
     CommonOptions opt;
-    if (!parseCommon(ctx, argc, argv, opt)) return 2;
+    if (!parseCommon(ctx, opt)) return 2;
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    if (const auto t = Args(argc, argv, 2, {"lenient", "json"}).option("threads")) {
+    if (const auto t = ctx.args.option("threads")) {
         threads = static_cast<unsigned>(std::strtoul(t->c_str(), nullptr, 10));
         if (threads == 0 || threads > 64) {
             std::fprintf(stderr, "gnss-cli: --threads takes 1 to 64\n");

@@ -26,13 +26,14 @@
 namespace gnss::cli {
 namespace {
 
-volatile std::sig_atomic_t g_stop = 0;
-void onSignal(int) {
-    g_stop = 1;
+volatile std::sig_atomic_t g_stop = 0; // the signal that asked to stop
+void onSignal(int signal) {
+    g_stop = signal;
 }
 
 // The QCoreApplication these commands need, plus Ctrl-C/SIGTERM ending the event loop (so
-// recordings are flushed and closed, not cut).
+// recordings are flushed and closed, not cut) with the status a shell gives a program the signal
+// killed: 128 + its number (130 for Ctrl-C), so scripts can tell an interruption from an end.
 struct EventLoop {
     int argc = 1;
     char name[9] = "gnss-cli";
@@ -44,7 +45,7 @@ struct EventLoop {
         std::signal(SIGINT, onSignal);
         std::signal(SIGTERM, onSignal);
         QObject::connect(&signalPoll, &QTimer::timeout, [] {
-            if (g_stop) QCoreApplication::exit(130);
+            if (g_stop) QCoreApplication::exit(128 + g_stop);
         });
         signalPoll.start(100);
     }
@@ -65,14 +66,6 @@ void printLine(const std::string &s) {
 
 std::string utf8(const QString &s) {
     return s.toStdString();
-}
-
-bool parseArgs(Args &args) {
-    if (!args.error().empty()) {
-        std::fprintf(stderr, "gnss-cli: %s\n", args.error().c_str());
-        return false;
-    }
-    return true;
 }
 
 bool numberOption(const Args &args, const char *name, double &out) {
@@ -144,9 +137,7 @@ void writeBaudTries(JsonWriter &w, const link::BaudDetection &d) {
 
 } // namespace
 
-int cmdPorts(const CliContext &, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!parseArgs(args)) return 2;
+int cmdPorts(const CliContext &) {
     EventLoop loop;
     for (const link::PortInfo &p : link::systemPorts()) {
         std::string out;
@@ -164,9 +155,8 @@ int cmdPorts(const CliContext &, int argc, char **argv) {
     return 0;
 }
 
-int cmdProbe(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!parseArgs(args)) return 2;
+int cmdProbe(const CliContext &ctx) {
+    const Args &args = ctx.args;
     EventLoop loop;
     link::BaudDetection found;
     OpenOptions o;
@@ -211,12 +201,12 @@ int cmdProbe(const CliContext &ctx, int argc, char **argv) {
     w.endObject();
     printLine(out);
     if (rc != 0 && !error.isEmpty()) std::fprintf(stderr, "gnss-cli: %s\n", utf8(error).c_str());
+    if (rc > 128) return rc; // interrupted
     return conn && rc == 0 ? 0 : 1;
 }
 
-int cmdMonitor(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {"epochs", "lenient", "fast"});
-    if (!parseArgs(args)) return 2;
+int cmdMonitor(const CliContext &ctx) {
+    const Args &args = ctx.args;
     double duration = 0;
     if (!numberOption(args, "duration", duration)) return 2;
     OpenOptions o;
@@ -262,12 +252,11 @@ int cmdMonitor(const CliContext &ctx, int argc, char **argv) {
     loop.stopAfter(duration);
     rc = loop.exec();
     if (epochs) assembler.flush(onEpoch);
-    return rc == 130 ? 0 : rc;
+    return rc;
 }
 
-int cmdRecord(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!parseArgs(args)) return 2;
+int cmdRecord(const CliContext &ctx) {
+    const Args &args = ctx.args;
     double duration = 0;
     if (!numberOption(args, "duration", duration)) return 2;
     const auto outPath = args.option("out");
@@ -292,12 +281,11 @@ int cmdRecord(const CliContext &ctx, int argc, char **argv) {
     std::fprintf(stderr, "gnss-cli: recorded %lld bytes to %s (index: %s)\n",
                  static_cast<long long>(conn->bytesReceived()), outPath->c_str(),
                  utf8(link::indexPathFor(QString::fromStdString(*outPath))).c_str());
-    return rc == 130 ? 0 : rc;
+    return rc;
 }
 
-int cmdSend(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    if (!parseArgs(args)) return 2;
+int cmdSend(const CliContext &ctx) {
+    const Args &args = ctx.args;
     double timeout = -1;
     if (args.option("timeout") && !numberOption(args, "timeout", timeout)) return 2;
     if (args.positionals().empty()) {

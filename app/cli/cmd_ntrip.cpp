@@ -327,8 +327,8 @@ int receive(const Options &o, const QString &mount, std::optional<bool> wantsGga
 
 } // namespace
 
-int cmdNtrip(const CliContext &, int argc, char **argv) {
-    Args args(argc, argv, 2, {"sourcetable", "nearest", "quiet"});
+int cmdNtrip(const CliContext &ctx) {
+    const Args &args = ctx.args;
     Options o;
     if (!readOptions(args, o)) return 2;
     NtripEventLoop loop;

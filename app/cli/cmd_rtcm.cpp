@@ -12,16 +12,8 @@
 
 namespace gnss::cli {
 
-int cmdRtcm(const CliContext &, int argc, char **argv) {
-    std::vector<std::string> files;
-    for (int i = 2; i < argc; ++i) {
-        const std::string_view a = argv[i];
-        if (a.size() > 2 && a.substr(0, 2) == "--") { // none yet: say so rather than ignore it
-            std::fprintf(stderr, "gnss-cli: rtcm takes no options (got %s)\n", argv[i]);
-            return 2;
-        }
-        files.emplace_back(a);
-    }
+int cmdRtcm(const CliContext &ctx) {
+    const std::vector<std::string> &files = ctx.args.positionals();
     if (files.size() > 1) {
         std::fprintf(stderr, "gnss-cli: one input file at most (or - for standard input)\n");
         return 2;

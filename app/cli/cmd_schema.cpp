@@ -43,9 +43,8 @@ void writeSetting(JsonWriter &w, const SettingDef &s) {
 
 } // namespace
 
-int cmdSchema(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {});
-    const Dialect *d = dialectArg(ctx, args.positionals());
+int cmdSchema(const CliContext &ctx) {
+    const Dialect *d = dialectArg(ctx, ctx.args.positionals());
     if (!d) return 2;
     std::string out;
     JsonWriter w(out);
@@ -57,12 +56,8 @@ int cmdSchema(const CliContext &ctx, int argc, char **argv) {
     return 0;
 }
 
-int cmdEncode(const CliContext &ctx, int argc, char **argv) {
-    Args args(argc, argv, 2, {"query"});
-    if (!args.error().empty()) {
-        std::fprintf(stderr, "gnss-cli: %s\n", args.error().c_str());
-        return 2;
-    }
+int cmdEncode(const CliContext &ctx) {
+    const Args &args = ctx.args;
     const Dialect *d = dialectArg(ctx, args.positionals());
     if (!d) return 2;
     if (const auto prefix = args.option("prefix")) {

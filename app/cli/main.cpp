@@ -1,73 +1,90 @@
-// gnss-cli: headless GNSS Workbench. See docs/cli.md.
+// gnss-cli: headless GNSS Workbench. See docs/cli.md; the commands are in command_table.cpp.
 #include "app_transports.h"
-#include "cli_commands.h"
+#include "command_table.h"
 
 #include <cstdio>
-#include <cstring>
+#include <string>
 #include <string_view>
 
 namespace {
 
-struct Command {
-    std::string_view name;
-    int (*run)(const gnss::cli::CliContext &, int, char **);
-    std::string_view synopsis;
-};
+constexpr int kExitUsage = 2;
 
-constexpr Command kCommands[] = {
-        {"decode", gnss::cli::cmdDecode,
-         "decode [--dialect D] [--lenient] [FILE|-]   one JSON object per sentence"},
-        {"epochs", gnss::cli::cmdEpochs,
-         "epochs [--dialect D] [--lenient] [FILE|-]   one JSON object per navigation epoch"},
-        {"stats", gnss::cli::cmdStats,
-         "stats [--dialect D] [--lenient] [--json] [FILE|-]   vet a log: counts per address"},
-        {"schema", gnss::cli::cmdSchema, "schema DIALECT   the dialect's settings schema as JSON"},
-        {"encode", gnss::cli::cmdEncode,
-         "encode DIALECT KEY=VALUE... | encode DIALECT --query KEY...   sentences to send"},
-        {"ports", gnss::cli::cmdPorts, "ports   serial ports, one JSON object each"},
-        {"probe", gnss::cli::cmdProbe,
-         "probe --port P [--baud B]   detect baud, dialect, model and firmware (JSON)"},
-        {"monitor", gnss::cli::cmdMonitor,
-         "monitor --port P|--tcp H:P|--replay FILE [--epochs] [--duration S]   live decode"},
-        {"record", gnss::cli::cmdRecord,
-         "record --port P|--tcp H:P --out FILE [--duration S]   FILE + FILE.idx"},
-        {"send", gnss::cli::cmdSend,
-         "send --port P|--tcp H:P [--baud B] SENTENCE...   replies and outcome per command"},
-        {"config", gnss::cli::cmdConfig,
-         "config --port P [--baud B] | --sim D  get [KEY...] | set KEY=VALUE... | export FILE | "
-         "apply FILE | diff FILE | action save|defaults|cold|warm|hot"},
-        {"rtcm", gnss::cli::cmdRtcm,
-         "rtcm [FILE|-]   one JSON object per RTCM 3 message; counts on stderr"},
-        {"ntrip", gnss::cli::cmdNtrip,
-         "ntrip --caster H:P --mount M|--sourcetable|--nearest [--user U] [--password-env VAR]\n"
-         "        [--ntrip-version 1|2] [--gga auto|LAT,LON,H] [--out FILE] [--duration S] "
-         "[--quiet]"},
-};
+void print(std::FILE *f, const std::string &text) {
+    std::fwrite(text.data(), 1, text.size(), f);
+}
 
-void usage(std::FILE *f) {
-    std::fprintf(f, "usage: gnss-cli COMMAND [OPTIONS]\n\ncommands:\n");
-    for (const auto &c : kCommands)
-        std::fprintf(f, "  %.*s\n", static_cast<int>(c.synopsis.size()), c.synopsis.data());
-    std::fprintf(
-            f,
-            "\nD: auto (default), nvs, geostar, nemerix, nmea\n"
-            "--alias NEW=PNMRX reads a renamed prefix; with --dialect nemerix, --prefix NEW reads\n"
-            "and (encode) writes it. See docs/cli.md.\n");
+int version() {
+    std::printf("gnss-cli %s\n", GNSS_VERSION);
+    return 0;
+}
+
+int usageError(const std::string &message, std::string_view command = {}) {
+    std::fprintf(stderr, "gnss-cli: %s\n", message.c_str());
+    if (command.empty())
+        std::fprintf(stderr, "Try 'gnss-cli --help'.\n");
+    else
+        std::fprintf(stderr, "Try 'gnss-cli help %.*s'.\n", static_cast<int>(command.size()),
+                     command.data());
+    return kExitUsage;
+}
+
+std::string commandNames() {
+    std::string names;
+    for (const auto &c : gnss::cli::commandTable()) {
+        if (!names.empty()) names += ", ";
+        names += c.name;
+    }
+    return names;
+}
+
+// gnss-cli help [COMMAND]
+int help(int argc, char **argv) {
+    if (argc == 2) {
+        print(stdout, gnss::cli::overviewHelp());
+        return 0;
+    }
+    if (argc > 3) return usageError("help takes one command");
+    if (const auto *c = gnss::cli::findCommand(argv[2])) {
+        print(stdout, gnss::cli::commandHelp(*c));
+        return 0;
+    }
+    return usageError(std::string("no command '") + argv[2] + "' (commands: " + commandNames() +
+                      ")");
 }
 
 } // namespace
 
 int main(int argc, char **argv) {
-    if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
-        usage(argc < 2 ? stderr : stdout);
-        return argc < 2 ? 2 : 0;
+    if (argc < 2) {
+        print(stderr, gnss::cli::overviewHelp());
+        return kExitUsage;
     }
+    const std::string_view first = argv[1];
+    if (first == "--help" || first == "-h") {
+        print(stdout, gnss::cli::overviewHelp());
+        return 0;
+    }
+    if (first == "--version") return version();
+    if (first == "help") return help(argc, argv);
+    const gnss::cli::CommandSpec *command = gnss::cli::findCommand(first);
+    if (!command) {
+        if (first.starts_with('-'))
+            return usageError("unknown option " + std::string(first) +
+                              " (a command comes first: " + commandNames() + ")");
+        return usageError("unknown command '" + std::string(first) +
+                          "' (commands: " + commandNames() + ")");
+    }
+    const gnss::cli::Args args(argc, argv, 2, command->options);
+    // --help and --version win over anything else wrong on the line: they are how one finds out.
+    if (args.helpAsked()) {
+        print(stdout, gnss::cli::commandHelp(*command));
+        return 0;
+    }
+    if (args.versionAsked()) return version();
+    if (!args.error().empty())
+        return usageError(std::string(command->name) + ": " + args.error(), command->name);
     const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
     const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory();
-    const gnss::cli::CliContext ctx{registry, &transports};
-    for (const auto &c : kCommands)
-        if (c.name == argv[1]) return c.run(ctx, argc, argv);
-    std::fprintf(stderr, "gnss-cli: unknown command '%s'\n\n", argv[1]);
-    usage(stderr);
-    return 2;
+    return command->run(gnss::cli::CliContext{registry, args, &transports});
 }

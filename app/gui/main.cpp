@@ -15,10 +15,17 @@
 #include <cstdio>
 
 int main(int argc, char **argv) {
+    // --help and --version print and quit: they must work without a display (over ssh, in a
+    // package's test), so no window system is asked for then.
+    if (gnss::app::asksForHelpOrVersion(argc, argv) &&
+        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     QApplication::setApplicationName("GNSS Workbench");
     QApplication::setOrganizationName("GNSS Workbench");
-    QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    QApplication::setApplicationVersion(QStringLiteral(GNSS_VERSION));
+    // The installed desktop entry (packaging/): Wayland compositors match windows to it by this.
+    QApplication::setDesktopFileName(QStringLiteral(GNSS_APP_ID));
 
     // The interface in the user's language where we have it (translations/), Qt's own strings too.
     QTranslator qtTranslator, appTranslator;

@@ -308,6 +308,8 @@ void MainWindow::createStatusBar() {
     };
     stateLabel_ = new QLabel(this);
     stateLabel_->setObjectName("connectionState");
+    // Selectable: a failure can carry a command to run (the dialout group for a serial port).
+    stateLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     statusBar()->addWidget(stateLabel_, 1);
     dialectLabel_ = make("statusDialect");
     rateLabel_ = make("statusRates");
@@ -321,7 +323,10 @@ void MainWindow::createStatusBar() {
 
 void MainWindow::updateStatus() {
     stateLabel_->setText(controller_->stateText());
-    stateLabel_->setToolTip(controller_->detectionDetail());
+    // The whole text too, for a message longer than the status bar shows.
+    stateLabel_->setToolTip(controller_->detectionDetail().isEmpty()
+                                    ? controller_->stateText()
+                                    : controller_->detectionDetail());
     const Dialect *d = session_->dialect();
     const ReceiverIdentity &id = stateModel_->state().identity;
     QString who = d ? QString::fromLatin1(d->displayName.data(), int(d->displayName.size()))

@@ -9,7 +9,11 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                                                   const QStringList &simulated, QString &error) {
     QCommandLineParser p;
     p.setApplicationDescription(
-            QCoreApplication::translate("StartupOptions", "Configure and monitor GNSS receivers."));
+            QCoreApplication::translate("StartupOptions", "Configure and monitor GNSS receivers.") +
+            QStringLiteral("\n\n") +
+            QCoreApplication::translate("StartupOptions",
+                                        "Exit status: 0 closed normally, 1 the --screenshot could "
+                                        "not be saved, 2 usage error."));
     p.addHelpOption();
     p.addVersionOption();
     const QCommandLineOption port(
@@ -43,6 +47,11 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
     }
     if (p.isSet("help")) p.showHelp(0);
     if (p.isSet("version")) p.showVersion();
+    if (!p.positionalArguments().isEmpty()) {
+        error = QCoreApplication::translate("StartupOptions", "Unexpected argument '%1'")
+                        .arg(p.positionalArguments().constFirst());
+        return std::nullopt;
+    }
 
     StartupOptions o;
     o.port = p.value(port);
@@ -82,6 +91,16 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
         return std::nullopt;
     }
     return o;
+}
+
+bool asksForHelpOrVersion(int argc, char **argv) {
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray a(argv[i]);
+        if (a == "--") break;
+        if (a == "--help" || a == "-h" || a == "--help-all" || a == "--version" || a == "-v")
+            return true;
+    }
+    return false;
 }
 
 } // namespace gnss::app

@@ -17,8 +17,13 @@ struct StartupOptions {
 };
 
 // Parses the arguments; on error returns nullopt with `error` set (already translated).
-// `simulated`: the dialects the built-in simulator plays (what --sim accepts).
+// `simulated`: the dialects the built-in simulator plays (what --sim accepts). --help and
+// --version print to standard output and exit(0).
 std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                                                   const QStringList &simulated, QString &error);
+
+// Whether the command line asks only to print something (--help, -h, --help-all, --version,
+// -v), looked at before the application object exists.
+bool asksForHelpOrVersion(int argc, char **argv);
 
 } // namespace gnss::app

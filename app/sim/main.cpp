@@ -36,10 +36,10 @@ namespace {
 constexpr int kActivePollMs = 10;
 constexpr int kIdlePollMs = 100;
 
-volatile std::sig_atomic_t g_stop = 0;
+volatile std::sig_atomic_t g_stop = 0; // the signal that asked to stop
 volatile std::sig_atomic_t g_powerCycle = 0;
-void onSignal(int) {
-    g_stop = 1;
+void onSignal(int signal) {
+    g_stop = signal;
 }
 void onHangupSignal(int) {
     g_powerCycle = 1;
@@ -113,13 +113,16 @@ void flushTo(int fd, std::string &buffer) {
 int main(int argc, char **argv) {
     simapp::SimArgs args;
     std::string error;
-    bool help = false;
-    if (!simapp::parseSimArgs(argc, argv, args, error, help)) {
-        std::fprintf(stderr, "gnss-sim: %s\n%s", error.c_str(), simapp::kUsage);
+    if (!simapp::parseSimArgs(argc, argv, args, error)) {
+        std::fprintf(stderr, "gnss-sim: %s\nTry 'gnss-sim --help'.\n", error.c_str());
         return 2;
     }
-    if (help) {
+    if (args.help) {
         std::fputs(simapp::kUsage, stdout);
+        return 0;
+    }
+    if (args.version) {
+        std::printf("gnss-sim %s\n", GNSS_VERSION);
         return 0;
     }
     // Exactly one of the two: a receiver (dialect), or a base station's RTCM stream.
@@ -264,5 +267,7 @@ int main(int argc, char **argv) {
     }
     if (ioFd >= 0 && ioFd != STDOUT_FILENO) ::close(ioFd);
     if (listenFd >= 0) ::close(listenFd);
-    return 0;
+    // Stopped by SIGINT/SIGTERM: the status a shell gives a program the signal ended (130, 143),
+    // as gnss-cli does, so a script can tell it from standard input closing.
+    return g_stop ? 128 + g_stop : 0;
 }

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <string_view>
 
 namespace gnss::simapp {
@@ -11,21 +12,35 @@ const char *const kUsage =
         "                [--seed N] [--speed X] [--baud B] [--faults SPEC]\n"
         "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
         "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--baud B]\n"
+        "       gnss-sim --help | --version\n"
         "\n"
-        "  --pty       create a pseudo-terminal; its device path is the first line of stdout\n"
-        "  --tcp PORT  listen on 127.0.0.1:PORT (one client at a time)\n"
-        "  --stdout    write to stdout, read commands from stdin\n"
-        "  --seed N    random seed (same seed, same sky and noise); default 1\n"
-        "  --speed X   simulated seconds per real second; default 1\n"
-        "  --baud B    the receiver's starting baud; default: the receiver's own\n"
-        "  --faults    badcs=P,truncate=P,binary=P,silence=D@T[/EVERY],noreply=CMD[+CMD],\n"
-        "              slowreply=MS,hangup=SECONDS\n"
-        "  --rtcm-base an RTK base station instead of a receiver: RTCM 3 MSM4 for GPS (1074)\n"
-        "              and GLONASS (1084) and the position (1005) every second, 1230 every 10 s\n"
+        "A simulated GNSS receiver that answers its dialect's commands.\n"
+        "\n"
+        "  --dialect D    the receiver: nvs (NV08C-RTK), geostar (GeoS-5), nemerix (VT002),\n"
+        "                 nmea (a plain NMEA 4.11 receiver)\n"
+        "  --pty          create a pseudo-terminal (default); its device path is the first\n"
+        "                 line of standard output\n"
+        "  --tcp PORT     listen on 127.0.0.1:PORT (one client at a time)\n"
+        "  --stdout       write to standard output, read commands from standard input\n"
+        "  --seed N       random seed (same seed, same sky and noise); default 1\n"
+        "  --speed X      simulated seconds per real second, up to 1000; default 1\n"
+        "  --baud B       the receiver's starting baud; default: the receiver's own\n"
+        "  --faults SPEC  comma-separated: badcs=P, truncate=P, binary=P (probabilities),\n"
+        "                 silence=D@T[/EVERY], noreply=CMD[+CMD], slowreply=MS,\n"
+        "                 hangup=SECONDS\n"
+        "  --rtcm-base    an RTK base station instead of a receiver: RTCM 3 MSM4 for GPS (1074)\n"
+        "                 and GLONASS (1084) and the position (1005) every second, 1230 every\n"
+        "                 10 s\n"
         "  --base-position LAT,LON,H  the base's position (degrees, ellipsoidal metres);\n"
-        "              default 55.7512,37.6184,166.6\n"
-        "  --station ID  reference station id 0..4095 (default 1)\n"
-        "Runs until killed or until standard input closes.\n";
+        "                 default 55.7512,37.6184,166.6\n"
+        "  --station ID   reference station id 0..4095 (default 1)\n"
+        "  -h, --help     this help\n"
+        "  --version      the program's version\n"
+        "\n"
+        "Options take their value as --opt VALUE or --opt=VALUE. Runs until killed or until\n"
+        "standard input closes; SIGHUP power-cycles the receiver.\n"
+        "Exit status: 0 standard input closed or the hangup fault, 1 the pseudo-terminal or\n"
+        "port could not be opened, 2 usage error, 128 + N stopped by signal N (130 Ctrl-C).\n";
 
 namespace {
 
@@ -53,13 +68,34 @@ bool position(std::string_view s, sim::BaseStationConfig &base) {
 
 } // namespace
 
-bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error, bool &help) {
-    help = false;
+bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error) {
+    // The first problem is kept and parsing goes on, so a --help or --version further on still
+    // wins: they are how one finds out what is wrong.
+    auto fail = [&](std::string message) {
+        if (error.empty()) error = std::move(message);
+    };
     for (int i = 1; i < argc; ++i) {
-        const std::string_view a = argv[i];
+        std::string_view a = argv[i];
+        // --name=value as well as --name value.
+        std::optional<std::string_view> inlineValue;
+        if (a.starts_with("--")) {
+            if (const auto eq = a.find('='); eq != std::string_view::npos) {
+                inlineValue = a.substr(eq + 1);
+                a = a.substr(0, eq);
+            }
+        }
+        auto flag = [&] {
+            if (inlineValue) fail(std::string(a) + " takes no value");
+            return !inlineValue;
+        };
+        // A separate value never starts with "--": `--tcp --pty` is a missing value.
         auto value = [&](std::string_view &v) {
-            if (i + 1 >= argc) {
-                error = std::string(a) + " needs a value";
+            if (inlineValue) {
+                v = *inlineValue;
+                return true;
+            }
+            if (i + 1 >= argc || std::string_view(argv[i + 1]).starts_with("--")) {
+                fail(std::string(a) + " needs a value");
                 return false;
             }
             v = argv[++i];
@@ -67,70 +103,54 @@ bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error, bool 
         };
         std::string_view v;
         if (a == "--help" || a == "-h") {
-            help = true;
-            return true;
+            out.help = flag();
+        } else if (a == "--version") {
+            out.version = flag();
         } else if (a == "--dialect") {
-            if (!value(v)) return false;
-            out.dialect = std::string(v);
+            if (value(v)) out.dialect = std::string(v);
         } else if (a == "--pty") {
-            out.transport = Transport::Pty;
+            if (flag()) out.transport = Transport::Pty;
         } else if (a == "--stdout") {
-            out.transport = Transport::Stdout;
+            if (flag()) out.transport = Transport::Stdout;
         } else if (a == "--tcp") {
-            if (!value(v)) return false;
-            if (!number(v, out.tcpPort) || out.tcpPort < 1 || out.tcpPort > 65535) {
-                error = "--tcp: expected a port 1..65535, got '" + std::string(v) + "'";
-                return false;
-            }
+            if (!value(v)) continue;
+            if (!number(v, out.tcpPort) || out.tcpPort < 1 || out.tcpPort > 65535)
+                fail("--tcp: expected a port 1..65535, got '" + std::string(v) + "'");
             out.transport = Transport::Tcp;
         } else if (a == "--seed") {
-            if (!value(v)) return false;
-            if (!number(v, out.options.seed)) {
-                error = "--seed: expected an unsigned integer, got '" + std::string(v) + "'";
-                return false;
-            }
+            if (value(v) && !number(v, out.options.seed))
+                fail("--seed: expected an unsigned integer, got '" + std::string(v) + "'");
         } else if (a == "--speed") {
-            if (!value(v)) return false;
-            if (!number(v, out.speed) || !std::isfinite(out.speed) || out.speed <= 0 ||
-                out.speed > 1000) {
-                error = "--speed: expected a factor > 0 and <= 1000, got '" + std::string(v) + "'";
-                return false;
-            }
+            if (value(v) && (!number(v, out.speed) || !std::isfinite(out.speed) || out.speed <= 0 ||
+                             out.speed > 1000))
+                fail("--speed: expected a factor > 0 and <= 1000, got '" + std::string(v) + "'");
         } else if (a == "--baud") {
-            if (!value(v)) return false;
-            if (!number(v, out.options.baud) || out.options.baud < 300 ||
-                out.options.baud > 921600) {
-                error = "--baud: expected a speed 300..921600, got '" + std::string(v) + "'";
-                return false;
-            }
+            if (value(v) && (!number(v, out.options.baud) || out.options.baud < 300 ||
+                             out.options.baud > 921600))
+                fail("--baud: expected a speed 300..921600, got '" + std::string(v) + "'");
         } else if (a == "--rtcm-base") {
-            out.rtcmBase = true;
+            if (flag()) out.rtcmBase = true;
         } else if (a == "--base-position") {
-            if (!value(v)) return false;
-            if (!position(v, out.base)) {
-                error = "--base-position: expected LAT,LON,H in degrees and metres, got '" +
-                        std::string(v) + "'";
-                return false;
-            }
+            if (value(v) && !position(v, out.base))
+                fail("--base-position: expected LAT,LON,H in degrees and metres, got '" +
+                     std::string(v) + "'");
         } else if (a == "--station") {
-            if (!value(v)) return false;
-            if (!number(v, out.base.stationId) || out.base.stationId > 4095) {
-                error = "--station: expected a station id 0..4095, got '" + std::string(v) + "'";
-                return false;
-            }
+            if (value(v) && (!number(v, out.base.stationId) || out.base.stationId > 4095))
+                fail("--station: expected a station id 0..4095, got '" + std::string(v) + "'");
         } else if (a == "--faults") {
-            if (!value(v)) return false;
-            auto f = sim::parseFaults(v, error);
-            if (!f) {
-                error = "--faults: " + error;
-                return false;
-            }
-            out.options.faults = *f;
+            if (!value(v)) continue;
+            std::string why;
+            if (auto f = sim::parseFaults(v, why))
+                out.options.faults = *f;
+            else
+                fail("--faults: " + why);
         } else {
-            error = "unknown option '" + std::string(a) + "'";
-            return false;
+            fail(a.starts_with('-') ? "unknown option '" + std::string(a) + "'"
+                                    : "unexpected argument '" + std::string(a) + "'");
         }
     }
+    if (out.help || out.version) return true;
+    if (!error.empty()) return false;
     out.base.seed = out.options.seed;
     if (out.rtcmBase) {
         if (!out.dialect.empty()) {

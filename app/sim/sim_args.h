@@ -18,11 +18,14 @@ struct SimArgs {
     // --rtcm-base: an RTCM 3 base station's stream instead of a receiver (no --dialect).
     bool rtcmBase = false;
     sim::BaseStationConfig base;
+    bool help = false;    // --help, -h: print kUsage
+    bool version = false; // --version
 };
 
 extern const char *const kUsage;
 
-// Returns false with `error` set on a bad command line; `help` set when --help was asked.
-bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error, bool &help);
+// Returns false with `error` set on a bad command line; true with `help` or `version` set when
+// either was asked, whatever else is on the line.
+bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error);
 
 } // namespace gnss::simapp

@@ -1,10 +1,78 @@
 #include "serial_transport.h"
 
+#include <QFile>
 #include <QFileInfo>
+
+#ifdef Q_OS_UNIX
+#include <cerrno>
+#include <fcntl.h>
+#include <grp.h>
+#include <pwd.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <vector>
+#endif
 
 namespace gnss::link {
 
 namespace {
+
+#ifdef Q_OS_UNIX
+// Whether the user is in group `gid` in the group database: then a session that lacks it began
+// before they were added (group membership is read at login).
+bool userListedInGroup(gid_t gid) {
+    const passwd *pw = getpwuid(geteuid());
+    if (!pw) return false;
+    int n = 64;
+    std::vector<gid_t> groups(static_cast<std::size_t>(n));
+    if (getgrouplist(pw->pw_name, pw->pw_gid, groups.data(), &n) < 0) {
+        groups.resize(static_cast<std::size_t>(n));
+        if (getgrouplist(pw->pw_name, pw->pw_gid, groups.data(), &n) < 0) return false;
+    }
+    groups.resize(static_cast<std::size_t>(n));
+    for (gid_t g : groups)
+        if (g == gid) return true;
+    return false;
+}
+#endif
+
+// What to do about a port that would not open, where we can tell: QSerialPort says
+// PermissionError both for a device this user may not open (EACCES) and for one another program
+// holds (its lock file, EBUSY), which call for opposite advice; an access check tells them apart.
+// Empty when there is nothing to add.
+QString openFailureAdvice(const QString &portName, QSerialPort::SerialPortError error) {
+#ifdef Q_OS_UNIX
+    if (error != QSerialPort::PermissionError) return {};
+    const QString path = portName.startsWith('/') ? portName : QStringLiteral("/dev/") + portName;
+    const QByteArray native = QFile::encodeName(path);
+    // With the effective user, as open() checks (plain access() asks about the real one).
+    if (::faccessat(AT_FDCWD, native.constData(), R_OK | W_OK, AT_EACCESS) == 0)
+        return SerialTransport::tr("Another program may have it open (a terminal program, gpsd, "
+                                   "ModemManager).");
+    if (errno != EACCES && errno != EPERM) return {};
+    // Debian and most distributions give serial devices to the group "dialout" (crw-rw----
+    // root:dialout); name the device's own group when it is the one granting access.
+    QString groupName = QStringLiteral("dialout");
+    struct stat st {};
+    if (::stat(native.constData(), &st) == 0 && (st.st_mode & S_IRGRP) && (st.st_mode & S_IWGRP)) {
+        if (const struct group *g = getgrgid(st.st_gid); g && st.st_gid != 0)
+            groupName = QString::fromLocal8Bit(g->gr_name);
+        if (st.st_gid != 0 && userListedInGroup(st.st_gid))
+            return SerialTransport::tr("You are in the '%1' group that may use it, but this "
+                                       "session began before you were added: log out and back "
+                                       "in.")
+                    .arg(groupName);
+    }
+    return SerialTransport::tr("Serial ports are for members of the '%1' group: run "
+                               "`sudo usermod -aG %1 $USER`, then log out and back in.")
+            .arg(groupName);
+#else
+    Q_UNUSED(portName);
+    Q_UNUSED(error);
+    return {};
+#endif
+}
 
 // "/dev/ttyUSB0" and "ttyUSB0" name the same port.
 bool samePort(const PortInfo &p, const QString &name) {
@@ -47,7 +115,10 @@ bool SerialTransport::open() {
     port_.setStopBits(settings_.stopBits);
     port_.setFlowControl(settings_.flowControl);
     if (!port_.open(QIODevice::ReadWrite)) {
-        fail(tr("Cannot open %1: %2").arg(name, port_.errorString()), false);
+        QString why = tr("Cannot open %1: %2").arg(name, port_.errorString());
+        if (const QString advice = openFailureAdvice(name, port_.error()); !advice.isEmpty())
+            why = tr("%1. %2").arg(why, advice);
+        fail(why, false);
         return false;
     }
     if (name != settings_.portName) settings_.portName = name; // the device moved

@@ -7,9 +7,8 @@
 #include <QPixmap>
 
 namespace gnss::style {
-namespace {
 
-QPixmap paintIcon(int size) {
+QPixmap appIconPixmap(int size) {
     QPixmap pm(size, size);
     pm.fill(Qt::transparent);
     QPainter p(&pm);
@@ -48,11 +47,10 @@ QPixmap paintIcon(int size) {
     return pm;
 }
 
-} // namespace
-
 QIcon appIcon() {
     QIcon icon;
-    for (int size : {16, 24, 32, 48, 64, 128, 256}) icon.addPixmap(paintIcon(size));
+    // The hicolor theme's sizes: what panels, title bars and task switchers ask for.
+    for (int size : {16, 22, 24, 32, 48, 64, 128, 256}) icon.addPixmap(appIconPixmap(size));
     return icon;
 }
 

@@ -1,0 +1,347 @@
+#include "command_table.h"
+
+#include <algorithm>
+
+namespace gnss::cli {
+namespace {
+
+// Options shared by several commands, so their words agree everywhere.
+constexpr OptionSpec kDialect{"dialect", "D",
+                              "the receiver's dialect: auto (the default: recognised from the "
+                              "stream), nvs, geostar, nemerix, nmea"};
+constexpr OptionSpec kLenient{"lenient", "",
+                              "decode sentences whose checksum is wrong or missing, and mark them"};
+constexpr OptionSpec kAlias{"alias", "NEW=CANONICAL",
+                            "read a renamed proprietary prefix, e.g. PXYZW=PNMRX (repeatable)"};
+constexpr OptionSpec kPrefix{"prefix", "NEW",
+                             "with --dialect nemerix: the module's PNMRX prefix was renamed NEW"};
+constexpr OptionSpec kPort{"port", "P", "serial port: ttyUSB0, /dev/ttyACM0 or any path to a tty"};
+constexpr OptionSpec kBaud{"baud", "B", "line speed (default 9600)"};
+constexpr OptionSpec kTcp{"tcp", "HOST:PORT",
+                          "a TCP source: a serial-to-Ethernet server, gnss-sim --tcp"};
+constexpr OptionSpec kDuration{"duration", "S", "stop after S seconds"};
+
+constexpr OptionSpec kDecodeOptions[] = {kDialect, kLenient, kAlias, kPrefix};
+constexpr OptionSpec kStatsOptions[] = {
+        kDialect,
+        kLenient,
+        kAlias,
+        kPrefix,
+        {"json", "", "one JSON object instead of the table"},
+        {"threads", "N", "decode a file on N threads, 1 to 64 (default: one per core)"},
+};
+constexpr OptionSpec kEncodeOptions[] = {
+        {"query", "", "the sentences that read the KEYs back instead"},
+        {"prefix", "NEW", "write the dialect's renamable prefix (nemerix: PNMRX) as NEW"},
+};
+// The sources every link command takes (cli_source.h), in the same words everywhere.
+constexpr OptionSpec kSim{"sim", "D", "a built-in simulated receiver: nvs, geostar, nemerix, nmea"};
+constexpr OptionSpec kReplay{"replay", "FILE", "a recorded log, at its recorded pace"};
+constexpr OptionSpec kLinkBaud{"baud", "B", "line speed (default: detected)"};
+constexpr OptionSpec kSpeed{"speed", "X", "replay X times faster (below 1: slower)"};
+constexpr OptionSpec kFast{"fast", "", "replay without waiting"};
+
+constexpr OptionSpec kProbeOptions[] = {kPort, kTcp, kSim, kLinkBaud};
+constexpr OptionSpec kMonitorOptions[] = {
+        kPort,
+        kTcp,
+        kReplay,
+        kSim,
+        kLinkBaud,
+        kDialect,
+        kLenient,
+        {"epochs", "", "one JSON object per navigation epoch instead of per sentence"},
+        kDuration,
+        kSpeed,
+        kFast,
+};
+constexpr OptionSpec kRecordOptions[] = {
+        kPort,     kTcp,
+        kSim,      kLinkBaud,
+        {"out", "FILE", "write the bytes received to FILE, their index to FILE.idx"},
+        kDuration,
+};
+constexpr OptionSpec kSendOptions[] = {
+        kPort,
+        kTcp,
+        kSim,
+        kLinkBaud,
+        {"dialect", "D",
+         "whose reply rules to wait by: auto (default), nvs, geostar, nemerix, nmea"},
+        {"timeout", "S", "seconds to wait for each reply (default: the dialect's rule)"},
+};
+constexpr OptionSpec kConfigOptions[] = {
+        kPort,
+        kTcp,
+        kSim,
+        kLinkBaud,
+        {"dialect", "D", "the receiver's dialect (default: identified by its probe)"},
+};
+constexpr OptionSpec kNtripOptions[] = {
+        {"caster", "HOST:PORT", "the NTRIP caster"},
+        {"mount", "M", "the mountpoint whose corrections to receive"},
+        {"sourcetable", "", "print the caster's source table (one JSON object per entry)"},
+        {"nearest", "", "receive from the nearest RTCM 3 mountpoint (needs a position)"},
+        {"user", "U", "user name for the caster"},
+        {"password-env", "VAR", "read the password from environment variable VAR"},
+        {"ntrip-version", "1|2", "NTRIP revision (default 2)"},
+        {"gga", "auto|LAT,LON,H", "the position sent to casters that ask for one"},
+        {"out", "FILE", "write the raw RTCM received to FILE"},
+        kDuration,
+        {"quiet", "", "no JSON lines (with --out)"},
+        kPort,
+        kTcp,
+};
+
+// `details` is one paragraph per line, wrapped at 80 columns when printed; a paragraph that
+// starts with spaces is a list item, continued under its text.
+constexpr CommandSpec kCommands[] = {
+        {"decode", cmdDecode, "decode [--dialect D] [--lenient] [FILE|-]",
+         "one JSON object per sentence of a log", kDecodeOptions,
+         "Decodes FILE (or standard input: - or nothing) and prints one JSON object per sentence "
+         "on standard output (JSON Lines): line, address, talker, type, checksum, and data or "
+         "error. Bad input is skipped and counted, never fatal.\n"
+         "Exit status: 0 the input was read to its end, 1 it could not be read, 2 usage error.\n"},
+        {"epochs", cmdEpochs, "epochs [--dialect D] [--lenient] [FILE|-]",
+         "one JSON object per navigation epoch", kDecodeOptions,
+         "Prints one JSON object per navigation epoch (the sentences sharing one fix time): "
+         "time, fix, lat, lon, altitudes, dilutions, speed, course, DGPS age and the satellites "
+         "with their signals.\n"
+         "Exit status: 0 the input was read to its end, 1 it could not be read, 2 usage error.\n"},
+        {"stats", cmdStats, "stats [--dialect D] [--lenient] [--json] [--threads N] [FILE|-]",
+         "vet a log: counts per address, errors, speed", kStatsOptions,
+         "Decodes every sentence and prints, per address, sentences, decoded, decode errors, "
+         "unknown, checksum bad and missing; then bytes read and skipped, lines truncated or too "
+         "long, epochs, the dialect recognised and the decoding speed. A regular file is decoded "
+         "on every core with the same counts as one front-to-back pass.\n"
+         "Exit status: 0 the input was read to its end, 1 it could not be read, 2 usage error.\n"},
+        {"schema",
+         cmdSchema,
+         "schema DIALECT",
+         "a dialect's settings schema as JSON",
+         {},
+         "Prints the settings schema of DIALECT (nvs, geostar, nemerix, nmea) as one JSON array: "
+         "key, label, group, type, default, unit, min/max or options, access, read_back, write, "
+         "help.\n"
+         "Exit status: 0 printed, 2 unknown dialect.\n"},
+        {"encode", cmdEncode,
+         "encode DIALECT KEY=VALUE...\n"
+         "encode DIALECT --query KEY...",
+         "the sentences that set (or read back) settings", kEncodeOptions,
+         "Prints the sentences, with checksums, that set the given settings, one per line; with "
+         "--query the sentences that read them back. KEY is a schema key (rtk.PVTRATE) or the "
+         "spec's own name (PVTRATE); gnss-cli schema DIALECT lists them.\n"
+         "Exit status: 0 printed, 1 a value the schema refuses (out of range, not an option), 2 "
+         "usage error.\n"},
+        {"ports",
+         cmdPorts,
+         "ports",
+         "the serial ports, one JSON object each",
+         {},
+         "Prints one JSON object per serial port: port, location, description, manufacturer, "
+         "serial_number, usb_id (VID:PID, empty when not USB).\n"
+         "Exit status: 0 listed, 2 usage error.\n"},
+        {"probe", cmdProbe, "probe --port P [--baud B] | --tcp HOST:PORT | --sim D",
+         "detect a receiver's baud, dialect, model and firmware", kProbeOptions,
+         "Finds the speed (the --baud given first, then 115200, 9600, 38400, 57600, 4800, 19200, "
+         "230400, 460800, 921600: the first giving two valid sentences), then the receiver (its "
+         "proprietary sentences, then each dialect's probe), and prints one JSON object: port, "
+         "baud, dialect, dialect_name, model, firmware, method, reply, tried (bytes and "
+         "sentences per rate) and error.\n"
+         "Exit status: 0 found, 1 nothing found or the port cannot be opened, 2 usage error, 130 "
+         "interrupted.\n"},
+        {"monitor", cmdMonitor,
+         "monitor --port P|--tcp HOST:PORT|--replay FILE|--sim D [OPTIONS]",
+         "decode a live receiver, a TCP source or a replayed log", kMonitorOptions,
+         "Decodes live: one JSON object per sentence as decode prints, or per epoch with --epochs "
+         "as epochs prints. A lost serial or TCP link is reported on standard error and retried. "
+         "Runs until --duration, the end of a replay, or Ctrl-C.\n"
+         "Exit status: 0 ended by --duration or the end of the replay, 1 the source cannot be "
+         "opened, 2 usage error, 130 interrupted (Ctrl-C; 143 for SIGTERM).\n"},
+        {"record", cmdRecord, "record --port P|--tcp HOST:PORT|--sim D --out FILE [OPTIONS]",
+         "record a receiver to FILE and FILE.idx", kRecordOptions,
+         "Writes FILE (exactly the bytes received) and FILE.idx (when they came, gaps). A lost "
+         "link is retried and the recording goes on in the same files with a gap mark. Runs "
+         "until --duration or Ctrl-C; the files are flushed and closed either way.\n"
+         "Exit status: 0 ended by --duration, 1 the source or FILE cannot be opened, 2 usage "
+         "error, 130 interrupted (Ctrl-C; 143 for SIGTERM).\n"},
+        {"send", cmdSend, "send --port P|--tcp HOST:PORT|--sim D [OPTIONS] SENTENCE...",
+         "send commands, print replies and outcomes", kSendOptions,
+         "Sends each SENTENCE in turn ($ and checksum added when missing), waits for its reply as "
+         "the dialect's reply rules say, retries on silence, and prints one JSON object per "
+         "command: sentence, outcome (accepted, refused, timed out, link lost, sent, failed), "
+         "detail, attempts, ms, replies, and baud after a baud change. What is sent (> ...) and "
+         "received (< ...) is echoed on standard error. Every SENTENCE is checked before the "
+         "port is opened.\n"
+         "Exit status: 0 every command accepted, 1 any refused, timed out or failed, or the "
+         "source cannot be opened, 2 usage error or a malformed SENTENCE, 130 interrupted.\n"},
+        {"config", cmdConfig,
+         "config --port P|--tcp HOST:PORT|--sim D [--baud B] [--dialect D] get [KEY...]\n"
+         "config ... set KEY=VALUE...\n"
+         "config ... export FILE | apply FILE | diff FILE\n"
+         "config ... action save|defaults|cold|warm|hot",
+         "read, set, export, apply or compare a receiver's settings", kConfigOptions,
+         "The settings engine of the GUI's settings dock. Without --baud the speed is detected, "
+         "without --dialect the receiver is identified.\n"
+         "  get     one JSON object: dialect, model, firmware, values, write_only\n"
+         "  set     reads the KEYs, sends what differs in a safe order, reads back: one JSON "
+         "line per command, one per setting with its verdict, then a summary\n"
+         "  export  reads everything and writes a versioned JSON profile to FILE\n"
+         "  apply   applies the difference between FILE and the receiver, as set does\n"
+         "  diff    one JSON line per setting whose value in FILE differs\n"
+         "  action  save to flash, restore the defaults, or restart (cold, warm, hot)\n"
+         "Exit status: 0 done (diff: no difference), 1 a command refused or failed, a value out "
+         "of range or that did not verify, the port cannot be opened, (diff) differences, 2 "
+         "usage error, an unknown setting, a profile for another dialect.\n"},
+        {"rtcm",
+         cmdRtcm,
+         "rtcm [FILE|-]",
+         "an RTCM 3 stream as JSON, counts on stderr",
+         {},
+         "Prints one JSON object per RTCM 3 frame whose CRC-24Q is right, on standard output, "
+         "and at the end one summary object (frames, bytes, bytes skipped, CRC failures, frames "
+         "per message type) on standard error. Bytes outside frames are skipped.\n"
+         "Exit status: 0 the input was read to its end, 1 it could not be read, 2 usage error.\n"},
+        {"ntrip", cmdNtrip,
+         "ntrip --caster HOST:PORT --mount M|--sourcetable|--nearest [OPTIONS]",
+         "NTRIP: a caster's source table, or a mountpoint's RTCM 3", kNtripOptions,
+         "NTRIP revision 1 or 2 (chunked transfer decoded before RTCM framing). --sourcetable "
+         "prints one JSON object per mountpoint (with its distance when a position is known); "
+         "--mount (or --nearest) receives the mountpoint's RTCM 3 and prints one JSON object per "
+         "message, as rtcm does, and/or writes the raw bytes to --out. A GGA is sent at the start "
+         "and every 10 s to mountpoints that ask for one. The password is read from the "
+         "environment (--password-env), never from the command line, and never printed.\n"
+         "Exit status: 0 ended by --duration or Ctrl-C after data, 1 the caster refused (wrong "
+         "credentials, unknown mountpoint) or could not be reached, 2 usage error.\n"},
+};
+
+// Calls f with each line of a '\n'-separated text.
+template <class F> void forEachLine(std::string_view text, F f) {
+    while (!text.empty()) {
+        const auto nl = text.find('\n');
+        f(text.substr(0, nl));
+        text = nl == std::string_view::npos ? std::string_view() : text.substr(nl + 1);
+    }
+}
+
+// Appends `text` wrapped at 80 columns: its first line goes on after what `out` already holds of
+// the current line (`column` wide), the others start `indent` spaces in.
+void appendWrapped(std::string &out, std::string_view text, std::size_t column,
+                   std::size_t indent) {
+    constexpr std::size_t kWidth = 80;
+    bool lineStart = true;
+    while (!text.empty()) {
+        const auto space = text.find(' ');
+        const std::string_view word = text.substr(0, space);
+        text = space == std::string_view::npos ? std::string_view() : text.substr(space + 1);
+        if (word.empty()) continue;
+        if (!lineStart && column + 1 + word.size() > kWidth) {
+            out += '\n';
+            out.append(indent, ' ');
+            column = indent;
+            lineStart = true;
+        }
+        if (!lineStart) {
+            out += ' ';
+            ++column;
+        }
+        out += word;
+        column += word.size();
+        lineStart = false;
+    }
+    out += '\n';
+}
+
+// A details paragraph; "  label   text" keeps its label and is continued under its text.
+void appendParagraph(std::string &out, std::string_view paragraph) {
+    if (!paragraph.starts_with(' ')) return appendWrapped(out, paragraph, 0, 0);
+    const auto labelStart = paragraph.find_first_not_of(' ');
+    const auto labelEnd = paragraph.find(' ', labelStart);
+    const auto textStart = paragraph.find_first_not_of(' ', labelEnd);
+    if (labelEnd == std::string_view::npos || textStart == std::string_view::npos)
+        return appendWrapped(out, paragraph, 0, 0);
+    out += paragraph.substr(0, textStart);
+    appendWrapped(out, paragraph.substr(textStart), textStart, textStart);
+}
+
+// "  --name VALUE   help", the help column aligned over the command's options.
+void appendOptions(std::string &out, std::span<const OptionSpec> options) {
+    const OptionSpec help{"help", "", "this help"};
+    const OptionSpec version{"version", "", "the program's version"};
+    auto label = [](const OptionSpec &o) {
+        std::string l = (o.name == "help" ? "-h, --" : "--") + std::string(o.name);
+        if (!o.value.empty()) l += " " + std::string(o.value);
+        return l;
+    };
+    std::size_t width = label(help).size();
+    for (const OptionSpec &o : options) width = std::max(width, label(o).size());
+    auto line = [&](const OptionSpec &o) {
+        const std::string l = label(o);
+        out += "  " + l;
+        out.append(width + 2 - l.size(), ' ');
+        appendWrapped(out, o.help, 2 + width + 2, 2 + width + 2);
+    };
+    out += "\noptions:\n";
+    for (const OptionSpec &o : options) line(o);
+    line(help);
+    line(version);
+}
+
+} // namespace
+
+std::span<const CommandSpec> commandTable() {
+    return kCommands;
+}
+
+const CommandSpec *findCommand(std::string_view name) {
+    for (const CommandSpec &c : kCommands)
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+std::string overviewHelp() {
+    std::string out = "usage: gnss-cli COMMAND [OPTIONS] [ARGUMENTS]\n"
+                      "       gnss-cli help [COMMAND]\n"
+                      "       gnss-cli --help | --version\n"
+                      "\nGNSS Workbench without the windows: logs decoded to JSON, live\n"
+                      "receivers, settings.\n\ncommands:\n";
+    for (const CommandSpec &c : kCommands) {
+        forEachLine(c.synopsis, [&](std::string_view form) {
+            out += "  ";
+            out += form;
+            out += '\n';
+        });
+        out += "      ";
+        out += c.summary;
+        out += '\n';
+    }
+    out += '\n';
+    for (std::string_view paragraph :
+         {"D: auto (default), nvs, geostar, nemerix, nmea.",
+          "Every command takes --help and --version; options take their value as --opt VALUE or "
+          "--opt=VALUE, and -- ends them. Data goes to standard output (JSON Lines where it is a "
+          "stream), messages to standard error.",
+          "Exit status: 0 done, 1 failed (input unreadable, receiver refused or silent, value "
+          "refused), 2 usage error, 130 interrupted.",
+          "See gnss-cli help COMMAND, gnss-cli(1) and docs/cli.md."})
+        appendWrapped(out, paragraph, 0, 0);
+    return out;
+}
+
+std::string commandHelp(const CommandSpec &command) {
+    std::string out;
+    bool first = true;
+    forEachLine(command.synopsis, [&](std::string_view form) {
+        out += first ? "usage: gnss-cli " : "       gnss-cli ";
+        out += form;
+        out += '\n';
+        first = false;
+    });
+    out += '\n';
+    forEachLine(command.details,
+                [&](std::string_view paragraph) { appendParagraph(out, paragraph); });
+    appendOptions(out, command.options);
+    return out;
+}
+
+} // namespace gnss::cli

@@ -1,0 +1,30 @@
+#pragma once
+// The commands gnss-cli knows: name, function, the options it takes and its help text, in one
+// table so that parsing, `gnss-cli help COMMAND` and the overview cannot disagree.
+#include "cli_args.h"
+#include "cli_commands.h"
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace gnss::cli {
+
+struct CommandSpec {
+    std::string_view name;
+    int (*run)(const CliContext &);
+    std::string_view synopsis; // what follows "gnss-cli "; one line per form
+    std::string_view summary;  // one line for the overview
+    std::span<const OptionSpec> options;
+    std::string_view details; // what it reads and prints, and its exit status
+};
+
+std::span<const CommandSpec> commandTable();
+const CommandSpec *findCommand(std::string_view name);
+
+// `gnss-cli --help`: every command's synopsis and summary, and the conventions they share.
+std::string overviewHelp();
+// `gnss-cli help COMMAND`, `gnss-cli COMMAND --help`.
+std::string commandHelp(const CommandSpec &command);
+
+} // namespace gnss::cli

@@ -1,0 +1,154 @@
+// A serial port refused for permission says why and what to do (join the dialout group, log out
+// and in), in the message SerialTransport gives: the GUI's status bar and gnss-cli both show it.
+// A port that is busy or absent gets no such advice.
+//
+// The device is a pseudo-terminal made unopenable (chmod 000). Root opens anything whatever its
+// mode, so when the tests run as root the opening is done as the user "nobody": in this process
+// by switching the effective user for the moment of the open (seteuid, then back), and gnss-cli
+// is started as nobody.
+#include "serial_transport.h"
+
+#include <QFileInfo>
+#include <QProcess>
+#include <QTest>
+
+#include <fcntl.h>
+#include <grp.h>
+#include <pwd.h>
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+using gnss::link::SerialSettings;
+using gnss::link::SerialTransport;
+
+namespace {
+
+uid_t nobodyUid() {
+    const passwd *pw = getpwnam("nobody");
+    return pw ? pw->pw_uid : 65534;
+}
+
+gid_t nobodyGid() {
+    const passwd *pw = getpwnam("nobody");
+    return pw ? pw->pw_gid : 65534;
+}
+
+// A pseudo-terminal; its device can be made unopenable for anyone but root.
+class Pty {
+public:
+    Pty() {
+        master_ = posix_openpt(O_RDWR | O_NOCTTY);
+        if (master_ < 0 || grantpt(master_) != 0 || unlockpt(master_) != 0) return;
+        path_ = QString::fromLocal8Bit(ptsname(master_));
+    }
+    ~Pty() {
+        if (master_ >= 0) ::close(master_);
+    }
+    bool ok() const { return !path_.isEmpty(); }
+    const QString &path() const { return path_; }
+    bool lockOut() const { return ::chmod(QFile::encodeName(path_).constData(), 0) == 0; }
+
+private:
+    int master_ = -1;
+    QString path_;
+};
+
+// For its lifetime the effective user is nobody when the process runs as root (permission checks
+// follow the effective user); as anyone else it changes nothing.
+class WithoutRoot {
+public:
+    WithoutRoot() {
+        if (::geteuid() != 0) return;
+        switched_ = ::seteuid(nobodyUid()) == 0;
+        failed_ = !switched_;
+    }
+    ~WithoutRoot() {
+        if (switched_ && ::seteuid(0) != 0) qFatal("could not become root again");
+    }
+    bool failed() const { return failed_; }
+
+private:
+    bool switched_ = false;
+    bool failed_ = false;
+};
+
+QString openError(const QString &port) {
+    SerialTransport t(SerialSettings{port, 9600});
+    if (t.open()) return {};
+    return t.errorString();
+}
+
+} // namespace
+
+class TstSerialPermission : public QObject {
+    Q_OBJECT
+private slots:
+    void permissionDeniedNamesTheGroupAndTheCommand() {
+        Pty pty;
+        if (!pty.ok()) QSKIP("no pseudo-terminal");
+        QVERIFY(pty.lockOut());
+        QString why;
+        {
+            WithoutRoot user;
+            if (user.failed()) QSKIP("running as root without the right to become nobody");
+            why = openError(pty.path());
+        }
+        QVERIFY2(!why.isEmpty(), "the port opened although its mode is 000");
+        QVERIFY2(why.contains(pty.path()), qPrintable(why));
+        QVERIFY2(why.contains("'dialout' group"), qPrintable(why));
+        QVERIFY2(why.contains("sudo usermod -aG dialout $USER"), qPrintable(why));
+        QVERIFY2(why.contains("log out and back in"), qPrintable(why));
+    }
+
+    void gnssCliSaysItOnStandardError() {
+        Pty pty;
+        if (!pty.ok()) QSKIP("no pseudo-terminal");
+        QVERIFY(pty.lockOut());
+        QProcess cli;
+        const bool root = ::geteuid() == 0;
+        if (root) {
+            // As nobody from the start: root could open the device whatever its mode.
+            cli.setChildProcessModifier([] {
+                if (::setgroups(0, nullptr) != 0 || ::setgid(nobodyGid()) != 0 ||
+                    ::setuid(nobodyUid()) != 0)
+                    ::_exit(126);
+            });
+        }
+        cli.start(QStringLiteral(GNSS_CLI_PATH),
+                  {"monitor", "--port", pty.path(), "--duration", "5"});
+        QVERIFY(cli.waitForFinished(20000));
+        if (root && cli.exitCode() == 126)
+            QSKIP("running as root without the right to become nobody");
+        const QByteArray err = cli.readAllStandardError();
+        if (root && err.contains("Permission denied") && !err.contains(pty.path().toUtf8()))
+            QSKIP(qPrintable("nobody cannot run " GNSS_CLI_PATH ": " + err));
+        QCOMPARE(cli.exitCode(), 1);
+        QVERIFY2(err.contains("'dialout' group"), err.constData());
+        QVERIFY2(err.contains("sudo usermod -aG dialout $USER"), err.constData());
+        QVERIFY2(cli.readAllStandardOutput().isEmpty(), "an error is not data");
+    }
+
+    void aBusyPortIsNotBlamedOnTheGroup() {
+        // QSerialPort reports a port another program holds (its lock file) as a permission
+        // error too; joining a group would not help there.
+        Pty pty;
+        if (!pty.ok()) QSKIP("no pseudo-terminal");
+        SerialTransport first(SerialSettings{pty.path(), 9600});
+        if (!first.open())
+            QSKIP(qPrintable("cannot open the pseudo-terminal: " + first.errorString()));
+        const QString why = openError(pty.path());
+        if (why.isEmpty()) QSKIP("this system lets a port be opened twice (no lock files)");
+        QVERIFY2(!why.contains("dialout"), qPrintable(why));
+        QVERIFY2(why.contains("Another program may have it open"), qPrintable(why));
+    }
+
+    void aMissingPortGetsNoAdvice() {
+        const QString why = openError(QStringLiteral("/dev/ttyGNSSWorkbenchNoSuchPort"));
+        QVERIFY(!why.isEmpty());
+        QVERIFY2(!why.contains("dialout") && !why.contains("Another program"), qPrintable(why));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstSerialPermission)
+#include "tst_serial_permission.moc"
