@@ -18,6 +18,7 @@ struct SatelliteInView {
     int signalId = 0; // NMEA 4.10+ signal id; 0 when the receiver does not say
     std::optional<int> elevation, azimuth, snr;
     bool used = false;
+    bool operator==(const SatelliteInView &) const = default;
 };
 
 struct Epoch {
@@ -34,6 +35,7 @@ struct Epoch {
     std::optional<int> dgpsStation;
     std::vector<SatelliteInView> satellites;
     int sentences = 0; // sentences that contributed
+    bool operator==(const Epoch &) const = default;
 
     std::optional<double> altEllipsoid() const {
         if (altMsl && geoidSep) return *altMsl + *geoidSep;

@@ -127,6 +127,25 @@ void EpochAssembler::closeEpoch(Callback onEpoch) {
     gnsMode_.clear();
 }
 
+bool EpochAssembler::sameFuture(const EpochAssembler &o) const {
+    if (dialect_ != o.dialect_ || hasContent_ != o.hasContent_ || !(current_ == o.current_) ||
+        used_ != o.used_ || usedCount_ != o.usedCount_ || usedThisEpoch_ != o.usedThisEpoch_ ||
+        lastPdop_ != o.lastPdop_ || lastHdop_ != o.lastHdop_ || lastVdop_ != o.lastVdop_ ||
+        lastDate_ != o.lastDate_ || ggaQuality_ != o.ggaQuality_ || gsaFix_ != o.gsaFix_ ||
+        rmcMode_ != o.rmcMode_ || rmcStatus_ != o.rmcStatus_ || gnsMode_ != o.gnsMode_ ||
+        groups_.size() != o.groups_.size())
+        return false;
+    for (std::size_t i = 0; i < groups_.size(); ++i) {
+        const GsvGroup &a = groups_[i], &b = o.groups_[i];
+        // Only a group's age counts (it expires kGroupExpiryEpochs after its last refresh).
+        if (a.key != b.key || a.expectedTotal != b.expectedTotal || a.nextIndex != b.nextIndex ||
+            epochs_ - a.refreshedEpoch != o.epochs_ - b.refreshedEpoch ||
+            !(a.satellites == b.satellites) || !(a.pending == b.pending))
+            return false;
+    }
+    return true;
+}
+
 void EpochAssembler::flush(Callback onEpoch) {
     closeEpoch(onEpoch);
 }

@@ -29,6 +29,10 @@ public:
     void flush(Callback onEpoch);
 
     std::uint64_t epochs() const { return epochs_; }
+    // Whether both would turn the same messages into the same epochs from here on (what they
+    // hold, not how many epochs they have counted): how a log decoded in pieces finds the point
+    // where a piece started afresh agrees with the log read from its start.
+    bool sameFuture(const EpochAssembler &other) const;
     std::uint64_t incompleteGsvGroups() const { return incompleteGroups_; }
 
 private:

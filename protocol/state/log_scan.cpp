@@ -2,6 +2,7 @@
 
 #include "epoch_assembler.h"
 
+#include <atomic>
 #include <thread>
 #include <unordered_map>
 
@@ -58,8 +59,9 @@ SegmentRun runSegment(std::string_view seg, const DialectRegistry &registry,
     return r;
 }
 
-void addAddressStats(std::vector<AddressStats> &into, const std::vector<AddressStats> &from,
-                     int sign) {
+} // namespace
+
+void addAddressStats(std::vector<AddressStats> &into, const std::vector<AddressStats> &from) {
     std::unordered_map<std::string, std::size_t> index;
     for (std::size_t i = 0; i < into.size(); ++i) index.emplace(into[i].address, i);
     for (const auto &a : from) {
@@ -69,7 +71,7 @@ void addAddressStats(std::vector<AddressStats> &into, const std::vector<AddressS
             into.push_back(AddressStats{a.address});
         }
         AddressStats &t = into[it->second];
-        auto add = [sign](std::uint64_t &x, std::uint64_t y) { x = sign > 0 ? x + y : x - y; };
+        auto add = [](std::uint64_t &x, std::uint64_t y) { x += y; };
         add(t.sentences, a.sentences);
         add(t.decoded, a.decoded);
         add(t.decodeErrors, a.decodeErrors);
@@ -89,6 +91,8 @@ void addFramerStats(FramerStats &into, const FramerStats &f) {
     into.binaryAborted += f.binaryAborted;
 }
 
+namespace {
+
 bool sameCounts(const SegmentRun &a, const SegmentRun &b) {
     if (a.epochs != b.epochs || a.hasFirst != b.hasFirst ||
         a.addresses.size() != b.addresses.size())
@@ -105,8 +109,11 @@ bool sameCounts(const SegmentRun &a, const SegmentRun &b) {
     return true;
 }
 
+} // namespace
+
 // Segment boundaries: just after a '\n' near each equal share of the log.
-std::vector<std::string_view> cut(std::string_view log, unsigned pieces) {
+std::vector<std::string_view> cutLog(std::string_view log, unsigned pieces) {
+    if (pieces == 0) pieces = 1;
     std::vector<std::string_view> out;
     std::size_t start = 0;
     for (unsigned k = 1; k < pieces; ++k) {
@@ -121,7 +128,17 @@ std::vector<std::string_view> cut(std::string_view log, unsigned pieces) {
     return out;
 }
 
-} // namespace
+void runPieces(std::size_t count, unsigned threads, FunctionRef<void(std::size_t)> work) {
+    std::atomic<std::size_t> next{0};
+    auto loop = [&] {
+        for (std::size_t k; (k = next.fetch_add(1)) < count;) work(k);
+    };
+    const std::size_t helpers = std::min<std::size_t>(count, std::max(1u, threads)) - (count > 0);
+    std::vector<std::thread> workers;
+    for (std::size_t i = 0; i < helpers; ++i) workers.emplace_back(loop);
+    loop();
+    for (auto &w : workers) w.join();
+}
 
 LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
                       const DecoderOptions &options, unsigned threads,
@@ -130,23 +147,17 @@ LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
     const std::size_t bySize =
             std::max<std::size_t>(1, log.size() / std::max<std::size_t>(1, minSegmentBytes));
     const unsigned pieces = static_cast<unsigned>(std::min<std::size_t>(threads, bySize));
-    const std::vector<std::string_view> segs = cut(log, pieces);
+    const std::vector<std::string_view> segs = cutLog(log, pieces);
 
     std::vector<SegmentRun> runs(segs.size());
-    {
-        std::vector<std::thread> workers;
-        for (std::size_t k = 1; k < segs.size(); ++k)
-            workers.emplace_back(
-                    [&, k] { runs[k] = runSegment(segs[k], registry, options, nullptr); });
-        runs[0] = runSegment(segs[0], registry, options, nullptr);
-        for (auto &w : workers) w.join();
-    }
+    runPieces(segs.size(), static_cast<unsigned>(segs.size()),
+              [&](std::size_t k) { runs[k] = runSegment(segs[k], registry, options, nullptr); });
 
     LogScanResult result;
     result.segments = static_cast<unsigned>(segs.size());
     const Dialect *inForce = runs[0].finalDialect;
     addFramerStats(result.framer, runs[0].framer);
-    addAddressStats(result.addresses, runs[0].addresses, +1);
+    addAddressStats(result.addresses, runs[0].addresses);
     result.epochs = runs[0].epochs;
     std::optional<TimeOfDay> lastTime = runs[0].lastEpochTime;
     bool haveLast = runs[0].hasFirst;
@@ -169,7 +180,7 @@ LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
             }
         }
         addFramerStats(result.framer, r.framer);
-        addAddressStats(result.addresses, r.addresses, +1);
+        addAddressStats(result.addresses, r.addresses);
         result.epochs += r.epochs;
         // The epoch in progress at the cut was counted by both sides.
         if (haveLast && r.hasFirst && lastTime && r.firstEpochTime &&

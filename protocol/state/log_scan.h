@@ -8,6 +8,7 @@
 // segment that began without it while the log before it had named one is corrected by decoding
 // the lines before its own detection again with that dialect (or the whole segment, in the rare
 // case it never names one itself). An epoch cut by a segment boundary is counted once.
+#include "core/function_ref.h"
 #include "core/stream_decoder.h"
 
 #include <cstdint>
@@ -29,5 +30,18 @@ struct LogScanResult {
 LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
                       const DecoderOptions &options, unsigned threads,
                       std::size_t minSegmentBytes = 4 << 20);
+
+// The pieces scanLog decodes, for other whole-log passes (the log viewer's index): `log` cut
+// just after a '\n' near each of `pieces` equal shares (fewer when lines are too long). A
+// decoder started at a piece's first byte frames exactly what one reading from the start does.
+std::vector<std::string_view> cutLog(std::string_view log, unsigned pieces);
+
+// Calls work(k) once for every k in [0, count), on at most `threads` threads (the caller's
+// among them), each taking the next piece when it is done with one.
+void runPieces(std::size_t count, unsigned threads, FunctionRef<void(std::size_t)> work);
+
+// Exact merging of per-piece counts.
+void addFramerStats(FramerStats &into, const FramerStats &from);
+void addAddressStats(std::vector<AddressStats> &into, const std::vector<AddressStats> &from);
 
 } // namespace gnss

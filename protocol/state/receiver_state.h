@@ -19,6 +19,7 @@ struct BaselineState {
     std::optional<double> course, pitch;                 // degrees
     std::optional<char> mode;                            // mode letter of the sentence
     bool present() const { return length.has_value() || north.has_value(); }
+    bool operator==(const BaselineState &) const = default;
 };
 
 struct RtkState {
@@ -36,6 +37,7 @@ struct RtkState {
     std::optional<double> sdHeading;                      // degrees
     std::optional<double> gdop, pdop, hdop, vdop, tdop, ndop, edop;
     std::optional<double> velNorth, velEast, velUp; // m/s
+    bool operator==(const RtkState &) const = default;
 };
 
 struct AttitudeState {
@@ -43,6 +45,7 @@ struct AttitudeState {
     std::optional<TimeOfDay> time;
     std::optional<double> roll, pitch, yaw;           // degrees
     std::optional<double> accNorth, accEast, accDown; // m/s^2
+    bool operator==(const AttitudeState &) const = default;
 };
 
 struct TimeMarkEvent {
@@ -50,10 +53,12 @@ struct TimeMarkEvent {
     std::optional<double> towSeconds; // GPS time of week
     std::optional<TimeOfDay> utc;
     std::optional<double> lat, lon, altMsl;
+    bool operator==(const TimeMarkEvent &) const = default;
 };
 
 struct ReceiverIdentity {
     std::string vendor, model, firmware, hardware;
+    bool operator==(const ReceiverIdentity &) const = default;
 };
 
 struct ReceiverState {
@@ -68,6 +73,8 @@ struct ReceiverState {
     std::optional<bool> jamming; // jamming detected (where the receiver says)
 
     static constexpr std::size_t kMaxTimeMarks = 1000;
+    // Equal states give equal views (and, in a StateTracker, equal futures: see sameFuture).
+    bool operator==(const ReceiverState &) const = default;
     void addTimeMark(const TimeMarkEvent &e) {
         timeMarks.push_back(e);
         while (timeMarks.size() > kMaxTimeMarks) timeMarks.pop_front();

@@ -22,6 +22,10 @@ public:
     void flush(Callback onEpoch);
 
     const ReceiverState &state() const { return state_; }
+    // Whether both hold the same state and will turn the same messages into the same snapshots.
+    bool sameFuture(const StateTracker &o) const {
+        return dialect_ == o.dialect_ && state_ == o.state_ && epochs_.sameFuture(o.epochs_);
+    }
 
 private:
     EpochAssembler epochs_;
