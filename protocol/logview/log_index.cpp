@@ -1,0 +1,228 @@
+#include "log_index.h"
+
+#include "state/log_scan.h"
+
+#include <algorithm>
+#include <thread>
+
+namespace gnss::logview {
+namespace {
+
+struct PieceRun {
+    std::vector<EpochRecord> records;
+    std::vector<Checkpoint> checkpoints;
+    Checkpoint end;
+    FramerStats framer;
+    bool done = false;
+};
+
+Checkpoint freshStart(const DialectRegistry &registry, const DecoderOptions &options,
+                      std::uint64_t offset) {
+    return startOfLog(registry, options, offset);
+}
+
+std::uint64_t offsetOf(const char *base, const char *p) {
+    return static_cast<std::uint64_t>(p - base);
+}
+
+// Appends a checkpoint unless one for the same epoch count is already last.
+void addCheckpoint(std::vector<Checkpoint> &cps, Checkpoint &&c) {
+    if (!cps.empty() && cps.back().carry.emitted >= c.carry.emitted) return;
+    cps.push_back(std::move(c));
+}
+
+} // namespace
+
+const Checkpoint *LogIndex::checkpointFor(std::uint64_t k) const {
+    auto it = std::upper_bound(
+            checkpoints.begin(), checkpoints.end(), k,
+            [](std::uint64_t v, const Checkpoint &c) { return v < c.carry.emitted; });
+    if (it == checkpoints.begin()) return nullptr;
+    return &*std::prev(it);
+}
+
+Checkpoint startOfLog(const DialectRegistry &registry, const DecoderOptions &options,
+                      std::uint64_t start) {
+    Checkpoint c;
+    c.resume = start;
+    StreamDecoder probe(registry, options);
+    c.dialect = probe.dialect();
+    c.tracker = StateTracker(c.dialect);
+    c.carry.epochStart = start;
+    return c;
+}
+
+// Completes the index after `out.tail`: the unfinished line (if any) and the epoch in progress,
+// as a decoder does at the end of its input, into a copy of the tail state.
+void closeIndex(const char *base, std::string_view unfinished, const DialectRegistry &registry,
+                const IndexOptions &options, LogIndex &out) {
+    EpochRunner::Sinks sinks;
+    sinks.onEpoch = [&out](EpochRecord &&r, const ReceiverState &) { out.records.push_back(r); };
+    EpochRunner last(registry, options.decoder, base, options.checkpointEvery, std::move(sinks));
+    last.restore(out.tail);
+    const std::size_t before = out.records.size();
+    last.feed(unfinished);
+    last.finish();
+    out.openFramer = last.framerStats();
+    out.openEnd = out.indexedEnd + unfinished.size();
+    out.lastIsOpen = out.records.size() > before;
+}
+
+// Splits off what follows the last '\n'.
+std::pair<std::string_view, std::string_view> atLastLineEnd(std::string_view data) {
+    const std::size_t nl = data.rfind('\n');
+    const std::size_t cut = nl == std::string_view::npos ? 0 : nl + 1;
+    return {data.substr(0, cut), data.substr(cut)};
+}
+
+bool buildIndex(const char *base, std::string_view whole, const Checkpoint &from,
+                const DialectRegistry &registry, const IndexOptions &options, LogIndex &out,
+                const IndexControl &control) {
+    const auto [data, unfinished] = atLastLineEnd(whole);
+    const unsigned threads =
+            options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t every = std::max<std::size_t>(1, options.checkpointEvery);
+    // One piece per thread at least, and more on a big log (balance, smaller fix-ups' share).
+    const std::size_t bySize =
+            (data.size() + options.pieceBytes - 1) / std::max<std::size_t>(1, options.pieceBytes);
+    const unsigned wanted = static_cast<unsigned>(
+            std::clamp<std::size_t>(std::max<std::size_t>(bySize, threads), 1, 4096));
+    const std::vector<std::string_view> pieces = cutLog(data, std::max(1u, wanted));
+    std::vector<PieceRun> runs(pieces.size());
+    std::atomic<bool> firstSent{false};
+
+    auto decodePiece = [&](std::size_t k) {
+        PieceRun &run = runs[k];
+        const std::string_view piece = pieces[k];
+        const std::uint64_t pieceStart = offsetOf(base, piece.data());
+        EpochRunner::Sinks sinks;
+        sinks.onEpoch = [&run, &control, &firstSent, k](EpochRecord &&r, const ReceiverState &) {
+            if (k == 0 && run.records.empty() && control.onFirstEpoch && !firstSent.exchange(true))
+                control.onFirstEpoch(r);
+            run.records.push_back(r);
+        };
+        sinks.onCheckpoint = [&run](Checkpoint &&c) { run.checkpoints.push_back(std::move(c)); };
+        EpochRunner runner(registry, options.decoder, base, every, std::move(sinks));
+        runner.restore(k == 0 ? from : freshStart(registry, options.decoder, pieceStart));
+        if (!runner.feed(piece, control.cancel, control.bytesDone)) return;
+        run.end = runner.save(pieceStart + piece.size());
+        run.framer = runner.framerStats();
+        run.done = true;
+    };
+    runPieces(pieces.size(), threads, decodePiece);
+    for (const PieceRun &r : runs)
+        if (!r.done) return false;
+
+    // Merge: piece 0 is exact; each later one is checked against the true state at its start.
+    out.records.clear();
+    out.checkpoints.clear();
+    out.start = from.resume;
+    out.framer = {};
+    addCheckpoint(out.checkpoints, Checkpoint(from));
+    out.records = std::move(runs[0].records);
+    for (auto &c : runs[0].checkpoints) addCheckpoint(out.checkpoints, std::move(c));
+    addFramerStats(out.framer, runs[0].framer);
+    Checkpoint truth = std::move(runs[0].end);
+    for (std::size_t k = 1; k < runs.size(); ++k) {
+        PieceRun &run = runs[k];
+        addFramerStats(out.framer, run.framer);
+        const std::uint64_t pieceStart = offsetOf(base, pieces[k].data());
+        const std::uint64_t pieceEnd = pieceStart + pieces[k].size();
+        addCheckpoint(out.checkpoints, Checkpoint(truth));
+        EpochRunner::Sinks sinks;
+        sinks.onEpoch = [&out](EpochRecord &&r, const ReceiverState &) {
+            out.records.push_back(r);
+        };
+        sinks.onCheckpoint = [&out](Checkpoint &&c) {
+            addCheckpoint(out.checkpoints, std::move(c));
+        };
+        EpochRunner again(registry, options.decoder, base, every, std::move(sinks));
+        again.restore(truth);
+        std::uint64_t pos = pieceStart;
+        bool agreed = false;
+        for (std::size_t i = 0; i < run.checkpoints.size() && !agreed; ++i) {
+            Checkpoint &c = run.checkpoints[i];
+            again.feed(std::string_view(base + pos, c.resume - pos));
+            pos = c.resume;
+            Checkpoint now = again.save(pos);
+            if (!now.sameFuture(c)) continue;
+            agreed = true;
+            const std::uint64_t local = c.carry.emitted;
+            const std::uint64_t shift = now.carry.emitted - local;
+            addCheckpoint(out.checkpoints, std::move(now));
+            out.records.insert(out.records.end(),
+                               run.records.begin() + static_cast<std::ptrdiff_t>(local),
+                               run.records.end());
+            for (std::size_t j = i + 1; j < run.checkpoints.size(); ++j) {
+                run.checkpoints[j].carry.emitted += shift;
+                addCheckpoint(out.checkpoints, std::move(run.checkpoints[j]));
+            }
+            truth = std::move(run.end);
+            truth.carry.emitted += shift;
+        }
+        if (!agreed) {
+            again.feed(std::string_view(base + pos, pieceEnd - pos));
+            truth = again.save(pieceEnd);
+        }
+        run = PieceRun(); // memory back as soon as merged
+    }
+    out.tail = std::move(truth);
+    out.indexedEnd = from.resume + data.size();
+    closeIndex(base, unfinished, registry, options, out);
+    if (control.bytesDone) control.bytesDone->fetch_add(unfinished.size());
+    return true;
+}
+
+std::size_t extendIndex(const char *base, std::string_view whole, const DialectRegistry &registry,
+                        const IndexOptions &options, LogIndex &out) {
+    const auto [data, unfinished] = atLastLineEnd(whole);
+    if (out.lastIsOpen && !out.records.empty()) out.records.pop_back();
+    out.lastIsOpen = false;
+    const std::size_t changedFrom = out.records.size();
+    EpochRunner::Sinks sinks;
+    sinks.onEpoch = [&out](EpochRecord &&r, const ReceiverState &) { out.records.push_back(r); };
+    sinks.onCheckpoint = [&out](Checkpoint &&c) { addCheckpoint(out.checkpoints, std::move(c)); };
+    EpochRunner runner(registry, options.decoder, base, options.checkpointEvery, std::move(sinks));
+    runner.restore(out.tail);
+    runner.feed(data);
+    addFramerStats(out.framer, runner.framerStats());
+    out.indexedEnd += data.size();
+    out.tail = runner.save(out.indexedEnd);
+    closeIndex(base, unfinished, registry, options, out);
+    return changedFrom;
+}
+
+bool stateAtEpoch(const char *base, std::uint64_t dataEnd, const LogIndex &index, std::uint64_t k,
+                  const DialectRegistry &registry, const DecoderOptions &options,
+                  ReceiverState &out) {
+    if (k >= index.records.size()) return false;
+    const Checkpoint *cp = index.checkpointFor(k);
+    if (!cp) return false;
+    bool found = false;
+    EpochRunner::Sinks sinks;
+    std::uint64_t n = cp->carry.emitted;
+    sinks.onEpoch = [&](EpochRecord &&, const ReceiverState &s) {
+        if (n++ == k) {
+            out = s;
+            found = true;
+        }
+    };
+    EpochRunner runner(registry, options, base, index.records.size() + 1, std::move(sinks));
+    runner.restore(*cp);
+    // Epoch k completes on the first line of epoch k + 1: decode up to that line's end.
+    const std::uint64_t limit = std::min(dataEnd, index.openEnd);
+    std::uint64_t end = limit;
+    if (k + 1 < index.records.size()) {
+        const std::uint64_t next = index.records[k + 1].offset;
+        std::string_view rest(base + next, end - std::min(end, next));
+        const std::size_t eol = rest.find_first_of("\r\n");
+        if (eol != std::string_view::npos) end = next + eol + 1;
+        if (end < limit && base[end - 1] == '\r' && base[end] == '\n') ++end;
+    }
+    if (cp->resume > end) return false; // the file was cut short under us
+    runner.feed(std::string_view(base + cp->resume, end - cp->resume));
+    if (!found && k + 1 == index.records.size()) runner.finish();
+    return found;
+}
+
+} // namespace gnss::logview

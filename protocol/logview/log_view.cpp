@@ -1,0 +1,443 @@
+#include "log_view.h"
+
+#include "state/log_scan.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace gnss::logview {
+
+LogView::LogView(const DialectRegistry &registry, LogViewOptions options)
+    : registry_(registry), options_(std::move(options)) {}
+
+LogView::~LogView() {
+    cancel();
+    if (worker_.joinable()) worker_.join();
+}
+
+void LogView::open(const std::string &path) {
+    cancel();
+    if (worker_.joinable()) worker_.join();
+    {
+        std::unique_lock lock(mutex_);
+        map_.close();
+        host_ = HostTimes();
+        path_ = path;
+        error_.clear();
+        warnings_.clear();
+        gzipped_ = false;
+        first_.reset();
+        index_ = LogIndex();
+        events_.clear();
+        timeline_ = TimelineState();
+        eventState_ = EventState();
+        closedEvents_ = 0;
+    }
+    cancel_ = false;
+    bytesDone_ = bytesTotal_ = 0;
+    inflateProgress_ = 0;
+    phase_ = static_cast<int>(Phase::Indexing);
+    {
+        std::lock_guard lock(doneMutex_);
+        workerDone_ = false;
+    }
+    worker_ = std::thread([this, path] { run(path); });
+}
+
+void LogView::cancel() {
+    cancel_ = true;
+}
+
+bool LogView::waitUntilIndexed(int timeoutMs) const {
+    std::unique_lock lock(doneMutex_);
+    if (timeoutMs < 0) {
+        doneCv_.wait(lock, [this] { return workerDone_; });
+        return true;
+    }
+    return doneCv_.wait_for(lock, std::chrono::milliseconds(timeoutMs),
+                            [this] { return workerDone_; });
+}
+
+void LogView::warn(std::string text) {
+    warnings_.push_back(std::move(text));
+}
+
+void LogView::run(std::string path) {
+    auto finish = [this](Phase p) {
+        phase_ = static_cast<int>(p);
+        {
+            std::lock_guard lock(doneMutex_);
+            workerDone_ = true;
+        }
+        doneCv_.notify_all();
+    };
+    auto fail = [&](std::string why) {
+        {
+            std::unique_lock lock(mutex_);
+            error_ = std::move(why);
+        }
+        finish(Phase::Failed);
+    };
+    // The map and the host times are set up before anyone else can see them (Indexing phase:
+    // readers see an empty index and touch neither).
+    MappedLog probe;
+    if (!probe.open(path)) return fail(probe.error());
+    if (looksGzipped(probe.bytes(0, 2))) {
+        probe.close();
+        phase_ = static_cast<int>(Phase::Inflating);
+        std::string err;
+        const int fd = inflateToTemporary(path, err, &cancel_, &inflateProgress_);
+        if (fd < 0) {
+            if (err.empty()) return finish(Phase::Cancelled);
+            return fail(err);
+        }
+        std::unique_lock lock(mutex_);
+        if (!err.empty()) warn(err);
+        gzipped_ = true;
+        if (!map_.adopt(fd, path)) {
+            const std::string e = map_.error();
+            lock.unlock();
+            return fail(e);
+        }
+        phase_ = static_cast<int>(Phase::Indexing);
+    } else {
+        std::unique_lock lock(mutex_);
+        map_.open(path);
+        if (!map_.isOpen()) {
+            const std::string e = map_.error();
+            lock.unlock();
+            return fail(e);
+        }
+    }
+    const std::uint64_t size = map_.size();
+    const std::uint64_t start = std::min(options_.startOffset, size);
+    if (!gzipped_ && options_.hostTimes) {
+        std::unique_lock lock(mutex_);
+        if (!host_.load(path + ".idx", size) && !host_.error().empty()) warn(host_.error());
+    }
+    bytesTotal_ = size - start;
+
+    LogIndex built;
+    IndexControl control;
+    control.cancel = &cancel_;
+    control.bytesDone = &bytesDone_;
+    control.onFirstEpoch = [this](const EpochRecord &r) {
+        std::unique_lock lock(mutex_);
+        first_ = r;
+    };
+    const std::string_view data = map_.bytes(start, size - start);
+    const Checkpoint from = startOfLog(registry_, options_.index.decoder, start);
+    if (!buildIndex(map_.base(), data, from, registry_, options_.index, built, control))
+        return finish(Phase::Cancelled);
+    {
+        std::unique_lock lock(mutex_);
+        index_ = std::move(built);
+        if (index_.records.empty()) {
+            if (size == 0)
+                warn(path + " is empty");
+            else if (index_.framer.sentences == 0)
+                warn("no NMEA found in " + path + " (" + std::to_string(size) + " bytes)");
+            else
+                warn("no navigation epoch in " + path + " (" +
+                     std::to_string(index_.framer.sentences) + " sentences)");
+        }
+        if (!index_.records.empty() && !first_) first_ = index_.records.front();
+        finishTimeline(0);
+        if (map_.liveSize() < size)
+            warn(path + " got shorter while it was read: what was read is kept");
+    }
+    finish(Phase::Ready);
+}
+
+// Timeline flags and events of records[changedFrom, ...), the open last one on copies of the
+// state (it is redone when the file grows). Called with the lock held.
+void LogView::finishTimeline(std::size_t changedFrom) {
+    auto &recs = index_.records;
+    const std::size_t closed = recs.size() - (index_.lastIsOpen ? 1 : 0);
+    events_.resize(std::min(events_.size(), closedEvents_));
+    const HostTimes *host = host_.empty() ? nullptr : &host_;
+    if (changedFrom < closed) {
+        applyTimeline(recs, changedFrom, closed, timeline_, host, options_.gapFactor);
+        collectEvents(recs, changedFrom, closed, registry_, host, eventState_, events_);
+    }
+    closedEvents_ = events_.size();
+    if (index_.lastIsOpen) {
+        TimelineState t = timeline_;
+        EventState e = eventState_;
+        applyTimeline(recs, closed, recs.size(), t, host, options_.gapFactor);
+        collectEvents(recs, closed, recs.size(), registry_, host, e, events_);
+    }
+}
+
+LogView::Progress LogView::progress() const {
+    Progress p;
+    p.phase = static_cast<Phase>(phase_.load());
+    p.bytesTotal = bytesTotal_.load();
+    p.bytesDone = std::min(bytesDone_.load(), p.bytesTotal);
+    if (p.phase == Phase::Inflating)
+        p.fraction = inflateProgress_.load();
+    else if (p.phase == Phase::Ready)
+        p.fraction = 1;
+    else
+        p.fraction = p.bytesTotal ? static_cast<double>(p.bytesDone) / p.bytesTotal : 0;
+    return p;
+}
+
+std::string LogView::error() const {
+    std::shared_lock lock(mutex_);
+    return error_;
+}
+
+std::vector<std::string> LogView::warnings() const {
+    std::shared_lock lock(mutex_);
+    return warnings_;
+}
+
+std::optional<EpochRecord> LogView::firstEpoch() const {
+    std::shared_lock lock(mutex_);
+    return first_;
+}
+
+std::string LogView::path() const {
+    std::shared_lock lock(mutex_);
+    return path_;
+}
+
+bool LogView::gzipped() const {
+    std::shared_lock lock(mutex_);
+    return gzipped_;
+}
+
+bool LogView::hasHostTimes() const {
+    std::shared_lock lock(mutex_);
+    return !host_.empty();
+}
+
+std::uint64_t LogView::fileSize() const {
+    std::shared_lock lock(mutex_);
+    return map_.size();
+}
+
+std::uint64_t LogView::indexedEnd() const {
+    std::shared_lock lock(mutex_);
+    return index_.openEnd;
+}
+
+FramerStats LogView::framerStats() const {
+    std::shared_lock lock(mutex_);
+    FramerStats f = index_.framer;
+    addFramerStats(f, index_.openFramer);
+    return f;
+}
+
+std::string LogView::dialectName() const {
+    std::shared_lock lock(mutex_);
+    return index_.tail.dialect ? std::string(index_.tail.dialect->id) : std::string();
+}
+
+std::size_t LogView::epochCount() const {
+    std::shared_lock lock(mutex_);
+    return index_.records.size();
+}
+
+std::optional<EpochRecord> LogView::epoch(std::size_t k) const {
+    std::shared_lock lock(mutex_);
+    if (k >= index_.records.size()) return std::nullopt;
+    return index_.records[k];
+}
+
+void LogView::withRecords(const std::function<void(std::span<const EpochRecord>)> &f) const {
+    std::shared_lock lock(mutex_);
+    f(index_.records);
+}
+
+std::uint64_t LogView::epochEnd(std::size_t k) const {
+    std::shared_lock lock(mutex_);
+    if (k + 1 < index_.records.size()) return index_.records[k + 1].offset;
+    return index_.openEnd;
+}
+
+bool LogView::lastEpochOpen() const {
+    std::shared_lock lock(mutex_);
+    return index_.lastIsOpen;
+}
+
+std::uint64_t LogView::liveEnd() const {
+    return map_.liveSize();
+}
+
+bool LogView::stateAt(std::size_t k, ReceiverState &out) const {
+    std::shared_lock lock(mutex_);
+    if (!map_.isOpen()) return false;
+    return stateAtEpoch(map_.base(), liveEnd(), index_, k, registry_, options_.index.decoder, out);
+}
+
+std::optional<std::size_t> LogView::epochAt(const TimeSpec &t) const {
+    std::shared_lock lock(mutex_);
+    const auto &recs = index_.records;
+    if (t.kind == TimeSpec::Kind::Epoch)
+        return t.epoch < recs.size() ? std::optional<std::size_t>(t.epoch) : std::nullopt;
+    for (std::size_t i = 0; i < recs.size(); ++i) {
+        const EpochRecord &r = recs[i];
+        if (!r.hasTime()) continue;
+        if (t.kind == TimeSpec::Kind::Utc) {
+            if (r.has(kDateKnown) && r.utcMs >= t.ms) return i;
+        } else if (r.utcMs % 86'400'000 >= t.ms) {
+            return i;
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<std::size_t> LogView::epochAtOffset(std::uint64_t offset) const {
+    std::shared_lock lock(mutex_);
+    const auto &recs = index_.records;
+    auto it = std::upper_bound(recs.begin(), recs.end(), offset,
+                               [](std::uint64_t o, const EpochRecord &r) { return o < r.offset; });
+    if (it == recs.begin()) return recs.empty() ? std::nullopt : std::optional<std::size_t>(0);
+    return static_cast<std::size_t>(std::prev(it) - recs.begin());
+}
+
+std::vector<LogEvent> LogView::events() const {
+    std::shared_lock lock(mutex_);
+    return events_;
+}
+
+std::optional<std::size_t> LogView::nextEvent(std::size_t k) const {
+    std::shared_lock lock(mutex_);
+    auto it = std::upper_bound(events_.begin(), events_.end(), static_cast<std::uint64_t>(k),
+                               [](std::uint64_t v, const LogEvent &e) { return v < e.epoch; });
+    if (it == events_.end()) return std::nullopt;
+    return static_cast<std::size_t>(it->epoch);
+}
+
+std::optional<std::size_t> LogView::previousEvent(std::size_t k) const {
+    std::shared_lock lock(mutex_);
+    auto it = std::lower_bound(events_.begin(), events_.end(), static_cast<std::uint64_t>(k),
+                               [](const LogEvent &e, std::uint64_t v) { return e.epoch < v; });
+    if (it == events_.begin()) return std::nullopt;
+    return static_cast<std::size_t>(std::prev(it)->epoch);
+}
+
+std::vector<LogView::LineRef> LogView::linesAround(std::uint64_t offset, std::size_t before,
+                                                   std::size_t after) const {
+    std::shared_lock lock(mutex_);
+    std::vector<LineRef> out;
+    const std::uint64_t size = std::min(map_.size(), liveEnd());
+    if (!map_.isOpen() || size == 0) return out;
+    offset = std::min(offset, size - 1);
+    const char *b = map_.base();
+    // Start of the line holding `pos`; a "line" of junk without '\n' is cut every 4096 bytes,
+    // like the framer's longest line.
+    auto lineStart = [&](std::uint64_t pos) {
+        const std::uint64_t floor = pos > Framer::kMaxLine ? pos - Framer::kMaxLine : 0;
+        while (pos > floor && b[pos - 1] != '\n') --pos;
+        return pos;
+    };
+    const std::uint64_t holding = lineStart(offset);
+    std::uint64_t start = holding;
+    for (std::size_t i = 0; i < before && start > 0; ++i) start = lineStart(start - 1);
+    std::size_t fromHolding = 0;
+    for (std::uint64_t pos = start; pos < size;) {
+        if (pos >= holding && fromHolding++ >= after) break;
+        const std::uint64_t limit = std::min(size, pos + Framer::kMaxLine);
+        std::uint64_t end = pos;
+        while (end < limit && b[end] != '\n') ++end;
+        std::uint64_t textEnd = end;
+        if (textEnd > pos && b[textEnd - 1] == '\r') --textEnd;
+        out.push_back({pos, static_cast<std::uint32_t>(textEnd - pos)});
+        pos = end < size && b[end] == '\n' ? end + 1 : end;
+    }
+    return out;
+}
+
+std::string_view LogView::bytes(std::uint64_t offset, std::uint64_t length) const {
+    std::shared_lock lock(mutex_);
+    const std::uint64_t live = liveEnd();
+    if (offset >= live) return {};
+    return map_.bytes(offset, std::min(length, live - offset));
+}
+
+RangeStats LogView::stats(std::size_t first, std::size_t last, bool stationary) const {
+    std::shared_lock lock(mutex_);
+    return rangeStats(index_.records, first, last, stationary);
+}
+
+std::vector<AddressStats> LogView::messageStats(std::size_t first, std::size_t last) const {
+    std::shared_lock lock(mutex_);
+    const auto &recs = index_.records;
+    if (recs.empty() || first >= recs.size()) return {};
+    last = std::min(last, recs.size() - 1);
+    const std::uint64_t from = recs[first].offset;
+    const std::uint64_t to =
+            std::min(last + 1 < recs.size() ? recs[last + 1].offset : index_.openEnd, liveEnd());
+    if (to <= from) return {};
+    DecoderOptions o = options_.index.decoder;
+    if (const Checkpoint *cp = index_.checkpointFor(first); cp && cp->dialect)
+        o.dialect = std::string(cp->dialect->id);
+    return scanLog(map_.bytes(from, to - from), registry_, o,
+                   options_.index.threads ? options_.index.threads
+                                          : std::max(1u, std::thread::hardware_concurrency()))
+            .addresses;
+}
+
+bool LogView::exportRange(ExportFormat format, std::size_t first, std::size_t last,
+                          const ExportSink &sink, const std::string &name) const {
+    std::shared_lock lock(mutex_);
+    const auto &recs = index_.records;
+    if (recs.empty() || first >= recs.size()) {
+        // An empty range is still a valid (empty) document.
+        if (format == ExportFormat::Gpx) return writeGpx({}, 1, 0, name, sink);
+        if (format == ExportFormat::Kml) return writeKml({}, 1, 0, name, sink);
+        if (format == ExportFormat::Csv) return writeCsv({}, 1, 0, 0, sink);
+        return true;
+    }
+    last = std::min(last, recs.size() - 1);
+    switch (format) {
+    case ExportFormat::Gpx: return writeGpx(recs, first, last, name, sink);
+    case ExportFormat::Kml: return writeKml(recs, first, last, name, sink);
+    case ExportFormat::Csv: return writeCsv(recs, first, last, index_.openEnd, sink);
+    case ExportFormat::Nmea: {
+        const std::uint64_t from = first == 0 ? index_.start : recs[first].offset;
+        std::uint64_t to = last + 1 < recs.size() ? recs[last + 1].offset : index_.openEnd;
+        to = std::min(to, liveEnd());
+        for (std::uint64_t pos = from; pos < to;) {
+            const std::uint64_t n = std::min<std::uint64_t>(to - pos, 4 << 20);
+            if (!sink(map_.bytes(pos, n))) return false;
+            pos += n;
+        }
+        return true;
+    }
+    }
+    return false;
+}
+
+LogView::FollowResult LogView::follow() {
+    FollowResult r;
+    if (static_cast<Phase>(phase_.load()) != Phase::Ready) return r;
+    std::unique_lock lock(mutex_);
+    if (gzipped_) return r;
+    const std::uint64_t before = map_.size();
+    switch (map_.refresh()) {
+    case MappedLog::Change::Unchanged: return r;
+    case MappedLog::Change::Gone:
+        warn(path_ + " was deleted: what was read is kept (the bytes stay readable while open)");
+        return r;
+    case MappedLog::Change::Shrunk:
+        r.truncated = true;
+        warn(path_ + " was cut from " + std::to_string(before) + " to " +
+             std::to_string(map_.size()) +
+             " bytes while open: the epochs read are kept, their lines past the cut are gone");
+        return r;
+    case MappedLog::Change::Grown: break;
+    }
+    if (map_.size() <= index_.indexedEnd) return r;
+    const std::string_view gained = map_.bytes(index_.indexedEnd, map_.size() - index_.indexedEnd);
+    r.firstChanged = extendIndex(map_.base(), gained, registry_, options_.index, index_);
+    r.grew = true;
+    if (!first_ && !index_.records.empty()) first_ = index_.records.front();
+    finishTimeline(r.firstChanged);
+    return r;
+}
+
+} // namespace gnss::logview

@@ -1,0 +1,173 @@
+#include "range_stats.h"
+
+#include "log_time.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace gnss::logview {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double percentile(std::vector<double> &v, double p) {
+    if (v.empty()) return 0;
+    const std::size_t k =
+            std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5));
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+    return v[k];
+}
+
+bool isFix(FixType f) {
+    return f == FixType::Fix2D || f == FixType::Fix3D || f == FixType::Dgnss ||
+           f == FixType::RtkFloat || f == FixType::RtkFixed;
+}
+
+} // namespace
+
+Spread horizontalSpread(std::span<const double> lats, std::span<const double> lons) {
+    Spread s;
+    const std::size_t n = std::min(lats.size(), lons.size());
+    if (n == 0) return s;
+    // Mean about the first point (no trouble at the antimeridian for a small spread).
+    long double dLat = 0, dLon = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        dLat += lats[i] - lats[0];
+        double dl = lons[i] - lons[0];
+        if (dl > 180) dl -= 360;
+        if (dl < -180) dl += 360;
+        dLon += dl;
+    }
+    s.meanLat = lats[0] + static_cast<double>(dLat / n);
+    s.meanLon = lons[0] + static_cast<double>(dLon / n);
+    const double a = 6378137.0, e2 = 6.69437999014e-3;
+    const double sinPhi = std::sin(s.meanLat * kPi / 180);
+    const double w = std::sqrt(1 - e2 * sinPhi * sinPhi);
+    const double m = a * (1 - e2) / (w * w * w);                 // meridian radius
+    const double nRad = a / w * std::cos(s.meanLat * kPi / 180); // parallel radius
+    std::vector<double> r(n);
+    double sumSq = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        double dl = lons[i] - s.meanLon;
+        if (dl > 180) dl -= 360;
+        if (dl < -180) dl += 360;
+        const double east = dl * kPi / 180 * nRad;
+        const double north = (lats[i] - s.meanLat) * kPi / 180 * m;
+        r[i] = std::hypot(east, north);
+        sumSq += east * east + north * north;
+    }
+    s.drms2 = 2 * std::sqrt(sumSq / static_cast<double>(n));
+    s.cep50 = percentile(r, 0.5);
+    s.cep95 = percentile(r, 0.95);
+    return s;
+}
+
+RangeStats rangeStats(std::span<const EpochRecord> records, std::uint64_t first, std::uint64_t last,
+                      bool stationary) {
+    RangeStats s;
+    if (records.empty()) return s;
+    last = std::min<std::uint64_t>(last, records.size() - 1);
+    if (first > last) return s;
+    s.first = first;
+    s.last = last;
+    s.epochs = last - first + 1;
+    bool anySpeed = false;
+    if (stationary)
+        for (std::uint64_t i = first; i <= last && !anySpeed; ++i)
+            anySpeed = records[i].hasPosition() && !std::isnan(records[i].speed);
+    s.stationaryOnly = stationary && anySpeed;
+    std::vector<double> lats, lons;
+    double altSum = 0;
+    std::uint64_t altCount = 0;
+    std::optional<std::int64_t> prevMs;
+    double elapsed = 0;
+    for (std::uint64_t i = first; i <= last; ++i) {
+        const EpochRecord &r = records[i];
+        if (r.fix < s.perFix.size()) ++s.perFix[r.fix];
+        if (r.hasTime()) {
+            if (!s.startMs) {
+                s.startMs = r.utcMs;
+                s.dated = r.has(kDateKnown);
+            }
+            if (prevMs) {
+                const double step = static_cast<double>(r.utcMs - *prevMs) / 1000.0;
+                if (step > 0) elapsed += step;
+                if (i > first && r.has(kGapBefore)) {
+                    ++s.gaps;
+                    if (step > s.longestGapS) {
+                        s.longestGapS = step;
+                        s.longestGapEpoch = i;
+                    }
+                }
+            }
+            prevMs = r.utcMs;
+            s.endMs = r.utcMs;
+        }
+        if (i > first && r.has(kTimeBack)) ++s.timeJumps;
+        s.checksumErrors += r.checksumErrors;
+        if (r.has(kJunk)) ++s.epochsWithJunk;
+        if (!s.timeToFirstFixS && isFix(r.fixType())) s.timeToFirstFixS = elapsed;
+        if (!s.timeToRtkFixedS && r.fixType() == FixType::RtkFixed) s.timeToRtkFixedS = elapsed;
+        if (!std::isnan(r.hdop) && (!s.maxHdop || r.hdop > *s.maxHdop)) {
+            s.maxHdop = r.hdop;
+            s.maxHdopEpoch = i;
+        }
+        if (r.hasPosition() && (!s.stationaryOnly || (!std::isnan(r.speed) && r.speed < 0.5f))) {
+            lats.push_back(r.lat);
+            lons.push_back(r.lon);
+            if (!std::isnan(r.altMsl)) {
+                altSum += r.altMsl;
+                ++altCount;
+            }
+        }
+    }
+    s.durationS = elapsed;
+    s.positions = lats.size();
+    if (!lats.empty()) {
+        const Spread sp = horizontalSpread(lats, lons);
+        s.meanLat = sp.meanLat;
+        s.meanLon = sp.meanLon;
+        s.cep50 = sp.cep50;
+        s.cep95 = sp.cep95;
+        s.drms2 = sp.drms2;
+    }
+    if (altCount) s.meanAlt = altSum / static_cast<double>(altCount);
+    return s;
+}
+
+void RangeStats::writeJson(JsonWriter &w) const {
+    auto time = [&](const std::optional<std::int64_t> &ms) -> std::optional<std::string> {
+        if (!ms) return std::nullopt;
+        EpochRecord r;
+        r.utcMs = *ms;
+        if (dated) r.flags = kDateKnown;
+        return formatTime(r);
+    };
+    w.beginObject().field("first_epoch", first).field("last_epoch", last).field("epochs", epochs);
+    w.field("start", time(startMs)).field("end", time(endMs)).field("duration_s", durationS);
+    w.key("availability").beginObject();
+    for (std::size_t f = 0; f < perFix.size(); ++f)
+        if (perFix[f])
+            w.field(toString(static_cast<FixType>(f)), availability(static_cast<FixType>(f)));
+    w.endObject();
+    w.key("epochs_per_fix").beginObject();
+    for (std::size_t f = 0; f < perFix.size(); ++f)
+        if (perFix[f]) w.field(toString(static_cast<FixType>(f)), perFix[f]);
+    w.endObject();
+    w.field("time_to_first_fix_s", timeToFirstFixS).field("time_to_rtk_fixed_s", timeToRtkFixedS);
+    w.field("gaps", gaps).field("longest_gap_s", longestGapS);
+    if (longestGapS > 0) w.field("longest_gap_epoch", longestGapEpoch);
+    w.field("time_jumps", timeJumps).field("checksum_errors", checksumErrors);
+    w.field("epochs_with_junk", epochsWithJunk);
+    w.key("position").beginObject();
+    w.field("count", positions).field("stationary_only", stationaryOnly);
+    w.field("mean_lat", meanLat).field("mean_lon", meanLon).field("mean_alt_msl", meanAlt);
+    w.field("cep50_m", cep50).field("cep95_m", cep95).field("drms2_m", drms2);
+    w.endObject();
+    w.field("max_hdop", maxHdop);
+    if (maxHdop) w.field("max_hdop_epoch", maxHdopEpoch);
+    w.endObject();
+}
+
+} // namespace gnss::logview
