@@ -21,6 +21,10 @@ packages=(
   # Qt6Gui's CMake config looks for OpenGL headers (WrapOpenGL).
   libgl-dev
   libbenchmark-dev fonts-dejavu-core
+  # zlib: the log viewer opens .gz logs (inflated on its worker thread).
+  zlib1g-dev
+  # gpsbabel reads the log viewer's GPX and KML exports back in the tests (they skip without it).
+  gpsbabel
   # The smoke test runs the real binary on an X server: xvfb-run (xvfb) needs xauth.
   xvfb xauth
   # str2str (RTKLIB) is the real NTRIP 1 caster the corrections tests talk to.

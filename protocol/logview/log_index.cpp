@@ -119,7 +119,11 @@ bool buildIndex(const char *base, std::string_view whole, const Checkpoint &from
     out.start = from.resume;
     out.framer = {};
     addCheckpoint(out.checkpoints, Checkpoint(from));
-    out.records = std::move(runs[0].records);
+    std::size_t total = 0;
+    for (const PieceRun &r : runs) total += r.records.size();
+    out.records.reserve(total + 1);
+    out.records.insert(out.records.end(), runs[0].records.begin(), runs[0].records.end());
+    runs[0].records = {};
     for (auto &c : runs[0].checkpoints) addCheckpoint(out.checkpoints, std::move(c));
     addFramerStats(out.framer, runs[0].framer);
     Checkpoint truth = std::move(runs[0].end);
