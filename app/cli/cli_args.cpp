@@ -25,11 +25,20 @@ Args::Args(int argc, char **argv, int first, std::span<const OptionSpec> known) 
             help_ = true;
             continue;
         }
-        if (!a.starts_with("--")) { // no short options besides -h: "-x" is a typo, not a file
-            fail("unknown option " + std::string(a));
-            continue;
+        std::string name;
+        if (!a.starts_with("--")) {
+            // Short options are those a command declares ("-o"); "-x" is a typo, not a file.
+            const OptionSpec *shortSpec = nullptr;
+            for (const OptionSpec &o : known)
+                if (a.size() == 2 && o.shortName && o.shortName == a[1]) shortSpec = &o;
+            if (!shortSpec) {
+                fail("unknown option " + std::string(a));
+                continue;
+            }
+            name = std::string(shortSpec->name);
+        } else {
+            name = std::string(a.substr(2));
         }
-        std::string name(a.substr(2));
         std::optional<std::string> inlineValue;
         if (const auto eq = name.find('='); eq != std::string::npos) {
             inlineValue = name.substr(eq + 1);

@@ -20,6 +20,7 @@ struct OptionSpec {
     std::string_view name;
     std::string_view value;
     std::string_view help;
+    char shortName = 0; // "-o" for --out where a command takes it; 0: none
 };
 
 class Args {

@@ -22,6 +22,10 @@ struct CliContext {
 int cmdDecode(const CliContext &ctx);
 int cmdEpochs(const CliContext &ctx);
 int cmdStats(const CliContext &ctx);
+// The log viewer's engine (cmd_export.cpp, cmd_summary.cpp, cmd_play.cpp).
+int cmdExport(const CliContext &ctx);
+int cmdSummary(const CliContext &ctx);
+int cmdPlay(const CliContext &ctx);
 int cmdSchema(const CliContext &ctx);
 int cmdEncode(const CliContext &ctx);
 // Link commands (cmd_link.cpp): live receivers over serial/TCP, replay, recording.

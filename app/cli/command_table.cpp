@@ -43,21 +43,18 @@ constexpr OptionSpec kFast{"fast", "", "replay without waiting"};
 
 constexpr OptionSpec kProbeOptions[] = {kPort, kTcp, kSim, kLinkBaud};
 constexpr OptionSpec kMonitorOptions[] = {
-        kPort,
-        kTcp,
-        kReplay,
-        kSim,
-        kLinkBaud,
-        kDialect,
-        kLenient,
-        {"epochs", "", "one JSON object per navigation epoch instead of per sentence"},
-        kDuration,
-        kSpeed,
+        kPort,     kTcp,
+        kReplay,   kSim,
+        kLinkBaud, kDialect,
+        kLenient,  {"epochs", "", "one JSON object per navigation epoch instead of per sentence"},
+        kDuration, kSpeed,
         kFast,
 };
 constexpr OptionSpec kRecordOptions[] = {
-        kPort,     kTcp,
-        kSim,      kLinkBaud,
+        kPort,
+        kTcp,
+        kSim,
+        kLinkBaud,
         {"out", "FILE", "write the bytes received to FILE, their index to FILE.idx"},
         kDuration,
 };
@@ -93,6 +90,31 @@ constexpr OptionSpec kNtripOptions[] = {
         kTcp,
 };
 
+// The log viewer's commands (export, summary, play): the range and the decoding.
+constexpr OptionSpec kFrom{"from", "T",
+                           "start at the first epoch at or after T: a UTC time "
+                           "(2024-03-15T10:00:00Z), a time of day (10:00:00) or an epoch (#120)"};
+constexpr OptionSpec kTo{"to", "T", "end with the last epoch at or before T (as --from)"};
+constexpr OptionSpec kExportOptions[] = {
+        {"format", "gpx|kml|csv|nmea", "what to write (docs/export.md)"}, kFrom,    kTo,
+        {"out", "OUT", "the file to write (- for standard output)", 'o'}, kDialect, kLenient,
+};
+constexpr OptionSpec kSummaryOptions[] = {
+        {"json", "", "one JSON object instead of the text"}, kFrom, kTo, kDialect, kLenient,
+};
+constexpr OptionSpec kPlayOptions[] = {
+        {"pty", "", "play to a new pseudo-terminal (its path is printed on standard output)"},
+        {"tcp", "PORT", "play to TCP clients on 127.0.0.1:PORT (starts with the first client)"},
+        kPort,
+        {"baud", "B", "with --port: line speed (default 9600)"},
+        {"speed", "X", "play X times faster (below 1: slower)"},
+        {"loop", "", "start again at the end"},
+        kFrom,
+        kTo,
+        kDialect,
+        kLenient,
+};
+
 // `details` is one paragraph per line, wrapped at 80 columns when printed; a paragraph that
 // starts with spaces is a list item, continued under its text.
 constexpr CommandSpec kCommands[] = {
@@ -115,6 +137,32 @@ constexpr CommandSpec kCommands[] = {
          "long, epochs, the dialect recognised and the decoding speed. A regular file is decoded "
          "on every core with the same counts as one front-to-back pass.\n"
          "Exit status: 0 the input was read to its end, 1 it could not be read, 2 usage error.\n"},
+        {"export", cmdExport, "export --format gpx|kml|csv|nmea [--from T] [--to T] FILE -o OUT",
+         "a log or a range of it as GPX, KML, CSV or its NMEA bytes", kExportOptions,
+         "Indexes FILE (any NMEA log, a recording, a .gz log) and writes the epochs from --from to "
+         "--to: GPX 1.1 (a track point per epoch with a position: time, ele, fix, sat, hdop), "
+         "KML (the track coloured by fix type), CSV (one row per epoch, columns in "
+         "docs/export.md) or nmea (the bytes of those epochs exactly as they are in FILE).\n"
+         "Exit status: 0 written, 1 FILE unreadable or OUT not writable, 2 usage error.\n"},
+        {"summary", cmdSummary, "summary [--json] [--from T] [--to T] FILE",
+         "what a log holds: duration, fix availability, gaps, CEP, events", kSummaryOptions,
+         "Indexes FILE and prints its duration, epochs, availability per fix type, gaps, time "
+         "jumps, time to first fix and to RTK fixed, CEP50/CEP95/2DRMS of the stationary part "
+         "(speed under 0.5 m/s; every position when no speed is known), the largest HDOP and "
+         "the events (fix changes, gaps, resets, checksum-error bursts, dialect changes, time "
+         "marks, jamming, base station changes). --json prints one JSON object.\n"
+         "Exit status: 0 done, 1 FILE unreadable, 2 usage error.\n"},
+        {"play", cmdPlay,
+         "play FILE --pty|--tcp PORT|--port P [--speed X] [--loop] [--from T] [--to T]",
+         "play a log out at its own pace, like gpsfake", kPlayOptions,
+         "Sends the bytes of FILE (or of the epochs from --from to --to) exactly as they are, "
+         "each epoch when it is due: at the pace of the recording's host times (FILE.idx) when "
+         "there are some, else of the epochs' UTC times (a reset's step back and missing times "
+         "add no wait); --speed X plays X times faster. --pty prints the new pseudo-terminal's "
+         "path and ends when its reader closes it; --tcp listens on 127.0.0.1 and starts with "
+         "the first client; --port writes to a serial port.\n"
+         "Exit status: 0 played to the end (or the reader left), 1 FILE or the output cannot be "
+         "opened, 2 usage error, 130 interrupted.\n"},
         {"schema",
          cmdSchema,
          "schema DIALECT",
@@ -150,8 +198,7 @@ constexpr CommandSpec kCommands[] = {
          "sentences per rate) and error.\n"
          "Exit status: 0 found, 1 nothing found or the port cannot be opened, 2 usage error, 130 "
          "interrupted.\n"},
-        {"monitor", cmdMonitor,
-         "monitor --port P|--tcp HOST:PORT|--replay FILE|--sim D [OPTIONS]",
+        {"monitor", cmdMonitor, "monitor --port P|--tcp HOST:PORT|--replay FILE|--sim D [OPTIONS]",
          "decode a live receiver, a TCP source or a replayed log", kMonitorOptions,
          "Decodes live: one JSON object per sentence as decode prints, or per epoch with --epochs "
          "as epochs prints. A lost serial or TCP link is reported on standard error and retried. "
@@ -202,8 +249,7 @@ constexpr CommandSpec kCommands[] = {
          "and at the end one summary object (frames, bytes, bytes skipped, CRC failures, frames "
          "per message type) on standard error. Bytes outside frames are skipped.\n"
          "Exit status: 0 the input was read to its end, 1 it could not be read, 2 usage error.\n"},
-        {"ntrip", cmdNtrip,
-         "ntrip --caster HOST:PORT --mount M|--sourcetable|--nearest [OPTIONS]",
+        {"ntrip", cmdNtrip, "ntrip --caster HOST:PORT --mount M|--sourcetable|--nearest [OPTIONS]",
          "NTRIP: a caster's source table, or a mountpoint's RTCM 3", kNtripOptions,
          "NTRIP revision 1 or 2 (chunked transfer decoded before RTCM framing). --sourcetable "
          "prints one JSON object per mountpoint (with its distance when a position is known); "
@@ -269,7 +315,10 @@ void appendOptions(std::string &out, std::span<const OptionSpec> options) {
     const OptionSpec help{"help", "", "this help"};
     const OptionSpec version{"version", "", "the program's version"};
     auto label = [](const OptionSpec &o) {
-        std::string l = (o.name == "help" ? "-h, --" : "--") + std::string(o.name);
+        std::string l = o.name == "help" ? "-h, --"
+                        : o.shortName    ? std::string("-") + o.shortName + ", --"
+                                         : std::string("--");
+        l += o.name;
         if (!o.value.empty()) l += " " + std::string(o.value);
         return l;
     };

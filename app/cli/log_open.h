@@ -1,0 +1,23 @@
+#pragma once
+// What export, summary and play share: the log viewer's engine opened on FILE (with --dialect
+// and --lenient), and the epochs between --from and --to.
+#include "cli_commands.h"
+#include "log_view.h"
+
+#include <memory>
+
+namespace gnss::cli {
+
+struct OpenedLog {
+    std::unique_ptr<logview::LogView> view;
+    std::string path;
+    std::size_t first = 0, last = 0; // epochs [first, last]; last < first: none
+    bool empty() const { return last < first; }
+};
+
+// Opens the one positional FILE and indexes it (progress on standard error when it is a
+// terminal). Returns 0 on success, else the exit status (1 unreadable, 2 usage) with the message
+// printed. An empty log or one without NMEA opens (its warnings are printed).
+int openLogForCommand(const CliContext &ctx, OpenedLog &out);
+
+} // namespace gnss::cli
