@@ -38,11 +38,14 @@ void applyTimeline(std::vector<EpochRecord> &records, std::size_t from, std::siz
         }
         if (r.hasTime()) {
             if (!(flags & kDateKnown)) {
-                // Time of day only: a step back of more than 12 h is the next day.
+                // Time of day only: the nearer reading wins. A step back of more than 12 h is
+                // the next day; one forward of more than 12 h is a step back past midnight.
                 const std::int64_t ms = r.utcMs;
                 if (st.haveTime && ms < st.prevMsOfDay - 43'200'000) {
                     st.dayOffsetMs += 86'400'000;
                     flags |= kMidnight;
+                } else if (st.haveTime && ms > st.prevMsOfDay + 43'200'000) {
+                    st.dayOffsetMs -= 86'400'000;
                 }
                 st.prevMsOfDay = ms;
                 r.utcMs = ms + st.dayOffsetMs;

@@ -62,6 +62,14 @@ void LogView::warn(std::string text) {
     warnings_.push_back(std::move(text));
 }
 
+// Whether any sentence of a log without epochs decodes (then it is NMEA, just not positions).
+bool LogView::anyDecoded(std::string_view data) const {
+    const LogScanResult r = scanLog(data, registry_, options_.index.decoder, 1);
+    for (const AddressStats &a : r.addresses)
+        if (a.decoded) return true;
+    return false;
+}
+
 void LogView::run(std::string path) {
     auto finish = [this](Phase p) {
         phase_ = static_cast<int>(p);
@@ -135,7 +143,7 @@ void LogView::run(std::string path) {
         if (index_.records.empty()) {
             if (size == 0)
                 warn(path + " is empty");
-            else if (index_.framer.sentences == 0)
+            else if (index_.framer.sentences == 0 || !anyDecoded(data))
                 warn("no NMEA found in " + path + " (" + std::to_string(size) + " bytes)");
             else
                 warn("no navigation epoch in " + path + " (" +

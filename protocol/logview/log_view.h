@@ -127,6 +127,7 @@ private:
     void run(std::string path);
     void finishTimeline(std::size_t changedFrom);
     void warn(std::string text);
+    bool anyDecoded(std::string_view data) const;
     std::uint64_t liveEnd() const;
 
     const DialectRegistry &registry_;

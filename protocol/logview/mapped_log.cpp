@@ -170,7 +170,14 @@ int inflateToTemporary(const std::string &path, std::string &error, const std::a
                     " (the part before it is kept)";
             break; // keep what was inflated: a truncated .gz is still a log
         }
-        if (n == 0) break;
+        if (n == 0) {
+            int code = Z_OK;
+            const char *msg = ::gzerror(gz, &code);
+            if (code != Z_OK && code != Z_STREAM_END)
+                error = path + ": " + (msg && *msg ? msg : "gzip data broken") +
+                        " (the part before it is kept)";
+            break;
+        }
         for (std::size_t done = 0; done < static_cast<std::size_t>(n);) {
             const ssize_t w = ::write(out, buf.data() + done, static_cast<std::size_t>(n) - done);
             if (w <= 0) {
