@@ -3,6 +3,7 @@
 // One line per receiver family (DESIGN.md: "a new vendor costs one folder plus one registry line").
 #include "geostar/geostar_dialect.h"
 #include "nemerix/nemerix_dialect.h"
+#include "nmea/nmea_rules.h"
 #include "nvs/nvs_dialect.h"
 
 namespace gnss {
@@ -18,13 +19,24 @@ const Dialect &nmeaDialect() {
     return d;
 }
 
-DialectRegistry makeBuiltinRegistry() {
-    return DialectRegistry({
+std::vector<const Dialect *> builtinDialects() {
+    return {
             &nvs::dialect(),
             &geostar::dialect(),
             &nemerix::dialect(),
             &nmeaDialect(),
-    });
+    };
+}
+
+DialectRegistry makeBuiltinRegistry() {
+    return makeRegistry({});
+}
+
+DialectRegistry makeRegistry(const std::vector<const Dialect *> &more) {
+    std::vector<const Dialect *> all = builtinDialects();
+    // Another family before the plain NMEA record, which claims nothing but standard sentences.
+    all.insert(all.end() - 1, more.begin(), more.end());
+    return DialectRegistry(standardSentenceRules(), std::move(all));
 }
 
 } // namespace gnss

@@ -149,7 +149,5 @@ struct Dialect {
     std::string_view renamablePrefix;
 };
 
-// The standard sentence table (GGA, RMC, GSA, GSV, ...), used by every dialect.
-std::span<const SentenceRule> standardSentenceRules();
 
 } // namespace gnss

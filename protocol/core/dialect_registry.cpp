@@ -9,9 +9,10 @@ SatelliteRef DecodeContext::mapSatelliteByDialect(Constellation system, int id) 
     return dialect_->mapSatellite(system, id);
 }
 
-DialectRegistry::DialectRegistry(std::vector<const Dialect *> dialects)
+DialectRegistry::DialectRegistry(std::span<const SentenceRule> standardRules,
+                                 std::vector<const Dialect *> dialects)
     : dialects_(std::move(dialects)) {
-    for (const auto &r : standardSentenceRules()) {
+    for (const auto &r : standardRules) {
         if (r.match == AddressMatch::Type) types_.emplace(r.address, Match{&r, nullptr});
         if (r.match == AddressMatch::Query) query_ = Match{&r, nullptr};
     }
