@@ -15,6 +15,7 @@ const Dialect &nmeaDialect() {
             .rules = standardSentenceRules(),
             // A standard query (NMEA 0183 "Q"): the computer (CC) asks the GPS (GP) for a GGA.
             .consoleExample = "$CCGPQ,GGA",
+            .summary = "any NMEA-0183 receiver (2.x to 4.11): standard sentences only",
     };
     return d;
 }
