@@ -1,7 +1,14 @@
 #!/usr/bin/env bash
 # GNSS Workbench quick start for a fresh Debian 12 machine.
 #   ./quickstart.sh run   install what is missing, build, start gnss-workbench (simulated receiver)
-#   ./quickstart.sh test  install what is missing, build, run the whole test suite headless
+#   ./quickstart.sh test  install what is missing, then three stages, each built and run headless:
+#                         the normal build and the whole suite; the asan build (AddressSanitizer
+#                         + UBSan) and the whole suite; the tsan build (ThreadSanitizer) and the
+#                         suites of the threaded code (ctest label tsan). Fails when any stage
+#                         fails (a sanitizer finding fails its test); prints each stage's time.
+#                         GNSS_TEST_STAGES="dev" (or "asan tsan", ...) runs fewer stages.
+#   ./quickstart.sh fuzz SECONDS [HARNESS...]
+#                         install clang and libFuzzer too, run tests/fuzz/run.sh
 # Idempotent: packages already installed are not touched and the build is incremental.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -40,6 +47,8 @@ packages=(
   # man --warnings checks that the manual pages format cleanly.
   man-db
 )
+# The fuzz preset (tests/fuzz): Debian's clang 14 and its libFuzzer.
+[ "$mode" = fuzz ] && packages+=(clang-14 libfuzzer-14-dev)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -53,21 +62,48 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake --preset "$preset" >/dev/null
-cmake --build --preset "$preset" --parallel "$(nproc)"
-
 case "$mode" in
   run)
+    cmake --preset "$preset" >/dev/null
+    cmake --build --preset "$preset" --parallel "$(nproc)"
     # With no arguments, start on the built-in simulated NV08C-RTK.
     [ $# -eq 0 ] && set -- --sim nvs
     exec "build/$preset/app/gui/gnss-workbench" "$@"
     ;;
   test)
     export QT_QPA_PLATFORM=offscreen
-    ctest --preset "$preset" "$@"
+    stages=${GNSS_TEST_STAGES:-"$preset asan tsan"}
+    summary=()
+    failed=0
+    for stage in $stages; do
+      echo "=== stage $stage: build"
+      start=$SECONDS
+      status=ok
+      if cmake --preset "$stage" >/dev/null &&
+        cmake --build --preset "$stage" --parallel "$(nproc)"; then
+        built=$((SECONDS - start))
+        echo "=== stage $stage: tests"
+        ctest --preset "$stage" "$@" || status=FAILED
+      else
+        built=$((SECONDS - start))
+        status="FAILED (build)"
+      fi
+      [ "$status" = ok ] || failed=1
+      line=$(printf '%-5s %-15s build %4d s, tests %4d s, total %4d s' "$stage" "$status" \
+        "$built" $((SECONDS - start - built)) $((SECONDS - start)))
+      summary+=("$line")
+      echo "=== stage $line"
+    done
+    echo "=== stages (wall time):"
+    printf '    %s\n' "${summary[@]}"
+    echo "    all   $SECONDS s"
+    exit $failed
+    ;;
+  fuzz)
+    exec tests/fuzz/run.sh "$@"
     ;;
   *)
-    echo "usage: $0 run|test" >&2
+    echo "usage: $0 run|test|fuzz" >&2
     exit 2
     ;;
 esac

@@ -3,6 +3,7 @@
 // One line per receiver family (DESIGN.md: "a new vendor costs one folder plus one registry line").
 #include "geostar/geostar_dialect.h"
 #include "nemerix/nemerix_dialect.h"
+#include "nmea/nmea_rules.h"
 #include "nvs/nvs_dialect.h"
 
 namespace gnss {
@@ -14,17 +15,29 @@ const Dialect &nmeaDialect() {
             .rules = standardSentenceRules(),
             // A standard query (NMEA 0183 "Q"): the computer (CC) asks the GPS (GP) for a GGA.
             .consoleExample = "$CCGPQ,GGA",
+            .summary = "any NMEA-0183 receiver (2.x to 4.11): standard sentences only",
     };
     return d;
 }
 
-DialectRegistry makeBuiltinRegistry() {
-    return DialectRegistry({
+std::vector<const Dialect *> builtinDialects() {
+    return {
             &nvs::dialect(),
             &geostar::dialect(),
             &nemerix::dialect(),
             &nmeaDialect(),
-    });
+    };
+}
+
+DialectRegistry makeBuiltinRegistry() {
+    return makeRegistry({});
+}
+
+DialectRegistry makeRegistry(const std::vector<const Dialect *> &more) {
+    std::vector<const Dialect *> all = builtinDialects();
+    // Another family before the plain NMEA record, which claims nothing but standard sentences.
+    all.insert(all.end() - 1, more.begin(), more.end());
+    return DialectRegistry(standardSentenceRules(), std::move(all));
 }
 
 } // namespace gnss

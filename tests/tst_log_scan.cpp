@@ -124,6 +124,43 @@ private slots:
             expectSame(par, seq);
         }
     }
+
+    // An epoch whose time-carrying sentences are all on one side of a cut, with only GSV on the
+    // other side, is one epoch (fuzz_log_scan found it counted twice: a segment without any
+    // time gave an epoch of its own).
+    void epochCutFromItsTime_data() {
+        QTest::addColumn<QString>("shape");
+        QTest::addColumn<unsigned>("threads");
+        QTest::newRow("GSV before the log's first time") << "head" << 2u;
+        QTest::newRow("GSV after the log's last time") << "tail" << 2u;
+        QTest::newRow("a middle segment of GSV alone") << "middle" << 3u;
+    }
+    void epochCutFromItsTime() {
+        QFETCH(QString, shape);
+        QFETCH(unsigned, threads);
+        const std::string gsv =
+                buildSentence("GPGSV,2,1,05,01,40,083,46,02,17,308,41,03,07,344,39,04,22,228,45") +
+                "\r\n";
+        const std::string rmc =
+                buildSentence("GPRMC,120000.00,A,4807.038,N,01131.000,E,0.1,90.0,230394,,,A") +
+                "\r\n";
+        const std::string gga =
+                buildSentence("GPGGA,120000.00,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,") +
+                "\r\n";
+        std::string many;
+        for (int i = 0; i < 60; ++i) many += gsv;
+        std::string log;
+        if (shape == "head") log = many + rmc;
+        if (shape == "tail") log = rmc + many;
+        if (shape == "middle") log = gga + many + many + rmc;
+        const DialectRegistry reg = makeBuiltinRegistry();
+        const DecoderOptions o;
+        const LogScanResult seq = sequential(log, reg, o);
+        QCOMPARE(seq.epochs, std::uint64_t{1});
+        const LogScanResult par = scanLog(log, reg, o, threads, 16);
+        QCOMPARE(par.segments, threads);
+        expectSame(par, seq);
+    }
 };
 
 QTEST_APPLESS_MAIN(TestLogScan)

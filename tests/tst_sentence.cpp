@@ -1,4 +1,5 @@
 // Sentence: checksum, address, talker/type and fields.
+#include "nmea/nmea_rules.h"
 #include "core/dialect_registry.h"
 #include "core/sentence.h"
 #include "core/sentence_builder.h"
@@ -135,7 +136,7 @@ private slots:
                 {"SGG", gnss::AddressMatch::Type,
                  [](const Sentence &, gnss::DecodeContext &) { return false; }, "decoy"}};
         static const gnss::Dialect vendor{.id = "test", .displayName = "Test", .rules = rules};
-        gnss::DialectRegistry reg({&vendor});
+        gnss::DialectRegistry reg(gnss::standardSentenceRules(), {&vendor});
         auto m = reg.lookup("GPSGG", nullptr);
         QVERIFY(m.rule);
         QVERIFY(m.rule->match == gnss::AddressMatch::Whole);

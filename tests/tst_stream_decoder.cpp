@@ -1,4 +1,5 @@
 // StreamDecoder: checksum policy, counting, dialect detection, aliases, and surviving any bytes.
+#include "nmea/nmea_rules.h"
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
 #include "dialects.h"
@@ -66,7 +67,7 @@ private slots:
     }
 
     void missingChecksumIsADialectProperty() {
-        const DialectRegistry reg({&kVendor, &nmeaDialect()});
+        const DialectRegistry reg(standardSentenceRules(), {&kVendor, &nmeaDialect()});
         const std::string lines = "$GPGGA,120000,,,,,0,,,,,,,,\r\n$PTSTA,1\r\n";
         StreamDecoder nmea(reg, {.dialect = "nmea"});
         auto c = run(nmea, lines);
@@ -77,7 +78,7 @@ private slots:
     }
 
     void autoDetectionNamesTheDialectFromItsSentences() {
-        const DialectRegistry reg({&kVendor, &nmeaDialect()});
+        const DialectRegistry reg(standardSentenceRules(), {&kVendor, &nmeaDialect()});
         StreamDecoder dec(reg);
         QVERIFY(dec.dialect() == nullptr);
         run(dec, "$GPGGA,120000,,,,,0,,,,,,,,*55\r\n");
@@ -89,7 +90,7 @@ private slots:
     }
 
     void renamedPrefixIsReadThroughAnAlias() {
-        const DialectRegistry reg({&kVendor, &nmeaDialect()});
+        const DialectRegistry reg(standardSentenceRules(), {&kVendor, &nmeaDialect()});
         StreamDecoder dec(reg, {.addressAliases = {{"PXYZA", "PTSTA"}}});
         QCOMPARE(run(dec, buildSentence("PXYZA,1") + "\n").decoded, 1);
         QCOMPARE(dec.addressStats().front().address, std::string("PXYZA"));

@@ -291,11 +291,8 @@ int cmdConfig(const CliContext &ctx) {
         return applyValues(engine, [&] { return engine.apply(sets); });
     }
     if (action == "action") {
-        for (config::Action a :
-             {config::Action::SaveToFlash, config::Action::RestoreDefaults,
-              config::Action::ColdStart, config::Action::WarmStart, config::Action::HotStart})
-            if (config::actionName(a) == rest.front())
-                return applyValues(engine, [&] { return engine.runAction(a); });
+        if (const auto a = config::actionNamed(rest.front()))
+            return applyValues(engine, [&] { return engine.runAction(*a); });
         say(QObject::tr("unknown action '%1': save, defaults, cold, warm or hot")
                     .arg(QString::fromStdString(rest.front())));
         return 2;

@@ -249,13 +249,8 @@ void MainWindow::createDocks() {
 }
 
 const SettingDef *MainWindow::elevationMaskSetting(const Dialect *d) {
-    if (!d) return nullptr;
-    // The dialects name it differently: NVS ELGPS (GPS mask), GeoStar ELEV, Nemerix minElevation.
-    for (const auto &s : d->settings)
-        if (s.key.ends_with(".ELGPS") || s.key.ends_with(".ELEV") ||
-            s.key.ends_with(".minElevation"))
-            return &s;
-    return nullptr;
+    // Whatever the vendor calls it: the schema row with the elevation-mask role.
+    return d ? findSettingByRole(d->settings, SettingRole::ElevationMask) : nullptr;
 }
 
 void MainWindow::createMenus() {

@@ -1,27 +1,12 @@
 #pragma once
-// Presets for common jobs, as data (presets.cpp): a named set of setting values for one dialect.
-// Applying a preset is applying its values (only what differs is sent).
-#include "core/settings_schema.h"
+// A preset's values as settings to apply. The presets themselves are data of each dialect record
+// (Dialect::presets); applying one is applying its values (only what differs is sent).
+#include "core/dialect.h"
 
-#include <span>
-#include <string_view>
 #include <vector>
 
 namespace gnss::config {
 
-struct PresetValue {
-    std::string_view key, value;
-};
-
-struct Preset {
-    std::string_view dialect;
-    std::string_view name;
-    std::string_view description;
-    std::span<const PresetValue> values;
-};
-
-std::span<const Preset> presetTable();
-std::vector<const Preset *> presetsFor(std::string_view dialect);
 std::vector<KeyValue> presetValues(const Preset &p);
 
 } // namespace gnss::config

@@ -211,8 +211,8 @@ int SettingsEngine::effectRank(const std::string &sentence) const {
     case CommandEffect::ResetsReceiver: return 1;
     case CommandEffect::ChangesBaud: {
         // The host's own port last of the speed changes: the others go out at the speed in force.
-        const LinkSpeed *link = linkSpeedCommand(dialect_->id);
-        return link && std::string_view(sentence).substr(1).starts_with(link->command) ? 3 : 2;
+        const std::string_view host = dialect_->linkSpeed.commandPrefix;
+        return !host.empty() && std::string_view(sentence).substr(1).starts_with(host) ? 3 : 2;
     }
     case CommandEffect::ChangesProtocol: return 4;
     }
@@ -225,16 +225,17 @@ link::CommandOptions SettingsEngine::optionsFor(const std::string &sentence) con
     if (!dialect_ || !transport_ || transport_->baud() <= 0 || !s.parse(sentence)) return o;
     const ReplyRule *rule = link::CommandQueue::findRule(dialect_->replyRules, s);
     if (!rule || rule->effect != CommandEffect::ChangesBaud) return o;
-    const LinkSpeed *link = linkSpeedCommand(dialect_->id);
+    const std::string_view host = dialect_->linkSpeed.commandPrefix;
     const std::string_view body = std::string_view(sentence).substr(1);
-    if (!link || !body.starts_with(link->command)) {
+    if (host.empty() || !body.starts_with(host)) {
         // Another port's speed: the host's side of the line stays where it is.
         o.newBaud = transport_->baud();
         return o;
     }
     // The host's port: the link follows to the speed set ("BDR057" does not spell it out).
-    for (const auto &kv : applying_)
-        if (kv.key == link->settingKey) o.newBaud = QString::fromStdString(kv.value).toInt();
+    if (const SettingDef *speed = findSettingByRole(dialect_->settings, SettingRole::PortSpeed))
+        for (const auto &kv : applying_)
+            if (kv.key == speed->key) o.newBaud = QString::fromStdString(kv.value).toInt();
     return o;
 }
 
@@ -284,7 +285,6 @@ bool SettingsEngine::read(const std::vector<std::string> &keys) {
 }
 
 std::vector<KeyValue> SettingsEngine::withCompanions(std::vector<KeyValue> changes) {
-    if (!dialect_->encodeSettings || dialect_->encodeSettings(changes).ok()) return changes;
     auto has = [&](std::string_view key) {
         return std::any_of(changes.begin(), changes.end(),
                            [&](const KeyValue &kv) { return kv.key == key; });
@@ -303,25 +303,15 @@ std::vector<KeyValue> SettingsEngine::withCompanions(std::vector<KeyValue> chang
         return true;
     };
     const std::vector<KeyValue> original = changes;
-    // Settings written by the same command template go together (PNVGRZA: baud and protocol).
+    // The settings of one command go together (PNVGRZA,1: baud and protocol): the schema rows
+    // name their command, and the others' values in force complete the change.
     for (const auto &kv : original) {
         const SettingDef *def = findSetting(dialect_->settings, kv.key);
-        if (!def || def->write.empty()) continue;
+        if (!def || def->command.empty()) continue;
         for (const auto &other : dialect_->settings)
-            if (other.write == def->write) add(other);
+            if (other.command == def->command) add(other);
     }
-    // Then the settings the encoder's refusal names ("give nmea.position_decimals too").
-    for (int round = 0; round < 4; ++round) {
-        const EncodeResult r = dialect_->encodeSettings(changes);
-        if (r.ok()) return changes;
-        bool added = false;
-        for (const auto &def : dialect_->settings)
-            if (r.error.find(def.key) != std::string::npos) added = add(def) || added;
-        if (!added) break;
-    }
-    if (dialect_->encodeSettings(changes).ok()) return changes;
-    report_.companions.clear();
-    return original;
+    return changes;
 }
 
 bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
@@ -376,7 +366,7 @@ bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
 }
 
 bool SettingsEngine::runAction(Action action) {
-    const ActionDef *def = dialect_ ? findAction(dialect_->id, action) : nullptr;
+    const ActionDef *def = dialect_ ? findAction(*dialect_, action) : nullptr;
     const QString title = def ? tr(std::string(def->label).c_str()) : tr("Action");
     if (!begin(Operation::Action, title)) return false;
     if (!def) {
@@ -396,8 +386,7 @@ bool SettingsEngine::runAction(Action action) {
 std::vector<Action> SettingsEngine::availableActions() const {
     std::vector<Action> out;
     if (!dialect_) return out;
-    for (const auto &a : actionTable())
-        if (a.dialect == dialect_->id) out.push_back(a.action);
+    for (const auto &a : dialect_->actions) out.push_back(a.action);
     return out;
 }
 

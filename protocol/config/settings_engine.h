@@ -1,13 +1,14 @@
 #pragma once
 // SettingsEngine: a receiver's settings through the command queue, for the settings dock and
-// `gnss-cli config`. Knows no vendor: everything comes from the dialect record (schema,
-// encodeSettings/encodeQueries/extractSettings, reply rules) and dialect_actions.cpp.
+// `gnss-cli config`. Knows no vendor: everything comes from the dialect record (schema with each
+// row's command and role, encodeSettings/encodeQueries/extractSettings, reply rules, actions,
+// the host port's speed command); it plans from those, never from help or error texts.
 //
 //   read   every readable setting (or the keys given): encodeQueries → queue → replies →
 //          extractSettings. Write-only settings stay "unknown (write-only)" until this program
 //          sets them.
 //   apply  only what differs from the receiver; settings the dialect writes with one command
-//          (same `write` template: PNVGRZA's baud and protocol) go together; commands sorted
+//          (the schema rows' `command`: PNVGRZA's baud and protocol) go together; commands sorted
 //          so that restarts, speed and protocol changes come last; every command's outcome
 //          reported; then the changed readable settings are read back and each is marked
 //          verified, not taken, or not reported.

@@ -76,11 +76,21 @@ bool profileFromJson(const QByteArray &json, Profile &out, QString *error, const
         p.writeOnly.push_back(v.toString().toStdString());
     if (dialect) {
         // Values are checked when applied (the dialect's encoder validates everything before
-        // anything is sent). Schema order, so that files and diffs read in the order of the forms.
+        // anything is sent). Schema order, so that files and diffs read in the order of the forms,
+        // under the schema's own keys: a key may be the spec's name alone ("PVTRATE"), as users
+        // type it, and must not be lost for that.
         std::vector<KeyValue> ordered;
-        for (const auto &def : dialect->settings)
-            for (const auto &kv : p.values)
-                if (kv.key == def.key) ordered.push_back(kv);
+        for (const auto &def : dialect->settings) {
+            const KeyValue *given = nullptr;
+            for (const auto &kv : p.values) {
+                if (findSetting(dialect->settings, kv.key) != &def) continue;
+                if (given)
+                    invalid << QObject::tr("%1: given twice (as %2 and %3)")
+                                       .arg(qs(def.key), qs(given->key), qs(kv.key));
+                given = &kv;
+            }
+            if (given) ordered.push_back({std::string(def.key), given->value});
+        }
         for (const auto &kv : p.values) {
             const SettingDef *def = findSetting(dialect->settings, kv.key);
             if (!def || !isWritable(*def)) {

@@ -11,12 +11,19 @@
 #include "sentence.h"
 #include "settings_schema.h"
 
+#include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace gnss {
+
+namespace sim {
+class Receiver;
+struct SimOptions;
+} // namespace sim
 
 struct Dialect;
 struct ReceiverState;
@@ -104,6 +111,43 @@ struct ReplyRule {
     std::string_view description; // what the reply looks like, for users and docs
 };
 
+// ---- Receiver-wide actions, presets, link speed ---------------------------------------------
+
+enum class ReceiverAction : std::uint8_t {
+    SaveToFlash,     // the settings in force survive a power cycle
+    RestoreDefaults, // back to the factory settings
+    ColdStart,
+    WarmStart,
+    HotStart,
+};
+// "save", "defaults", "cold", "warm", "hot" (command line, profiles).
+std::string_view toString(ReceiverAction a);
+
+// One action a receiver family offers, and the command that does it.
+struct ActionDef {
+    ReceiverAction action;
+    std::string_view body;   // sentence body without '$' and checksum: "PNVGCFG,W"
+    std::string_view label;  // "Save to flash" (translated where it is shown)
+    std::string_view effect; // what it does, for the confirmation
+};
+
+// A named set of setting values for a common job; applying it is applying its values.
+struct PresetValue {
+    std::string_view key, value;
+};
+struct Preset {
+    std::string_view name;
+    std::string_view description;
+    std::span<const PresetValue> values;
+};
+
+// The command that changes the speed of the port the host is on, by the start of its body
+// ("PNVGRZA,1,"): the link follows it to the new speed; a speed change of another port must not
+// move the link. The setting that holds the new speed has the PortSpeed role.
+struct LinkSpeedCommand {
+    std::string_view commandPrefix;
+};
+
 // ---- The dialect record ---------------------------------------------------------------------
 
 struct Dialect {
@@ -143,13 +187,25 @@ struct Dialect {
     std::span<const std::string_view> commandNames;
     // The example the console's send box shows: a harmless command this receiver answers.
     std::string_view consoleExample;
-    // Default serial speed of the receiver.
+    // Default serial speed of the receiver, and every speed its ports can be set to.
     int defaultBaud = 0;
     // A proprietary prefix the user may rename on the receiver ("PNMRX"); empty when fixed.
     std::string_view renamablePrefix;
+    std::span<const int> supportedBauds;
+
+    // Receiver-wide actions (save, defaults, restarts), presets, the host port's speed command.
+    std::span<const ActionDef> actions;
+    std::span<const Preset> presets;
+    LinkSpeedCommand linkSpeed;
+
+    // One line for command-line help: "NVS NV08C-RTK (PNVG...): RTK rover and base".
+    std::string_view summary;
+
+    // The simulated receiver of this family (gnss-sim, the built-in source); nullptr: none.
+    std::unique_ptr<sim::Receiver> (*makeSimulator)(const sim::SimOptions &options) = nullptr;
 };
 
-// The standard sentence table (GGA, RMC, GSA, GSV, ...), used by every dialect.
-std::span<const SentenceRule> standardSentenceRules();
+// The action of this kind a dialect offers, nullptr when it has none.
+const ActionDef *findAction(const Dialect &d, ReceiverAction action);
 
 } // namespace gnss

@@ -9,9 +9,27 @@ SatelliteRef DecodeContext::mapSatelliteByDialect(Constellation system, int id) 
     return dialect_->mapSatellite(system, id);
 }
 
-DialectRegistry::DialectRegistry(std::vector<const Dialect *> dialects)
+std::string_view toString(ReceiverAction a) {
+    switch (a) {
+    case ReceiverAction::SaveToFlash: return "save";
+    case ReceiverAction::RestoreDefaults: return "defaults";
+    case ReceiverAction::ColdStart: return "cold";
+    case ReceiverAction::WarmStart: return "warm";
+    case ReceiverAction::HotStart: return "hot";
+    }
+    return {};
+}
+
+const ActionDef *findAction(const Dialect &d, ReceiverAction action) {
+    for (const auto &a : d.actions)
+        if (a.action == action) return &a;
+    return nullptr;
+}
+
+DialectRegistry::DialectRegistry(std::span<const SentenceRule> standardRules,
+                                 std::vector<const Dialect *> dialects)
     : dialects_(std::move(dialects)) {
-    for (const auto &r : standardSentenceRules()) {
+    for (const auto &r : standardRules) {
         if (r.match == AddressMatch::Type) types_.emplace(r.address, Match{&r, nullptr});
         if (r.match == AddressMatch::Query) query_ = Match{&r, nullptr};
     }

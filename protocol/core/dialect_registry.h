@@ -11,7 +11,9 @@ namespace gnss {
 
 class DialectRegistry {
 public:
-    explicit DialectRegistry(std::vector<const Dialect *> dialects);
+    // `standardRules`: the standard sentence table (nmea/nmea_rules.h), used by every dialect.
+    DialectRegistry(std::span<const SentenceRule> standardRules,
+                    std::vector<const Dialect *> dialects);
 
     std::span<const Dialect *const> dialects() const { return dialects_; }
     const Dialect *find(std::string_view id) const;

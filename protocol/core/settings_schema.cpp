@@ -44,6 +44,13 @@ const SettingDef *findSetting(std::span<const SettingDef> schema, std::string_vi
     return found;
 }
 
+const SettingDef *findSettingByRole(std::span<const SettingDef> schema, SettingRole role) {
+    if (role == SettingRole::None) return nullptr;
+    for (const auto &d : schema)
+        if (d.role == role) return &d;
+    return nullptr;
+}
+
 namespace {
 
 std::string rangeText(const SettingDef &d) {

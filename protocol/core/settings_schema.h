@@ -3,6 +3,7 @@
 //
 // One table per dialect is the single source of truth that the settings forms, `gnss-cli schema`,
 // `gnss-cli encode`, configuration profiles and the simulator all read.
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -29,6 +30,16 @@ enum class SettingAccess {
 };
 std::string_view toString(SettingAccess a);
 
+// What a setting is for, where views need it whatever the vendor calls it: the sky plot asks for
+// the elevation mask, never for "rtk.ELGPS" or "nav.ELEV".
+enum class SettingRole : std::uint8_t {
+    None,
+    ElevationMask, // degrees above the horizon below which satellites are not used
+    SnrMask,       // dB-Hz below which signals are not used
+    OutputRate,    // navigation/output rate, Hz
+    PortSpeed,     // the speed of the port the host is on, bit/s
+};
+
 struct SettingOption {
     std::string_view value; // what is sent ("1", "GPS", "ON")
     std::string_view label; // what the user reads
@@ -46,8 +57,13 @@ struct SettingDef {
     std::string_view defaultValue; // as text; empty when the spec gives none
     std::string_view help;         // from the spec
     SettingAccess access = SettingAccess::ReadWrite;
-    std::string_view readBack; // how it is read back: the query and where the value is
-    std::string_view write;    // how it is written: the command template
+    std::string_view readBack; // how it is read back: the query and where the value is (help)
+    std::string_view write;    // how it is written: the command template (help)
+    // The command that writes it ("PNVGRZA,1"): the settings of one command always go together
+    // (the settings engine completes a change with the others' values in force). Empty: the
+    // setting has a command of its own. The engine plans from this, never from the texts above.
+    std::string_view command;
+    SettingRole role = SettingRole::None;
 };
 
 struct KeyValue {
@@ -63,6 +79,8 @@ struct EncodeResult {
 };
 
 const SettingDef *findSetting(std::span<const SettingDef> schema, std::string_view key);
+// The setting with this role (the first, when a dialect has several), nullptr when none.
+const SettingDef *findSettingByRole(std::span<const SettingDef> schema, SettingRole role);
 
 // Checks `value` against the setting's type, range and options. Returns an empty string when
 // valid, else a message naming the parameter and what it accepts.

@@ -1,5 +1,6 @@
 // GeoStar GeoS-5: sentence table and the dialect record.
 #include "geostar_dialect.h"
+#include "geostar_actions.h"
 #include "geostar_state.h"
 
 #include "geostar_gns.h"
@@ -57,6 +58,11 @@ const Dialect &dialect() {
             .consoleExample = "$GPSGG,RQUERY",
             // The spec names no factory speed; 115200 bit/s (BDR115) is an assumption.
             .defaultBaud = 115200,
+            .supportedBauds = supportedBauds(),
+            .actions = actions(),
+            .presets = presets(),
+            .linkSpeed = {"GPSGG,BDR"},
+            .summary = "GeoStar GeoS-5 ($GPSGG,...): GPS/GLONASS/Galileo receiver",
     };
     return d;
 }

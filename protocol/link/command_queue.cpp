@@ -177,13 +177,19 @@ void CommandQueue::sendCurrent() {
     progress_ = {};
     result_.replies.clear();
     const QByteArray bytes = QByteArray::fromStdString(current_->line) + "\r\n";
+    const int id = current_->id;
+    const int attempts = result_.attempts;
+    const QString sentence = result_.sentence;
     if (!transport_->write(bytes)) {
         finish(CommandOutcome::Failed,
                tr("could not write to %1: %2")
                        .arg(transport_->description(), transport_->errorString()));
         return;
     }
-    emit commandSent(current_->id, result_.sentence, result_.attempts);
+    emit commandSent(id, sentence, attempts);
+    // A transport may hand over the answer within write() (the tests' fake one does): then the
+    // command is finished already and current_ is empty.
+    if (!current_) return;
     if (!rule_ || !rule_->classify) {
         const bool baud = rule_ && rule_->effect == CommandEffect::ChangesBaud;
         if (baud && transport_->baud() > 0 && baudFromCommand() > 0) return beginBaudSwitch(200);
@@ -277,8 +283,10 @@ void CommandQueue::beginBaudSwitch(int delayMs) {
     QTimer::singleShot(delayMs, this, [this, id] {
         if (!current_ || current_->id != id || phase_ != Phase::PreSwitch) return;
         phase_ = Phase::SwitchingBaud;
-        switchTo(targetBaud_);
+        // Timer first: an answer to the probe within switchTo() finishes the command (and stops
+        // it), leaving current_ empty.
         timer_.start(current_->options.confirmMs);
+        switchTo(targetBaud_);
     });
 }
 
@@ -298,8 +306,8 @@ void CommandQueue::onTimeout() {
     if (!current_) return;
     if (phase_ == Phase::SwitchingBaud) {
         phase_ = Phase::FallingBack;
+        timer_.start(current_->options.confirmMs); // first, as above
         switchTo(result_.baudBefore);
-        timer_.start(current_->options.confirmMs);
         return;
     }
     if (phase_ == Phase::FallingBack) {

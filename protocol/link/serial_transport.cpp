@@ -162,12 +162,21 @@ void SerialTransport::discardInput() {
 
 void SerialTransport::onError(QSerialPort::SerialPortError error) {
     if (error == QSerialPort::NoError) return;
-    const bool gone = error == QSerialPort::ResourceError ||
-                      error == QSerialPort::PermissionError || error == QSerialPort::ReadError ||
-                      error == QSerialPort::WriteError;
     const QString message = tr("%1: %2").arg(settings_.portName, port_.errorString());
     if (!port_.isOpen()) return; // open() reports its own failure
     port_.clearError();
+    // A device that went away: ResourceError, or a read/write error with its node gone. A read
+    // that finds nothing (the input was flushed between the notifier and the read, as a baud
+    // switch does) is reported by QSerialPort as a ReadError with a stale errno: the device is
+    // still there and the link is fine, so it is not a loss.
+    const bool ioError = error == QSerialPort::ReadError || error == QSerialPort::WriteError ||
+                         error == QSerialPort::PermissionError;
+    const bool gone =
+            error == QSerialPort::ResourceError ||
+            (ioError && !QFileInfo::exists(port_.portName().startsWith('/')
+                                                   ? port_.portName()
+                                                   : QStringLiteral("/dev/") + port_.portName()));
+    if (ioError && !gone) return;
     if (gone) {
         // Close at once: a vanished device's file descriptor keeps signalling otherwise.
         // (Queued: not inside QSerialPort's own notifier; skipped when reopened meanwhile.)

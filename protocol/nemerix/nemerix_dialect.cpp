@@ -1,5 +1,6 @@
 // The Nemerix VT002 dialect record.
 #include "nemerix_dialect.h"
+#include "nemerix_actions.h"
 #include "nemerix_state.h"
 
 #include "nemerix_dialect_parts.h"
@@ -35,6 +36,11 @@ const Dialect &dialect() {
             .defaultBaud = 9600,
             // "The PNMRX part may be replaced by a configured alternative" (Extensions spec).
             .renamablePrefix = "PNMRX",
+            .supportedBauds = supportedBauds(),
+            .actions = actions(),
+            .presets = presets(),
+            .linkSpeed = {"PNMRX100,"},
+            .summary = "Nemerix VT002 (PNMRX...): GPS module, prefix renamable",
     };
     return d;
 }

@@ -1,4 +1,6 @@
 // The standard sentence table: one row per sentence type.
+#include "nmea_rules.h"
+
 #include "nmea_messages.h"
 
 namespace gnss {

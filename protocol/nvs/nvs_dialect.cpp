@@ -1,5 +1,6 @@
 // The NVS NV08C-RTK dialect record: sentences, settings, commands and replies as one constant.
 #include "nvs_dialect.h"
+#include "nvs_actions.h"
 #include "nvs_state.h"
 
 #include "nvs_messages.h"
@@ -43,6 +44,11 @@ const Dialect &dialect() {
             .commandNames = kCommands,
             .consoleExample = "$PNVGVER",
             .defaultBaud = 115200, // Table 1 / section 1.1
+            .supportedBauds = supportedBauds(),
+            .actions = actions(),
+            .presets = presets(),
+            .linkSpeed = {"PNVGRZA,1,"}, // the host is on COM1
+            .summary = "NVS NV08C-RTK (PNVG...): RTK rover, base and heading receiver",
     };
     return d;
 }

@@ -42,15 +42,18 @@ constexpr O kIdlMode[] = {{"0", "Any base station"}, {"1", "Only base stations f
 constexpr std::string_view kRtk = "RTK engine";
 
 // One PNVGRTK row: key "rtk.NAME", read back by naming the parameter without a value.
-#define RTK(NAME, LABEL, TYPE, UNIT, MIN, MAX, OPTS, DEF, HELP)                                    \
+#define RTK_ROLE(NAME, LABEL, TYPE, UNIT, MIN, MAX, OPTS, DEF, HELP, ROLE)                         \
     SettingDef {                                                                                   \
         .key = "rtk." NAME, .label = LABEL, .group = kRtk, .type = TYPE, .unit = UNIT, .min = MIN, \
         .max = MAX, .options = OPTS, .defaultValue = DEF, .help = HELP,                            \
         .readBack = "$PNVGRTK," NAME " -> $PNVGRTK," NAME ",<value>",                              \
-        .write = "$PNVGRTK," NAME ",<value>"                                                       \
+        .write = "$PNVGRTK," NAME ",<value>", .role = ROLE                                         \
     }
+#define RTK(NAME, LABEL, TYPE, UNIT, MIN, MAX, OPTS, DEF, HELP)                                    \
+    RTK_ROLE(NAME, LABEL, TYPE, UNIT, MIN, MAX, OPTS, DEF, HELP, SettingRole::None)
 
-#define PORT(N, NAME)                                                                              \
+// The two settings of one port are one command (PNVGRZA,N): always sent together.
+#define PORT(N, NAME, SPEED_ROLE)                                                                  \
     SettingDef{.key = "port." NAME ".baud",                                                        \
                .label = NAME " baud rate",                                                         \
                .group = "Ports",                                                                   \
@@ -63,7 +66,9 @@ constexpr std::string_view kRtk = "RTK engine";
                        "Table 1). The receiver answers with PNVGRZA and then switches.",           \
                .access = SettingAccess::WriteOnly,                                                 \
                .readBack = "none documented (PNVGRZA answers only when set)",                      \
-               .write = "$PNVGRZA," N ",<baud>,<protocol>"},                                       \
+               .write = "$PNVGRZA," N ",<baud>,<protocol>",                                        \
+               .command = "PNVGRZA," N,                                                            \
+               .role = SPEED_ROLE},                                                                \
             SettingDef {                                                                           \
         .key = "port." NAME ".protocol", .label = NAME " protocol", .group = "Ports",              \
         .type = T::Enum, .options = kProtocol, .defaultValue = "1",                                \
@@ -71,7 +76,7 @@ constexpr std::string_view kRtk = "RTK engine";
                 "rate.",                                                                           \
         .access = SettingAccess::WriteOnly,                                                        \
         .readBack = "none documented (PNVGRZA answers only when set)",                             \
-        .write = "$PNVGRZA," N ",<baud>,<protocol>"                                                \
+        .write = "$PNVGRZA," N ",<baud>,<protocol>", .command = "PNVGRZA," N                       \
     }
 
 #define OUTPUT(N, NAME)                                                                            \
@@ -92,24 +97,26 @@ const SettingDef kSchema[] = {
             "Setting of operation mode: 0 Autonomous, 1 Base Station, 2 RTK-Rover (by default), "
             "3 Base Station with automatic antenna position averaging, 4 RTK Rover + Heading "
             "(NV08C-RTK-A only)."),
-        RTK("PVTRATE", "PVT rate", T::Enum, "Hz", kNone, kNone, kPvtRate, "5",
-            "PVT rate, Hz (1, 2, 5 by default, 10)."),
+        RTK_ROLE("PVTRATE", "PVT rate", T::Enum, "Hz", kNone, kNone, kPvtRate, "5",
+                 "PVT rate, Hz (1, 2, 5 by default, 10).", SettingRole::OutputRate),
         RTK("SYSGPS", "Use GPS", T::Bool, "", kNone, kNone, kOnOff, "1",
             "1 - GPS ON (by default), 0 - GPS OFF."),
         RTK("SYSGLO", "Use GLONASS", T::Bool, "", kNone, kNone, kOnOff, "1",
             "1 - GLONASS ON (by default), 0 - GLONASS OFF."),
         RTK("SYSSBAS", "Use SBAS", T::Bool, "", kNone, kNone, kOnOff, "1",
             "1 - SBAS ON (by default), 0 - SBAS OFF."),
-        RTK("ELGPS", "GPS elevation mask (RTK)", T::Integer, "deg", 0, 90, {}, "5",
-            "GPS Elevation Mask for RTK mode, degrees (5 by default)."),
+        RTK_ROLE("ELGPS", "GPS elevation mask (RTK)", T::Integer, "deg", 0, 90, {}, "5",
+                 "GPS Elevation Mask for RTK mode, degrees (5 by default).",
+                 SettingRole::ElevationMask),
         RTK("ELGLO", "GLONASS elevation mask (RTK)", T::Integer, "deg", 0, 90, {}, "5",
             "GLONASS Elevation Mask for RTK mode, degrees (5 by default)."),
         RTK("ELSBAS", "SBAS elevation mask (RTK)", T::Integer, "deg", 0, 90, {}, "5",
             "SBAS Elevation Mask for RTK mode, degrees (5 by default)."),
         RTK("ELMASKA", "Elevation mask (autonomous)", T::Integer, "deg", 0, 90, {}, "5",
             "Elevation Mask for Autonomous mode, degrees (5 by default)."),
-        RTK("SNR", "SNR mask (RTK)", T::Integer, "dB-Hz", 0, 99, {}, "33",
-            "SNR Mask for RTK mode, dB-Hz (33 by default). Range 0-99 as GSV reports SNR."),
+        RTK_ROLE("SNR", "SNR mask (RTK)", T::Integer, "dB-Hz", 0, 99, {}, "33",
+                 "SNR Mask for RTK mode, dB-Hz (33 by default). Range 0-99 as GSV reports SNR.",
+                 SettingRole::SnrMask),
         RTK("SNRMASKA", "SNR mask (autonomous)", T::Integer, "dB-Hz", 0, 99, {}, "12",
             "SNR Mask for Autonomous mode, dB-Hz (12 by default). Range 0-99 as GSV reports SNR."),
         RTK("RTCMAGE", "Differential age threshold", T::Integer, "s", 1, 999, {}, "45",
@@ -191,7 +198,8 @@ const SettingDef kSchema[] = {
                  "PNVGNME sets time and position decimals together.",
          .access = SettingAccess::WriteOnly,
          .readBack = "none documented (PNVGNME answers only when set)",
-         .write = "$PNVGNME,<time decimals>,<position decimals>[,<talker mode>]"},
+         .write = "$PNVGNME,<time decimals>,<position decimals>[,<talker mode>]",
+         .command = "PNVGNME"},
         {.key = "nmea.position_decimals",
          .label = "Position decimals",
          .group = "NMEA output",
@@ -203,7 +211,8 @@ const SettingDef kSchema[] = {
                  "default).",
          .access = SettingAccess::WriteOnly,
          .readBack = "none documented (PNVGNME answers only when set)",
-         .write = "$PNVGNME,<time decimals>,<position decimals>[,<talker mode>]"},
+         .write = "$PNVGNME,<time decimals>,<position decimals>[,<talker mode>]",
+         .command = "PNVGNME"},
         {.key = "nmea.talker_mode",
          .label = "Talker ID compatibility",
          .group = "NMEA output",
@@ -214,12 +223,14 @@ const SettingDef kSchema[] = {
                  "off, talker ID as specified (GN for combined solutions). Optional field.",
          .access = SettingAccess::WriteOnly,
          .readBack = "none documented (PNVGNME answers only when set)",
-         .write = "$PNVGNME,<time decimals>,<position decimals>,<talker mode>"},
+         .write = "$PNVGNME,<time decimals>,<position decimals>,<talker mode>",
+         .command = "PNVGNME"},
 
         // ---- 4.4 PNVGRZA per port ----
-        PORT("1", "COM1"),
-        PORT("2", "COM2"),
-        PORT("3", "USB"),
+        // The simulated and usual host is on COM1: its speed is the link's.
+        PORT("1", "COM1", SettingRole::PortSpeed),
+        PORT("2", "COM2", SettingRole::None),
+        PORT("3", "USB", SettingRole::None),
 
         // ---- 4.5 PNVGRZB output lists per port ----
         OUTPUT("1", "COM1"),

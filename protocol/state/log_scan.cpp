@@ -171,12 +171,16 @@ LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
         addFramerStats(result.framer, r.framer);
         addAddressStats(result.addresses, r.addresses, +1);
         result.epochs += r.epochs;
-        // The epoch in progress at the cut was counted by both sides.
-        if (haveLast && r.hasFirst && lastTime && r.firstEpochTime &&
-            *lastTime == *r.firstEpochTime)
+        // The epoch in progress at the cut was counted by both sides: when both sides give it
+        // the same time, and when one side saw none of its time-carrying sentences (a segment
+        // of GSV/GSA alone, or the sentences before the first time of the log: front to back,
+        // they are part of the epoch around them).
+        if (haveLast && r.hasFirst &&
+            (!lastTime || !r.firstEpochTime || *lastTime == *r.firstEpochTime))
             --result.epochs;
         if (r.hasFirst) {
-            lastTime = r.lastEpochTime;
+            // A segment without a time joined the epoch before it, which goes on.
+            if (r.lastEpochTime) lastTime = r.lastEpochTime;
             haveLast = true;
         }
         if (!inForce) inForce = r.finalDialect;

@@ -427,26 +427,26 @@ private slots:
     }
 
     void presetsAreValidSettingsOfTheirDialects() {
-        for (const Preset &p : presetTable()) {
-            const Dialect *d = registry().find(p.dialect);
-            QVERIFY(d);
-            const auto values = presetValues(p);
-            for (const auto &kv : values) {
-                const SettingDef *def = findSetting(d->settings, kv.key);
-                QVERIFY2(def && isWritable(*def), kv.key.c_str());
+        for (const Dialect *d : registry().dialects()) {
+            for (const Preset &p : d->presets) {
+                const auto values = presetValues(p);
+                for (const auto &kv : values) {
+                    const SettingDef *def = findSetting(d->settings, kv.key);
+                    QVERIFY2(def && isWritable(*def), kv.key.c_str());
+                }
+                const EncodeResult r = d->encodeSettings(values);
+                QVERIFY2(r.ok(), r.error.c_str());
             }
-            const EncodeResult r = d->encodeSettings(values);
-            QVERIFY2(r.ok(), r.error.c_str());
         }
-        QCOMPARE(int(presetsFor("nvs").size()), 3);
-        QCOMPARE(int(presetsFor("geostar").size()), 1);
-        QCOMPARE(int(presetsFor("nemerix").size()), 1);
+        QCOMPARE(int(registry().find("nvs")->presets.size()), 3);
+        QCOMPARE(int(registry().find("geostar")->presets.size()), 1);
+        QCOMPARE(int(registry().find("nemerix")->presets.size()), 1);
     }
 
     void aPresetIsAppliedLikeAnyChange() {
         EngineRig rig("geostar");
         QVERIFY(rig.opened);
-        const auto r = rig.apply(presetValues(*presetsFor("geostar").front()));
+        const auto r = rig.apply(presetValues(registry().find("geostar")->presets.front()));
         QVERIFY2(r.ok(), describe(r));
         const auto *rx = static_cast<sim::GeoStarReceiver *>(rig.sim.receiver());
         QCOMPARE(rx->settings().nmeaVersion, 4);

@@ -20,12 +20,15 @@ bool decodeAs(const std::string &line, DecodeFn fn, const std::function<void(con
     Sentence s;
     if (!s.parse(line) || s.checksum() != ChecksumStatus::Ok) return false;
     bool got = false;
-    DecodeContext ctx(nullptr, [&](const Message &m) {
+    // Named: DecodeContext keeps only a reference to the callable (FunctionRef), so a temporary
+    // lambda would be gone by the time fn() calls it (ASan: stack-use-after-scope).
+    auto onMessage = [&](const Message &m) {
         if (const T *t = message_cast<T>(m)) {
             use(*t);
             got = true;
         }
-    });
+    };
+    DecodeContext ctx(nullptr, onMessage);
     return fn(s, ctx) && got;
 }
 

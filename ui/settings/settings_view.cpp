@@ -380,10 +380,10 @@ void SettingsView::rebuild() {
     }
     // Presets of this dialect.
     auto *menu = new QMenu(presets_);
-    for (const config::Preset *p : config::presetsFor(d->id)) {
-        QAction *a = menu->addAction(qs(p->name));
-        a->setToolTip(qs(p->description));
-        const QString name = qs(p->name);
+    for (const Preset &p : d->presets) {
+        QAction *a = menu->addAction(qs(p.name));
+        a->setToolTip(qs(p.description));
+        const QString name = qs(p.name);
         connect(a, &QAction::triggered, this, [this, name] { loadPreset(name); });
     }
     delete presets_->menu();
@@ -393,7 +393,7 @@ void SettingsView::rebuild() {
     auto *resets = new QMenu(reset_);
     for (config::Action a : engine_->availableActions()) {
         if (a == config::Action::SaveToFlash || a == config::Action::RestoreDefaults) continue;
-        const config::ActionDef *def = config::findAction(d->id, a);
+        const ActionDef *def = findAction(*d, a);
         resets->addAction(tr(std::string(def->label).c_str()), this, [this, a] { runAction(a); });
     }
     delete reset_->menu();
@@ -555,7 +555,7 @@ void SettingsView::revert() {
 
 void SettingsView::runAction(config::Action action) {
     const Dialect *d = engine_->dialect();
-    const config::ActionDef *def = d ? config::findAction(d->id, action) : nullptr;
+    const ActionDef *def = d ? findAction(*d, action) : nullptr;
     if (!def) {
         status(tr("This receiver has no such command."));
         return;
@@ -572,9 +572,9 @@ void SettingsView::runAction(config::Action action) {
 void SettingsView::loadPreset(const QString &name) {
     const Dialect *d = engine_->dialect();
     if (!d) return;
-    for (const config::Preset *p : config::presetsFor(d->id)) {
-        if (qs(p->name) != name) continue;
-        for (const auto &kv : config::presetValues(*p)) {
+    for (const Preset &p : d->presets) {
+        if (qs(p.name) != name) continue;
+        for (const auto &kv : config::presetValues(p)) {
             SettingEditor *e = editor(kv.key);
             if (!e) continue;
             e->setValue(QString::fromStdString(kv.value));

@@ -1,0 +1,11 @@
+#pragma once
+// NV08C-RTK receiver-wide actions, presets and port speeds (data of the dialect record).
+#include "core/dialect.h"
+
+namespace gnss::nvs {
+
+std::span<const ActionDef> actions();
+std::span<const Preset> presets();
+std::span<const int> supportedBauds();
+
+} // namespace gnss::nvs

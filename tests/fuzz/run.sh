@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# Runs the libFuzzer harnesses of the `fuzz` preset, one after the other, each for SECONDS, with
+# one worker at nice 19 (the machine is shared with builders). Prints, per harness, the
+# executions, executions per second, coverage (libFuzzer's cov: edges, ft: features) and corpus
+# size; crashes are kept under build/fuzz/artifacts/ and make the script fail.
+#
+#   tests/fuzz/run.sh [--merge] SECONDS [HARNESS...]      (default: every harness)
+#
+# New inputs go to a scratch folder, never straight into the committed corpus. With --merge,
+# those that reach new coverage are then merged into tests/fuzz/corpus/<harness>/ (libFuzzer
+# -merge=1); review and commit them like code.
+#
+# Builds the fuzz preset first when its binaries are missing (clang and libfuzzer-14-dev:
+# ./quickstart.sh installs them for this).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+merge=0
+if [ "${1:-}" = "--merge" ]; then
+  merge=1
+  shift
+fi
+seconds=${1:?usage: tests/fuzz/run.sh [--merge] SECONDS [HARNESS...]}
+shift
+harnesses=("$@")
+[ ${#harnesses[@]} -eq 0 ] && harnesses=(fuzz_stream_decoder fuzz_epochs_state
+  fuzz_settings_roundtrip fuzz_profile_import fuzz_rtcm fuzz_log_scan)
+
+build=build/fuzz
+missing=0
+for h in "${harnesses[@]}"; do [ -x "$build/tests/fuzz/$h" ] || missing=1; done
+if [ $missing -eq 1 ]; then
+  cmake --preset fuzz >/dev/null
+  nice -n 10 cmake --build --preset fuzz --parallel 1 --target "${harnesses[@]}"
+fi
+
+artifacts=$build/artifacts
+mkdir -p "$artifacts"
+failed=0
+printf '%-24s %12s %9s %7s %7s %14s %s\n' harness executions exec/s cov ft corpus result
+for h in "${harnesses[@]}"; do
+  corpus=tests/fuzz/corpus/$h
+  scratch=$(mktemp -d)
+  log=$build/$h.log
+  dict=()
+  [ -f "tests/fuzz/$h.dict" ] && dict=(-dict="tests/fuzz/$h.dict")
+  # Longest input: 1 KB for the NMEA streams (a control bit repeats the payload into a stream
+  # longer than a line may be, so long lines and logs are still reached), one whole RTCM frame
+  # and more for RTCM, a profile file for profiles.
+  case $h in
+    fuzz_rtcm) max_len=2100 ;;
+    fuzz_profile_import | fuzz_settings_roundtrip) max_len=4096 ;;
+    *) max_len=1024 ;;
+  esac
+  set +e
+  # -timeout 10: one input that takes seconds is a finding (a hang) too. ASan: no fill of new
+  # blocks and a smaller quarantine (a quarter faster; use-after-free is still caught).
+  ASAN_OPTIONS=${ASAN_OPTIONS:-max_malloc_fill_size=0:quarantine_size_mb=16} \
+    nice -n 19 "$build/tests/fuzz/$h" "$scratch" "$corpus" "${dict[@]}" \
+    -max_total_time="$seconds" -max_len=$max_len -timeout=10 -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$artifacts/$h-" >"$log" 2>&1
+  status=$?
+  set -e
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+  last=$(grep -E '^#[0-9]+.*cov: ' "$log" | tail -1)
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
+  corp=$(sed -n 's/.* corp: \([0-9]*\/[0-9]*[a-zA-Z]*\).*/\1/p' <<<"$last")
+  result=ok
+  if [ $status -ne 0 ]; then
+    result="FAILED (exit $status; see $log and $artifacts/)"
+    failed=1
+  fi
+  if [ $merge -eq 1 ] && [ $status -eq 0 ]; then
+    nice -n 19 "$build/tests/fuzz/$h" -merge=1 -max_len=$max_len "$corpus" "$scratch" \
+      >"$build/$h.merge.log" 2>&1
+  fi
+  rm -rf "$scratch"
+  printf '%-24s %12s %9s %7s %7s %14s %s\n' "$h" "${execs:-?}" "${speed:-?}" "${cov:-?}" \
+    "${ft:-?}" "${corp:-?}" "$result"
+done
+exit $failed
