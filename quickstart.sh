@@ -36,6 +36,9 @@ packages=(
   xvfb xauth
   # str2str (RTKLIB) is the real NTRIP 1 caster the corrections tests talk to.
   rtklib
+  # gpsd: the gpsd source's tests run the real daemon (foreground, 127.0.0.1, a free port, read
+  # only) on a simulated receiver; its own socket service on 2947 is not used by them.
+  gpsd
   # The Debian package (cpack -G DEB) and its test (tests/package, ctest -L package):
   # dpkg-shlibdeps computes its Depends, dpkg-parsechangelog reads its changelog;
   dpkg-dev

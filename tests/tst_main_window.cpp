@@ -15,6 +15,7 @@
 #include <QMenuBar>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QTabBar>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -113,6 +114,37 @@ private slots:
         QCOMPARE(o->baud, 115200);
         QCOMPARE(SourceSpec::fromString("serial:/dev/ttyUSB0@115200").baud, 115200);
         QCOMPARE(SourceSpec::fromString("tcp:localhost:5000").name, QString("localhost:5000"));
+        // gpsd: the URL form or the bare HOST[:PORT][/DEVICE]; the name is kept without scheme.
+        o = parseStartupOptions({"gnss-workbench", "--gpsd", "gpsd://localhost:2947/dev/ttyACM0"},
+                                gnss::app::simulatedDialects(), err);
+        QVERIFY2(o, qPrintable(err));
+        QCOMPARE(o->gpsd, QString("localhost:2947/dev/ttyACM0"));
+        o = parseStartupOptions(
+                {"gnss-workbench", "--gpsd", "localhost", "--show-dock", "settings"},
+                gnss::app::simulatedDialects(), err);
+        QVERIFY2(o, qPrintable(err));
+        QCOMPARE(o->gpsd, QString("localhost"));
+        QCOMPARE(o->showDock, QString("settings"));
+    }
+
+    void showDockRaisesADockByItsShortName() {
+        auto s = settings();
+        gnss::app::MainWindow w(registry_, transports_, s.get());
+        w.show();
+        QVERIFY(w.dockNames().contains("settings"));
+        QVERIFY(w.dockNames().contains("console"));
+        QVERIFY(w.showDock("settings"));
+        // In front of its tab group: the current tab of the bar that holds it.
+        auto currentTabOf = [&w](const QString &title) {
+            for (QTabBar *bar : w.findChildren<QTabBar *>())
+                for (int i = 0; i < bar->count(); ++i)
+                    if (bar->tabText(i) == title) return bar->tabText(bar->currentIndex());
+            return QString();
+        };
+        QTRY_COMPARE(currentTabOf("Settings"), QString("Settings"));
+        QVERIFY(w.showDock("fix"));
+        QTRY_COMPARE(currentTabOf("Settings"), QString("Fix"));
+        QVERIFY(!w.showDock("nosuch"));
     }
 
     void badStartupOptionsAreRefused_data() {
@@ -121,6 +153,8 @@ private slots:
         QTest::newRow("two sources") << QStringList{"x", "--sim", "nvs", "--port", "/dev/ttyS0"};
         QTest::newRow("bad baud") << QStringList{"x", "--baud", "fast"};
         QTest::newRow("unknown option") << QStringList{"x", "--frobnicate"};
+        QTest::newRow("bad gpsd port") << QStringList{"x", "--gpsd", "localhost:0"};
+        QTest::newRow("gpsd and sim") << QStringList{"x", "--gpsd", "localhost", "--sim", "nvs"};
     }
     void badStartupOptionsAreRefused() {
         QFETCH(QStringList, args);

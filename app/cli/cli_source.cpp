@@ -1,5 +1,6 @@
 #include "cli_source.h"
 
+#include "gpsd_transport.h"
 #include "link_opener.h"
 #include "transport_factory.h"
 
@@ -24,6 +25,7 @@ struct SourceOption {
 constexpr SourceOption kSourceOptions[] = {
         {Kind::Serial, "port", "--port P [--baud B]"},
         {Kind::Tcp, "tcp", "--tcp HOST:PORT"},
+        {Kind::Gpsd, "gpsd", "--gpsd HOST[:PORT][/DEVICE]"},
         {Kind::Replay, "replay", "--replay FILE [--speed X] [--fast]"},
         {Kind::Simulator, "sim", "--sim DIALECT [--baud B]"},
 };
@@ -64,6 +66,19 @@ sourceFromArgs(const Args &args, std::initializer_list<Kind> allowed, std::strin
     if (given != 1) {
         error = "give one source: " + sourceOptionsText(allowed);
         return std::nullopt;
+    }
+    if (found->kind == Kind::Gpsd) {
+        // Checked here so that a malformed one is a usage error, not a failure to connect.
+        link::GpsdTransport::Target target;
+        QString why;
+        if (!link::GpsdTransport::parseTarget(found->name, target, &why)) {
+            error = "--gpsd: " + why.toStdString();
+            return std::nullopt;
+        }
+        // The name is what follows the scheme, as the GUI keeps it.
+        found->name = found->name.trimmed();
+        if (found->name.startsWith(QLatin1String("gpsd://"), Qt::CaseInsensitive))
+            found->name = found->name.mid(7);
     }
     if (const auto b = args.option("baud")) {
         bool ok = false;

@@ -2,6 +2,7 @@
 // The source every gnss-cli link command takes, named the same way everywhere:
 //   --port P [--baud B]        a serial port (without --baud: the speed is detected)
 //   --tcp HOST:PORT            a serial server or remote receiver
+//   --gpsd HOST[:PORT][/DEVICE]  a receiver that gpsd holds (read only: gpsd owns the port)
 //   --replay FILE [--speed X] [--fast]   a recorded log
 //   --sim DIALECT [--baud B]   a built-in simulated receiver
 // and opened through the application's one TransportFactory, as the GUI does (LinkOpener).

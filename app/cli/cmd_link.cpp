@@ -163,7 +163,7 @@ int cmdProbe(const CliContext &ctx) {
     o.autoReconnect = false;
     o.detection = &found;
     int rc = 0;
-    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Simulator}, o, rc);
+    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Gpsd, Kind::Simulator}, o, rc);
     if (!conn && found.tried.empty()) return rc;
 
     link::VendorIdentity id;
@@ -220,7 +220,8 @@ int cmdMonitor(const CliContext &ctx) {
     // Nothing is missed: the decoder is listened to before the link opens.
     o.waitUntilOpen = false;
     int rc = 0;
-    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Replay, Kind::Simulator}, o, rc);
+    auto conn = open(ctx, args,
+                     {Kind::Serial, Kind::Tcp, Kind::Gpsd, Kind::Replay, Kind::Simulator}, o, rc);
     if (!conn) return rc;
     auto *replay = qobject_cast<link::ReplayTransport *>(conn->transport());
     const bool epochs = args.flag("epochs");
@@ -268,7 +269,7 @@ int cmdRecord(const CliContext &ctx) {
     OpenOptions o;
     o.waitUntilOpen = false;
     int rc = 0;
-    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Simulator}, o, rc);
+    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Gpsd, Kind::Simulator}, o, rc);
     if (!conn) return rc;
     reportLinkEvents(*conn, " (recording goes on)");
     if (!conn->startRecording(QString::fromStdString(*outPath))) {

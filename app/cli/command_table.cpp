@@ -19,6 +19,9 @@ constexpr OptionSpec kPort{"port", "P", "serial port: ttyUSB0, /dev/ttyACM0 or a
 constexpr OptionSpec kBaud{"baud", "B", "line speed (default 9600)"};
 constexpr OptionSpec kTcp{"tcp", "HOST:PORT",
                           "a TCP source: a serial-to-Ethernet server, gnss-sim --tcp"};
+constexpr OptionSpec kGpsd{"gpsd", "HOST[:PORT][/DEVICE]",
+                           "a receiver that gpsd holds, read through gpsd (port 2947 and every "
+                           "device when left out); read only: gpsd owns the port"};
 constexpr OptionSpec kDuration{"duration", "S", "stop after S seconds"};
 
 constexpr OptionSpec kDecodeOptions[] = {kDialect, kLenient, kAlias, kPrefix};
@@ -41,21 +44,25 @@ constexpr OptionSpec kLinkBaud{"baud", "B", "line speed (default: detected)"};
 constexpr OptionSpec kSpeed{"speed", "X", "replay X times faster (below 1: slower)"};
 constexpr OptionSpec kFast{"fast", "", "replay without waiting"};
 
-constexpr OptionSpec kProbeOptions[] = {kPort, kTcp, kSim, kLinkBaud};
+constexpr OptionSpec kProbeOptions[] = {kPort, kTcp, kGpsd, kSim, kLinkBaud};
 constexpr OptionSpec kMonitorOptions[] = {
-        kPort,     kTcp,
-        kReplay,   kSim,
-        kLinkBaud, kDialect,
-        kLenient,  {"epochs", "", "one JSON object per navigation epoch instead of per sentence"},
-        kDuration, kSpeed,
+        kPort,
+        kTcp,
+        kGpsd,
+        kReplay,
+        kSim,
+        kLinkBaud,
+        kDialect,
+        kLenient,
+        {"epochs", "", "one JSON object per navigation epoch instead of per sentence"},
+        kDuration,
+        kSpeed,
         kFast,
 };
 constexpr OptionSpec kRecordOptions[] = {
-        kPort,
-        kTcp,
-        kSim,
-        kLinkBaud,
-        {"out", "FILE", "write the bytes received to FILE, their index to FILE.idx"},
+        kPort,     kTcp,
+        kGpsd,     kSim,
+        kLinkBaud, {"out", "FILE", "write the bytes received to FILE, their index to FILE.idx"},
         kDuration,
 };
 constexpr OptionSpec kSendOptions[] = {
@@ -189,23 +196,30 @@ constexpr CommandSpec kCommands[] = {
          "Prints one JSON object per serial port: port, location, description, manufacturer, "
          "serial_number, usb_id (VID:PID, empty when not USB).\n"
          "Exit status: 0 listed, 2 usage error.\n"},
-        {"probe", cmdProbe, "probe --port P [--baud B] | --tcp HOST:PORT | --sim D",
+        {"probe", cmdProbe,
+         "probe --port P [--baud B] | --tcp HOST:PORT | --gpsd HOST[:PORT][/DEVICE] | --sim D",
          "detect a receiver's baud, dialect, model and firmware", kProbeOptions,
          "Finds the speed (the --baud given first, then 115200, 9600, 38400, 57600, 4800, 19200, "
          "230400, 460800, 921600: the first giving two valid sentences), then the receiver (its "
          "proprietary sentences, then each dialect's probe), and prints one JSON object: port, "
          "baud, dialect, dialect_name, model, firmware, method, reply, tried (bytes and "
-         "sentences per rate) and error.\n"
+         "sentences per rate) and error. Through gpsd no probe can be sent: the receiver is known "
+         "by its own sentences only.\n"
          "Exit status: 0 found, 1 nothing found or the port cannot be opened, 2 usage error, 130 "
          "interrupted.\n"},
-        {"monitor", cmdMonitor, "monitor --port P|--tcp HOST:PORT|--replay FILE|--sim D [OPTIONS]",
+        {"monitor", cmdMonitor,
+         "monitor --port P|--tcp HOST:PORT|--gpsd HOST[:PORT][/DEVICE]|--replay FILE|--sim D "
+         "[OPTIONS]",
          "decode a live receiver, a TCP source or a replayed log", kMonitorOptions,
          "Decodes live: one JSON object per sentence as decode prints, or per epoch with --epochs "
-         "as epochs prints. A lost serial or TCP link is reported on standard error and retried. "
+         "as epochs prints. A lost serial, TCP or gpsd link is reported on standard error and "
+         "retried. "
          "Runs until --duration, the end of a replay, or Ctrl-C.\n"
          "Exit status: 0 ended by --duration or the end of the replay, 1 the source cannot be "
          "opened, 2 usage error, 130 interrupted (Ctrl-C; 143 for SIGTERM).\n"},
-        {"record", cmdRecord, "record --port P|--tcp HOST:PORT|--sim D --out FILE [OPTIONS]",
+        {"record", cmdRecord,
+         "record --port P|--tcp HOST:PORT|--gpsd HOST[:PORT][/DEVICE]|--sim D --out FILE "
+         "[OPTIONS]",
          "record a receiver to FILE and FILE.idx", kRecordOptions,
          "Writes FILE (exactly the bytes received) and FILE.idx (when they came, gaps). A lost "
          "link is retried and the recording goes on in the same files with a gap mark. Runs "

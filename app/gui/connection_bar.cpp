@@ -53,6 +53,17 @@ ConnectionBar::ConnectionBar(link::PortWatcher *ports, const DialectRegistry &re
                                           QLineEdit::Normal, QStringLiteral("127.0.0.1:5000"), &ok);
             if (ok && !hp.isEmpty()) extra_ = SourceSpec{SourceSpec::Kind::Tcp, hp};
             rebuildSources();
+        } else if (action == QLatin1String("gpsd?")) {
+            // A receiver that gpsd holds: gpsd on this machine unless told otherwise.
+            bool ok = false;
+            const QString where = QInputDialog::getText(
+                    this, tr("gpsd source"),
+                    tr("gpsd's host, port and device (HOST[:PORT][/DEVICE]; port 2947 and every "
+                       "device when left out):"),
+                    QLineEdit::Normal, QStringLiteral("localhost"), &ok);
+            if (ok && !where.trimmed().isEmpty())
+                extra_ = SourceSpec{SourceSpec::Kind::Gpsd, where.trimmed()};
+            rebuildSources();
         } else if (action == QLatin1String("replay?")) {
             const QString f = QFileDialog::getOpenFileName(
                     this, tr("Open Log"), {}, tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
@@ -92,6 +103,7 @@ void ConnectionBar::rebuildSources() {
     }
     if (extra_.valid()) source_->addItem(extra_.displayName(), extra_.toString());
     source_->addItem(tr("TCP…"), QStringLiteral("tcp?"));
+    source_->addItem(tr("gpsd…"), QStringLiteral("gpsd?"));
     source_->addItem(tr("Open log…"), QStringLiteral("replay?"));
     select(extra_.valid() && (current.kind == SourceSpec::Kind::None) ? extra_ : current);
 }
@@ -108,8 +120,8 @@ void ConnectionBar::select(const SourceSpec &spec) {
     if (key.kind == SourceSpec::Kind::Serial) key.baud = 0;
     int i = source_->findData(key.toString());
     if (i < 0 && (spec.kind == SourceSpec::Kind::Tcp || spec.kind == SourceSpec::Kind::Replay ||
-                  spec.kind == SourceSpec::Kind::Serial)) {
-        // Not listed (a TCP/replay source from the command line, or a port not present now).
+                  spec.kind == SourceSpec::Kind::Gpsd || spec.kind == SourceSpec::Kind::Serial)) {
+        // Not listed (a TCP/gpsd/replay source from the command line, or a port not present now).
         source_->insertItem(0, spec.displayName(), key.toString());
         i = 0;
     }

@@ -1,7 +1,7 @@
 #pragma once
 // ConnectionBar: where the data comes from — serial ports (refreshed by themselves when a device
-// is plugged or unplugged), the built-in simulated receivers, TCP, a log to replay — the baud
-// rate with "auto", and Connect / Disconnect.
+// is plugged or unplugged), the built-in simulated receivers, TCP, gpsd, a log to replay — the
+// baud rate with "auto", and Connect / Disconnect.
 #include "link/source_spec.h"
 
 #include <QStringList>
@@ -49,7 +49,7 @@ private:
     QLabel *baudNote_;
     QPushButton *button_;
     bool connected_ = false;
-    SourceSpec extra_; // a TCP or replay source chosen by the user
+    SourceSpec extra_; // a TCP, gpsd or replay source chosen by the user
 };
 
 } // namespace gnss::app

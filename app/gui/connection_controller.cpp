@@ -120,7 +120,9 @@ void ConnectionController::wire(link::Connection *c) {
     connect(c, &link::Connection::linkRestored, this,
             [this](const QString &d) { setConnected(d); });
     // Once the dialect is known, ask the receiver who it is (model, firmware) with its probe.
+    // (Not through a link that takes no commands: the refusal would only fill the status bar.)
     connect(c, &link::Connection::dialectDetected, this, [this](const QString &id) {
+        if (!sendRefusal().isEmpty()) return;
         if (const Dialect *d = registry_.find(id.toStdString()); d && !d->probeCommand.empty())
             send(QByteArray(d->probeCommand.data(), qsizetype(d->probeCommand.size())));
     });
@@ -166,6 +168,10 @@ bool ConnectionController::send(const QByteArray &sentence, QString *error) {
         if (error) *error = tr("Not connected: nothing was sent");
         return false;
     }
+    if (const QString refusal = sendRefusal(); !refusal.isEmpty()) {
+        if (error) *error = refusal;
+        return false;
+    }
     QString why;
     const int id = connection_->commands()->enqueue(QString::fromLatin1(sentence), {}, &why);
     if (id <= 0) {
@@ -174,6 +180,13 @@ bool ConnectionController::send(const QByteArray &sentence, QString *error) {
     }
     session_->noteSent(sentence);
     return true;
+}
+
+QString ConnectionController::sendRefusal() const {
+    const link::Transport *t = connection_ ? connection_->transport() : nullptr;
+    if (!t || t->canWrite()) return {};
+    const QString why = t->readOnlyReason();
+    return why.isEmpty() ? tr("%1 cannot take commands").arg(t->description()) : why;
 }
 
 bool ConnectionController::startRecording(const QString &path) {

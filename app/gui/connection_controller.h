@@ -52,8 +52,11 @@ public:
     void retryNow();
 
     // Sends a complete sentence through the command queue; false (with why) before anything is
-    // sent when there is no link or the sentence is refused.
+    // sent when there is no link, the link takes no commands, or the sentence is refused.
     bool send(const QByteArray &sentence, QString *error = nullptr);
+    // Why the link takes no commands ("gpsd owns the port: ..."); empty when it does, or when
+    // there is no link.
+    QString sendRefusal() const;
 
     bool startRecording(const QString &path);
     void stopRecording();

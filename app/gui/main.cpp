@@ -4,11 +4,11 @@
 #include "main_window.h"
 #include "startup_options.h"
 #include "style/app_icon.h"
+#include "window_screenshot.h"
 
 #include <QApplication>
 #include <QLibraryInfo>
 #include <QLocale>
-#include <QPixmap>
 #include <QSettings>
 #include <QTimer>
 #include <QTranslator>
@@ -59,6 +59,16 @@ int main(int argc, char **argv) {
         start = {SourceSpec::Kind::Replay, options->replay};
     else if (!options->sim.isEmpty())
         start = {SourceSpec::Kind::Simulator, options->sim};
+    else if (!options->gpsd.isEmpty())
+        start = {SourceSpec::Kind::Gpsd, options->gpsd};
+    if (!options->showDock.isEmpty() && !window.showDock(options->showDock)) {
+        std::fprintf(
+                stderr, "gnss-workbench: %s\n",
+                qPrintable(QApplication::translate("StartupOptions", "Unknown dock '%1' (use %2)")
+                                   .arg(options->showDock,
+                                        window.dockNames().join(QStringLiteral(", ")))));
+        return 2;
+    }
     window.connectAtStart(start);
 
     const double delay =
@@ -67,10 +77,10 @@ int main(int argc, char **argv) {
         QTimer::singleShot(static_cast<int>(delay * 1000), &app, [&] {
             if (!options->screenshot.isEmpty()) {
                 window.saveLayout();
-                const QPixmap shot = window.grab();
-                if (!shot.save(options->screenshot)) {
-                    std::fprintf(stderr, "gnss-workbench: cannot save %s\n",
-                                 qPrintable(options->screenshot));
+                QString why;
+                if (!gnss::app::saveWindowScreenshot(window, options->screenshot, &why)) {
+                    std::fprintf(stderr, "gnss-workbench: cannot save %s: %s\n",
+                                 qPrintable(options->screenshot), qPrintable(why));
                     QApplication::exit(1);
                     return;
                 }

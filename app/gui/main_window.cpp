@@ -70,6 +70,8 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
         if (controller_->detectedBaud() == 0 && s != ConnectionController::State::Detecting &&
             s != ConnectionController::State::Failed)
             bar_->setBaudNote({});
+        // A link that takes no commands (gpsd, a replay): the send box says why it is off.
+        consoleView_->setSendRefusal(controller_->sendRefusal());
         updateStatus();
     });
     connect(controller_, &ConnectionController::detectingRate, this,
@@ -134,6 +136,24 @@ QDockWidget *MainWindow::addDock(QWidget *w, const QString &title, const QString
 
 QDockWidget *MainWindow::dock(const QString &objectName) const {
     return findChild<QDockWidget *>(objectName);
+}
+
+QStringList MainWindow::dockNames() const {
+    QStringList names;
+    for (const QDockWidget *d : findChildren<QDockWidget *>()) {
+        QString n = d->objectName();
+        if (n.endsWith(QLatin1String("Dock"))) n.chop(4);
+        names << n;
+    }
+    return names;
+}
+
+bool MainWindow::showDock(const QString &name) {
+    QDockWidget *d = dock(name + QLatin1String("Dock"));
+    if (!d) return false;
+    d->show();
+    d->raise();
+    return true;
 }
 
 void MainWindow::createDocks() {

@@ -51,6 +51,10 @@ public:
     ui::SatelliteModel *satelliteModel() const { return satellites_; }
     ui::ReceiverSession *session() const { return session_; }
     QDockWidget *dock(const QString &objectName) const;
+    // The docks by short name ("settings" for settingsDock), for --show-dock.
+    QStringList dockNames() const;
+    // Shows the dock named so and puts it in front of its tab group; false for an unknown name.
+    bool showDock(const QString &name);
 
     // Connects to `spec`, or (invalid spec) to the last source used, or to the simulated
     // NV08C-RTK the first time.

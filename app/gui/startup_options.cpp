@@ -1,5 +1,7 @@
 #include "startup_options.h"
 
+#include "link/gpsd_transport.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
@@ -32,6 +34,19 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             QCoreApplication::translate("StartupOptions", "Built-in simulated receiver: %1.")
                     .arg(simulated.join(QStringLiteral(", "))),
             "dialect");
+    const QCommandLineOption gpsd(
+            "gpsd",
+            QCoreApplication::translate("StartupOptions",
+                                        "A receiver that gpsd holds: gpsd://HOST[:PORT][/DEVICE] "
+                                        "(port 2947 and every device when left out)."),
+            "url");
+    const QCommandLineOption showDock(
+            "show-dock",
+            QCoreApplication::translate("StartupOptions",
+                                        "Show this dock in front of its tab group: settings, "
+                                        "console, sky, signal, fix, satellites, rtk, charts, "
+                                        "deviation, attitude, stats, info."),
+            "name");
     const QCommandLineOption shot(
             "screenshot",
             QCoreApplication::translate("StartupOptions", "Save an image of the window and quit."),
@@ -40,7 +55,7 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             "quit-after",
             QCoreApplication::translate("StartupOptions", "Quit after this many seconds."),
             "seconds");
-    p.addOptions({port, baud, tcp, replay, sim, shot, quit});
+    p.addOptions({port, baud, tcp, replay, sim, gpsd, showDock, shot, quit});
     if (!p.parse(arguments)) {
         error = p.errorText();
         return std::nullopt;
@@ -58,6 +73,8 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
     o.tcp = p.value(tcp);
     o.replay = p.value(replay);
     o.sim = p.value(sim);
+    o.gpsd = p.value(gpsd);
+    o.showDock = p.value(showDock);
     o.screenshot = p.value(shot);
     if (p.isSet(baud)) {
         bool ok = false;
@@ -83,11 +100,24 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                         .arg(o.sim, simulated.join(", "));
         return std::nullopt;
     }
+    if (p.isSet(gpsd)) {
+        link::GpsdTransport::Target target;
+        QString why;
+        if (!link::GpsdTransport::parseTarget(o.gpsd, target, &why)) {
+            error = QCoreApplication::translate("StartupOptions", "Invalid --gpsd: %1").arg(why);
+            return std::nullopt;
+        }
+        // The source's name is what follows the scheme (SourceSpec adds it back).
+        o.gpsd = o.gpsd.trimmed();
+        if (o.gpsd.startsWith(QLatin1String("gpsd://"), Qt::CaseInsensitive))
+            o.gpsd = o.gpsd.mid(7);
+    }
     const int sources = int(!o.port.isEmpty()) + int(!o.tcp.isEmpty()) + int(!o.replay.isEmpty()) +
-                        int(!o.sim.isEmpty());
+                        int(!o.sim.isEmpty()) + int(!o.gpsd.isEmpty());
     if (sources > 1) {
         error = QCoreApplication::translate(
-                "StartupOptions", "Give one source at most: --port, --tcp, --replay or --sim.");
+                "StartupOptions",
+                "Give one source at most: --port, --tcp, --gpsd, --replay or --sim.");
         return std::nullopt;
     }
     return o;

@@ -12,13 +12,16 @@ struct StartupOptions {
     QString tcp;          // --tcp HOST:PORT
     QString replay;       // --replay FILE
     QString sim;          // --sim nvs|geostar|nemerix|nmea
+    QString gpsd;         // --gpsd HOST[:PORT][/DEVICE] (or gpsd://...)
+    QString showDock;     // --show-dock NAME: show and raise this dock (settings, console, ...)
     QString screenshot;   // --screenshot FILE: save an image of the window, then quit
     double quitAfter = 0; // --quit-after SECONDS
 };
 
 // Parses the arguments; on error returns nullopt with `error` set (already translated).
 // `simulated`: the dialects the built-in simulator plays (what --sim accepts). --help and
-// --version print to standard output and exit(0).
+// --version print to standard output and exit(0). The --show-dock name is checked by the window,
+// which knows its docks.
 std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                                                   const QStringList &simulated, QString &error);
 

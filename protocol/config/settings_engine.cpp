@@ -102,6 +102,12 @@ bool SettingsEngine::canSend() const {
     return queue_ && (!transport_ || transport_->canWrite());
 }
 
+QString SettingsEngine::sendRefusal() const {
+    if (!queue_ || !transport_ || transport_->canWrite()) return {};
+    const QString why = transport_->readOnlyReason();
+    return why.isEmpty() ? tr("%1 cannot take commands").arg(transport_->description()) : why;
+}
+
 void SettingsEngine::forget() {
     reported_.clear();
     written_.clear();

@@ -99,8 +99,12 @@ public:
     const Dialect *dialect() const { return dialect_; }
     link::CommandQueue *queue() const { return queue_; }
     bool isBusy() const { return op_ != Operation::None; }
-    // Whether commands can go to the receiver (a replayed log cannot take any).
+    // Whether commands can go to the receiver (a replayed log cannot take any, nor can a receiver
+    // that gpsd holds).
     bool canSend() const;
+    // Why they cannot, in words for the user ("gpsd owns the port: ..."), when a link is attached
+    // that takes no commands; empty otherwise.
+    QString sendRefusal() const;
     // Forgets what was read and written (the receiver restarted with other settings).
     void forget();
 

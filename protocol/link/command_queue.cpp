@@ -164,8 +164,9 @@ void CommandQueue::startNext() {
         return;
     }
     if (!transport_->canWrite()) {
+        const QString why = transport_->readOnlyReason();
         finish(CommandOutcome::Failed,
-               tr("%1 cannot send commands").arg(transport_->description()));
+               why.isEmpty() ? tr("%1 cannot send commands").arg(transport_->description()) : why);
         return;
     }
     sendCurrent();

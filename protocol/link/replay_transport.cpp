@@ -144,6 +144,10 @@ QString ReplayTransport::description() const {
     return tr("replay of %1").arg(QFileInfo(path_).fileName());
 }
 
+QString ReplayTransport::readOnlyReason() const {
+    return tr("a recorded log cannot take commands");
+}
+
 bool ReplayTransport::buildTimeline(const Recording &recording, Timing timing, Timing &effective,
                                     std::vector<Slice> &timeline, const std::atomic<bool> &cancel,
                                     const std::function<void(int)> &progress) {

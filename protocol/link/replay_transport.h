@@ -37,6 +37,7 @@ public:
     void close() override;
     QString description() const override;
     bool canWrite() const override { return false; }
+    QString readOnlyReason() const override;
 
     // Seconds of the recording (first to last chunk) and the current position in it.
     double duration() const;

@@ -10,6 +10,7 @@ QString SourceSpec::toString() const {
     case Kind::Tcp: return QStringLiteral("tcp:%1").arg(name);
     case Kind::Replay: return QStringLiteral("replay:%1").arg(name);
     case Kind::Simulator: return QStringLiteral("sim:%1").arg(name);
+    case Kind::Gpsd: return QStringLiteral("gpsd://%1").arg(name);
     case Kind::None: break;
     }
     return {};
@@ -34,6 +35,10 @@ SourceSpec SourceSpec::fromString(const QString &s) {
     } else if (kind == QLatin1String("sim")) {
         spec.kind = Kind::Simulator;
         spec.name = rest;
+    } else if (kind == QLatin1String("gpsd")) {
+        // The URL form, gpsd://HOST[:PORT][/DEVICE]; "gpsd:HOST" is taken too.
+        spec.kind = Kind::Gpsd;
+        spec.name = rest.startsWith(QLatin1String("//")) ? rest.mid(2) : rest;
     }
     return spec;
 }
@@ -46,6 +51,7 @@ QString SourceSpec::displayName() const {
     case Kind::Tcp: return tr("TCP %1").arg(name);
     case Kind::Replay: return tr("Replay %1").arg(name);
     case Kind::Simulator: return tr("Simulated %1").arg(name);
+    case Kind::Gpsd: return tr("gpsd %1").arg(name);
     case Kind::None: break;
     }
     return tr("No source");

@@ -38,8 +38,11 @@ public:
     virtual int baud() const { return 0; }
     // Changes the line speed at once (the port stays open); false when the source has none.
     virtual bool setBaud(int baud);
-    // Whether commands can be sent (a replayed log cannot).
+    // Whether commands can be sent (a replayed log cannot, nor can a receiver behind gpsd).
     virtual bool canWrite() const { return true; }
+    // Why commands cannot be sent, in words for the user, when canWrite() is false ("gpsd owns
+    // the port ..."): the console and the settings dock show it instead of a bare refusal.
+    virtual QString readOnlyReason() const { return {}; }
     // Drops whatever was received but not delivered yet (after a baud switch).
     virtual void discardInput() {}
 

@@ -1,6 +1,7 @@
 #include "transport_factory.h"
 
 #include "core/baud_rates.h"
+#include "gpsd_transport.h"
 #include "replay_transport.h"
 #include "serial_transport.h"
 #include "tcp_transport.h"
@@ -29,6 +30,11 @@ TransportFactory::TransportFactory() {
             return std::unique_ptr<Transport>();
         }
         return std::unique_ptr<Transport>(std::make_unique<TcpTransport>(host, port));
+    });
+    add(SourceSpec::Kind::Gpsd, [](const SourceSpec &s, QString *error) {
+        GpsdTransport::Target target;
+        if (!GpsdTransport::parseTarget(s.name, target, error)) return std::unique_ptr<Transport>();
+        return std::unique_ptr<Transport>(std::make_unique<GpsdTransport>(target));
     });
     add(SourceSpec::Kind::Replay, [](const SourceSpec &s, QString *) {
         auto r = std::make_unique<ReplayTransport>(

@@ -1,7 +1,7 @@
 #pragma once
-// TransportFactory: makes the Transport for a SourceSpec. Serial ports, TCP servers and recorded
-// logs are built in; the application adds what the link library does not know (the built-in
-// simulator; later sources such as gpsd) with add(). The GUI and every gnss-cli command use one
+// TransportFactory: makes the Transport for a SourceSpec. Serial ports, TCP servers, gpsd and
+// recorded logs are built in; the application adds what the link library does not know (the
+// built-in simulator) with add(). The GUI and every gnss-cli command use one
 // factory, so each command accepts every source the application knows.
 #include "source_spec.h"
 #include "transport.h"
@@ -19,7 +19,7 @@ public:
     // Makes the transport (not opened), or nullptr with `error` set when the spec is wrong.
     using Maker = std::function<std::unique_ptr<Transport>(const SourceSpec &, QString *error)>;
 
-    TransportFactory(); // serial, TCP and replay
+    TransportFactory(); // serial, TCP, gpsd and replay
     void add(SourceSpec::Kind kind, Maker maker);
     bool supports(SourceSpec::Kind kind) const { return makers_.count(kind) != 0; }
     std::unique_ptr<Transport> make(const SourceSpec &spec, QString *error = nullptr) const;

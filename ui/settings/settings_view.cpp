@@ -102,6 +102,13 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
                                                        reset_, presets_, profiles_})
         bar->addWidget(w);
     top->addLayout(bar);
+    // Why the buttons are off when the link takes no commands (a receiver that gpsd holds, a
+    // replayed log): said above the form rather than leaving disabled buttons unexplained.
+    sendNote_ = new QLabel(this);
+    sendNote_->setObjectName("settingsSendNote");
+    sendNote_->setWordWrap(true);
+    sendNote_->setVisible(false);
+    top->addWidget(sendNote_);
 
     // Group choice: a list beside the form when the dock is wide, a combo box above it when it
     // is narrow (the form always keeps the width it needs); a filter across every group.
@@ -681,6 +688,12 @@ void SettingsView::updateButtons() {
     defaults_->setEnabled(ready && has(config::Action::RestoreDefaults));
     reset_->setEnabled(ready && reset_->menu() && !reset_->menu()->isEmpty());
     profiles_->setEnabled(engine_->dialect() != nullptr && !busy);
+    const QString refusal = engine_->sendRefusal();
+    sendNote_->setText(
+            refusal.isEmpty()
+                    ? QString()
+                    : tr("%1. Settings can be neither read nor changed from here.").arg(refusal));
+    sendNote_->setVisible(!refusal.isEmpty());
     cancel_->setVisible(busy);
     progress_->setVisible(busy);
 }

@@ -88,6 +88,7 @@ private:
     QTreeWidget *outcomes_;
     QTreeWidget *diff_;
     QLabel *status_;
+    QLabel *sendNote_;
     QProgressBar *progress_;
     QPushButton *read_, *apply_, *revert_, *save_, *defaults_, *cancel_;
     QToolButton *reset_, *presets_, *profiles_;

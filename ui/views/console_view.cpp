@@ -98,16 +98,32 @@ ConsoleView::ConsoleView(ConsoleModel *model, QWidget *parent) : QWidget(parent)
     input_->setCompleter(completer);
     connect(input_, &QLineEdit::returnPressed, this, &ConsoleView::submit);
     send->addWidget(input_, 1);
-    auto *sendButton = new QPushButton(tr("Send"), this);
-    sendButton->setObjectName("consoleSend");
-    connect(sendButton, &QPushButton::clicked, this, &ConsoleView::submit);
-    send->addWidget(sendButton);
+    sendButton_ = new QPushButton(tr("Send"), this);
+    sendButton_->setObjectName("consoleSend");
+    connect(sendButton_, &QPushButton::clicked, this, &ConsoleView::submit);
+    send->addWidget(sendButton_);
     layout->addLayout(send);
     inputError_ = new QLabel(this);
     inputError_->setObjectName("consoleInputError");
     inputError_->setStyleSheet(QStringLiteral("color: #c62828;"));
     inputError_->setVisible(false);
     layout->addWidget(inputError_);
+    sendNote_ = new QLabel(this);
+    sendNote_->setObjectName("consoleSendNote");
+    sendNote_->setWordWrap(true);
+    sendNote_->setVisible(false);
+    layout->addWidget(sendNote_);
+}
+
+void ConsoleView::setSendRefusal(const QString &why) {
+    refusal_ = why;
+    input_->setEnabled(why.isEmpty());
+    sendButton_->setEnabled(why.isEmpty());
+    sendButton_->setToolTip(why);
+    sendNote_->setText(why.isEmpty() ? QString() : tr("Sending is off: %1.").arg(why));
+    sendNote_->setVisible(!why.isEmpty());
+    if (!why.isEmpty()) inputError_->setVisible(false);
+    setExample(example_); // the hint says why too
 }
 
 void ConsoleView::setCommandNames(const QStringList &names) {
@@ -117,6 +133,11 @@ void ConsoleView::setCommandNames(const QStringList &names) {
 }
 
 void ConsoleView::setExample(const QString &example) {
+    example_ = example;
+    if (!refusal_.isEmpty()) {
+        input_->setPlaceholderText(tr("No commands: %1").arg(refusal_));
+        return;
+    }
     input_->setPlaceholderText(
             example.isEmpty()
                     ? tr("Command to send (the checksum is added)")
@@ -139,7 +160,7 @@ int ConsoleView::visibleLines() const {
 
 bool ConsoleView::submit() {
     const QString typed = input_->text().trimmed();
-    if (typed.isEmpty()) return false;
+    if (typed.isEmpty() || !refusal_.isEmpty()) return false;
     std::string error;
     const std::string sentence = completeSentence(typed.toStdString(), error);
     if (sentence.empty()) {

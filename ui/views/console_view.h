@@ -9,6 +9,7 @@ class QLabel;
 class QLineEdit;
 class QListView;
 class QPlainTextEdit;
+class QPushButton;
 class QSortFilterProxyModel;
 class QStringListModel;
 class QToolButton;
@@ -26,6 +27,10 @@ public:
     void setCommandNames(const QStringList &names);
     // The connected receiver's example command for the send box's hint (empty: none known).
     void setExample(const QString &example);
+    // Turns the send box off with the reason shown beside it ("gpsd owns the port: ..."), or on
+    // again (empty): a link that takes no commands says so instead of refusing each one.
+    void setSendRefusal(const QString &why);
+    QString sendRefusal() const { return refusal_; }
     void setHistory(const QStringList &history);
     QStringList history() const { return history_; }
     void setFilter(const QString &addressPattern);
@@ -51,7 +56,11 @@ private:
     QPlainTextEdit *hex_;
     QLineEdit *filter_;
     QLineEdit *input_;
+    QPushButton *sendButton_;
     QLabel *inputError_;
+    QLabel *sendNote_;
+    QString refusal_;
+    QString example_;
     QStringListModel *completions_;
     QStringList history_;
     int historyPos_ = -1;
