@@ -10,10 +10,14 @@
 
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "cli_source.h"
 #include "core/json_writer.h"
+#include "correction_forwarder.h"
 #include "ntrip/mountpoint_distance.h"
 #include "ntrip_source.h"
+#include "sentence_stream.h"
 #include "source_table_request.h"
+#include "state/epoch_assembler.h"
 #include "tcp_transport.h"
 
 #include <QCoreApplication>
@@ -198,7 +202,39 @@ struct Options {
     std::optional<std::string> out;
     double duration = 0;
     bool quiet = false;
+    std::optional<link::SourceSpec> receiver; // --port, --tcp or --sim: corrections go there
 };
+
+// The GGA a caster gets from the receiver's own fix (quality as GGA numbers it).
+ntrip::GgaPosition ggaOf(const Epoch &e) {
+    ntrip::GgaPosition p;
+    p.latDeg = *e.lat;
+    p.lonDeg = *e.lon;
+    p.altitudeMsl = e.altMsl.value_or(0);
+    p.geoidSeparation = e.geoidSep.value_or(0);
+    p.satellites = e.satsUsed.value_or(p.satellites);
+    p.hdop = e.hdop.value_or(p.hdop);
+    switch (e.fix) {
+    case FixType::None: p.quality = 0; break;
+    case FixType::Dgnss: p.quality = 2; break;
+    case FixType::RtkFixed: p.quality = 4; break;
+    case FixType::RtkFloat: p.quality = 5; break;
+    case FixType::Estimated: p.quality = 6; break;
+    default: p.quality = 1; break;
+    }
+    return p;
+}
+
+void writeForwarderJson(JsonWriter &w, const corrections::ForwarderStats &s) {
+    w.beginObject();
+    w.field("frames_forwarded", s.framesForwarded);
+    w.field("bytes_forwarded", s.bytesForwarded);
+    w.field("frames_dropped", s.framesDropped);
+    w.field("bytes_dropped", s.bytesDropped);
+    w.field("bytes_not_rtcm", s.bytesSkipped);
+    w.field("crc_failures", s.crcFailures);
+    w.endObject();
+}
 
 // Reads the options; false (with the reason said) when they do not make a command.
 bool readOptions(const Args &args, Options &o) {
@@ -206,12 +242,14 @@ bool readOptions(const Args &args, Options &o) {
     if (!args.positionals().empty())
         return say("ntrip takes no positional arguments (got '" + args.positionals()[0] + "')"),
                false;
-    // Forwarding to a receiver is where --port P / --tcp H:P will go: a link::Transport whose
-    // write() gets every dataReceived (and whose fix feeds setRoverPosition for --gga auto).
-    if (args.option("port") || args.option("tcp"))
-        return say("ntrip: forwarding corrections to a receiver (--port/--tcp) is not available "
-                   "yet; use --out FILE"),
-               false;
+    if (args.option("port") || args.option("tcp") || args.option("sim")) {
+        std::string error;
+        o.receiver = sourceFromArgs(args,
+                                    {link::SourceSpec::Kind::Serial, link::SourceSpec::Kind::Tcp,
+                                     link::SourceSpec::Kind::Simulator},
+                                    error);
+        if (!o.receiver) return say("ntrip: " + error), false;
+    }
     const auto caster = args.option("caster");
     if (!caster ||
         !link::TcpTransport::parseHostPort(QString::fromStdString(*caster), o.host, o.port))
@@ -251,7 +289,8 @@ bool readOptions(const Args &args, Options &o) {
     return true;
 }
 
-int receive(const Options &o, const QString &mount, std::optional<bool> wantsGga) {
+int receive(const CliContext &ctx, const Options &o, const QString &mount,
+            std::optional<bool> wantsGga) {
     corrections::NtripSettings s;
     s.host = o.host;
     s.port = o.port;
@@ -263,7 +302,7 @@ int receive(const Options &o, const QString &mount, std::optional<bool> wantsGga
     source.setMountpointWantsGga(wantsGga);
     if (o.position)
         source.setRoverPosition(*o.position);
-    else if (wantsGga.value_or(false))
+    else if (wantsGga.value_or(false) && !o.receiver)
         say("note: " + mount.toStdString() +
             " wants the rover's GGA; with --gga auto none is sent until forwarding to a "
             "receiver gives a fix (use --gga LAT,LON,H)");
@@ -279,8 +318,42 @@ int receive(const Options &o, const QString &mount, std::optional<bool> wantsGga
             std::fflush(file);
         });
     }
+    // The receiver: corrections forwarded through its link, its epochs printed, its fix sent
+    // up as the GGA (--gga auto).
+    std::unique_ptr<link::Connection> receiver;
+    std::unique_ptr<corrections::CorrectionForwarder> forwarder;
+    EpochAssembler assembler(nullptr);
+    auto onEpoch = [&](const Epoch &e) {
+        if (!o.position && e.lat && e.lon && e.fix != FixType::None)
+            source.setRoverPosition(ggaOf(e));
+        if (o.quiet) return;
+        std::string out;
+        JsonWriter w(out);
+        e.writeJson(w);
+        printLine(out);
+    };
+    if (o.receiver) {
+        OpenOptions open;
+        QString why;
+        receiver = openConnection(ctx, *o.receiver, open, why);
+        if (!receiver) return say("cannot open the receiver: " + utf8(why)), 1;
+        forwarder = std::make_unique<corrections::CorrectionForwarder>(receiver->transport(),
+                                                                       receiver->commands());
+        link::Connection *c = receiver.get();
+        QObject::connect(c->stream(), &link::SentenceStream::sentenceDecoded,
+                         [&, c](const SentenceEvent &ev) {
+                             if (!ev.message) return;
+                             assembler.setDialect(c->stream()->dialect());
+                             assembler.add(ev.sentence, *ev.message, onEpoch);
+                         });
+        QObject::connect(c, &link::Connection::linkLost, [](const QString &why, int retryMs) {
+            say("receiver link lost: " + utf8(why) + "; trying again in " +
+                std::to_string(retryMs / 1000.0).substr(0, 3) + " s");
+        });
+        sinks.push_back([&forwarder](const QByteArray &b) { forwarder->feed(b); });
+    }
     rtcm::RtcmStreamDecoder decoder;
-    const bool json = !o.quiet;
+    const bool json = !o.quiet && !o.receiver;
     sinks.push_back([&decoder, json](const QByteArray &b) {
         decoder.feed(std::string_view(b.constData(), std::size_t(b.size())),
                      [json](const rtcm::RtcmMessage &m) {
@@ -317,6 +390,12 @@ int receive(const Options &o, const QString &mount, std::optional<bool> wantsGga
     JsonWriter w(summary);
     rtcm::writeRtcmSummaryJson(w, decoder);
     std::fprintf(stderr, "%s\n", summary.c_str());
+    if (forwarder) {
+        std::string f;
+        JsonWriter fw(f);
+        writeForwarderJson(fw, forwarder->stats());
+        std::fprintf(stderr, "%s\n", f.c_str());
+    }
     if (rc == 0 && source.bytesReceived() == 0) {
         say("no RTCM received from " + utf8(source.description()) + " in " +
             std::to_string(static_cast<int>(o.duration)) + " s");
@@ -333,7 +412,7 @@ int cmdNtrip(const CliContext &ctx) {
     if (!readOptions(args, o)) return 2;
     NtripEventLoop loop;
 
-    if (o.mount) return receive(o, QString::fromStdString(*o.mount), std::nullopt);
+    if (o.mount) return receive(ctx, o, QString::fromStdString(*o.mount), std::nullopt);
 
     corrections::SourceTableQuery q;
     q.host = o.host;
@@ -358,7 +437,7 @@ int cmdNtrip(const CliContext &ctx) {
     std::snprintf(km, sizeof km, "%.1f", c.distanceMetres / 1000.0);
     say("nearest RTCM 3 mountpoint: " + c.entry->mountpoint + " (" + c.entry->identifier + ", " +
         km + " km)");
-    return receive(o, QString::fromStdString(c.entry->mountpoint), c.entry->wantsGga);
+    return receive(ctx, o, QString::fromStdString(c.entry->mountpoint), c.entry->wantsGga);
 }
 
 } // namespace gnss::cli

@@ -95,6 +95,8 @@ constexpr OptionSpec kNtripOptions[] = {
         {"quiet", "", "no JSON lines (with --out)"},
         kPort,
         kTcp,
+        kSim,
+        kLinkBaud,
 };
 
 // The log viewer's commands (export, summary, play): the range and the decoding.
@@ -269,7 +271,10 @@ constexpr CommandSpec kCommands[] = {
          "prints one JSON object per mountpoint (with its distance when a position is known); "
          "--mount (or --nearest) receives the mountpoint's RTCM 3 and prints one JSON object per "
          "message, as rtcm does, and/or writes the raw bytes to --out. A GGA is sent at the start "
-         "and every 10 s to mountpoints that ask for one. The password is read from the "
+         "and every 10 s to mountpoints that ask for one (with --gga auto, from the receiver's fix). "
+         "With a receiver (--port, --tcp or --sim) the corrections are forwarded to it through its "
+         "link, whole frames only and never inside a command, and its epochs are printed as JSON "
+         "lines instead. The password is read from the "
          "environment (--password-env), never from the command line, and never printed.\n"
          "Exit status: 0 ended by --duration or Ctrl-C after data, 1 the caster refused (wrong "
          "credentials, unknown mountpoint) or could not be reached, 2 usage error.\n"},

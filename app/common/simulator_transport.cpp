@@ -16,6 +16,8 @@ SimulatorTransport::~SimulatorTransport() = default;
 bool SimulatorTransport::open() {
     sim::SimOptions options;
     options.seed = seed_;
+    // The built-in receiver is a demonstration: an RTK rover shows RTK without a caster.
+    options.internalBase = true;
     receiver_ = sim::makeReceiver(dialect_.toStdString(), options);
     if (!receiver_) {
         fail(tr("The simulator has no receiver of dialect '%1'").arg(dialect_), false);

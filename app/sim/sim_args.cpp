@@ -9,7 +9,7 @@ namespace gnss::simapp {
 
 const char *const kUsage =
         "usage: gnss-sim --dialect nvs|geostar|nemerix|nmea [--pty | --tcp PORT | --stdout]\n"
-        "                [--seed N] [--speed X] [--baud B] [--faults SPEC]\n"
+        "                [--seed N] [--speed X] [--baud B] [--faults SPEC] [--internal-base]\n"
         "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
         "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--baud B]\n"
         "       gnss-sim --help | --version\n"
@@ -28,6 +28,9 @@ const char *const kUsage =
         "  --faults SPEC  comma-separated: badcs=P, truncate=P, binary=P (probabilities),\n"
         "                 silence=D@T[/EVERY], noreply=CMD[+CMD], slowreply=MS,\n"
         "                 hangup=SECONDS\n"
+        "  --internal-base  an RTK rover (nvs) corrects itself from a base inside the simulator;\n"
+        "                 without it, it stays autonomous until RTCM 3 frames arrive on its\n"
+        "                 port (float after 3 s of corrections, fixed after 20 s)\n"
         "  --rtcm-base    an RTK base station instead of a receiver: RTCM 3 MSM4 for GPS (1074)\n"
         "                 and GLONASS (1084) and the position (1005) every second, 1230 every\n"
         "                 10 s\n"
@@ -128,6 +131,8 @@ bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error) {
             if (value(v) && (!number(v, out.options.baud) || out.options.baud < 300 ||
                              out.options.baud > 921600))
                 fail("--baud: expected a speed 300..921600, got '" + std::string(v) + "'");
+        } else if (a == "--internal-base") {
+            if (flag()) out.options.internalBase = true;
         } else if (a == "--rtcm-base") {
             if (flag()) out.rtcmBase = true;
         } else if (a == "--base-position") {

@@ -117,10 +117,37 @@ FixKind NvsReceiver::fixAfter(double seconds) const {
     if (base == FixKind::None) return base;
     const int m = mode();
     if (m != 2 && m != 4) return base; // autonomous or base station
+    if (!options().internalBase) {
+        // A real rover: float after a few seconds of corrections, fixed after about twenty,
+        // autonomous again once the last correction is older than RTCMAGE.
+        if (lastRtcm_ < 0 || time() - lastRtcm_ > correctionAgeLimit()) return base;
+        const double flowing = time() - flowSince_;
+        if (flowing >= 20) return FixKind::Fixed;
+        if (flowing >= 3) return FixKind::Float;
+        return base;
+    }
     const double sinceFix = seconds - ttff();
     if (sinceFix >= 15) return FixKind::Fixed;
     if (sinceFix >= 5) return FixKind::Float;
     return FixKind::Autonomous;
+}
+
+double NvsReceiver::correctionAgeLimit() const {
+    const double limit = std::atof(rtkValue("RTCMAGE").c_str());
+    return limit > 0 ? limit : 45;
+}
+
+void NvsReceiver::onHostBytes(std::string_view bytes) {
+    if (options().internalBase) return;
+    hostRtcm_.feed(bytes, [this](const rtcm::RtcmFrame &) {
+        ++rtcmTotal_;
+        if (lastRtcm_ < 0 || time() - lastRtcm_ > correctionAgeLimit()) flowSince_ = time();
+        lastRtcm_ = time();
+    });
+    // Frames whose CRC failed count as received and bad (PNVGBSS fields 1 and 2).
+    const auto failures = std::int64_t(hostRtcm_.stats().crcFailures);
+    rtcmTotal_ += failures - rtcmErrors_;
+    rtcmErrors_ = failures;
 }
 
 void NvsReceiver::onReset(ResetKind kind) {
@@ -131,7 +158,8 @@ void NvsReceiver::onReset(ResetKind kind) {
     epochIndex_ = 0;
     sendTestResults_ = true;
     rtcmTotal_ = rtcmErrors_ = 0;
-    lastRtcm_ = -1;
+    lastRtcm_ = flowSince_ = -1;
+    hostRtcm_ = rtcm::RtcmFramer();
     nextRtcm_ = time() + ttff() + 0.35;
 }
 
@@ -157,7 +185,7 @@ std::string NvsReceiver::proprietary(std::string_view body) const {
 
 void NvsReceiver::onEpoch(const SkySnapshot &snap) {
     // The simulated base's corrections: one burst a second once the rover tracks (RTK modes).
-    const bool rover = mode() == 2 || mode() == 4;
+    const bool rover = options().internalBase && (mode() == 2 || mode() == 4);
     while (rover && time() >= nextRtcm_) { // corrections received up to now
         rtcmTotal_ += 3;                   // 1005 + 1002 + 1010
         std::uniform_int_distribution<int> err(0, 199);

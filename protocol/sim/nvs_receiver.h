@@ -17,6 +17,7 @@
 #include "standard_output.h"
 
 #include "nvs/nvs_messages.h"
+#include "rtcm/rtcm_framer.h"
 
 #include <map>
 
@@ -60,6 +61,7 @@ protected:
     void onReset(ResetKind kind) override;
     UseMask useMask() const override;
     FixKind fixAfter(double seconds) const override;
+    void onHostBytes(std::string_view bytes) override;
 
 private:
     Settings defaults() const;
@@ -85,6 +87,9 @@ private:
     double baseNorth_ = 4604.566, baseEast_ = -1242.064, baseUp_ = -27.096; // base → rover ENU
     std::int64_t rtcmTotal_ = 0, rtcmErrors_ = 0;
     double lastRtcm_ = -1, nextRtcm_ = 0;
+    double flowSince_ = -1;            // corrections from the host arrive without a break since
+    rtcm::RtcmFramer hostRtcm_;        // the host's bytes: RTCM 3 frames among the commands
+    double correctionAgeLimit() const; // RTCMAGE, seconds
     // Time mark events.
     std::int64_t markCounter_ = 0;
     double nextMark_ = 0.7, lastMark_ = -1;

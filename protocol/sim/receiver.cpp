@@ -41,6 +41,7 @@ Receiver::~Receiver() = default;
 
 void Receiver::receive(std::string_view bytes) {
     if (hungUp_ || baudMismatch()) return;
+    onHostBytes(bytes);
     decoder_.feed(bytes, [this](const SentenceEvent &ev) {
         onCommand(ev.sentence, ev.message, ev.error);
     });

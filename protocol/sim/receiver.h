@@ -33,6 +33,9 @@ struct SimOptions {
     int baud = 0; // starting baud; 0 = the receiver's default
     FaultSpec faults;
     Observer observer;
+    // An RTK rover corrects itself from a base inside the simulator (a demonstration without a
+    // caster). Otherwise, as a real rover, it waits for RTCM 3 from the host on its port.
+    bool internalBase = false;
 };
 
 enum class ResetKind : std::uint8_t {
@@ -99,6 +102,8 @@ protected:
     virtual void onEpoch(const SkySnapshot &snap) = 0;
     // Settings back to the saved copy (PowerCycle) and engine state cleared (all kinds).
     virtual void onReset(ResetKind kind) = 0;
+    // Every byte from the host, before the commands in it are decoded (RTCM corrections).
+    virtual void onHostBytes(std::string_view bytes) { (void)bytes; }
     // Which satellites the receiver uses (from its settings).
     virtual UseMask useMask() const { return {}; }
     // The fix the engine has reached `seconds` after it started tracking (RTK receivers refine).

@@ -3,8 +3,10 @@
 // mountpoint chosen, refusals ending with exit code 1 and the reason, the password taken from
 // the environment and never printed.
 #include "rtcm_fixtures.h"
+#include "sim_process.h"
 #include "test_caster.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -183,6 +185,42 @@ private slots:
         QVERIFY2(r.err.contains("no RTCM received from 127.0.0.1:"), r.err.constData());
     }
 
+    // The whole path: caster → gnss-cli → the simulated NV08C-RTK on a pseudo-terminal, which
+    // is autonomous until the corrections flow, then float, then fixed; its fix goes up as GGA.
+    void theRoverReachesRtkFixedOnlyOnceCorrectionsFlow() {
+        gnss::link::test::SimProcess rover(
+                {"--dialect", "nvs", "--speed", "5", "--baud", "460800"});
+        if (!rover.ok()) QSKIP("gnss-sim is not built");
+        TestCaster caster;
+        QVERIFY(caster.listen());
+        const QList<QByteArray> epochs = baseEpochs(200);
+        int next = 0;
+        QElapsedTimer clock;
+        auto feed = [&] { // one base epoch per real second once the client streams
+            if (caster.streamingClients() == 1 && next < epochs.size() &&
+                (!clock.isValid() || clock.elapsed() >= 1000)) {
+                clock.start();
+                caster.send(epochs[next++]);
+            }
+        };
+        const Run r = cli({"ntrip", "--caster", casterArg(caster), "--mount", "MOUNT", "--user",
+                           "rover7", "--password-env", "TEST_NTRIP_PW", "--port", rover.device,
+                           "--baud", "460800", "--duration", "9"},
+                          feed);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QStringList fixes;
+        for (const QJsonObject &e : jsonLines(r.out)) fixes.append(e.value("fix").toString());
+        QVERIFY2(fixes.size() > 50, r.err.constData());
+        // Autonomous (3d) first: the simulated rover does not correct itself.
+        QVERIFY(fixes.contains("3d") && fixes.contains("rtk_float"));
+        QVERIFY(fixes.indexOf("3d") < fixes.indexOf("rtk_float"));
+        QCOMPARE(fixes.last(), QString("rtk_fixed"));
+        QVERIFY2(r.err.contains("\"frames_dropped\":0"), r.err.constData());
+        QVERIFY2(!r.err.contains("\"frames_forwarded\":0"), r.err.constData());
+        // --gga auto: the receiver's own fix went up to the caster.
+        QVERIFY(caster.uploads.contains("$GPGGA,"));
+    }
+
     void badCommandLinesAreRefusedBeforeConnecting_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("words");
@@ -198,9 +236,9 @@ private slots:
         QTest::newRow("a missing password variable")
                 << QStringList{"--caster", "h:1", "--mount", "M", "--password-env", "NO_SUCH_VAR_X"}
                 << "environment variable NO_SUCH_VAR_X is not set";
-        QTest::newRow("forwarding is for later")
-                << QStringList{"--caster", "h:1", "--mount", "M", "--port", "/dev/ttyUSB0"}
-                << "forwarding corrections to a receiver";
+        QTest::newRow("two receivers") << QStringList{"--caster", "h:1",          "--mount", "M",
+                                                      "--port",   "/dev/ttyUSB0", "--sim",   "nvs"}
+                                       << "give one source";
         QTest::newRow("version 3")
                 << QStringList{"--caster", "h:1", "--mount", "M", "--ntrip-version", "3"}
                 << "--ntrip-version is 1 or 2";

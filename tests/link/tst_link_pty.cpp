@@ -176,8 +176,20 @@ private slots:
         QFile::remove(link);
         QVERIFY(QFile::link(second.device, link));
         // Generous: a loaded machine starts the second simulator slowly (not a timing test).
-        QVERIFY2(back.wait(15000),
-                 qPrintable("did not reconnect: " + conn.transport()->errorString()));
+        // The failure message says how far the retries got, should this ever fail again.
+        QSignalSpy attempts(&conn, &Connection::reconnectAttempt);
+        QString lastFailure;
+        connect(&conn, &Connection::openFailed, this,
+                [&](const QString &why, int) { lastFailure = why; });
+        QTRY_VERIFY2_WITH_TIMEOUT(
+                back.count() > 0,
+                qPrintable(QStringLiteral("did not reconnect: %1 attempts since the device came "
+                                          "back, last failure '%2', "
+                                          "transport %3")
+                                   .arg(attempts.count())
+                                   .arg(lastFailure,
+                                        conn.transport()->isOpen() ? "open" : "not open")),
+                20000);
         QTRY_VERIFY_WITH_TIMEOUT(received.size() > before + 200, 5000);
         conn.close();
         conn.stopRecording();

@@ -2,6 +2,7 @@
 // reply (judged by the NVS dialect's own reply rules) and effect, flash persistence, baud change.
 #include "nvs_receiver.h"
 #include "receiver.h"
+#include "rtcm_base_station.h"
 #include "sim_output.h"
 
 #include "core/sentence.h"
@@ -16,9 +17,10 @@ using gnss::test::summarize;
 
 namespace {
 
-std::unique_ptr<Receiver> makeNvs(std::uint32_t seed = 1) {
+std::unique_ptr<Receiver> makeNvs(std::uint32_t seed = 1, bool internalBase = true) {
     SimOptions o;
     o.seed = seed;
+    o.internalBase = internalBase;
     return makeReceiver("nvs", o);
 }
 
@@ -118,6 +120,51 @@ private slots:
         QVERIFY(std::atoi(std::string(b.field(0)).c_str()) > 30);
         QVERIFY(std::abs(std::atof(std::string(b.field(3)).c_str()) - 4769.2) < 1);
         QVERIFY(!b.field(4).empty());
+    }
+    // Without the simulator's own base, a rover stays autonomous until RTCM 3 comes from the
+    // host; with corrections it reaches float, then fixed; when they stop it falls back.
+    void rtkNeedsCorrectionsFromTheHost() {
+        auto rx = makeNvs(1, false);
+        command(*rx, "PNVGRTK,RTCMAGE,10");
+        rx->advance(30);
+        QVERIFY(rx->currentFix() == FixKind::Autonomous); // no corrections: never RTK
+        rx->takeOutput();
+        RtcmBaseStation base;
+        std::vector<FixKind> seen;
+        for (int i = 0; i < 25; ++i) {
+            base.advance(1.0);
+            const std::string burst = base.takeOutput();
+            // Cut anywhere: frames are found all the same.
+            rx->receive(burst.substr(0, burst.size() / 2));
+            rx->receive(burst.substr(burst.size() / 2));
+            rx->advance(1.0);
+            seen.push_back(rx->currentFix());
+        }
+        QVERIFY(seen.front() == FixKind::Autonomous);
+        QVERIFY(std::find(seen.begin(), seen.end(), FixKind::Float) != seen.end());
+        QVERIFY(seen.back() == FixKind::Fixed);
+        // PNVGBSS counts the frames received and the bad ones.
+        rx->takeOutput();
+        command(*rx, "GPGPQ,PNVGBSS");
+        const auto bss = summarize(rx->takeOutput(), "nvs").all("PNVGBSS");
+        QCOMPARE(bss.size(), std::size_t(1));
+        Sentence b;
+        b.parse(bss.front());
+        QVERIFY(std::atoi(std::string(b.field(0)).c_str()) >= 50);
+        QCOMPARE(std::string(b.field(1)), std::string("0"));
+        // A corrupted frame is counted as bad.
+        base.advance(1.0);
+        std::string bad = base.takeOutput();
+        bad[5] = char(bad[5] ^ 0x10); // inside the first frame's payload
+        rx->receive(bad);
+        command(*rx, "GPGPQ,PNVGBSS");
+        const auto after = summarize(rx->takeOutput(), "nvs").all("PNVGBSS");
+        QCOMPARE(after.size(), std::size_t(1));
+        b.parse(after.front()); // (the sentence refers to the text: keep it alive)
+        QVERIFY(std::atoi(std::string(b.field(1)).c_str()) >= 1);
+        // Corrections stop: autonomous again once they are older than RTCMAGE (10 s here).
+        rx->advance(12);
+        QVERIFY(rx->currentFix() == FixKind::Autonomous);
     }
     void pvtRateChangesTheOutputRate() {
         auto rx = makeNvs();
