@@ -15,6 +15,7 @@
 #include "correction_forwarder.h"
 #include "ntrip/mountpoint_distance.h"
 #include "ntrip_source.h"
+#include "rover_position.h"
 #include "sentence_stream.h"
 #include "source_table_request.h"
 #include "state/epoch_assembler.h"
@@ -205,26 +206,6 @@ struct Options {
     std::optional<link::SourceSpec> receiver; // --port, --tcp or --sim: corrections go there
 };
 
-// The GGA a caster gets from the receiver's own fix (quality as GGA numbers it).
-ntrip::GgaPosition ggaOf(const Epoch &e) {
-    ntrip::GgaPosition p;
-    p.latDeg = *e.lat;
-    p.lonDeg = *e.lon;
-    p.altitudeMsl = e.altMsl.value_or(0);
-    p.geoidSeparation = e.geoidSep.value_or(0);
-    p.satellites = e.satsUsed.value_or(p.satellites);
-    p.hdop = e.hdop.value_or(p.hdop);
-    switch (e.fix) {
-    case FixType::None: p.quality = 0; break;
-    case FixType::Dgnss: p.quality = 2; break;
-    case FixType::RtkFixed: p.quality = 4; break;
-    case FixType::RtkFloat: p.quality = 5; break;
-    case FixType::Estimated: p.quality = 6; break;
-    default: p.quality = 1; break;
-    }
-    return p;
-}
-
 void writeForwarderJson(JsonWriter &w, const corrections::ForwarderStats &s) {
     w.beginObject();
     w.field("frames_forwarded", s.framesForwarded);
@@ -324,8 +305,8 @@ int receive(const CliContext &ctx, const Options &o, const QString &mount,
     std::unique_ptr<corrections::CorrectionForwarder> forwarder;
     EpochAssembler assembler(nullptr);
     auto onEpoch = [&](const Epoch &e) {
-        if (!o.position && e.lat && e.lon && e.fix != FixType::None)
-            source.setRoverPosition(ggaOf(e));
+        if (const auto p = corrections::ggaPositionOf(e); p && !o.position)
+            source.setRoverPosition(*p);
         if (o.quiet) return;
         std::string out;
         JsonWriter w(out);

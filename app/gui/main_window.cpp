@@ -4,6 +4,7 @@
 #include "connection_bar.h"
 #include "connection_controller.h"
 #include "core/dialect_registry.h"
+#include "corrections_controller.h"
 #include "link/port_watcher.h"
 #include "models/console_model.h"
 #include "models/message_stats_model.h"
@@ -15,6 +16,7 @@
 #include "views/attitude_view.h"
 #include "views/charts_view.h"
 #include "views/console_view.h"
+#include "views/corrections_view.h"
 #include "views/deviation_view.h"
 #include "views/fix_view.h"
 #include "views/message_stats_view.h"
@@ -192,7 +194,29 @@ void MainWindow::createDocks() {
     tabifyDockWidget(skyDock, deviationDock);
     skyDock->raise();
     tabifyDockWidget(fixDock, rtkDock);
-    tabifyDockWidget(rtkDock, infoDock);
+    // Corrections: a caster's (or a base's) RTCM into the connected receiver, beside RTK.
+    corrections_ = new CorrectionsController(settings_, this);
+    auto *correctionsView = new ui::CorrectionsView(
+            corrections_->monitor(), stateModel_, [this] { return corrections_->forwarderStats(); },
+            this);
+    correctionsView->setRequest(corrections_->remembered());
+    connect(correctionsView, &ui::CorrectionsView::startRequested, this,
+            [this, correctionsView](const ui::CorrectionsRequest &r) {
+                QString why;
+                if (!corrections_->start(r, &why)) correctionsView->showError(why);
+            });
+    connect(correctionsView, &ui::CorrectionsView::stopRequested, corrections_,
+            &CorrectionsController::stop);
+    connect(corrections_, &CorrectionsController::statusChanged, correctionsView,
+            &ui::CorrectionsView::setStatus);
+    connect(controller_, &ConnectionController::stateChanged, corrections_,
+            [this] { corrections_->setReceiver(controller_->connection()); });
+    connect(stateModel_, &ui::ReceiverStateModel::updated, corrections_,
+            [this] { corrections_->setRoverFix(stateModel_->state().epoch); });
+    auto *correctionsDock = addDock(correctionsView, tr("Corrections"), tr("Corrections (RTCM)"),
+                                    "correctionsDock", Qt::RightDockWidgetArea);
+    tabifyDockWidget(rtkDock, correctionsDock);
+    tabifyDockWidget(correctionsDock, infoDock);
     tabifyDockWidget(infoDock, satDock);
     tabifyDockWidget(satDock, attitudeDock);
     // Receiver settings: the engine follows the connection and the dialect it speaks.

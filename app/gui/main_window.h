@@ -36,6 +36,7 @@ using link::SourceSpec;
 
 class ConnectionBar;
 class ConnectionController;
+class CorrectionsController;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -47,6 +48,7 @@ public:
     ~MainWindow() override;
 
     ConnectionController *controller() const { return controller_; }
+    CorrectionsController *corrections() const { return corrections_; }
     ui::ReceiverStateModel *stateModel() const { return stateModel_; }
     ui::SatelliteModel *satelliteModel() const { return satellites_; }
     ui::ReceiverSession *session() const { return session_; }
@@ -87,6 +89,7 @@ private:
     ui::ConsoleModel *console_ = nullptr;
     ui::ReceiverSession *session_ = nullptr;
     ConnectionController *controller_ = nullptr;
+    CorrectionsController *corrections_ = nullptr;
     ConnectionBar *bar_ = nullptr;
     ui::SkyPlotView *sky_ = nullptr;
     ui::RtkView *rtk_ = nullptr;

@@ -45,7 +45,7 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             QCoreApplication::translate("StartupOptions",
                                         "Show this dock in front of its tab group: settings, "
                                         "console, sky, signal, fix, satellites, rtk, charts, "
-                                        "deviation, attitude, stats, info."),
+                                        "corrections, deviation, attitude, stats, info."),
             "name");
     const QCommandLineOption shot(
             "screenshot",

@@ -80,7 +80,7 @@ void decodeMsm(BitReader &r, RtcmMessage &m) {
     for (unsigned i = 0; i < 64; ++i)
         if (h.satelliteMask >> (63 - i) & 1) h.satellites[h.satelliteCount++] = std::uint8_t(i + 1);
     for (unsigned i = 0; i < 32; ++i)
-        if (h.signalMask >> (31 - i) & 1) h.signals[h.signalCount++] = std::uint8_t(i + 1);
+        if (h.signalMask >> (31 - i) & 1) h.signalList[h.signalCount++] = std::uint8_t(i + 1);
     const unsigned cellBits = unsigned(h.satelliteCount) * h.signalCount;
     if (cellBits > 64) {
         // The standard caps the cell mask at 64 bits: such a header cannot be real.

@@ -67,7 +67,7 @@ struct MsmHeader {
     std::uint32_t signalMask = 0;    // DF395, bit 31 = signal 1
     std::uint64_t cellMask = 0;      // DF396, right-aligned: nsat × nsig bits, first cell highest
     std::array<std::uint8_t, 64> satellites{}; // satellite ids (1..64) from the mask, ascending
-    std::array<std::uint8_t, 32> signals{};    // signal ids (1..32) from the mask, ascending
+    std::array<std::uint8_t, 32> signalList{}; // signal ids (1..32) from the mask, ascending
     std::uint8_t satelliteCount = 0;
     std::uint8_t signalCount = 0;
     std::uint8_t cellCount = 0; // cells present (bits set in the cell mask)
@@ -75,7 +75,7 @@ struct MsmHeader {
     std::span<const std::uint8_t> satelliteIds() const {
         return {satellites.data(), satelliteCount};
     }
-    std::span<const std::uint8_t> signalIds() const { return {signals.data(), signalCount}; }
+    std::span<const std::uint8_t> signalIds() const { return {signalList.data(), signalCount}; }
 };
 
 // Broadcast ephemerides: 1019 GPS, 1020 GLONASS, 1042 BeiDou, 1044 QZSS, 1045 Galileo F/NAV,

@@ -1,0 +1,133 @@
+#include "corrections_controller.h"
+
+#include "correction_forwarder.h"
+#include "ntrip_source.h"
+#include "rover_position.h"
+#include "tcp_correction_source.h"
+
+#include "link/connection.h"
+#include "state/epoch.h"
+
+#include <QDateTime>
+#include <QSettings>
+
+namespace gnss::app {
+
+namespace {
+
+constexpr int kAgeSampleMs = 1000; // the monitor's age history is sampled once a second
+
+std::int64_t nowMs() {
+    return QDateTime::currentMSecsSinceEpoch(); // the clock CorrectionsView reads the monitor by
+}
+
+} // namespace
+
+CorrectionsController::CorrectionsController(QSettings *settings, QObject *parent)
+    : QObject(parent), settings_(settings) {
+    connect(&ageSampler_, &QTimer::timeout, this, [this] { monitor_.sampleAge(nowMs()); });
+    ageSampler_.start(kAgeSampleMs);
+}
+
+CorrectionsController::~CorrectionsController() {
+    forwarder_.reset();
+    if (source_) source_->stop();
+}
+
+ui::CorrectionsRequest CorrectionsController::remembered() const {
+    ui::CorrectionsRequest r;
+    if (!settings_) return r;
+    settings_->beginGroup(QStringLiteral("corrections"));
+    r.kind = settings_->value(QStringLiteral("kind")).toString() == QLatin1String("tcp")
+                     ? ui::CorrectionsRequest::Kind::Tcp
+                     : ui::CorrectionsRequest::Kind::Ntrip;
+    r.host = settings_->value(QStringLiteral("host")).toString();
+    r.port = settings_->value(QStringLiteral("port"), 2101).toInt();
+    r.mountpoint = settings_->value(QStringLiteral("mountpoint")).toString();
+    r.user = settings_->value(QStringLiteral("user")).toString();
+    r.ntripVersion = settings_->value(QStringLiteral("ntripVersion"), 2).toInt();
+    settings_->endGroup();
+    return r;
+}
+
+bool CorrectionsController::start(const ui::CorrectionsRequest &r, QString *why) {
+    if (!ui::CorrectionsView::validate(r, why)) return false;
+    stop();
+    if (settings_) { // everything but the password
+        settings_->beginGroup(QStringLiteral("corrections"));
+        settings_->setValue(QStringLiteral("kind"),
+                            r.kind == ui::CorrectionsRequest::Kind::Tcp ? "tcp" : "ntrip");
+        settings_->setValue(QStringLiteral("host"), r.host);
+        settings_->setValue(QStringLiteral("port"), r.port);
+        settings_->setValue(QStringLiteral("mountpoint"), r.mountpoint);
+        settings_->setValue(QStringLiteral("user"), r.user);
+        settings_->setValue(QStringLiteral("ntripVersion"), r.ntripVersion);
+        settings_->endGroup();
+    }
+    if (r.kind == ui::CorrectionsRequest::Kind::Ntrip) {
+        corrections::NtripSettings s;
+        s.host = r.host;
+        s.port = quint16(r.port);
+        s.mountpoint = r.mountpoint;
+        s.user = r.user;
+        s.password = r.password;
+        s.version = r.ntripVersion == 1 ? ntrip::NtripVersion::V1 : ntrip::NtripVersion::V2;
+        source_ = std::make_unique<corrections::NtripSource>(s);
+    } else {
+        source_ = std::make_unique<corrections::TcpCorrectionSource>(r.host, quint16(r.port));
+    }
+    monitor_.reset();
+    if (forwarder_) forwarder_->resetFraming();
+    connect(source_.get(), &corrections::CorrectionSource::dataReceived, this,
+            &CorrectionsController::onData);
+    connect(source_.get(), &corrections::CorrectionSource::statusChanged, this,
+            [this](const QString &text) { emit statusChanged(text, active()); });
+    connect(source_.get(), &corrections::CorrectionSource::stateChanged, this,
+            [this] { emit statusChanged(statusText(), active()); });
+    source_->start();
+    emit statusChanged(statusText(), active());
+    return true;
+}
+
+void CorrectionsController::stop() {
+    if (!source_) return;
+    source_->stop();
+    source_.release()->deleteLater(); // (it may be inside one of its own signals)
+    emit statusChanged(tr("Stopped"), false);
+}
+
+bool CorrectionsController::active() const {
+    using St = corrections::CorrectionSource::State;
+    return source_ && source_->state() != St::Idle && source_->state() != St::Failed;
+}
+
+QString CorrectionsController::statusText() const {
+    return source_ ? source_->statusText() : tr("Not started");
+}
+
+void CorrectionsController::setReceiver(link::Connection *connection) {
+    if (connection == receiver_) return;
+    forwarder_.reset();
+    receiver_ = connection;
+    if (connection)
+        forwarder_ = std::make_unique<corrections::CorrectionForwarder>(connection->transport(),
+                                                                        connection->commands());
+}
+
+void CorrectionsController::setRoverFix(const Epoch &e) {
+    if (!e.lat || !e.lon || e.fix == FixType::None) return;
+    monitor_.setRoverPosition({*e.lat, *e.lon, e.altEllipsoid().value_or(e.altMsl.value_or(0))});
+    auto *ntrip = qobject_cast<corrections::NtripSource *>(source_.get());
+    if (const auto p = corrections::ggaPositionOf(e); ntrip && p) ntrip->setRoverPosition(*p);
+}
+
+const corrections::ForwarderStats *CorrectionsController::forwarderStats() const {
+    return forwarder_ ? &forwarder_->stats() : nullptr;
+}
+
+void CorrectionsController::onData(const QByteArray &bytes) {
+    monitor_.feed(std::string_view(bytes.constData(), std::size_t(bytes.size())), nowMs());
+    if (forwarder_) forwarder_->feed(bytes);
+}
+
+} // namespace gnss::app

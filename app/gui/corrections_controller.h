@@ -1,0 +1,74 @@
+#pragma once
+// CorrectionsController: the corrections path of the window. It owns the correction source the
+// user started from the corrections dock (an NTRIP mountpoint or a base's TCP stream), feeds what
+// arrives to the CorrectionsMonitor the dock shows and, while a receiver is connected, to a
+// CorrectionForwarder on that receiver's link (whole frames, never inside a command). The
+// receiver's fix goes up to the caster as the GGA and to the monitor for the baseline. Caster,
+// port, mountpoint, user and protocol are remembered in the injected QSettings; the password is
+// used for this session only and never written anywhere.
+#include "views/corrections_view.h"
+
+#include "corrections_monitor.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+#include <memory>
+
+class QSettings;
+
+namespace gnss {
+struct Epoch;
+namespace link {
+class Connection;
+}
+namespace corrections {
+class CorrectionSource;
+class CorrectionForwarder;
+struct ForwarderStats;
+} // namespace corrections
+} // namespace gnss
+
+namespace gnss::app {
+
+class CorrectionsController : public QObject {
+    Q_OBJECT
+public:
+    explicit CorrectionsController(QSettings *settings, QObject *parent = nullptr);
+    ~CorrectionsController() override;
+
+    // The last request started (without the password), for the dock's form.
+    ui::CorrectionsRequest remembered() const;
+    // Starts the source asked for (the one running is stopped first); false with `why` when the
+    // request is incomplete: then nothing was started.
+    bool start(const ui::CorrectionsRequest &request, QString *why = nullptr);
+    void stop();
+    bool active() const;
+    QString statusText() const;
+
+    // The receiver's link the corrections go to (null: none; the forwarder goes with it).
+    void setReceiver(link::Connection *connection);
+    // The receiver's latest fix: the GGA sent up, the baseline shown.
+    void setRoverFix(const Epoch &epoch);
+
+    const corrections::CorrectionsMonitor &monitor() const { return monitor_; }
+    // Null while nothing is forwarded.
+    const corrections::ForwarderStats *forwarderStats() const;
+    corrections::CorrectionSource *source() const { return source_.get(); }
+
+signals:
+    void statusChanged(const QString &text, bool active);
+
+private:
+    void onData(const QByteArray &bytes);
+
+    QSettings *settings_;
+    corrections::CorrectionsMonitor monitor_;
+    std::unique_ptr<corrections::CorrectionSource> source_;
+    std::unique_ptr<corrections::CorrectionForwarder> forwarder_;
+    QPointer<link::Connection> receiver_;
+    QTimer ageSampler_;
+};
+
+} // namespace gnss::app

@@ -1,0 +1,95 @@
+#pragma once
+// CorrectionsView: the corrections dock. Above, where the corrections come from (an NTRIP
+// caster's mountpoint or a base's raw TCP stream) with Start/Stop and the source's status line;
+// then what arrives (CorrectionsMonitor: bytes/s, CRC errors, one row per message type with
+// count, rate, age and meaning, the base position and the rover-to-base distance) and what was
+// forwarded to the receiver; below, what the receiver says of them (its RTK mode, correction age,
+// RTCM counts: ReceiverState::rtk), so "corrections arrive" and "the receiver uses them" are
+// seen side by side. Refreshes on a 1 Hz timer, never per message.
+//
+// The view starts nothing itself: it asks (startRequested/stopRequested) and whoever owns the
+// source (the application's CorrectionsController) answers with setStatus().
+#include <QString>
+#include <QWidget>
+
+#include <functional>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+class QTimer;
+
+namespace gnss::corrections {
+class CorrectionsMonitor;
+struct ForwarderStats;
+} // namespace gnss::corrections
+
+namespace gnss::ui {
+
+class ReceiverStateModel;
+
+// What the user asked for. The password is given to the source and never stored by the view.
+struct CorrectionsRequest {
+    enum class Kind { Ntrip, Tcp };
+    Kind kind = Kind::Ntrip;
+    QString host;
+    int port = 2101;
+    QString mountpoint;
+    QString user;
+    QString password;
+    int ntripVersion = 2;
+    bool operator==(const CorrectionsRequest &) const = default;
+};
+
+class CorrectionsView : public QWidget {
+    Q_OBJECT
+public:
+    // `forwarded` returns the forwarding counts, or null when nothing is forwarded (no receiver).
+    CorrectionsView(const corrections::CorrectionsMonitor &monitor, ReceiverStateModel *receiver,
+                    std::function<const corrections::ForwarderStats *()> forwarded,
+                    QWidget *parent = nullptr);
+
+    // The form's fields (remembered values given back; the password stays empty).
+    void setRequest(const CorrectionsRequest &r);
+    CorrectionsRequest request() const;
+    // Whether the request is complete; `why` in words when not.
+    static bool validate(const CorrectionsRequest &r, QString *why);
+
+    // The source's state: `active` while started (Start becomes Stop).
+    void setStatus(const QString &text, bool active);
+    // Shown instead of the status when a request was refused before anything was started.
+    void showError(const QString &text);
+
+    // Rows in the message-type table (tests).
+    int messageTypeRows() const;
+
+public slots:
+    void refresh();
+
+signals:
+    void startRequested(const gnss::ui::CorrectionsRequest &request);
+    void stopRequested();
+
+private:
+    void onStartStop();
+    void updateKind();
+
+    const corrections::CorrectionsMonitor &monitor_;
+    ReceiverStateModel *receiver_;
+    std::function<const corrections::ForwarderStats *()> forwarded_;
+    bool active_ = false;
+
+    QComboBox *kind_, *version_;
+    QLineEdit *host_, *mount_, *user_, *password_;
+    QSpinBox *port_;
+    QPushButton *startStop_;
+    QLabel *status_, *stream_, *base_, *forwarding_, *receiverSide_;
+    QLabel *mountLabel_, *userLabel_, *passwordLabel_, *versionLabel_;
+    QTableWidget *types_;
+    QTimer *timer_;
+};
+
+} // namespace gnss::ui
