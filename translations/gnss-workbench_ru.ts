@@ -75,148 +75,143 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/cli/cmd_config.cpp" line="+116"/>
+        <location filename="../app/cli/cmd_config.cpp" line="+113"/>
         <source>reading the settings failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не удалось прочитать настройки: %1</translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
         <source>%n command(s) failed</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n команда завершилась с ошибкой</numerusform>
+            <numerusform>%n команды завершились с ошибкой</numerusform>
+            <numerusform>%n команд завершились с ошибкой</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+19"/>
-        <source>config needs one of --port P or --sim DIALECT</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>--baud expects a speed such as 9600 or 115200, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+33"/>
         <source>unknown dialect &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>неизвестный диалект «%1»</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>this gnss-cli was built without the simulator</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+42"/>
+        <location line="+25"/>
         <source>the receiver&apos;s dialect was not recognised (%1); give --dialect</source>
-        <translation type="unfinished"></translation>
+        <translation>диалект приёмника не распознан (%1); укажите --dialect</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>the %1 dialect has no settings</source>
-        <translation type="unfinished"></translation>
+        <translation>у диалекта %1 нет настроек</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>unknown setting &apos;%1&apos; (gnss-cli schema %2 lists them)</source>
-        <translation type="unfinished"></translation>
+        <translation>неизвестная настройка «%1» (список настроек выводит gnss-cli schema %2)</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+47"/>
         <source>config needs an action: get, set, export, apply, diff or action</source>
-        <translation type="unfinished"></translation>
+        <translation>для config нужно действие: get, set, export, apply, diff или action</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>set expects KEY=VALUE, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>set ожидает КЛЮЧ=ЗНАЧЕНИЕ, получено «%1»</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>set needs at least one KEY=VALUE</source>
-        <translation type="unfinished"></translation>
+        <translation>для set нужна хотя бы одна пара КЛЮЧ=ЗНАЧЕНИЕ</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>config %1 needs one FILE</source>
-        <translation type="unfinished"></translation>
+        <translation>для config %1 нужен один ФАЙЛ</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>config action needs one of save, defaults, cold, warm, hot</source>
-        <translation type="unfinished"></translation>
+        <translation>для config action нужно одно из: save, defaults, cold, warm, hot</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>unknown config action &apos;%1&apos;: get, set, export, apply, diff or action</source>
-        <translation type="unfinished"></translation>
+        <translation>неизвестное действие config «%1»: get, set, export, apply, diff или action</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+27"/>
         <source>unknown action &apos;%1&apos;: save, defaults, cold, warm or hot</source>
-        <translation type="unfinished"></translation>
+        <translation>неизвестное действие «%1»: save, defaults, cold, warm или hot</translation>
     </message>
     <message numerus="yes">
         <location line="+13"/>
         <source>%n setting(s) of the %1 receiver written to %2</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n настройка приёмника %1 записана в %2</numerusform>
+            <numerusform>%n настройки приёмника %1 записаны в %2</numerusform>
+            <numerusform>%n настроек приёмника %1 записано в %2</numerusform>
         </translation>
     </message>
     <message>
         <location filename="../protocol/config/settings_profile.cpp" line="+46"/>
         <source>not a settings profile: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>это не профиль настроек: %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>not a settings profile (format is &apos;%1&apos;, expected &apos;%2&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>это не профиль настроек (формат «%1», ожидался «%2»)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>profile version %1 is not supported (this program reads version 1 to %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>версия профиля %1 не поддерживается (программа читает версии от 1 до %2)</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>the profile is for dialect &apos;%1&apos;, the receiver speaks &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>профиль предназначен для диалекта «%1», а приёмник использует «%2»</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: the value must be a string</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: значение должно быть строкой</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+18"/>
+        <source>%1: given twice (as %2 and %3)</source>
+        <translation>%1: задано дважды (как %2 и %3)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>the profile names settings the %1 dialect cannot set: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>профиль содержит настройки, которые диалект %1 не может задать: %2</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>не удаётся записать %1: %2</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>не удаётся прочитать %1: %2</translation>
     </message>
 </context>
 <context>
     <name>StartupOptions</name>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="+11"/>
+        <location filename="../app/gui/startup_options.cpp" line="+14"/>
         <source>Configure and monitor GNSS receivers.</source>
         <translation>Настройка и мониторинг приёмников ГНСС.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Exit status: 0 closed normally, 1 the --screenshot could not be saved, 2 usage error.</source>
+        <translation>Код завершения: 0 — обычное закрытие, 1 — не удалось сохранить --screenshot, 2 — ошибка в параметрах запуска.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Serial port.</source>
         <translation>Последовательный порт.</translation>
     </message>
@@ -237,11 +232,31 @@
     </message>
     <message>
         <location line="+4"/>
-        <source>Built-in simulated receiver: nvs, geostar, nemerix, nmea.</source>
-        <translation>Встроенный имитатор приёмника: nvs, geostar, nemerix, nmea.</translation>
+        <source>Built-in simulated receiver: %1.</source>
+        <translation>Встроенный имитатор приёмника: %1.</translation>
     </message>
     <message>
         <location line="+5"/>
+        <source>A receiver that gpsd holds: gpsd://HOST[:PORT][/DEVICE] (port 2947 and every device when left out).</source>
+        <translation>Приёмник, подключённый к gpsd: gpsd://ХОСТ[:ПОРТ][/УСТРОЙСТВО] (если не указаны — порт 2947 и все устройства).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Show this dock in front of its tab group: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info.</source>
+        <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info.</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>Invalid --gpsd: %1</source>
+        <translation>Неверное значение --gpsd: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Give one source at most: --port, --tcp, --gpsd, --replay or --sim.</source>
+        <translation>Укажите не более одного источника: --port, --tcp, --gpsd, --replay или --sim.</translation>
+    </message>
+    <message>
+        <location line="-66"/>
         <source>Save an image of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
@@ -251,7 +266,12 @@
         <translation>Выйти через указанное число секунд.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+10"/>
+        <source>Unexpected argument &apos;%1&apos;</source>
+        <translation>Лишний аргумент «%1»</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Invalid baud rate: %1</source>
         <translation>Неверная скорость порта: %1</translation>
     </message>
@@ -261,25 +281,25 @@
         <translation>Неверное значение --quit-after: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Unknown simulated receiver &apos;%1&apos; (use %2)</source>
         <translation>Неизвестный имитатор приёмника «%1» (допустимо: %2)</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>Give one source at most: --port, --tcp, --replay or --sim.</source>
-        <translation>Укажите не более одного источника: --port, --tcp, --replay или --sim.</translation>
+        <location filename="../app/gui/main.cpp" line="+67"/>
+        <source>Unknown dock &apos;%1&apos; (use %2)</source>
+        <translation>Неизвестная панель «%1» (допустимо: %2)</translation>
     </message>
 </context>
 <context>
     <name>gnss::app::ConnectionBar</name>
     <message>
-        <location filename="../app/gui/connection_bar.cpp" line="+18"/>
+        <location filename="../app/gui/connection_bar.cpp" line="+20"/>
         <source>Connection</source>
         <translation>Подключение</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Source </source>
         <translation>Источник </translation>
     </message>
@@ -295,12 +315,12 @@
     </message>
     <message>
         <location line="+6"/>
-        <location line="+96"/>
+        <location line="+105"/>
         <source>Connect</source>
         <translation>Подключить</translation>
     </message>
     <message>
-        <location line="-82"/>
+        <location line="-91"/>
         <source>TCP source</source>
         <translation>Источник TCP</translation>
     </message>
@@ -310,7 +330,17 @@
         <translation>Хост и порт (ХОСТ:ПОРТ):</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>gpsd source</source>
+        <translation>Источник gpsd</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gpsd&apos;s host, port and device (HOST[:PORT][/DEVICE]; port 2947 and every device when left out):</source>
+        <translation>Хост, порт и устройство gpsd (ХОСТ[:ПОРТ][/УСТРОЙСТВО]; если не указаны — порт 2947 и все устройства):</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Open Log</source>
         <translation>Открыть журнал</translation>
     </message>
@@ -329,29 +359,19 @@ Serial number: %3</source>
 Серийный номер: %3</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>Simulated NVS NV08C-RTK</source>
-        <translation>Имитатор NVS NV08C-RTK</translation>
+        <location line="+10"/>
+        <source>Simulated %1</source>
+        <translation>Имитатор %1</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Simulated GeoStar GeoS-5</source>
-        <translation>Имитатор GeoStar GeoS-5</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Simulated Nemerix VT002</source>
-        <translation>Имитатор Nemerix VT002</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Simulated NMEA receiver</source>
-        <translation>Имитатор приёмника NMEA</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>TCP…</source>
         <translation>TCP…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gpsd…</source>
+        <translation>gpsd…</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -367,40 +387,35 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::ConnectionController</name>
     <message>
-        <location filename="../app/gui/connection_controller.cpp" line="+25"/>
-        <location line="+191"/>
+        <location filename="../app/gui/connection_controller.cpp" line="+23"/>
+        <location line="+140"/>
         <source>Not connected</source>
         <translation>Нет подключения</translation>
     </message>
     <message>
-        <location line="-172"/>
+        <location line="-107"/>
         <source>No source chosen</source>
         <translation>Источник не выбран</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <location line="+126"/>
+        <location line="+11"/>
+        <location line="+23"/>
         <source>Cannot open %1: %2</source>
         <translation>Не удаётся открыть %1: %2</translation>
     </message>
     <message>
-        <location line="-53"/>
-        <source>TCP source must be HOST:PORT, got &apos;%1&apos;</source>
-        <translation>Источник TCP задаётся как ХОСТ:ПОРТ, получено «%1»</translation>
-    </message>
-    <message>
-        <location line="+67"/>
+        <location line="+59"/>
         <source>Connected: %1</source>
         <translation>Подключено: %1</translation>
     </message>
     <message>
-        <location line="-100"/>
-        <location line="+73"/>
+        <location line="-77"/>
+        <location line="+62"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-102"/>
+        <location line="-104"/>
         <source>%1: detecting the baud rate: trying %2…</source>
         <translation>%1: определение скорости: проверяется %2…</translation>
     </message>
@@ -410,42 +425,27 @@ Serial number: %3</source>
         <translation>%1: определение скорости: %2; проверяется %3…</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+29"/>
         <source>%1: detecting the baud rate…</source>
         <translation>%1: определение скорости…</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>%1 (valid NMEA)</source>
-        <translation>%1 (корректный NMEA)</translation>
+        <location line="+129"/>
+        <source>%1 cannot take commands</source>
+        <translation>%1 не принимает команды</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>%1 (no data)</source>
-        <translation>%1 (нет данных)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (data, no valid sentence)</source>
-        <translation>%1 (данные есть, корректных сообщений нет)</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="-118"/>
         <source>Baud rate not found: %1</source>
         <translation>Скорость не найдена: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>Baud rate detected: %1</source>
         <translation>Скорость определена: %1</translation>
     </message>
     <message>
-        <location line="+27"/>
-        <source>Cannot open %1</source>
-        <translation>Не удаётся открыть %1</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+30"/>
         <source>%1 — trying again in %2 s</source>
         <translation>%1 — повтор через %2 с</translation>
     </message>
@@ -460,12 +460,12 @@ Serial number: %3</source>
         <translation>Повторное подключение к %1 (попытка %2)…</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>Opening %1… %2%</source>
         <translation>Открытие %1… %2%</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-46"/>
         <source>Opening %1…</source>
         <translation>Открытие %1…</translation>
     </message>
@@ -475,25 +475,38 @@ Serial number: %3</source>
         <translation>Подключение к %1…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+50"/>
         <source>Connected: %1 (detected)</source>
         <translation>Подключено: %1 (определено)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+20"/>
         <source>Not connected: nothing was sent</source>
         <translation>Нет подключения: ничего не отправлено</translation>
     </message>
 </context>
 <context>
+    <name>gnss::app::CorrectionsController</name>
+    <message>
+        <location filename="../app/gui/corrections_controller.cpp" line="+96"/>
+        <source>Stopped</source>
+        <translation>Остановлено</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Not started</source>
+        <translation>Не запущено</translation>
+    </message>
+</context>
+<context>
     <name>gnss::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+47"/>
+        <location filename="../app/gui/main_window.cpp" line="+51"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+193"/>
+        <location line="+230"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
@@ -558,7 +571,7 @@ Serial number: %3</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-204"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -578,7 +591,7 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+75"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
     </message>
@@ -655,7 +668,17 @@ Serial number: %3</source>
         <translation>Ориентация и метки времени</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+23"/>
+        <source>Corrections</source>
+        <translation>Поправки</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Corrections (RTCM)</source>
+        <translation>Поправки (RTCM)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Settings</source>
         <translation>Настройки</translation>
     </message>
@@ -670,7 +693,7 @@ Serial number: %3</source>
         <translation>Не отправлено: %1</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+42"/>
         <source>NMEA logs (*.nmea *.log *.txt);;All files (*)</source>
         <translation>Журналы NMEA (*.nmea *.log *.txt);;Все файлы (*)</translation>
     </message>
@@ -725,7 +748,7 @@ Serial number: %3</source>
         <translation>&lt;b&gt;GNSS Workbench&lt;/b&gt; %1&lt;br&gt;Настройка и мониторинг приёмников NVS NV08C-RTK, GeoStar GeoS-5, Nemerix и NMEA-0183.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+38"/>
         <source>NMEA-0183 (no vendor sentences)</source>
         <translation>NMEA-0183 (без фирменных сообщений)</translation>
     </message>
@@ -781,145 +804,400 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
-    <name>gnss::app::SourceSpec</name>
-    <message>
-        <location filename="../app/gui/source_spec.cpp" line="+45"/>
-        <source>%1 at %2 baud</source>
-        <translation>%1 на %2 бод</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>%1 (baud: auto)</source>
-        <translation>%1 (скорость: авто)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>TCP %1</source>
-        <translation>TCP %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Replay %1</source>
-        <translation>Воспроизведение %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Simulated %1</source>
-        <translation>Имитатор %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>No source</source>
-        <translation>Нет источника</translation>
-    </message>
-</context>
-<context>
     <name>gnss::config::SettingsEngine</name>
     <message>
         <location filename="../protocol/config/settings_engine.cpp" line="+31"/>
         <source>verified</source>
-        <translation type="unfinished"></translation>
+        <translation>проверено</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>not taken</source>
-        <translation type="unfinished"></translation>
+        <translation>не принято</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>not reported</source>
-        <translation type="unfinished"></translation>
+        <translation>не сообщено</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>sent (write-only, not verifiable)</source>
-        <translation type="unfinished"></translation>
+        <translation>отправлено (только запись, проверить нельзя)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>not applied (command failed)</source>
-        <translation type="unfinished"></translation>
+        <translation>не применено (ошибка команды)</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>the link changed during the operation</source>
-        <translation type="unfinished"></translation>
+        <translation>подключение сменилось во время операции</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+36"/>
+        <source>%1 cannot take commands</source>
+        <translation>%1 не принимает команды</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>%1 (set here; write-only, not read back)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (задано здесь; только запись, обратно не читается)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>unknown (write-only)</source>
-        <translation type="unfinished"></translation>
+        <translation>неизвестно (только запись)</translation>
     </message>
     <message>
         <location line="+39"/>
         <source>no receiver dialect known yet: connect to a receiver first</source>
-        <translation type="unfinished"></translation>
+        <translation>диалект приёмника ещё не известен: сначала подключитесь к приёмнику</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>not connected to a receiver</source>
-        <translation type="unfinished"></translation>
+        <translation>нет подключения к приёмнику</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+64"/>
         <source>Read settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Чтение настроек</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+81"/>
+        <location line="+70"/>
         <source>unknown setting &apos;%1&apos; of the %2 dialect</source>
-        <translation type="unfinished"></translation>
+        <translation>неизвестная настройка «%1» диалекта %2</translation>
     </message>
     <message>
         <location line="-5"/>
         <source>Apply settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Применение настроек</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 cannot be set</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 нельзя задать</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>the %1 dialect has no settings encoder</source>
-        <translation type="unfinished"></translation>
+        <translation>у диалекта %1 нет кодировщика настроек</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>nothing was sent: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ничего не отправлено: %1</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>Action</source>
-        <translation type="unfinished"></translation>
+        <translation>Действие</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>the %1 receiver has no &apos;%2&apos; command</source>
-        <translation type="unfinished"></translation>
+        <translation>у приёмника %1 нет команды «%2»</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+101"/>
         <source>could not read back: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не удалось прочитать обратно: %1</translation>
     </message>
     <message>
         <location line="+87"/>
         <source>Apply profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Применение профиля</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the profile is for dialect &apos;%1&apos;, the receiver speaks &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>профиль предназначен для диалекта «%1», а приёмник использует «%2»</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::corrections::CorrectionSource</name>
+    <message>
+        <location filename="../protocol/corrections/correction_source.cpp" line="+11"/>
+        <source>Not started</source>
+        <translation>Не запущено</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Stopped</source>
+        <translation>Остановлено</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>%1; trying again in %2 s</source>
+        <translation>%1; повтор через %2 с</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>No data from %1 for %2 s</source>
+        <translation>Нет данных от %1 в течение %2 с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No answer from %1 within %2 s</source>
+        <translation>Нет ответа от %1 за %2 с</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 refused the connection: nothing is listening on that port</source>
+        <translation>%1: соединение отклонено — этот порт никто не слушает</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Host %1 not found: check the name and the network</source>
+        <translation>Хост %1 не найден: проверьте имя и сеть</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 did not answer in time</source>
+        <translation>%1: ответ не получен вовремя</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 closed the connection</source>
+        <translation>%1: соединение закрыто другой стороной</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Network error on the way to %1: %2</source>
+        <translation>Сетевая ошибка на пути к %1: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connection to %1 failed: %2</source>
+        <translation>Не удалось подключиться к %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::corrections::FileCorrectionSource</name>
+    <message>
+        <location filename="../protocol/corrections/file_correction_source.cpp" line="+33"/>
+        <source>Cannot read %1: %2</source>
+        <translation>Не удаётся прочитать %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 holds no RTCM 3 frames</source>
+        <translation>В %1 нет кадров RTCM 3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Playing %1 (%2 frames, %3 s at speed %4)</source>
+        <translation>Воспроизведение %1 (кадров: %2, %3 с на скорости %4)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Played %1 to the end</source>
+        <translation>Файл %1 воспроизведён до конца</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::corrections::NtripSource</name>
+    <message>
+        <location filename="../protocol/corrections/ntrip_source.cpp" line="+71"/>
+        <source>No mountpoint given for %1: pick one from its source table</source>
+        <translation>Не указана точка подключения для %1: выберите её из таблицы источников</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Connecting to %1</source>
+        <translation>Подключение к %1</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Cannot ask %1 for data: %2</source>
+        <translation>Не удаётся запросить данные у %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Connected to %1, asking for %2 (NTRIP %3)</source>
+        <translation>Подключено к %1, запрашивается %2 (NTRIP %3)</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>asked NTRIP 2, the caster answered %1</source>
+        <translation>запрошен NTRIP 2, кастер ответил по %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, chunked</source>
+        <translation>, chunked</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Receiving RTCM from %1 (%2)</source>
+        <translation>Приём RTCM от %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Mountpoint %1 is not on %2: the caster sent its source table instead of data (%3 reply)</source>
+        <translation>Точки подключения %1 нет на %2: кастер прислал таблицу источников вместо данных (ответ %3)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 refused the user name or password for mountpoint %2 (401 Unauthorized, %3 reply)</source>
+        <translation>%1: имя пользователя или пароль для точки подключения %2 не приняты (401 Unauthorized, ответ %3)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Mountpoint %1 not found on %2 (404 Not Found, %3 reply)</source>
+        <translation>Точка подключения %1 не найдена на %2 (404 Not Found, ответ %3)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 answered &quot;%2&quot; for mountpoint %3 (%4 reply)</source>
+        <translation>%1 ответил «%2» для точки подключения %3 (ответ %4)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 answered &quot;%2&quot; for mountpoint %3 (%4)</source>
+        <translation>%1 ответил «%2» для точки подключения %3 (%4)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 answered with %2, not GNSS data: is it an NTRIP caster?</source>
+        <translation>%1 ответил типом %2, а не данными ГНСС: это точно NTRIP-кастер?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 did not answer like an NTRIP caster (it sent &quot;%2&quot;); a base&apos;s raw RTCM port needs a TCP source instead</source>
+        <translation>%1 ответил не как NTRIP-кастер (прислано «%2»); для порта базы, выдающего RTCM напрямую, выберите источник TCP</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 sent malformed chunked data: %2</source>
+        <translation>%1: некорректные данные в кодировке chunked: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 ended the stream (last chunk)</source>
+        <translation>%1: поток завершён (последний блок)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 closed the connection without answering</source>
+        <translation>%1: соединение закрыто без ответа</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 closed the connection mid-stream after %2 bytes</source>
+        <translation>%1: соединение закрыто посреди потока (принято байт: %2)</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::corrections::SerialCorrectionSource</name>
+    <message>
+        <location filename="../protocol/corrections/serial_correction_source.cpp" line="+11"/>
+        <source>Receiving RTCM from %1</source>
+        <translation>Приём RTCM от %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 at %2 baud</source>
+        <translation>%1 на скорости %2 бод</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Opening %1</source>
+        <translation>Открытие %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cannot open %1: %2</source>
+        <translation>Не удаётся открыть %1: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 open, waiting for RTCM</source>
+        <translation>%1 открыт, ожидание RTCM</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>No data on %1 for %2 s (is the radio receiving the base?)</source>
+        <translation>Нет данных на %1 в течение %2 с (принимает ли радиомодем сигнал базы?)</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::corrections::SourceTableRequest</name>
+    <message>
+        <location filename="../protocol/corrections/source_table_request.cpp" line="+11"/>
+        <source>No source table from %1 within %2 s</source>
+        <translation>Таблица источников от %1 не получена за %2 с</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cannot ask %1 for its source table: %2</source>
+        <translation>Не удаётся запросить таблицу источников у %1: %2</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>%1 answered with %2, not a source table: is it an NTRIP caster?</source>
+        <translation>%1 ответил типом %2, а не таблицей источников: это точно NTRIP-кастер?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 refused the user name or password for its source table (401 Unauthorized, %2 reply)</source>
+        <translation>%1: имя пользователя или пароль для таблицы источников не приняты (401 Unauthorized, ответ %2)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 sent data instead of its source table (%2 reply)</source>
+        <translation>%1 прислал данные вместо таблицы источников (ответ %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 did not answer like an NTRIP caster (it sent &quot;%2&quot;)</source>
+        <translation>%1 ответил не как NTRIP-кастер (прислано «%2»)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 answered &quot;%2&quot; instead of its source table (%3 reply)</source>
+        <translation>%1 ответил «%2» вместо таблицы источников (ответ %3)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 sent a malformed chunked source table: %2</source>
+        <translation>%1: некорректная таблица источников в кодировке chunked: %2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1 closed the connection without answering</source>
+        <translation>%1: соединение закрыто без ответа</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::corrections::TcpCorrectionSource</name>
+    <message>
+        <location filename="../protocol/corrections/tcp_correction_source.cpp" line="+9"/>
+        <source>Connected to %1, waiting for RTCM</source>
+        <translation>Подключено к %1, ожидание RTCM</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Receiving RTCM from %1</source>
+        <translation>Приём RTCM от %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 closed the connection</source>
+        <translation>%1: соединение закрыто другой стороной</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Connecting to %1</source>
+        <translation>Подключение к %1</translation>
     </message>
 </context>
 <context>
@@ -969,152 +1247,260 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::BaudDetector</name>
     <message>
-        <location filename="../protocol/link/baud_detector.cpp" line="+29"/>
+        <location filename="../protocol/link/baud_detector.cpp" line="+30"/>
         <source>Baud detection needs an open serial port</source>
-        <translation type="unfinished"></translation>
+        <translation>Для определения скорости нужен открытый последовательный порт</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+16"/>
         <source>Baud detection cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>Определение скорости отменено</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+67"/>
         <source>No data at any rate (tried %1 baud): check the cable, the port and that the receiver is powered</source>
-        <translation type="unfinished"></translation>
+        <translation>Нет данных ни на одной скорости (проверено: %1 бод): проверьте кабель, порт и питание приёмника</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Data but never a valid sentence at %1 baud: wrong framing (data bits, parity, stop bits) or the receiver is not sending NMEA?</source>
-        <translation type="unfinished"></translation>
+        <translation>Данные есть, но ни одного корректного сообщения на скоростях %1 бод: неверный формат кадра (биты данных, чётность, стоповые биты) или приёмник не передаёт NMEA?</translation>
     </message>
 </context>
 <context>
     <name>gnss::link::CommandQueue</name>
     <message>
-        <location filename="../protocol/link/command_queue.cpp" line="+46"/>
-        <location line="+196"/>
+        <location filename="../protocol/link/command_queue.cpp" line="+47"/>
+        <location line="+199"/>
         <source>accepted</source>
-        <translation type="unfinished"></translation>
+        <translation>принято</translation>
     </message>
     <message>
-        <location line="-193"/>
+        <location line="-196"/>
         <source>refused</source>
-        <translation type="unfinished"></translation>
+        <translation>отклонено</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>timed out</source>
-        <translation type="unfinished"></translation>
+        <translation>тайм-аут</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>link lost</source>
-        <translation type="unfinished"></translation>
+        <translation>связь потеряна</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>отменено</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>sent</source>
-        <translation type="unfinished"></translation>
+        <translation>отправлено</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>failed</source>
-        <translation type="unfinished"></translation>
+        <translation>ошибка</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Not a sentence: %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Некорректное сообщение: %1 (%2)</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>cancelled before the receiver answered</source>
-        <translation type="unfinished"></translation>
+        <translation>отменено до ответа приёмника</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>cancelled before it was sent</source>
-        <translation type="unfinished"></translation>
+        <translation>отменено до отправки</translation>
     </message>
     <message>
         <location line="+51"/>
         <source>not connected: the command was not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>нет подключения: команда не отправлена</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 cannot send commands</source>
-        <translation type="unfinished"></translation>
+        <translation>через %1 нельзя отправлять команды</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>could not write to %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>не удалось записать в %1: %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>sent; the receiver does not answer this command</source>
-        <translation type="unfinished"></translation>
+        <translation>отправлено; приёмник не отвечает на эту команду</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>sent; no known reply to wait for</source>
-        <translation type="unfinished"></translation>
+        <translation>отправлено; ожидаемый ответ неизвестен</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+23"/>
         <source>the port now runs at %1 baud; the receiver talks at that rate</source>
-        <translation type="unfinished"></translation>
+        <translation>порт теперь работает на скорости %1 бод; приёмник передаёт на этой скорости</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>no valid data at %1 baud after the change; the receiver still talks at %2 baud, so the port is back at %2</source>
-        <translation type="unfinished"></translation>
+        <translation>после смены нет корректных данных на скорости %1 бод; приёмник по-прежнему работает на %2 бод, поэтому порт возвращён на %2</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>the receiver refused it: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>приёмник отклонил команду: %1</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>accepted; the speed was already %1</source>
-        <translation type="unfinished"></translation>
+        <translation>принято; скорость уже была %1</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+38"/>
         <source>no valid data at %1 baud after the change, nor back at %2 baud: check the receiver and the cable, then detect the baud rate again</source>
-        <translation type="unfinished"></translation>
+        <translation>после смены нет корректных данных ни на скорости %1 бод, ни на прежней %2 бод: проверьте приёмник и кабель, затем снова определите скорость</translation>
     </message>
     <message numerus="yes">
         <location line="+12"/>
         <source>no answer after %n attempt(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>нет ответа после %n попытки</numerusform>
+            <numerusform>нет ответа после %n попыток</numerusform>
+            <numerusform>нет ответа после %n попыток</numerusform>
         </translation>
     </message>
     <message>
         <location line="+8"/>
         <source>the link closed before the answer</source>
-        <translation type="unfinished"></translation>
+        <translation>соединение закрыто до получения ответа</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the link was lost before the answer: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>связь потеряна до получения ответа: %1</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>not sent: the link was lost</source>
-        <translation type="unfinished"></translation>
+        <translation>не отправлено: связь потеряна</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::GpsdTransport</name>
+    <message>
+        <location filename="../protocol/link/gpsd_transport.cpp" line="+29"/>
+        <location line="+3"/>
+        <location line="+12"/>
+        <source>a gpsd source is HOST[:PORT][/DEVICE], got &apos;%1&apos;</source>
+        <translation>источник gpsd задаётся как ХОСТ[:ПОРТ][/УСТРОЙСТВО], получено «%1»</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>gpsd&apos;s port is a number from 1 to 65535, got &apos;%1&apos;</source>
+        <translation>порт gpsd — число от 1 до 65535, получено «%1»</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>no answer within %1 s</source>
+        <translation>нет ответа за %1 с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gpsd did not answer the watch request within %1 s</source>
+        <translation>gpsd не ответил на запрос WATCH за %1 с</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>gpsd closed the connection</source>
+        <translation>gpsd закрыл соединение</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: gpsd closed the connection</source>
+        <translation>%1: gpsd закрыл соединение</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (is gpsd running?)</source>
+        <translation>%1 (запущен ли gpsd?)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>Cannot connect to %1: %2</source>
+        <translation>Не удаётся подключиться к %1: %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>this is not gpsd: it did not greet with its VERSION</source>
+        <translation>это не gpsd: нет приветствия VERSION</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>gpsd has no device %1 (it has none)</source>
+        <translation>у gpsd нет устройства %1 (устройств нет вовсе)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gpsd has no device %1 (it has %2)</source>
+        <translation>у gpsd нет устройства %1 (есть: %2)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>gpsd refused: %1</source>
+        <translation>gpsd отказал: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: gpsd says: %2</source>
+        <translation>%1: gpsd сообщает: %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>gpsd at %1</source>
+        <translation>gpsd на %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gpsd at %1, %2</source>
+        <translation>gpsd на %1, %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gpsd owns the port: commands cannot be sent to a receiver read through gpsd</source>
+        <translation>портом владеет gpsd: приёмнику, читаемому через gpsd, нельзя отправлять команды</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::LinkOpener</name>
+    <message>
+        <location filename="../protocol/link/link_opener.cpp" line="+19"/>
+        <source>%1 (valid NMEA)</source>
+        <translation>%1 (корректный NMEA)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (no data)</source>
+        <translation>%1 (нет данных)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (data, no valid sentence)</source>
+        <translation>%1 (данные есть, корректных сообщений нет)</translation>
     </message>
 </context>
 <context>
@@ -1124,17 +1510,17 @@ Serial number: %3</source>
         <location line="+5"/>
         <location line="+82"/>
         <source>Cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся записать %1: %2</translation>
     </message>
     <message>
         <location line="-46"/>
         <source>link lost: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>связь потеряна: %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>link back: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>связь восстановлена: %1</translation>
     </message>
 </context>
 <context>
@@ -1164,41 +1550,104 @@ Serial number: %3</source>
         <source>replay of %1</source>
         <translation>воспроизведение %1</translation>
     </message>
+    <message>
+        <location line="+4"/>
+        <source>a recorded log cannot take commands</source>
+        <translation>записанный журнал не принимает команды</translation>
+    </message>
 </context>
 <context>
     <name>gnss::link::SerialTransport</name>
     <message>
-        <location filename="../protocol/link/serial_transport.cpp" line="+50"/>
+        <location filename="../protocol/link/serial_transport.cpp" line="+51"/>
+        <source>Another program may have it open (a terminal program, gpsd, ModemManager).</source>
+        <translation>Возможно, порт открыт другой программой (терминалом, gpsd, ModemManager).</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>You are in the &apos;%1&apos; group that may use it, but this session began before you were added: log out and back in.</source>
+        <translation>Вы состоите в группе «%1», которой разрешён доступ, но текущий сеанс начат до вашего добавления в неё: выйдите из системы и войдите снова.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Serial ports are for members of the &apos;%1&apos; group: run `sudo usermod -aG %1 $USER`, then log out and back in.</source>
+        <translation>Последовательные порты доступны членам группы «%1»: выполните `sudo usermod -aG %1 $USER`, затем выйдите из системы и войдите снова.</translation>
+    </message>
+    <message>
+        <location line="+51"/>
         <source>Cannot open %1: %2</source>
-        <translation type="unfinished">Не удаётся открыть %1: %2</translation>
+        <translation>Не удаётся открыть %1: %2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+2"/>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>%1 at %2 baud</source>
-        <translation type="unfinished">%1 на %2 бод</translation>
+        <translation>%1 на скорости %2 бод</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+17"/>
         <source>%1: %2</source>
-        <translation type="unfinished">%1: %2</translation>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
     <name>gnss::link::SimulatorTransport</name>
     <message>
-        <location filename="../protocol/link/simulator_transport.cpp" line="+21"/>
+        <location filename="../app/common/simulator_transport.cpp" line="+23"/>
         <source>The simulator has no receiver of dialect &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>В имитаторе нет приёмника с диалектом «%1»</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>simulated %1 receiver at %2 baud</source>
-        <translation type="unfinished"></translation>
+        <translation>имитатор приёмника %1 на скорости %2 бод</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>The simulated receiver hung up</source>
-        <translation type="unfinished"></translation>
+        <translation>Имитатор приёмника разорвал связь</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::SourceSpec</name>
+    <message>
+        <location filename="../protocol/link/source_spec.cpp" line="+50"/>
+        <source>%1 at %2 baud</source>
+        <translation>%1 на скорости %2 бод</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 (baud: auto)</source>
+        <translation>%1 (скорость: авто)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP %1</source>
+        <translation>TCP %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replay %1</source>
+        <translation>Воспроизведение %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated %1</source>
+        <translation>Имитатор %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gpsd %1</source>
+        <translation>gpsd %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No source</source>
+        <translation>Нет источника</translation>
     </message>
 </context>
 <context>
@@ -1225,16 +1674,34 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
-    <name>gnss::link::VendorDetector</name>
+    <name>gnss::link::TransportFactory</name>
     <message>
-        <location filename="../protocol/link/vendor_detector.cpp" line="+24"/>
-        <source>Vendor detection needs an open link</source>
-        <translation type="unfinished"></translation>
+        <location filename="../protocol/link/transport_factory.cpp" line="+29"/>
+        <source>a TCP source is HOST:PORT, got &apos;%1&apos;</source>
+        <translation>источник TCP задаётся как ХОСТ:ПОРТ, получено «%1»</translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location line="+24"/>
+        <source>no source given</source>
+        <translation>источник не указан</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: this program cannot open such a source</source>
+        <translation>%1: программа не умеет открывать такой источник</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::link::VendorDetector</name>
+    <message>
+        <location filename="../protocol/link/vendor_detector.cpp" line="+21"/>
+        <source>Vendor detection needs an open link</source>
+        <translation>Для определения производителя нужно открытое подключение</translation>
+    </message>
+    <message>
+        <location line="+100"/>
         <source>No valid sentence and no answer to any probe: check the baud rate and that the receiver sends NMEA</source>
-        <translation type="unfinished"></translation>
+        <translation>Нет ни корректных сообщений, ни ответа на запросы: проверьте скорость и то, что приёмник передаёт NMEA</translation>
     </message>
 </context>
 <context>
@@ -1332,10 +1799,10 @@ Serial number: %3</source>
     <message numerus="yes">
         <location line="+1"/>
         <source>%n time mark(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n метка времени</numerusform>
+            <numerusform>%n метки времени</numerusform>
+            <numerusform>%n меток времени</numerusform>
         </translation>
     </message>
 </context>
@@ -1359,12 +1826,12 @@ Serial number: %3</source>
     <message>
         <location line="+184"/>
         <source>minutes before the latest epoch</source>
-        <translation type="unfinished"></translation>
+        <translation>минуты до последней эпохи</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>seconds before the latest epoch</source>
-        <translation type="unfinished"></translation>
+        <translation>секунды до последней эпохи</translation>
     </message>
 </context>
 <context>
@@ -1400,7 +1867,17 @@ Serial number: %3</source>
         <translation>Отправить</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
+        <source>Sending is off: %1.</source>
+        <translation>Отправка отключена: %1.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>No commands: %1</source>
+        <translation>Команды недоступны: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Command to send (the checksum is added)</source>
         <translation>Команда для отправки (контрольная сумма добавляется)</translation>
     </message>
@@ -1482,6 +1959,240 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
+    <name>gnss::ui::CorrectionsView</name>
+    <message>
+        <location filename="../ui/views/corrections_view.cpp" line="+49"/>
+        <source>RTK fixed</source>
+        <translation>RTK fixed</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTK float</source>
+        <translation>RTK float</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>differential</source>
+        <translation>дифференциальный</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>autonomous</source>
+        <translation>автономный</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no fix</source>
+        <translation>нет решения</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Source</source>
+        <translation>Источник</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>NTRIP caster</source>
+        <translation>NTRIP-кастер</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP stream (a base&apos;s raw RTCM)</source>
+        <translation>Поток TCP (RTCM напрямую от базы)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Type</source>
+        <translation>Тип</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>caster.example.org</source>
+        <translation>caster.example.org</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Host and port</source>
+        <translation>Хост и порт</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Mountpoint</source>
+        <translation>Точка подключения</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>User</source>
+        <translation>Пользователь</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not stored</source>
+        <translation>не сохраняется</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Password</source>
+        <translation>Пароль</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>NTRIP 2 (HTTP/1.1)</source>
+        <translation>NTRIP 2 (HTTP/1.1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NTRIP 1</source>
+        <translation>NTRIP 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Protocol</source>
+        <translation>Протокол</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+114"/>
+        <source>Start</source>
+        <translation>Запустить</translation>
+    </message>
+    <message>
+        <location line="-110"/>
+        <source>Not started</source>
+        <translation>Не запущено</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Received</source>
+        <translation>Принято</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Message</source>
+        <translation>Сообщение</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Count</source>
+        <translation>Количество</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rate, /s</source>
+        <translation>Частота, /с</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Age, s</source>
+        <translation>Возраст, с</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Meaning</source>
+        <translation>Описание</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Receiver</source>
+        <translation>Приёмник</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>Give the host of the corrections.</source>
+        <translation>Укажите хост источника поправок.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos; is not a host name or address.</source>
+        <translation>«%1» — не имя хоста и не адрес.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The port is 1 to 65535.</source>
+        <translation>Порт — число от 1 до 65535.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Give the mountpoint.</source>
+        <translation>Укажите точку подключения.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos; is not a mountpoint name.</source>
+        <translation>«%1» — недопустимое имя точки подключения.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A password was given without a user name.</source>
+        <translation>Пароль указан без имени пользователя.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Stop</source>
+        <translation>Остановить</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1 B/s, %2 messages, %3 CRC errors, %4 bytes not RTCM; correction age %5</source>
+        <translation>%1 Б/с, сообщений: %2, ошибок CRC: %3, байт не RTCM: %4; возраст поправок: %5</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 s</source>
+        <translation>%1 с</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1, %2, %3 m</source>
+        <translation>%1, %2, %3 м</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>ECEF %1, %2, %3 m</source>
+        <translation>ECEF %1, %2, %3 м</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Base station %1 (%2): %3; distance to the rover %4</source>
+        <translation>Базовая станция %1 (%2): %3; расстояние до ровера %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 km</source>
+        <translation>%1 км</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Base station: not yet received (1005/1006)</source>
+        <translation>Базовая станция: данных пока нет (1005/1006)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Forwarded to the receiver: %1 frames (%2 bytes); dropped %3</source>
+        <translation>Передано в приёмник кадров: %1 (байт: %2); отброшено: %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not forwarded: no receiver connected</source>
+        <translation>Не передаётся: приёмник не подключён</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Fix: %1; RTK mode %2; correction age %3</source>
+        <translation>Решение: %1; режим RTK: %2; возраст поправок: %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>s</source>
+        <translation>с</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; RTCM messages received %1, bad %2</source>
+        <translation>; принято сообщений RTCM: %1, с ошибками: %2</translation>
+    </message>
+</context>
+<context>
     <name>gnss::ui::DeviationView</name>
     <message>
         <location filename="../ui/views/deviation_view.cpp" line="+84"/>
@@ -1502,19 +2213,19 @@ Serial number: %3</source>
         <location line="+35"/>
         <location line="+108"/>
         <source>CEP50</source>
-        <translation type="unfinished"></translation>
+        <translation>CEP50</translation>
     </message>
     <message>
         <location line="-107"/>
         <location line="+108"/>
         <source>CEP95</source>
-        <translation type="unfinished"></translation>
+        <translation>CEP95</translation>
     </message>
     <message>
         <location line="-107"/>
         <location line="+108"/>
         <source>2DRMS</source>
-        <translation type="unfinished"></translation>
+        <translation>2DRMS</translation>
     </message>
     <message>
         <location line="-43"/>
@@ -1524,22 +2235,22 @@ Serial number: %3</source>
     <message>
         <location line="+2"/>
         <source>Centre on a known position instead of the mean of the positions</source>
-        <translation type="unfinished"></translation>
+        <translation>Центрировать по известной точке, а не по среднему положению</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>latitude, e.g. 55.7512 N</source>
-        <translation type="unfinished"></translation>
+        <translation>широта, например 55.7512 N</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>longitude, e.g. 37.6181 E</source>
-        <translation type="unfinished"></translation>
+        <translation>долгота, например 37.6181 E</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>How many of the latest positions are kept</source>
-        <translation type="unfinished"></translation>
+        <translation>Сколько последних положений хранить</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1555,32 +2266,32 @@ Serial number: %3</source>
     <message>
         <location line="+1"/>
         <source>Centre:</source>
-        <translation type="unfinished"></translation>
+        <translation>Центр:</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Mean offset:</source>
-        <translation type="unfinished"></translation>
+        <translation>Среднее смещение:</translation>
     </message>
     <message>
         <location line="+94"/>
         <source>Reference not used: type degrees such as 55.75123456 N and 37.61812345 E (or signed, -33.9 for south). Centred on the mean.</source>
-        <translation type="unfinished"></translation>
+        <translation>Опорная точка не используется: введите градусы, например 55.75123456 N и 37.61812345 E (или со знаком: -33.9 для южной широты). Центр — по среднему положению.</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>reference %1, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>опорная точка %1, %2</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>mean %1, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>среднее %1, %2</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 east, %2 north</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 на восток, %2 на север</translation>
     </message>
 </context>
 <context>
@@ -1904,37 +2615,37 @@ Serial number: %3</source>
     <message>
         <location line="+1"/>
         <source>GDOP</source>
-        <translation type="unfinished"></translation>
+        <translation>GDOP</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>PDOP</source>
-        <translation type="unfinished"></translation>
+        <translation>PDOP</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>HDOP</source>
-        <translation type="unfinished"></translation>
+        <translation>HDOP</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>VDOP</source>
-        <translation type="unfinished"></translation>
+        <translation>VDOP</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>TDOP</source>
-        <translation type="unfinished"></translation>
+        <translation>TDOP</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>NDOP</source>
-        <translation type="unfinished"></translation>
+        <translation>NDOP</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>EDOP</source>
-        <translation type="unfinished"></translation>
+        <translation>EDOP</translation>
     </message>
     <message>
         <location line="+59"/>
@@ -2092,12 +2803,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+62"/>
+        <location line="+69"/>
         <source>Profile</source>
         <translation>Профиль</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-66"/>
         <source>Import and compare...</source>
         <translation>Импортировать и сравнить...</translation>
     </message>
@@ -2128,7 +2839,7 @@ Serial number: %3</source>
         <translation>Отмена</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+24"/>
         <source>Find a setting</source>
         <translation>Найти настройку</translation>
     </message>
@@ -2366,6 +3077,11 @@ Serial number: %3</source>
         <source>This receiver has no command to save its settings</source>
         <translation>У этого приёмника нет команды сохранения настроек</translation>
     </message>
+    <message>
+        <location line="+8"/>
+        <source>%1. Settings can be neither read nor changed from here.</source>
+        <translation>%1. Отсюда настройки нельзя ни прочитать, ни изменить.</translation>
+    </message>
 </context>
 <context>
     <name>gnss::ui::SignalLevelsView</name>
@@ -2449,12 +3165,12 @@ elevation %3°, azimuth %4°</source>
     <message>
         <location line="-35"/>
         <source>HDOP</source>
-        <translation type="unfinished"></translation>
+        <translation>HDOP</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>PDOP</source>
-        <translation type="unfinished"></translation>
+        <translation>PDOP</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2465,17 +3181,17 @@ elevation %3°, azimuth %4°</source>
     <message>
         <location line="-34"/>
         <source>Std. dev. latitude</source>
-        <translation type="unfinished"></translation>
+        <translation>СКО широты</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Std. dev. longitude</source>
-        <translation type="unfinished"></translation>
+        <translation>СКО долготы</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Std. dev. height</source>
-        <translation type="unfinished"></translation>
+        <translation>СКО высоты</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2495,37 +3211,37 @@ elevation %3°, azimuth %4°</source>
     <message>
         <location line="+4"/>
         <source>Mean SNR %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Среднее С/Ш %1</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>DOP</source>
-        <translation type="unfinished"></translation>
+        <translation>DOP</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Mean SNR (dB-Hz)</source>
-        <translation type="unfinished"></translation>
+        <translation>Среднее С/Ш (дБГц)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Standard deviation (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>СКО (м)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Baseline length (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Длина базовой линии (м)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Altitude above sea level (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Высота над уровнем моря (м)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Speed (m/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Скорость (м/с)</translation>
     </message>
 </context>
 </TS>
