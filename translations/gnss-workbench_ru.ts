@@ -488,12 +488,22 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::CorrectionsController</name>
     <message>
-        <location filename="../app/gui/corrections_controller.cpp" line="+96"/>
+        <location filename="../app/gui/corrections_controller.cpp" line="+39"/>
+        <source>The password was not read from the keychain: %1</source>
+        <translation>Пароль не прочитан из связки ключей: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The password was not kept in the keychain: %1</source>
+        <translation>Пароль не сохранён в связке ключей: %1</translation>
+    </message>
+    <message>
+        <location line="+79"/>
         <source>Stopped</source>
         <translation>Остановлено</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+19"/>
         <source>Not started</source>
         <translation>Не запущено</translation>
     </message>
@@ -506,7 +516,7 @@ Serial number: %3</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+230"/>
+        <location line="+236"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
@@ -571,7 +581,7 @@ Serial number: %3</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location line="-204"/>
+        <location line="-210"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -668,7 +678,7 @@ Serial number: %3</source>
         <translation>Ориентация и метки времени</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+29"/>
         <source>Corrections</source>
         <translation>Поправки</translation>
     </message>
@@ -801,6 +811,15 @@ Serial number: %3</source>
         <location line="+1"/>
         <source>Cannot record to %1: connect to a receiver first, and check the folder is writable.</source>
         <translation>Не удаётся записывать в %1: сначала подключитесь к приёмнику и проверьте, что папка доступна для записи.</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::app::PasswordKeychain</name>
+    <message>
+        <location filename="../app/gui/password_keychain.cpp" line="+36"/>
+        <location line="+16"/>
+        <source>this build has no keychain support</source>
+        <translation>эта сборка не поддерживает связку ключей</translation>
     </message>
 </context>
 <context>
@@ -1961,7 +1980,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CorrectionsView</name>
     <message>
-        <location filename="../ui/views/corrections_view.cpp" line="+49"/>
+        <location filename="../ui/views/corrections_view.cpp" line="+54"/>
         <source>RTK fixed</source>
         <translation>RTK fixed</translation>
     </message>
@@ -2027,16 +2046,22 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+89"/>
         <source>not stored</source>
         <translation>не сохраняется</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-88"/>
         <source>Password</source>
         <translation>Пароль</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Remember the password in the system keychain</source>
+        <translation>Запомнить пароль в системной связке ключей</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>NTRIP 2 (HTTP/1.1)</source>
         <translation>NTRIP 2 (HTTP/1.1)</translation>
     </message>
@@ -2052,12 +2077,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+114"/>
+        <location line="+140"/>
         <source>Start</source>
         <translation>Запустить</translation>
     </message>
     <message>
-        <location line="-110"/>
+        <location line="-136"/>
         <source>Not started</source>
         <translation>Не запущено</translation>
     </message>
@@ -2092,12 +2117,22 @@ Serial number: %3</source>
         <translation>Описание</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+12"/>
+        <source>Correction age, s (last 10 min)</source>
+        <translation>Возраст поправок, с (последние 10 мин)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>Receiver</source>
         <translation>Приёмник</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+23"/>
+        <source>kept in the keychain</source>
+        <translation>хранится в связке ключей</translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>Give the host of the corrections.</source>
         <translation>Укажите хост источника поправок.</translation>
     </message>
@@ -2132,7 +2167,7 @@ Serial number: %3</source>
         <translation>Остановить</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+63"/>
         <source>%1 B/s, %2 messages, %3 CRC errors, %4 bytes not RTCM; correction age %5</source>
         <translation>%1 Б/с, сообщений: %2, ошибок CRC: %3, байт не RTCM: %4; возраст поправок: %5</translation>
     </message>

@@ -2,6 +2,7 @@
 
 #include "correction_forwarder.h"
 #include "ntrip_source.h"
+#include "password_keychain.h"
 #include "rover_position.h"
 #include "tcp_correction_source.h"
 
@@ -21,10 +22,27 @@ std::int64_t nowMs() {
     return QDateTime::currentMSecsSinceEpoch(); // the clock CorrectionsView reads the monitor by
 }
 
+// Where a caster's password is kept: one per user, caster and port.
+QString keychainKey(const ui::CorrectionsRequest &r) {
+    return QStringLiteral("ntrip:%1@%2:%3").arg(r.user, r.host).arg(r.port);
+}
+
 } // namespace
 
 CorrectionsController::CorrectionsController(QSettings *settings, QObject *parent)
-    : QObject(parent), settings_(settings) {
+    : QObject(parent), settings_(settings), keychain_(new PasswordKeychain(this)) {
+    connect(keychain_, &PasswordKeychain::recalled, this,
+            [this](const QString &password, const QString &error) {
+                if (error.isEmpty())
+                    emit passwordRecalled(password);
+                else
+                    emit keychainMessage(
+                            tr("The password was not read from the keychain: %1").arg(error));
+            });
+    connect(keychain_, &PasswordKeychain::stored, this, [this](const QString &error) {
+        if (!error.isEmpty())
+            emit keychainMessage(tr("The password was not kept in the keychain: %1").arg(error));
+    });
     connect(&ageSampler_, &QTimer::timeout, this, [this] { monitor_.sampleAge(nowMs()); });
     ageSampler_.start(kAgeSampleMs);
 }
@@ -46,6 +64,7 @@ ui::CorrectionsRequest CorrectionsController::remembered() const {
     r.mountpoint = settings_->value(QStringLiteral("mountpoint")).toString();
     r.user = settings_->value(QStringLiteral("user")).toString();
     r.ntripVersion = settings_->value(QStringLiteral("ntripVersion"), 2).toInt();
+    r.rememberPassword = settings_->value(QStringLiteral("rememberPassword"), false).toBool();
     settings_->endGroup();
     return r;
 }
@@ -62,7 +81,15 @@ bool CorrectionsController::start(const ui::CorrectionsRequest &r, QString *why)
         settings_->setValue(QStringLiteral("mountpoint"), r.mountpoint);
         settings_->setValue(QStringLiteral("user"), r.user);
         settings_->setValue(QStringLiteral("ntripVersion"), r.ntripVersion);
+        settings_->setValue(QStringLiteral("rememberPassword"), r.rememberPassword);
         settings_->endGroup();
+    }
+    // The password: in the keychain when asked (and only there), else removed from it.
+    if (r.kind == ui::CorrectionsRequest::Kind::Ntrip && keychainAvailable()) {
+        if (r.rememberPassword && !r.password.isEmpty())
+            keychain_->store(keychainKey(r), r.password);
+        else if (!r.rememberPassword)
+            keychain_->forget(keychainKey(r));
     }
     if (r.kind == ui::CorrectionsRequest::Kind::Ntrip) {
         corrections::NtripSettings s;
@@ -94,6 +121,16 @@ void CorrectionsController::stop() {
     source_->stop();
     source_.release()->deleteLater(); // (it may be inside one of its own signals)
     emit statusChanged(tr("Stopped"), false);
+}
+
+bool CorrectionsController::keychainAvailable() {
+    return PasswordKeychain::available();
+}
+
+void CorrectionsController::recallPassword() {
+    const ui::CorrectionsRequest r = remembered();
+    if (r.rememberPassword && keychainAvailable() && !r.host.isEmpty())
+        keychain_->recall(keychainKey(r));
 }
 
 bool CorrectionsController::active() const {

@@ -32,6 +32,8 @@ struct ForwarderStats;
 
 namespace gnss::app {
 
+class PasswordKeychain;
+
 class CorrectionsController : public QObject {
     Q_OBJECT
 public:
@@ -46,6 +48,10 @@ public:
     void stop();
     bool active() const;
     QString statusText() const;
+    // Asks the keychain for the remembered request's password, when the user kept one: the
+    // answer comes as passwordRecalled().
+    void recallPassword();
+    static bool keychainAvailable();
 
     // The receiver's link the corrections go to (null: none; the forwarder goes with it).
     void setReceiver(link::Connection *connection);
@@ -59,6 +65,9 @@ public:
 
 signals:
     void statusChanged(const QString &text, bool active);
+    void passwordRecalled(const QString &password);
+    // What the keychain said, in words (it may be locked or absent).
+    void keychainMessage(const QString &text);
 
 private:
     void onData(const QByteArray &bytes);
@@ -69,6 +78,7 @@ private:
     std::unique_ptr<corrections::CorrectionForwarder> forwarder_;
     QPointer<link::Connection> receiver_;
     QTimer ageSampler_;
+    PasswordKeychain *keychain_;
 };
 
 } // namespace gnss::app

@@ -199,7 +199,13 @@ void MainWindow::createDocks() {
     auto *correctionsView = new ui::CorrectionsView(
             corrections_->monitor(), stateModel_, [this] { return corrections_->forwarderStats(); },
             this);
+    correctionsView->setKeychainAvailable(CorrectionsController::keychainAvailable());
     correctionsView->setRequest(corrections_->remembered());
+    connect(corrections_, &CorrectionsController::passwordRecalled, correctionsView,
+            &ui::CorrectionsView::setPassword);
+    connect(corrections_, &CorrectionsController::keychainMessage, correctionsView,
+            &ui::CorrectionsView::showError);
+    corrections_->recallPassword();
     connect(correctionsView, &ui::CorrectionsView::startRequested, this,
             [this, correctionsView](const ui::CorrectionsRequest &r) {
                 QString why;

@@ -14,6 +14,7 @@
 #include "sim_process.h"
 #include "test_caster.h"
 
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QFile>
 #include <QLabel>
@@ -86,6 +87,11 @@ private slots:
         mount->setText("MOUNT");
         user->setText("rover7");
         password->setText("s3cret-pw");
+        // Kept only in the keychain when asked (offered when the build has one).
+        auto *remember = dock->findChild<QCheckBox *>("correctionsRememberPassword");
+        QVERIFY(remember);
+        QCOMPARE(remember->isVisible(), app::CorrectionsController::keychainAvailable());
+        if (remember->isVisible()) remember->setChecked(true);
         QTest::mouseClick(start, Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(status->text().contains("Receiving"), 10000);
         QCOMPARE(start->text(), QString("Stop"));
@@ -108,6 +114,7 @@ private slots:
         // Remembered for next time, but never the password.
         QCOMPARE(settings.value("corrections/host").toString(), QString("127.0.0.1"));
         QCOMPARE(settings.value("corrections/mountpoint").toString(), QString("MOUNT"));
+        QCOMPARE(settings.value("corrections/rememberPassword").toBool(), remember->isVisible());
         settings.sync();
         QFile ini(dir_.filePath("settings.ini"));
         QVERIFY(ini.open(QIODevice::ReadOnly));

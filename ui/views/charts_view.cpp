@@ -1,5 +1,7 @@
 #include "charts_view.h"
 
+#include "style/chart_palette.h"
+
 #include "models/receiver_state_model.h"
 #include "style/gnss_style.h"
 
@@ -357,23 +359,10 @@ void ChartsView::redraw() {
 }
 
 void ChartsView::applyTheme() {
-    // Follow the palette (light or dark) rather than Qt Charts' fixed white theme.
-    const QPalette p = palette();
-    const QColor text = p.color(QPalette::WindowText), base = p.color(QPalette::Base);
-    QColor grid = p.color(QPalette::Mid);
-    for (GroupChart &gc : groups_) {
-        if (!gc.chart) continue;
-        gc.chart->setBackgroundBrush(base);
-        gc.chart->setTitleBrush(text);
-        gc.chart->legend()->setLabelColor(text);
-        gc.view->setBackgroundBrush(p.color(QPalette::Window));
-        for (QAbstractAxis *a : {static_cast<QAbstractAxis *>(gc.x), gc.y}) {
-            a->setLabelsBrush(text);
-            a->setTitleBrush(text);
-            a->setGridLineColor(grid);
-            a->setLinePenColor(grid);
-        }
-    }
+    for (GroupChart &gc : groups_)
+        if (gc.chart)
+            style::applyChartPalette(gc.chart, gc.view, {static_cast<QAbstractAxis *>(gc.x), gc.y},
+                                     palette());
 }
 
 void ChartsView::changeEvent(QEvent *e) {

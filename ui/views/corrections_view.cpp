@@ -1,12 +1,16 @@
 #include "corrections_view.h"
 
 #include "models/receiver_state_model.h"
+#include "style/chart_palette.h"
 #include "style/gnss_style.h"
 #include "value_format.h"
 
 #include "correction_forwarder.h"
 #include "corrections_monitor.h"
 
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDateTime>
@@ -17,12 +21,14 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLineSeries>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <QValueAxis>
 
 namespace gnss::ui {
 
@@ -109,6 +115,10 @@ CorrectionsView::CorrectionsView(const corrections::CorrectionsMonitor &monitor,
     password_->setPlaceholderText(tr("not stored"));
     passwordLabel_ = new QLabel(tr("Password"));
     form->addRow(passwordLabel_, password_);
+    remember_ = new QCheckBox(tr("Remember the password in the system keychain"));
+    remember_->setObjectName(QStringLiteral("correctionsRememberPassword"));
+    remember_->setVisible(false);
+    form->addRow(QString(), remember_);
     version_ = new QComboBox;
     version_->setObjectName(QStringLiteral("correctionsVersion"));
     version_->addItem(tr("NTRIP 2 (HTTP/1.1)"), 2);
@@ -139,6 +149,28 @@ CorrectionsView::CorrectionsView(const corrections::CorrectionsMonitor &monitor,
     types_->horizontalHeader()->setStretchLastSection(true);
     types_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     streamLayout->addWidget(types_, 1);
+    // The correction age over the last ten minutes (the monitor samples it once a second).
+    ageSeries_ = new QLineSeries;
+    auto *chart = new QChart;
+    chart->addSeries(ageSeries_);
+    chart->legend()->hide();
+    chart->setTitle(tr("Correction age, s (last 10 min)"));
+    chart->setMargins(QMargins(2, 2, 2, 2));
+    ageX_ = new QValueAxis;
+    ageX_->setRange(-600, 0);
+    ageX_->setLabelFormat(QStringLiteral("%d"));
+    ageY_ = new QValueAxis;
+    ageY_->setRange(0, 5);
+    chart->addAxis(ageX_, Qt::AlignBottom);
+    chart->addAxis(ageY_, Qt::AlignLeft);
+    ageSeries_->attachAxis(ageX_);
+    ageSeries_->attachAxis(ageY_);
+    ageChart_ = new QChartView(chart, content);
+    ageChart_->setObjectName(QStringLiteral("correctionsAgeChart"));
+    ageChart_->setRenderHint(QPainter::Antialiasing);
+    ageChart_->setMinimumHeight(140);
+    style::applyChartPalette(chart, ageChart_, {ageX_, ageY_}, palette());
+    streamLayout->addWidget(ageChart_);
     base_ = wrappingLabel("correctionsBase");
     streamLayout->addWidget(base_);
     forwarding_ = wrappingLabel("correctionsForwarding");
@@ -168,6 +200,9 @@ void CorrectionsView::updateKind() {
           static_cast<QWidget *>(mountLabel_), static_cast<QWidget *>(userLabel_),
           static_cast<QWidget *>(passwordLabel_), static_cast<QWidget *>(versionLabel_)})
         w->setVisible(ntrip);
+    remember_->setVisible(ntrip && keychain_);
+    password_->setPlaceholderText(keychain_ && remember_->isChecked() ? tr("kept in the keychain")
+                                                                      : tr("not stored"));
 }
 
 void CorrectionsView::setRequest(const CorrectionsRequest &r) {
@@ -176,6 +211,7 @@ void CorrectionsView::setRequest(const CorrectionsRequest &r) {
     port_->setValue(r.port);
     mount_->setText(r.mountpoint);
     user_->setText(r.user);
+    remember_->setChecked(r.rememberPassword);
     version_->setCurrentIndex(r.ntripVersion == 1 ? 1 : 0);
     updateKind();
 }
@@ -190,6 +226,7 @@ CorrectionsRequest CorrectionsView::request() const {
     if (r.mountpoint.startsWith(QLatin1Char('/'))) r.mountpoint.remove(0, 1);
     r.user = user_->text().trimmed();
     r.password = password_->text();
+    r.rememberPassword = remember_->isVisible() && remember_->isChecked();
     r.ntripVersion = version_->currentData().toInt();
     return r;
 }
@@ -235,13 +272,28 @@ void CorrectionsView::setStatus(const QString &text, bool active) {
     for (QWidget *w : {static_cast<QWidget *>(kind_), static_cast<QWidget *>(host_),
                        static_cast<QWidget *>(port_), static_cast<QWidget *>(mount_),
                        static_cast<QWidget *>(user_), static_cast<QWidget *>(password_),
-                       static_cast<QWidget *>(version_)})
+                       static_cast<QWidget *>(version_), static_cast<QWidget *>(remember_)})
         w->setEnabled(!active);
 }
 
 void CorrectionsView::showError(const QString &text) {
     status_->setText(text);
     status_->setStyleSheet(QStringLiteral("color: palette(highlight);"));
+}
+
+void CorrectionsView::changeEvent(QEvent *e) {
+    if (e->type() == QEvent::PaletteChange)
+        style::applyChartPalette(ageChart_->chart(), ageChart_, {ageX_, ageY_}, palette());
+    QWidget::changeEvent(e);
+}
+
+void CorrectionsView::setKeychainAvailable(bool available) {
+    keychain_ = available;
+    updateKind();
+}
+
+void CorrectionsView::setPassword(const QString &password) {
+    password_->setText(password);
 }
 
 int CorrectionsView::messageTypeRows() const {
@@ -271,6 +323,17 @@ void CorrectionsView::refresh() {
             item->setText(cells[c]);
         }
     }
+    QList<QPointF> points;
+    double highest = 5;
+    for (const corrections::AgeSample &s : monitor_.ageHistory()) {
+        if (!s.ageMs) continue;
+        const double age = double(*s.ageMs) / 1000.0;
+        points.append({double(s.atMs - now) / 1000.0, age});
+        highest = std::max(highest, age * 1.2);
+    }
+    ageSeries_->replace(points);
+    ageY_->setRange(0, highest);
+    ageY_->applyNiceNumbers(); // whole steps: 0, 1, 2 ... rather than 1.25
     const auto age = monitor_.correctionAgeMs(now);
     stream_->setText(
             tr("%1 B/s, %2 messages, %3 CRC errors, %4 bytes not RTCM; correction age %5")

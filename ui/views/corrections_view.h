@@ -14,7 +14,11 @@
 
 #include <functional>
 
+class QCheckBox;
 class QComboBox;
+class QChartView;
+class QLineSeries;
+class QValueAxis;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -41,6 +45,7 @@ struct CorrectionsRequest {
     QString user;
     QString password;
     int ntripVersion = 2;
+    bool rememberPassword = false; // in the system keychain, never in the settings
     bool operator==(const CorrectionsRequest &) const = default;
 };
 
@@ -63,6 +68,11 @@ public:
     // Shown instead of the status when a request was refused before anything was started.
     void showError(const QString &text);
 
+    // Whether the password can be kept (a keychain is there): the option is shown only then.
+    void setKeychainAvailable(bool available);
+    // A password recalled from the keychain.
+    void setPassword(const QString &password);
+
     // Rows in the message-type table (tests).
     int messageTypeRows() const;
 
@@ -73,6 +83,9 @@ signals:
     void startRequested(const gnss::ui::CorrectionsRequest &request);
     void stopRequested();
 
+protected:
+    void changeEvent(QEvent *e) override;
+
 private:
     void onStartStop();
     void updateKind();
@@ -81,14 +94,19 @@ private:
     ReceiverStateModel *receiver_;
     std::function<const corrections::ForwarderStats *()> forwarded_;
     bool active_ = false;
+    bool keychain_ = false;
 
     QComboBox *kind_, *version_;
     QLineEdit *host_, *mount_, *user_, *password_;
     QSpinBox *port_;
+    QCheckBox *remember_;
     QPushButton *startStop_;
     QLabel *status_, *stream_, *base_, *forwarding_, *receiverSide_;
     QLabel *mountLabel_, *userLabel_, *passwordLabel_, *versionLabel_;
     QTableWidget *types_;
+    QChartView *ageChart_;
+    QLineSeries *ageSeries_;
+    QValueAxis *ageX_, *ageY_;
     QTimer *timer_;
 };
 
