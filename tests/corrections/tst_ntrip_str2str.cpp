@@ -9,10 +9,13 @@
 #include "corrections_monitor.h"
 #include "ntrip_source.h"
 #include "rtcm_fixtures.h"
+#include "sim_process.h"
 #include "source_watch.h"
 #include "test_caster.h"
 
 #include <QElapsedTimer>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -281,6 +284,46 @@ private slots:
         QCOMPARE(monitor.decodeErrors(), std::uint64_t(0));
         sim.terminate();
         sim.waitForFinished(3000);
+    }
+
+    // The whole chain with Debian's caster: gnss-sim's base → str2str (NTRIP 1) → gnss-cli
+    // ntrip → the simulated NV08C-RTK on a pseudo-terminal, which is autonomous until the
+    // corrections flow, then float, then fixed.
+    void gnssCliTakesTheRoverToRtkFixedThroughStr2str() {
+        REQUIRE_STR2STR();
+        if (simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        const quint16 simPort = closedPort();
+        QProcess base;
+        base.start(simPath(), {"--rtcm-base", "--tcp", QString::number(simPort)});
+        QVERIFY(base.waitForReadyRead(5000));
+        Str2StrCaster caster(QString("tcpcli://127.0.0.1:%1").arg(simPort), closedPort());
+        QVERIFY(caster.ok);
+        gnss::link::test::SimProcess rover(
+                {"--dialect", "nvs", "--speed", "5", "--baud", "460800"});
+        QVERIFY2(rover.ok(), qPrintable(rover.error));
+        QProcess cli;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("TEST_NTRIP_PW", "s3cret-pw");
+        cli.setProcessEnvironment(env);
+        cli.start(QStringLiteral(GNSS_CLI_PATH),
+                  {"ntrip", "--caster", QString("127.0.0.1:%1").arg(caster.casterPort), "--mount",
+                   "MOUNT", "--user", "rover7", "--password-env", "TEST_NTRIP_PW",
+                   "--ntrip-version", "1", "--port", rover.device, "--baud", "460800", "--duration",
+                   "10"});
+        QVERIFY(cli.waitForFinished(30000));
+        const QByteArray err = cli.readAllStandardError();
+        QVERIFY2(cli.exitCode() == 0, err.constData());
+        QStringList fixes;
+        for (const QByteArray &line : cli.readAllStandardOutput().split('\n'))
+            if (!line.trimmed().isEmpty())
+                fixes << QJsonDocument::fromJson(line).object().value("fix").toString();
+        QVERIFY2(fixes.contains("3d") && fixes.contains("rtk_float"), err.constData());
+        QVERIFY(fixes.indexOf("3d") < fixes.indexOf("rtk_float"));
+        QCOMPARE(fixes.last(), QString("rtk_fixed"));
+        QVERIFY2(err.contains("NTRIP 1 (ICY)") && err.contains("\"frames_dropped\":0"),
+                 err.constData());
+        base.terminate();
+        base.waitForFinished(3000);
     }
 };
 
