@@ -205,7 +205,7 @@ private slots:
         };
         const Run r = cli({"ntrip", "--caster", casterArg(caster), "--mount", "MOUNT", "--user",
                            "rover7", "--password-env", "TEST_NTRIP_PW", "--port", rover.device,
-                           "--baud", "460800", "--duration", "9"},
+                           "--baud", "460800", "--duration", "12"},
                           feed);
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QStringList fixes;

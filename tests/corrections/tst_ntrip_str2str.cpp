@@ -309,7 +309,7 @@ private slots:
                   {"ntrip", "--caster", QString("127.0.0.1:%1").arg(caster.casterPort), "--mount",
                    "MOUNT", "--user", "rover7", "--password-env", "TEST_NTRIP_PW",
                    "--ntrip-version", "1", "--port", rover.device, "--baud", "460800", "--duration",
-                   "10"});
+                   "12"});
         QVERIFY(cli.waitForFinished(30000));
         const QByteArray err = cli.readAllStandardError();
         QVERIFY2(cli.exitCode() == 0, err.constData());
