@@ -199,6 +199,44 @@
     </message>
 </context>
 <context>
+    <name>SourceSpec</name>
+    <message>
+        <location filename="../protocol/link/source_spec.cpp" line="+50"/>
+        <source>%1 at %2 baud</source>
+        <translation>%1 на скорости %2 бод</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (baud: auto)</source>
+        <translation>%1 (скорость: авто)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP %1</source>
+        <translation>TCP %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replay %1</source>
+        <translation>Воспроизведение %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Simulated %1</source>
+        <translation>Имитатор %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gpsd %1</source>
+        <translation>gpsd %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No source</source>
+        <translation>Нет источника</translation>
+    </message>
+</context>
+<context>
     <name>StartupOptions</name>
     <message>
         <location filename="../app/gui/startup_options.cpp" line="+14"/>
@@ -488,12 +526,12 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::CorrectionsController</name>
     <message>
-        <location filename="../app/gui/corrections_controller.cpp" line="+39"/>
+        <location filename="../app/gui/corrections_controller.cpp" line="+40"/>
         <source>The password was not read from the keychain: %1</source>
         <translation>Пароль не прочитан из связки ключей: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>The password was not kept in the keychain: %1</source>
         <translation>Пароль не сохранён в связке ключей: %1</translation>
     </message>
@@ -1632,44 +1670,6 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
-    <name>gnss::link::SourceSpec</name>
-    <message>
-        <location filename="../protocol/link/source_spec.cpp" line="+50"/>
-        <source>%1 at %2 baud</source>
-        <translation>%1 на скорости %2 бод</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>%1 (baud: auto)</source>
-        <translation>%1 (скорость: авто)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>TCP %1</source>
-        <translation>TCP %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Replay %1</source>
-        <translation>Воспроизведение %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Simulated %1</source>
-        <translation>Имитатор %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>gpsd %1</source>
-        <translation>gpsd %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>No source</source>
-        <translation>Нет источника</translation>
-    </message>
-</context>
-<context>
     <name>gnss::link::TcpTransport</name>
     <message>
         <location filename="../protocol/link/tcp_transport.cpp" line="+16"/>
@@ -1828,7 +1828,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ChartsView</name>
     <message>
-        <location filename="../ui/views/charts_view.cpp" line="+106"/>
+        <location filename="../ui/views/charts_view.cpp" line="+108"/>
         <source>Series</source>
         <translation>Ряды</translation>
     </message>
@@ -1980,7 +1980,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CorrectionsView</name>
     <message>
-        <location filename="../ui/views/corrections_view.cpp" line="+54"/>
+        <location filename="../ui/views/corrections_view.cpp" line="+55"/>
         <source>RTK fixed</source>
         <translation>RTK fixed</translation>
     </message>
@@ -2046,12 +2046,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>not stored</source>
         <translation>не сохраняется</translation>
     </message>
     <message>
-        <location line="-88"/>
+        <location line="-89"/>
         <source>Password</source>
         <translation>Пароль</translation>
     </message>
@@ -2077,12 +2077,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+140"/>
+        <location line="+141"/>
         <source>Start</source>
         <translation>Запустить</translation>
     </message>
     <message>
-        <location line="-136"/>
+        <location line="-137"/>
         <source>Not started</source>
         <translation>Не запущено</translation>
     </message>
@@ -2122,7 +2122,7 @@ Serial number: %3</source>
         <translation>Возраст поправок, с (последние 10 мин)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Receiver</source>
         <translation>Приёмник</translation>
     </message>
@@ -2167,7 +2167,7 @@ Serial number: %3</source>
         <translation>Остановить</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+70"/>
         <source>%1 B/s, %2 messages, %3 CRC errors, %4 bytes not RTCM; correction age %5</source>
         <translation>%1 Б/с, сообщений: %2, ошибок CRC: %3, байт не RTCM: %4; возраст поправок: %5</translation>
     </message>

@@ -44,17 +44,19 @@ SourceSpec SourceSpec::fromString(const QString &s) {
 }
 
 QString SourceSpec::displayName() const {
-    auto tr = [](const char *t) { return QCoreApplication::translate("SourceSpec", t); };
+    // (translate() with the context spelled out: lupdate files it under the one used here.)
     switch (kind) {
     case Kind::Serial:
-        return baud ? tr("%1 at %2 baud").arg(name).arg(baud) : tr("%1 (baud: auto)").arg(name);
-    case Kind::Tcp: return tr("TCP %1").arg(name);
-    case Kind::Replay: return tr("Replay %1").arg(name);
-    case Kind::Simulator: return tr("Simulated %1").arg(name);
-    case Kind::Gpsd: return tr("gpsd %1").arg(name);
+        return baud ? QCoreApplication::translate("SourceSpec", "%1 at %2 baud").arg(name).arg(baud)
+                    : QCoreApplication::translate("SourceSpec", "%1 (baud: auto)").arg(name);
+    case Kind::Tcp: return QCoreApplication::translate("SourceSpec", "TCP %1").arg(name);
+    case Kind::Replay: return QCoreApplication::translate("SourceSpec", "Replay %1").arg(name);
+    case Kind::Simulator:
+        return QCoreApplication::translate("SourceSpec", "Simulated %1").arg(name);
+    case Kind::Gpsd: return QCoreApplication::translate("SourceSpec", "gpsd %1").arg(name);
     case Kind::None: break;
     }
-    return tr("No source");
+    return QCoreApplication::translate("SourceSpec", "No source");
 }
 
 } // namespace gnss::link
