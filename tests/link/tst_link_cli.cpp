@@ -1,9 +1,11 @@
 // gnss-cli's link commands end to end against gnss-sim on pseudo-terminals: probe finds each
 // simulated receiver at a baud it is not told, send reports outcomes (and refuses a malformed
-// sentence before sending anything), record + monitor --replay give back what was received.
+// sentence before sending anything), record + monitor --replay give back what was received,
+// also after the recorder was killed with SIGKILL.
 #include "sim_process.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -103,6 +105,43 @@ private slots:
         QCOMPARE(replayed.out, decoded.out);
         const Run epochs = cli({"monitor", "--replay", log, "--fast", "--epochs"});
         QVERIFY(epochs.out.count('\n') >= 1);
+    }
+
+    // kill -9 in the middle of a recording: what arrived up to the kill is on disk (the data
+    // and its index are flushed with every chunk), and the log opens again: the index's torn
+    // last line is skipped and the data after the last indexed chunk becomes one more chunk.
+    void aRecordingSurvivesKill9() {
+        SimProcess sim({"--dialect", "nmea"});
+        REQUIRE_SIM(sim);
+        QTemporaryDir dir;
+        const QString log = dir.filePath("killed.nmea");
+        QProcess rec;
+        rec.start(QStringLiteral(GNSS_CLI_PATH), {"record", "--port", sim.device, "--out", log});
+        QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(log).size() > 500, 20000);
+        QTest::qWait(1000);
+        QFile f(log);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray before = f.readAll(); // a second before the kill
+        f.close();
+        QTest::qWait(1000);
+        rec.kill(); // SIGKILL: no chance to flush or close anything
+        QVERIFY(rec.waitForFinished(5000));
+        QCOMPARE(rec.exitStatus(), QProcess::CrashExit);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray after = f.readAll();
+        f.close();
+        QVERIFY(after.startsWith(before));     // nothing written was lost
+        QVERIFY(after.size() > before.size()); // and the last second is there too
+        // The index as a kill in the middle of its write leaves it: a torn last line.
+        QFile index(log + ".idx");
+        QVERIFY(index.open(QIODevice::Append));
+        index.write("R 99999 ");
+        index.close();
+        const Run decoded = cli({"decode", log});
+        const Run replayed = cli({"monitor", "--replay", log, "--fast"});
+        QVERIFY2(replayed.exitCode == 0, replayed.err.constData());
+        QCOMPARE(replayed.out, decoded.out); // every byte recorded plays back
+        QVERIFY(decoded.out.count('\n') > 5);
     }
 };
 
