@@ -1,10 +1,14 @@
 // Recorder: the .nmea file holds exactly the bytes received (across a lost link and at
 // destruction), the index says when each chunk came, what was sent and where the gaps are, and
 // loadRecording reads it all back.
+#include "connection.h"
+#include "core/sentence_builder.h"
 #include "fake_transport.h"
 #include "recorder.h"
+#include "recording.h"
 
 #include <QFile>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -143,6 +147,43 @@ private slots:
         QVERIFY(loadRecording(path, r, error));
         QVERIFY(!r.hasIndex);
         QVERIFY(r.chunks.empty());
+    }
+
+    // A hundred unplugs and replugs of a recorded link, each cut in the middle of a sentence:
+    // the bytes recorded are the bytes received, with a gap mark at every loss and return.
+    void bytesRecordedEqualBytesReceivedOverAHundredUnplugs() {
+        auto *t = new FakeTransport(9600);
+        Connection conn(std::unique_ptr<Transport>(t), gnss::link::test::builtinRegistry());
+        conn.setReconnectDelays(1, 1);
+        QTemporaryDir dir;
+        const QString log = dir.filePath("cycles.nmea");
+        QVERIFY(conn.startRecording(log));
+        QByteArray received;
+        connect(t, &Transport::bytesReceived, this, [&](const QByteArray &b) { received += b; });
+        QSignalSpy back(&conn, &Connection::linkRestored);
+        QVERIFY(conn.open());
+        constexpr int kCycles = 100;
+        for (int i = 0; i < kCycles; ++i) {
+            const QByteArray line = QByteArray::fromStdString(
+                    gnss::buildSentence("GPZDA,1000" + std::to_string(10 + i % 50) +
+                                        ".00,15,03,2024,00,00") +
+                    "\r\n");
+            t->feed(line);
+            t->feed(line.left(7 + i % 11)); // the plug pulled mid-sentence
+            t->drop();
+            QTRY_COMPARE_WITH_TIMEOUT(back.count(), i + 1, 5000);
+        }
+        t->feed("$GPTXT,01,01,02,back*XX\r\n");
+        conn.close();
+        conn.stopRecording();
+        Recording r;
+        QString error;
+        QVERIFY2(loadRecording(log, r, error), qPrintable(error));
+        QCOMPARE(r.bytes.size(), received.size());
+        QCOMPARE(r.bytes, received); // not a byte lost or added
+        int gaps = 0;
+        for (const auto &e : r.events) gaps += e.kind == RecordedEvent::Kind::Gap;
+        QCOMPARE(gaps, 2 * kCycles); // lost, back
     }
 };
 
