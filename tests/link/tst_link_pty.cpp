@@ -200,7 +200,10 @@ private slots:
         QCOMPARE(r.bytes, received); // bytes logged == bytes received, across the gap
         int gaps = 0;
         for (const auto &e : r.events) gaps += e.kind == RecordedEvent::Kind::Gap;
-        QCOMPARE(gaps, 2); // lost, back
+        // A mark for every loss and every return: lost, back (on a loaded machine the fresh
+        // device can drop once more while the simulator starts; then the marks say so too).
+        QVERIFY(back.count() >= 1);
+        QCOMPARE(gaps, int(lost.count() + back.count()));
     }
 
     void recordingIsByteExact() {
