@@ -119,6 +119,7 @@ bool CorrectionsController::start(const ui::CorrectionsRequest &r, QString *why)
 void CorrectionsController::stop() {
     if (!source_) return;
     source_->stop();
+    source_->disconnect(this); // nothing more from it reaches the monitor or the receiver
     source_.release()->deleteLater(); // (it may be inside one of its own signals)
     emit statusChanged(tr("Stopped"), false);
 }
