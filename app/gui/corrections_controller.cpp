@@ -119,7 +119,7 @@ bool CorrectionsController::start(const ui::CorrectionsRequest &r, QString *why)
 void CorrectionsController::stop() {
     if (!source_) return;
     source_->stop();
-    source_->disconnect(this); // nothing more from it reaches the monitor or the receiver
+    source_->disconnect(this);        // nothing more from it reaches the monitor or the receiver
     source_.release()->deleteLater(); // (it may be inside one of its own signals)
     emit statusChanged(tr("Stopped"), false);
 }
@@ -144,10 +144,13 @@ QString CorrectionsController::statusText() const {
 }
 
 void CorrectionsController::setReceiver(link::Connection *connection) {
-    if (connection == receiver_) return;
+    // (receiver_ is a QPointer: a connection already deleted reads as null, so compare the
+    // forwarder's presence too.)
+    if (connection == receiver_ && (connection != nullptr) == (forwarder_ != nullptr)) return;
     forwarder_.reset();
     receiver_ = connection;
-    if (connection)
+    // A link that takes no writes (a replayed log, a receiver behind gpsd) gets no corrections.
+    if (connection && connection->transport()->canWrite())
         forwarder_ = std::make_unique<corrections::CorrectionForwarder>(connection->transport(),
                                                                         connection->commands());
 }

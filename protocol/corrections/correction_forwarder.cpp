@@ -4,6 +4,13 @@
 #include "rtcm/rtcm_framer.h"
 #include "transport.h"
 
+namespace {
+// A frame is written once the port holds less than this much not yet sent: one largest frame.
+constexpr qint64 kMaxBacklogBytes = 1029;
+// How often to look again while the port's buffer empties (a 1 KB frame takes 0.1 s at 115200).
+constexpr int kDrainPollMs = 20;
+} // namespace
+
 namespace gnss::corrections {
 
 class CorrectionForwarder::Framing {
@@ -20,12 +27,16 @@ CorrectionForwarder::CorrectionForwarder(link::Transport *transport, link::Comma
             if (s == link::Transport::State::Open) flush();
         });
     if (queue) connect(queue, &link::CommandQueue::idle, this, &CorrectionForwarder::flush);
+    drain_.setSingleShot(true);
+    drain_.setInterval(kDrainPollMs);
+    connect(&drain_, &QTimer::timeout, this, &CorrectionForwarder::flush);
 }
 
 CorrectionForwarder::~CorrectionForwarder() = default;
 
 bool CorrectionForwarder::linkReady() const {
-    return transport_ && transport_->isOpen() && !(commands_ && commands_->isBusy());
+    return transport_ && transport_->isOpen() && !(commands_ && commands_->isBusy()) &&
+           transport_->pendingWriteBytes() < kMaxBacklogBytes;
 }
 
 void CorrectionForwarder::feed(const QByteArray &bytes) {
@@ -74,6 +85,10 @@ void CorrectionForwarder::flush() {
             stats_.bytesDropped += std::uint64_t(frame.size());
         }
     }
+    // Held back by the port's own buffer only: look again shortly (idle and open call too).
+    if (!queue_.empty() && transport_ && transport_->isOpen() &&
+        !(commands_ && commands_->isBusy()))
+        drain_.start();
     if (changed) emit statsChanged();
 }
 

@@ -6,10 +6,13 @@
 // one write: a command of the command queue can never land inside a frame, nor a frame inside
 // a command. While a command waits for its reply (the receiver must answer it undisturbed, and
 // a baud switch may be under way) or the link is down, frames wait in a bounded queue; when it
-// is full the oldest are dropped and counted. Nothing here blocks or waits.
+// is full the oldest are dropped and counted. The same when the line is slower than the stream:
+// a frame goes out only once the port's own buffer holds less than one frame, so corrections
+// never pile up out of sight (growing old) in front of the next command. Nothing here blocks.
 #include <QByteArray>
 #include <QObject>
 #include <QPointer>
+#include <QTimer>
 
 #include <cstdint>
 #include <deque>
@@ -76,6 +79,7 @@ private:
     ForwarderStats stats_;
     class Framing;
     std::unique_ptr<Framing> framing_; // rtcm::RtcmFramer, kept out of this header
+    QTimer drain_;                     // looks again while the port's buffer empties
 };
 
 } // namespace gnss::corrections

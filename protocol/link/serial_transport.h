@@ -30,6 +30,7 @@ public:
     bool open() override;
     void close() override;
     QString description() const override;
+    qint64 pendingWriteBytes() const override { return port_.bytesToWrite(); }
     int baud() const override { return settings_.baud; }
     bool setBaud(int baud) override;
     void discardInput() override;

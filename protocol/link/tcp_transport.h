@@ -22,6 +22,7 @@ public:
     bool open() override;
     void close() override;
     QString description() const override;
+    qint64 pendingWriteBytes() const override { return socket_.bytesToWrite(); }
     // How long a connection attempt may take before it is given up.
     void setConnectTimeout(int ms) { connectTimer_.setInterval(ms); }
 

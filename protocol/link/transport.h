@@ -43,6 +43,8 @@ public:
     // Why commands cannot be sent, in words for the user, when canWrite() is false ("gpsd owns
     // the port ..."): the console and the settings dock show it instead of a bare refusal.
     virtual QString readOnlyReason() const { return {}; }
+    // Bytes written but not yet on the line (the port's or socket's own buffer).
+    virtual qint64 pendingWriteBytes() const { return 0; }
     // Drops whatever was received but not delivered yet (after a baud switch).
     virtual void discardInput() {}
 

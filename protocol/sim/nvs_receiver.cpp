@@ -139,8 +139,10 @@ double NvsReceiver::correctionAgeLimit() const {
 
 void NvsReceiver::onHostBytes(std::string_view bytes) {
     if (options().internalBase) return;
-    hostRtcm_.feed(bytes, [this](const rtcm::RtcmFrame &) {
+    const bool rover = mode() == 2 || mode() == 4; // a base or an autonomous receiver ignores them
+    hostRtcm_.feed(bytes, [this, rover](const rtcm::RtcmFrame &) {
         ++rtcmTotal_;
+        if (!rover) return;
         if (lastRtcm_ < 0 || time() - lastRtcm_ > correctionAgeLimit()) flowSince_ = time();
         lastRtcm_ = time();
     });
@@ -267,7 +269,7 @@ std::vector<std::string> NvsReceiver::sentencesOf(std::string_view address,
         if (rtcmTotal_ > 0) {
             const double d =
                     std::sqrt(baseNorth_ * baseNorth_ + baseEast_ * baseEast_ + baseUp_ * baseUp_);
-            b += fixed(d, 3) + "," + fixed(std::min(age, 999.9), 1);
+            b += fixed(d, 3) + "," + (age >= 0 ? fixed(std::min(age, 999.9), 1) : std::string());
         } else {
             b += ",";
         }

@@ -102,6 +102,21 @@ private slots:
         QVERIFY(all.endsWith(joined(l.transport.written)));
     }
 
+    // A line slower than the stream: frames wait in the forwarder's bounded queue, not in the
+    // port's buffer, and go out as that buffer empties.
+    void aFullPortBufferHoldsFramesBack() {
+        Link l;
+        CorrectionForwarder f(&l.transport, &l.queue);
+        l.transport.pendingWrite = 4000; // the port still has 4 KB to send
+        const QByteArray epoch = corrections_test::baseEpochs(1).front();
+        f.feed(epoch);
+        QVERIFY(l.transport.written.isEmpty());
+        QVERIFY(f.queuedFrames() > 0);
+        l.transport.pendingWrite = 0; // sent
+        QTRY_COMPARE(f.queuedFrames(), 0);
+        QCOMPARE(joined(l.transport.written), epoch);
+    }
+
     void aCorruptFrameIsNotForwarded() {
         Link l;
         CorrectionForwarder f(&l.transport, &l.queue);

@@ -40,6 +40,7 @@ public:
         return true;
     }
     void discardInput() override { ++discards; }
+    qint64 pendingWriteBytes() const override { return pendingWrite; }
 
     // The receiver sends `bytes`.
     void feed(const QByteArray &bytes) { emit bytesReceived(bytes); }
@@ -52,6 +53,7 @@ public:
     bool refuseOpen = false;
     int opens = 0;
     int discards = 0;
+    qint64 pendingWrite = 0; // what the "port" still holds unsent
 
 protected:
     bool writeBytes(const QByteArray &bytes) override {

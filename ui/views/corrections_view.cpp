@@ -185,6 +185,7 @@ CorrectionsView::CorrectionsView(const corrections::CorrectionsMonitor &monitor,
     layout->addWidget(receiverBox);
 
     connect(kind_, &QComboBox::currentIndexChanged, this, &CorrectionsView::updateKind);
+    connect(remember_, &QCheckBox::toggled, this, &CorrectionsView::updateKind);
     connect(startStop_, &QPushButton::clicked, this, &CorrectionsView::onStartStop);
     connect(timer_, &QTimer::timeout, this, &CorrectionsView::refresh);
     timer_->start(kRefreshMs);
@@ -226,7 +227,8 @@ CorrectionsRequest CorrectionsView::request() const {
     if (r.mountpoint.startsWith(QLatin1Char('/'))) r.mountpoint.remove(0, 1);
     r.user = user_->text().trimmed();
     r.password = password_->text();
-    r.rememberPassword = remember_->isVisible() && remember_->isChecked();
+    r.rememberPassword =
+            keychain_ && r.kind == CorrectionsRequest::Kind::Ntrip && remember_->isChecked();
     r.ntripVersion = version_->currentData().toInt();
     return r;
 }
