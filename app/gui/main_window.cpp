@@ -390,7 +390,11 @@ void MainWindow::updateStatus() {
     recordLabel_->setText(rec ? tr("● REC") : QString());
     recordLabel_->setStyleSheet(rec ? QStringLiteral("color: #c62828; font-weight: bold;")
                                     : QString());
-    const bool any = stateModel_->epochCount() > 0;
+    // The badge is the live fix: none once the receiver is disconnected (the docks keep the last).
+    const auto link = controller_->state();
+    const bool live = link != ConnectionController::State::Disconnected &&
+                      link != ConnectionController::State::Failed;
+    const bool any = live && stateModel_->epochCount() > 0;
     const FixType fix = any ? stateModel_->state().epoch.fix : FixType::None;
     fixLabel_->setText(any ? style::fixTypeLabel(fix) : tr("No fix"));
     fixLabel_->setStyleSheet(
