@@ -16,6 +16,7 @@
 
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "cli_output.h"
 #include "cli_source.h"
 #include "command_queue.h"
 #include "sentence_stream.h"
@@ -35,18 +36,8 @@ namespace {
 using config::OperationReport;
 using config::SettingsEngine;
 
-void printLine(const std::string &s) {
-    std::fwrite(s.data(), 1, s.size(), stdout);
-    std::fputc('\n', stdout);
-    std::fflush(stdout);
-}
-
 void say(const QString &s) {
     std::fprintf(stderr, "gnss-cli: %s\n", s.toUtf8().constData());
-}
-
-std::string utf8(const QString &s) {
-    return s.toStdString();
 }
 
 // Runs an engine operation to its end.

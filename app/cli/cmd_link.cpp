@@ -7,6 +7,7 @@
 #include "baud_detector.h"
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "cli_output.h"
 #include "cli_source.h"
 #include "connection.h"
 #include "core/json_writer.h"
@@ -57,16 +58,6 @@ struct EventLoop {
     }
     int exec() { return app.exec(); }
 };
-
-void printLine(const std::string &s) {
-    std::fwrite(s.data(), 1, s.size(), stdout);
-    std::fputc('\n', stdout);
-    std::fflush(stdout);
-}
-
-std::string utf8(const QString &s) {
-    return s.toStdString();
-}
 
 bool numberOption(const Args &args, const char *name, double &out) {
     const auto v = args.option(name);

@@ -10,6 +10,7 @@
 
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "cli_output.h"
 #include "cli_source.h"
 #include "core/json_writer.h"
 #include "correction_forwarder.h"
@@ -58,18 +59,8 @@ struct NtripEventLoop {
     }
 };
 
-std::string utf8(const QString &s) {
-    return s.toStdString();
-}
-
 void say(const std::string &s) {
     std::fprintf(stderr, "gnss-cli: %s\n", s.c_str());
-}
-
-void printLine(const std::string &s) {
-    std::fwrite(s.data(), 1, s.size(), stdout);
-    std::fputc('\n', stdout);
-    std::fflush(stdout);
 }
 
 // "LAT,LON,H" in degrees and metres.

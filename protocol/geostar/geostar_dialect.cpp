@@ -58,9 +58,9 @@ const Dialect &dialect() {
             .consoleExample = "$GPSGG,RQUERY",
             // The spec names no factory speed; 115200 bit/s (BDR115) is an assumption.
             .defaultBaud = 115200,
-            .supportedBauds = supportedBauds(),
-            .actions = actions(),
-            .presets = presets(),
+            .supportedBauds = kSupportedBauds,
+            .actions = kActions,
+            .presets = kPresets,
             .linkSpeed = {"GPSGG,BDR"},
             .summary = "GeoStar GeoS-5 ($GPSGG,...): GPS/GLONASS/Galileo receiver",
     };

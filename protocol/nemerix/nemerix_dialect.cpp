@@ -36,9 +36,9 @@ const Dialect &dialect() {
             .defaultBaud = 9600,
             // "The PNMRX part may be replaced by a configured alternative" (Extensions spec).
             .renamablePrefix = "PNMRX",
-            .supportedBauds = supportedBauds(),
-            .actions = actions(),
-            .presets = presets(),
+            .supportedBauds = kSupportedBauds,
+            .actions = kActions,
+            .presets = kPresets,
             .linkSpeed = {"PNMRX100,"},
             .summary = "Nemerix VT002 (PNMRX...): GPS module, prefix renamable",
     };

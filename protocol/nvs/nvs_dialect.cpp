@@ -44,9 +44,9 @@ const Dialect &dialect() {
             .commandNames = kCommands,
             .consoleExample = "$PNVGVER",
             .defaultBaud = 115200, // Table 1 / section 1.1
-            .supportedBauds = supportedBauds(),
-            .actions = actions(),
-            .presets = presets(),
+            .supportedBauds = kSupportedBauds,
+            .actions = kActions,
+            .presets = kPresets,
             .linkSpeed = {"PNVGRZA,1,"}, // the host is on COM1
             .summary = "NVS NV08C-RTK (PNVG...): RTK rover, base and heading receiver",
     };
