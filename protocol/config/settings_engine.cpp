@@ -5,6 +5,7 @@
 #include "settings_engine.h"
 
 #include "connection.h"
+#include "schema_texts.h"
 #include "setting_values.h"
 #include "transport.h"
 
@@ -367,7 +368,7 @@ bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
 
 bool SettingsEngine::runAction(Action action) {
     const ActionDef *def = dialect_ ? findAction(*dialect_, action) : nullptr;
-    const QString title = def ? tr(std::string(def->label).c_str()) : tr("Action");
+    const QString title = def ? SchemaTexts(dialect_->id)(def->label) : tr("Action");
     if (!begin(Operation::Action, title)) return false;
     if (!def) {
         report_.error = tr("the %1 receiver has no '%2' command")

@@ -23,17 +23,14 @@ QString qs(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-QString unitSuffix(const SettingDef &d) {
-    return d.unit.empty() ? QString() : " " + qs(d.unit);
-}
-
 class IntegerEditor : public SettingEditor {
 public:
-    IntegerEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+    IntegerEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
+        : SettingEditor(def, texts, parent) {
         box_ = new QSpinBox(this);
         box_->setRange(def.min ? static_cast<int>(*def.min) : -999999999,
                        def.max ? static_cast<int>(*def.max) : 999999999);
-        box_->setSuffix(unitSuffix(def));
+        box_->setSuffix(unitSuffix());
         box_->setValue(qs(def.defaultValue).toInt());
         connect(box_, &QSpinBox::valueChanged, this, [this] {
             if (!loading_) emit edited();
@@ -57,12 +54,13 @@ private:
 
 class RealEditor : public SettingEditor {
 public:
-    RealEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+    RealEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
+        : SettingEditor(def, texts, parent) {
         box_ = new QDoubleSpinBox(this);
         box_->setDecimals(4);
         box_->setRange(def.min ? *def.min : -1e9, def.max ? *def.max : 1e9);
         box_->setSingleStep(def.max && def.min && *def.max - *def.min <= 2 ? 0.001 : 0.1);
-        box_->setSuffix(unitSuffix(def));
+        box_->setSuffix(unitSuffix());
         box_->setValue(qs(def.defaultValue).toDouble());
         connect(box_, &QDoubleSpinBox::valueChanged, this, [this] {
             if (!loading_) emit edited();
@@ -117,11 +115,12 @@ private:
 
 class EnumEditor : public SettingEditor {
 public:
-    EnumEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+    EnumEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
+        : SettingEditor(def, texts, parent) {
         box_ = new FittingComboBox(this);
         for (const auto &o : def.options) {
-            const QString label = qs(o.label);
-            box_->addItem(label == qs(o.value) ? label : QString("%1 (%2)").arg(label, qs(o.value)),
+            const QString label = texts(o.label);
+            box_->addItem(o.label == o.value ? label : QString("%1 (%2)").arg(label, qs(o.value)),
                           qs(o.value));
         }
         setValue(qs(def.defaultValue));
@@ -154,7 +153,8 @@ private:
 
 class BoolEditor : public SettingEditor {
 public:
-    BoolEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+    BoolEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
+        : SettingEditor(def, texts, parent) {
         box_ = new QCheckBox(this);
         // The schema's "on" and "off" values (options when given, else "1"/"0").
         for (const auto &o : def.options) {
@@ -191,7 +191,8 @@ private:
 
 class TextEditor : public SettingEditor {
 public:
-    TextEditor(const SettingDef &def, QWidget *parent) : SettingEditor(def, parent) {
+    TextEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
+        : SettingEditor(def, texts, parent) {
         edit_ = new QLineEdit(this);
         edit_->setText(qs(def.defaultValue));
         edit_->setPlaceholderText(def.type == SettingType::List ? tr("items separated by ';'")
@@ -225,7 +226,13 @@ double fromNmea(const QString &s) {
 
 } // namespace
 
-SettingEditor::SettingEditor(const SettingDef &def, QWidget *parent) : QWidget(parent), def_(def) {}
+SettingEditor::SettingEditor(const SettingDef &def, const config::SchemaTexts &texts,
+                             QWidget *parent)
+    : QWidget(parent), def_(def), texts_(texts) {}
+
+QString SettingEditor::unitSuffix() const {
+    return def_.unit.empty() ? QString() : " " + texts_(def_.unit);
+}
 
 void SettingEditor::finish(QWidget *input) {
     if (!layout()) {
@@ -238,18 +245,19 @@ void SettingEditor::finish(QWidget *input) {
     // of squeezing them); combo boxes do so by themselves (FittingComboBox).
     if (qobject_cast<QAbstractSpinBox *>(input) || qobject_cast<QLineEdit *>(input))
         input->setMinimumWidth(input->sizeHint().width());
-    QString tip = qs(def_.help);
+    QString tip = texts_(def_.help);
     if (def_.min || def_.max)
         tip += "\n" + tr("Range: %1 to %2 %3")
                               .arg(def_.min ? QString::number(*def_.min) : QString("-"),
                                    def_.max ? QString::number(*def_.max) : QString("-"),
-                                   qs(def_.unit));
+                                   texts_(def_.unit));
     input->setToolTip(tip.trimmed());
     setFocusProxy(input);
 }
 
-CoordinateEditor::CoordinateEditor(const SettingDef &def, Kind kind, QWidget *parent)
-    : SettingEditor(def, parent), kind_(kind) {
+CoordinateEditor::CoordinateEditor(const SettingDef &def, const config::SchemaTexts &texts,
+                                   Kind kind, QWidget *parent)
+    : SettingEditor(def, texts, parent), kind_(kind) {
     // One line per component, so the editor stays narrow enough for a docked form.
     auto *l = new QGridLayout(this);
     l->setContentsMargins(0, 0, 0, 0);
@@ -358,24 +366,25 @@ void CoordinateEditor::setGeodetic(const config::Geodetic &g) {
     emit edited();
 }
 
-SettingEditor *makeSettingEditor(const SettingDef &def, QWidget *parent) {
+SettingEditor *makeSettingEditor(const SettingDef &def, const config::SchemaTexts &texts,
+                                 QWidget *parent) {
     switch (def.type) {
-    case SettingType::Integer: return new IntegerEditor(def, parent);
-    case SettingType::Real: return new RealEditor(def, parent);
-    case SettingType::Bool: return new BoolEditor(def, parent);
+    case SettingType::Integer: return new IntegerEditor(def, texts, parent);
+    case SettingType::Real: return new RealEditor(def, texts, parent);
+    case SettingType::Bool: return new BoolEditor(def, texts, parent);
     case SettingType::Enum:
-        if (!def.options.empty()) return new EnumEditor(def, parent);
+        if (!def.options.empty()) return new EnumEditor(def, texts, parent);
         break;
     case SettingType::Coordinates:
         if (def.key.ends_with("XYZ"))
-            return new CoordinateEditor(def, CoordinateEditor::Kind::Ecef, parent);
+            return new CoordinateEditor(def, texts, CoordinateEditor::Kind::Ecef, parent);
         if (def.key.ends_with("BLH"))
-            return new CoordinateEditor(def, CoordinateEditor::Kind::Geodetic, parent);
+            return new CoordinateEditor(def, texts, CoordinateEditor::Kind::Geodetic, parent);
         break;
     case SettingType::Text:
     case SettingType::List: break;
     }
-    return new TextEditor(def, parent);
+    return new TextEditor(def, texts, parent);
 }
 
 } // namespace gnss::ui

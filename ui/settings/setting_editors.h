@@ -5,6 +5,7 @@
 // two on WGS-84), a line edit otherwise. Every editor reads and writes the schema's value text.
 #include "core/settings_schema.h"
 #include "geodesy.h"
+#include "schema_texts.h"
 
 #include <QWidget>
 
@@ -17,7 +18,8 @@ namespace gnss::ui {
 class SettingEditor : public QWidget {
     Q_OBJECT
 public:
-    SettingEditor(const SettingDef &def, QWidget *parent);
+    // `texts` translates the row's texts (help, unit, option names) for the dialect.
+    SettingEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent);
     const SettingDef &def() const { return def_; }
     // The value as the schema writes it ("5", "0.05", "GPS", "1", "x,y,z").
     virtual QString value() const = 0;
@@ -31,21 +33,26 @@ signals:
 
 protected:
     void finish(QWidget *input); // layout, tooltip, object name, change signal
+    QString unitSuffix() const;  // " Hz", translated; empty when none
+    const config::SchemaTexts &texts() const { return texts_; }
     bool loading_ = false;
 
 private:
     SettingDef def_;
+    config::SchemaTexts texts_;
 };
 
 // The editor for a schema row.
-SettingEditor *makeSettingEditor(const SettingDef &def, QWidget *parent);
+SettingEditor *makeSettingEditor(const SettingDef &def, const config::SchemaTexts &texts,
+                                 QWidget *parent);
 
 // BASEXYZ / BASEBLH.
 class CoordinateEditor : public SettingEditor {
     Q_OBJECT
 public:
     enum class Kind { Ecef, Geodetic };
-    CoordinateEditor(const SettingDef &def, Kind kind, QWidget *parent);
+    CoordinateEditor(const SettingDef &def, const config::SchemaTexts &texts, Kind kind,
+                     QWidget *parent);
     Kind kind() const { return kind_; }
     QString value() const override;
     void setValue(const QString &value) override;

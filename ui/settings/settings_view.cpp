@@ -72,9 +72,11 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     save_ = new QPushButton(tr("Save to flash"), this);
     defaults_ = new QPushButton(tr("Restore defaults"), this);
     reset_ = new QToolButton(this);
+    reset_->setObjectName("settingsReset");
     reset_->setText(tr("Reset"));
     reset_->setPopupMode(QToolButton::InstantPopup);
     presets_ = new QToolButton(this);
+    presets_->setObjectName("settingsPresets");
     presets_->setText(tr("Presets"));
     presets_->setPopupMode(QToolButton::InstantPopup);
     profiles_ = new QToolButton(this);
@@ -325,6 +327,7 @@ void SettingsView::rebuild() {
     edits_.clear();
     diff_->clear();
     const Dialect *d = engine_->dialect();
+    texts_ = d ? config::SchemaTexts(d->id) : config::SchemaTexts();
     if (!d || d->settings.empty()) {
         help_->setPlainText(d ? tr("The %1 receiver has no settings this program knows.")
                                             .arg(qs(d->displayName))
@@ -341,7 +344,7 @@ void SettingsView::rebuild() {
         QFormLayout *&form = forms[group];
         if (!form) {
             auto *scroll = new QScrollArea(pages_);
-            scroll->setObjectName("page:" + group);
+            scroll->setObjectName("page:" + group); // the schema's name, whatever the language
             scroll->setWidgetResizable(true);
             scroll->setFrameShape(QFrame::NoFrame);
             scroll->viewport()->installEventFilter(this); // rows re-wrap when it resizes
@@ -354,8 +357,8 @@ void SettingsView::rebuild() {
             form->setLabelAlignment(Qt::AlignLeft | Qt::AlignVCenter);
             scroll->setWidget(page);
             pages_->addWidget(scroll);
-            groups_->addItem(group);
-            groupCombo_->addItem(group);
+            groups_->addItem(texts_(def.group));
+            groupCombo_->addItem(texts_(def.group));
         }
         addRow(form, def);
     }
@@ -381,8 +384,8 @@ void SettingsView::rebuild() {
     // Presets of this dialect.
     auto *menu = new QMenu(presets_);
     for (const Preset &p : d->presets) {
-        QAction *a = menu->addAction(qs(p.name));
-        a->setToolTip(qs(p.description));
+        QAction *a = menu->addAction(texts_(p.name));
+        a->setToolTip(texts_(p.description));
         const QString name = qs(p.name);
         connect(a, &QAction::triggered, this, [this, name] { loadPreset(name); });
     }
@@ -394,7 +397,7 @@ void SettingsView::rebuild() {
     for (config::Action a : engine_->availableActions()) {
         if (a == config::Action::SaveToFlash || a == config::Action::RestoreDefaults) continue;
         const ActionDef *def = findAction(*d, a);
-        resets->addAction(tr(std::string(def->label).c_str()), this, [this, a] { runAction(a); });
+        resets->addAction(texts_(def->label), this, [this, a] { runAction(a); });
     }
     delete reset_->menu();
     reset_->setMenu(resets);
@@ -410,12 +413,13 @@ void SettingsView::rebuild() {
 void SettingsView::addRow(QFormLayout *form, const SettingDef &def) {
     // An editor never gets less than it asks for (see SettingEditor): the row wraps, or the
     // page scrolls, instead.
-    SettingEditor *e = makeSettingEditor(def, nullptr);
+    SettingEditor *e = makeSettingEditor(def, texts_, nullptr);
     const std::string key(def.key);
-    auto *label = new QLabel(qs(def.label) + (def.unit.empty() ? "" : " (" + qs(def.unit) + ")"));
+    auto *label =
+            new QLabel(texts_(def.label) + (def.unit.empty() ? "" : " (" + texts_(def.unit) + ")"));
     label->setObjectName("label:" + qs(def.key));
     label->setProperty("settingKey", qs(def.key));
-    label->setToolTip(qs(def.help));
+    label->setToolTip(texts_(def.help));
     label->setBuddy(e->input());
     auto *receiver = new QLabel;
     receiver->setObjectName("receiver:" + qs(def.key));
@@ -484,21 +488,21 @@ void SettingsView::onEdited(SettingEditor *e) {
 
 void SettingsView::showHelp(const SettingDef &def) {
     QString html = QString("<h3>%1</h3><p><code>%2</code></p><p>%3</p>")
-                           .arg(qs(def.label).toHtmlEscaped(), qs(def.key).toHtmlEscaped(),
-                                qs(def.help).toHtmlEscaped());
+                           .arg(texts_(def.label).toHtmlEscaped(), qs(def.key).toHtmlEscaped(),
+                                texts_(def.help).toHtmlEscaped());
     if (def.min || def.max)
         html += "<p>" +
                 tr("Range: %1 to %2 %3")
                         .arg(def.min ? QString::number(*def.min) : "-",
-                             def.max ? QString::number(*def.max) : "-", qs(def.unit)) +
+                             def.max ? QString::number(*def.max) : "-", texts_(def.unit)) +
                 "</p>";
     if (!def.defaultValue.empty())
         html += "<p>" + tr("Default: %1").arg(qs(def.defaultValue).toHtmlEscaped()) + "</p>";
-    html += "<p>" + tr("Written with: %1").arg(qs(def.write).toHtmlEscaped()) + "<br>" +
+    html += "<p>" + tr("Written with: %1").arg(texts_(def.write).toHtmlEscaped()) + "<br>" +
             tr("Read back: %1")
                     .arg(def.access == SettingAccess::WriteOnly
                                  ? tr("cannot be read back (write-only)")
-                                 : qs(def.readBack).toHtmlEscaped()) +
+                                 : texts_(def.readBack).toHtmlEscaped()) +
             "</p>";
     help_->setHtml(html);
 }
@@ -560,10 +564,9 @@ void SettingsView::runAction(config::Action action) {
         status(tr("This receiver has no such command."));
         return;
     }
-    const QString label = tr(std::string(def->label).c_str());
+    const QString label = texts_(def->label);
     if (!confirm_(label,
-                  tr("%1 on the %2?\n\n%3")
-                          .arg(label, qs(d->displayName), tr(std::string(def->effect).c_str()))))
+                  tr("%1 on the %2?\n\n%3").arg(label, qs(d->displayName), texts_(def->effect))))
         return;
     status(tr("%1...").arg(label));
     engine_->runAction(action);
@@ -583,7 +586,7 @@ void SettingsView::loadPreset(const QString &name) {
         status(tr("Preset \"%1\" loaded: %n setting(s) differ from the receiver. Apply sends "
                   "them.",
                   nullptr, static_cast<int>(edits_.size()))
-                       .arg(name));
+                       .arg(texts_(p.name)));
         return;
     }
 }

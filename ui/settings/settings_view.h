@@ -7,6 +7,7 @@
 // defaults / Reset (confirmed), presets, profile import (with its difference) and export; each
 // command's outcome and each setting's verification listed. Knows no vendor: the schema, the engine
 // and the presets table say everything.
+#include "schema_texts.h"
 #include "settings_engine.h"
 
 #include <QWidget>
@@ -76,6 +77,7 @@ private:
     void status(const QString &text);
 
     config::SettingsEngine *engine_;
+    config::SchemaTexts texts_; // the connected dialect's texts, translated
     Confirm confirm_;
     QListWidget *groups_;
     QComboBox *groupCombo_;

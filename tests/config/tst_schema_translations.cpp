@@ -1,0 +1,133 @@
+// The dialects' schema texts in Russian: the catalog lupdate reads (translations/schema_texts.cpp)
+// is the one the dialect records give today; every label, group, unit, option name, help text,
+// action and preset of every built-in dialect has a Russian translation in the application's
+// compiled .qm; and the settings form, built in Russian, shows them.
+#include "engine_rig.h"
+
+#include "dialects.h"
+#include "schema_catalog.h"
+#include "schema_texts.h"
+#include "settings/settings_view.h"
+
+#include <QComboBox>
+#include <QFile>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenu>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QTranslator>
+
+using namespace gnss;
+using namespace gnss::config::test;
+
+namespace {
+
+QString qs(std::string_view s) {
+    return QString::fromUtf8(s.data(), qsizetype(s.size()));
+}
+
+} // namespace
+
+class TstSchemaTranslations : public QObject {
+    Q_OBJECT
+    QTranslator russian_;
+
+    QString ru(std::string_view dialect, std::string_view text) const {
+        return russian_.translate(config::SchemaTexts::context(dialect).constData(),
+                                  std::string(text).c_str());
+    }
+
+private slots:
+    void initTestCase() { QVERIFY2(russian_.load(QStringLiteral(GNSS_RU_QM)), GNSS_RU_QM); }
+
+    void theCatalogIsTheDialectsOfToday() {
+        QFile f(QStringLiteral(GNSS_SCHEMA_CATALOG));
+        QVERIFY2(f.open(QIODevice::ReadOnly), GNSS_SCHEMA_CATALOG);
+        const std::vector<const Dialect *> dialects = builtinDialects();
+        const QByteArray expected = QByteArray::fromStdString(schemaCatalogSource(dialects));
+        QVERIFY2(f.readAll() == expected,
+                 "translations/schema_texts.cpp is stale: run `cmake --build --preset dev "
+                 "--target update_translations` and translate what it adds");
+    }
+
+    void everySchemaTextIsInRussian_data() {
+        QTest::addColumn<QString>("dialect");
+        for (const Dialect *d : builtinDialects())
+            if (!d->settings.empty() || !d->actions.empty())
+                QTest::newRow(d->id.data()) << qs(d->id);
+    }
+    void everySchemaTextIsInRussian() {
+        QFETCH(QString, dialect);
+        const Dialect *d = registry().find(dialect.toStdString());
+        QVERIFY(d);
+        QStringList missing;
+        const std::vector<std::string> texts = schemaTexts(*d);
+        for (const std::string &t : texts)
+            if (ru(d->id, t).isEmpty()) missing << QString::fromStdString(t);
+        QVERIFY2(missing.isEmpty(), qPrintable("no Russian for: " + missing.join(" | ")));
+        QVERIFY(texts.size() > 50);
+    }
+
+    void theSettingsFormSpeaksRussian_data() { everySchemaTextIsInRussian_data(); }
+    void theSettingsFormSpeaksRussian() {
+        QFETCH(QString, dialect);
+        QCoreApplication::installTranslator(&russian_);
+        const auto restore = qScopeGuard([this] { QCoreApplication::removeTranslator(&russian_); });
+        EngineRig rig(dialect);
+        ui::SettingsView view(&rig.engine);
+        const Dialect &d = *rig.dialect;
+        const auto settingsId = d.id;
+
+        // The group list: every page under its Russian name.
+        auto *groups = view.findChild<QListWidget *>("settingGroups");
+        QVERIFY(groups && groups->count() > 0);
+        for (int i = 0; i < groups->count(); ++i)
+            QVERIFY2(!groups->item(i)->text().isEmpty(), qPrintable(groups->item(i)->text()));
+        int rows = 0, enums = 0, units = 0;
+        for (const SettingDef &def : d.settings) {
+            auto *label = view.findChild<QLabel *>("label:" + qs(def.key));
+            if (!label) continue; // actions are buttons
+            ++rows;
+            QVERIFY2(label->text().startsWith(ru(settingsId, def.label)),
+                     qPrintable(label->text()));
+            QCOMPARE(label->toolTip(), ru(settingsId, def.help));
+            QVERIFY(groups->findItems(ru(settingsId, def.group), Qt::MatchExactly).size() == 1);
+            if (!def.unit.empty()) {
+                QVERIFY2(label->text().endsWith("(" + ru(settingsId, def.unit) + ")"),
+                         qPrintable(label->text()));
+                ++units;
+            }
+            if (auto *box = view.findChild<QComboBox *>(qs(def.key))) {
+                for (const SettingOption &o : def.options)
+                    if (o.label != o.value)
+                        QVERIFY2(box->findText(ru(settingsId, o.label), Qt::MatchStartsWith) >= 0,
+                                 qPrintable(qs(def.key) + ": " + qs(o.label)));
+                ++enums;
+            }
+            if (auto *spin = view.findChild<QSpinBox *>(qs(def.key)); spin && !def.unit.empty())
+                QCOMPARE(spin->suffix(), " " + ru(settingsId, def.unit));
+        }
+        QVERIFY(rows > 10);
+        QVERIFY(enums > 0);
+        QVERIFY(units > 0);
+        // Restarts and presets, in the tool buttons' menus.
+        auto menuTexts = [&](const char *button) {
+            QStringList out;
+            auto *b = view.findChild<QToolButton *>(button);
+            if (b && b->menu())
+                for (QAction *a : b->menu()->actions()) out << a->text();
+            return out;
+        };
+        const QStringList resets = menuTexts("settingsReset");
+        for (const ActionDef &a : d.actions)
+            if (a.action != ReceiverAction::SaveToFlash &&
+                a.action != ReceiverAction::RestoreDefaults)
+                QVERIFY2(resets.contains(ru(settingsId, a.label)), qPrintable(resets.join(", ")));
+        const QStringList presets = menuTexts("settingsPresets");
+        for (const Preset &p : d.presets) QVERIFY(presets.contains(ru(settingsId, p.name)));
+    }
+};
+
+QTEST_MAIN(TstSchemaTranslations)
+#include "tst_schema_translations.moc"
