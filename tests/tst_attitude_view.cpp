@@ -49,7 +49,7 @@ private slots:
         QCOMPARE(text(view, "attitudeAccNorth"), QString("0.065 m/s²"));
         QCOMPARE(text(view, "attitudeAccEast"), QString("0.064 m/s²"));
         QCOMPARE(text(view, "attitudeAccDown"), QString("-0.201 m/s²"));
-        QCOMPARE(text(view, "attitudeTime"), QString("14:55:05.200"));
+        QCOMPARE(text(view, "attitudeTime"), QString("14:55:05.200 UTC"));
     }
 
     void missingValuesShowADash() {

@@ -7,15 +7,23 @@
 #include "main_window.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
+#include "preferences_dialog.h"
 #include "startup_options.h"
 #include "views/sky_plot_view.h"
 
+#include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDockWidget>
+#include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTabBar>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -38,11 +46,83 @@ private slots:
         gnss::app::MainWindow w(registry_, transports_, s.get());
         QStringList titles;
         for (QAction *a : w.menuBar()->actions()) titles << a->text().remove('&');
-        QCOMPARE(titles, (QStringList{"File", "Receiver", "View", "Help"}));
+        QCOMPARE(titles, (QStringList{"File", "Edit", "Receiver", "View", "Help"}));
         for (const char *d :
              {"skyDock", "fixDock", "signalDock", "satellitesDock", "consoleDock", "statsDock",
               "infoDock", "rtkDock", "chartsDock", "deviationDock", "attitudeDock"})
             QVERIFY2(w.dock(d), d);
+    }
+
+    // Edit → Preferences: the dialog refuses a bad baud list before anything changes; OK stores
+    // everything and every view showing lengths, coordinates or times follows at once; a new
+    // window starts with them; the language waits for the next start and says so.
+    void preferencesChangeEveryView() {
+        auto s = settings();
+        s->clear();
+        {
+            gnss::app::MainWindow w(registry_, transports_, s.get());
+            w.resize(1280, 800);
+            w.show();
+            w.connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nvs"});
+            QTRY_VERIFY_WITH_TIMEOUT(w.stateModel()->state().epoch.altMsl.has_value(), 20000);
+            const auto *alt = w.findChild<QLabel *>("fixAltMsl");
+            QTRY_VERIFY(alt->text().endsWith(" m"));
+
+            w.findChild<QAction *>("preferencesAction")->trigger();
+            gnss::app::PreferencesDialog *dialog = nullptr;
+            QTRY_VERIFY((dialog = w.findChild<gnss::app::PreferencesDialog *>()) &&
+                        dialog->isVisible());
+            auto *ok = dialog->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok);
+            auto *bauds = dialog->findChild<QLineEdit *>("prefBauds");
+            auto *baudError = dialog->findChild<QLabel *>("prefBaudError");
+            QVERIFY(ok->isEnabled());
+            for (const char *bad : {"9600, 9600", "9600, 12345", "fast", ""}) {
+                bauds->setText(bad);
+                QVERIFY2(!ok->isEnabled(), bad);
+                QVERIFY2(baudError->isVisibleTo(dialog) && !baudError->text().isEmpty(), bad);
+            }
+            bauds->setText("38400, 115200");
+            QVERIFY(ok->isEnabled());
+            auto choose = [dialog](const char *box, const QVariant &data) {
+                auto *c = dialog->findChild<QComboBox *>(box);
+                c->setCurrentIndex(c->findData(data));
+                QVERIFY2(c->currentData() == data, box);
+            };
+            choose("prefUnits", int(gnss::ui::UnitSystem::Imperial));
+            choose("prefCoordinates", int(gnss::ui::CoordinateFormat::DegreesMinutesSeconds));
+            choose("prefTime", int(gnss::ui::TimeZoneChoice::Local));
+            choose("prefLanguage", QString("ru"));
+            QVERIFY(dialog->findChild<QLabel *>("prefLanguageNote")->isVisibleTo(dialog));
+            ok->click();
+
+            QTRY_VERIFY2(alt->text().endsWith(" ft"), qPrintable(alt->text()));
+            QVERIFY(w.findChild<QLabel *>("fixLatitude")->text().contains(QChar(0x2033)));
+            QVERIFY(w.findChild<QLabel *>("fixUtc")->text().contains("UTC+"));
+            const auto *marks = w.findChild<QTableWidget *>("timeMarkTable");
+            QCOMPARE(marks->horizontalHeaderItem(5)->text(), QString("Altitude MSL (ft)"));
+            QCOMPARE(marks->horizontalHeaderItem(2)->text(), QString("Local time"));
+            QCOMPARE(w.controller()->baudCandidates(), (QList<int>{38400, 115200}));
+            QVERIFY(w.statusBar()->currentMessage().contains("next start"));
+            QCOMPARE(s->value("view/units").toString(), QString("imperial"));
+            QCOMPARE(s->value("view/coordinates").toString(), QString("dms"));
+            QCOMPARE(s->value("view/time").toString(), QString("local"));
+            QCOMPARE(s->value("ui/language").toString(), QString("ru"));
+            QCOMPARE(s->value("link/detectionBauds").toString(), QString("38400, 115200"));
+        }
+        {
+            gnss::app::MainWindow w(registry_, transports_, s.get());
+            QCOMPARE(w.preferences().display.units, gnss::ui::UnitSystem::Imperial);
+            QCOMPARE(w.controller()->baudCandidates(), (QList<int>{38400, 115200}));
+            // The view's own coordinate box is the same preference.
+            auto *box = w.findChild<QComboBox *>("coordinateFormat");
+            QCOMPARE(box->currentIndex(), 2);
+            box->setCurrentIndex(1);
+            emit box->activated(1);
+            QCOMPARE(w.preferences().display.coordinates,
+                     gnss::ui::CoordinateFormat::DegreesMinutes);
+            QCOMPARE(s->value("view/coordinates").toString(), QString("dm"));
+        }
+        s->clear();
     }
 
     void simulatedReceiverReachesTheModels() {

@@ -5,6 +5,7 @@
 #include "views/fix_view.h"
 #include "views/receiver_info_view.h"
 
+#include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalSpy>
@@ -39,12 +40,75 @@ private slots:
         QCOMPARE(label(view, "fixAltMsl"), QString("192.245 m"));
         QCOMPARE(label(view, "fixAltEllipsoid"), QString("206.645 m"));
         QCOMPARE(label(view, "fixDops"), QString("1.00 / 0.70 / 0.80")); // HDOP from GGA
-        QCOMPARE(label(view, "fixUtc"), QString("2018-05-31 15:35:56.000"));
+        QCOMPARE(label(view, "fixUtc"), QString("2018-05-31 15:35:56.000 UTC"));
         QCOMPARE(label(view, "fixCorrectionAge"), QString("0.6 s"));
         QCOMPARE(label(view, "fixBaseStation"), QString("100"));
-        QVERIFY(label(view, "fixSpeed").startsWith("0.00 m/s"));
-        view.setDegreesMinutesSeconds(true);
-        QCOMPARE(label(view, "fixLatitude"), QString("55° 50′ 36.1769″ N"));
+        QCOMPARE(label(view, "fixSpeed"), QString("0.00 m/s (0.0 km/h)"));
+    }
+
+    // Preferences: the same epoch in every unit system, coordinate format and time zone.
+    void fixPanelFollowsTheDisplayPreferences_data() {
+        QTest::addColumn<int>("units");
+        QTest::addColumn<int>("coordinates");
+        QTest::addColumn<QString>("latitude");
+        QTest::addColumn<QString>("altitude");
+        QTest::addColumn<QString>("speed");
+        using U = ui::UnitSystem;
+        using C = ui::CoordinateFormat;
+        // 10 kn = 5.144444 m/s = 11.51 mph; 192.245 m = 630.725 ft.
+        QTest::newRow("metric, degrees") << int(U::Metric) << int(C::Degrees) << "55.84338247° N"
+                                         << "192.245 m"
+                                         << "5.14 m/s (18.5 km/h)";
+        QTest::newRow("imperial, deg-min")
+                << int(U::Imperial) << int(C::DegreesMinutes) << "55° 50.602948′ N"
+                << "630.725 ft"
+                << "11.51 mph";
+        QTest::newRow("nautical, DMS")
+                << int(U::Nautical) << int(C::DegreesMinutesSeconds) << "55° 50′ 36.1769″ N"
+                << "192.245 m"
+                << "10.00 kn";
+    }
+    void fixPanelFollowsTheDisplayPreferences() {
+        QFETCH(int, units);
+        QFETCH(int, coordinates);
+        test::SessionFixture f;
+        ui::FixView view(&f.state);
+        f.feed({"$GPRMC,153556.00,A,5550.602948,N,03732.239612,E,010.00000,000.0,310518,,,R*4F",
+                "$GPGGA,153556.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,0014.4,M,000.6,"
+                "0100*46",
+                "GPGGA,153557.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,0014.4,M,000.6,"
+                "0100"}); // the next epoch closes this one
+        ui::DisplayPrefs p;
+        p.units = ui::UnitSystem(units);
+        p.coordinates = ui::CoordinateFormat(coordinates);
+        view.setDisplayPrefs(p);
+        QTEST(label(view, "fixLatitude"), "latitude");
+        QTEST(label(view, "fixAltMsl"), "altitude");
+        QTEST(label(view, "fixSpeed"), "speed");
+        // The view's own box shows the format in force; choosing there tells the window.
+        auto *box = view.findChild<QComboBox *>("coordinateFormat");
+        QCOMPARE(box->currentIndex(), coordinates);
+        QSignalSpy chosen(&view, &ui::FixView::coordinateFormatChosen);
+        box->setCurrentIndex(0);
+        emit box->activated(0);
+        QCOMPARE(chosen.size(), 1);
+        QCOMPARE(label(view, "fixLatitude"), QString("55.84338247° N"));
+    }
+
+    void fixPanelShowsLocalTimeWithItsOffset() {
+        qputenv("TZ", "Europe/Moscow"); // UTC+03:00 all year since 2014
+        test::SessionFixture f;
+        ui::FixView view(&f.state);
+        f.feed({"$GPRMC,223556.00,A,5550.602948,N,03732.239612,E,000.00000,000.0,310518,,,R*4A",
+                "GPRMC,223557.00,A,5550.602948,N,03732.239612,E,000.00000,000.0,310518,,,R"});
+        ui::DisplayPrefs p;
+        p.time = ui::TimeZoneChoice::Local;
+        view.setDisplayPrefs(p);
+        QCOMPARE(label(view, "fixUtc"), QString("2018-06-01 01:35:56.000 UTC+03:00"));
+        p.time = ui::TimeZoneChoice::Utc;
+        view.setDisplayPrefs(p);
+        QCOMPARE(label(view, "fixUtc"), QString("2018-05-31 22:35:56.000 UTC"));
+        qunsetenv("TZ");
     }
 
     void consoleShowsLinesMarksErrorsAndFilters() {

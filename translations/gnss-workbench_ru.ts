@@ -52,7 +52,7 @@
 <context>
     <name>Hemisphere</name>
     <message>
-        <location filename="../ui/views/value_format.cpp" line="+45"/>
+        <location filename="../ui/views/value_format.cpp" line="+106"/>
         <source>N</source>
         <translation>с. ш.</translation>
     </message>
@@ -73,9 +73,27 @@
     </message>
 </context>
 <context>
+    <name>Preferences</name>
+    <message>
+        <location filename="../app/gui/preferences.cpp" line="+55"/>
+        <source>&apos;%1&apos; is not a serial port speed</source>
+        <translation>«%1» — не скорость последовательного порта</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 is listed twice</source>
+        <translation>%1 указана дважды</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>List at least one speed</source>
+        <translation>Укажите хотя бы одну скорость</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
-        <location filename="../app/cli/cmd_config.cpp" line="+113"/>
+        <location filename="../app/cli/cmd_config.cpp" line="+104"/>
         <source>reading the settings failed: %1</source>
         <translation>не удалось прочитать настройки: %1</translation>
     </message>
@@ -196,6 +214,2025 @@
         <location line="+9"/>
         <source>cannot read %1: %2</source>
         <translation>не удаётся прочитать %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>Schema/geostar</name>
+    <message>
+        <location filename="schema_texts.cpp" line="+195"/>
+        <source>Output messages</source>
+        <translation>Выходные сообщения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GGA/GNS output</source>
+        <translation>Выдача GGA/GNS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GGA, and GNS in v4.10 (4.10)</source>
+        <translation>GGA, а в v4.10 также GNS (4.10)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 4 (GGA rate code; 0 = off, 1/2/3/R = on)</source>
+        <translation>ответ NQUERY, поле 4 (код темпа выдачи GGA; 0 = выкл., 1/2/3/R = вкл.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLL output</source>
+        <translation>Выдача GLL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Geographic position (4.11)</source>
+        <translation>Географические координаты (4.11)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 5 (GLL rate code; 0 = off, 1/2/3/R = on)</source>
+        <translation>ответ NQUERY, поле 5 (код темпа выдачи GLL; 0 = выкл., 1/2/3/R = вкл.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GSA output</source>
+        <translation>Выдача GSA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DOP and active satellites (4.12)</source>
+        <translation>Геометрический фактор ухудшения точности (DOP) и активные спутники (4.12)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 6 (GSA rate code; 0 = off, 1/2/3/R = on)</source>
+        <translation>ответ NQUERY, поле 6 (код темпа выдачи GSA; 0 = выкл., 1/2/3/R = вкл.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GSV output</source>
+        <translation>Выдача GSV</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Satellites in view (4.13)</source>
+        <translation>Видимые спутники (4.13)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 7 (GSV rate code; 0 = off, 1/2/3/R = on)</source>
+        <translation>ответ NQUERY, поле 7 (код темпа выдачи GSV; 0 = выкл., 1/2/3/R = вкл.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMC output</source>
+        <translation>Выдача RMC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recommended minimum data (4.14)</source>
+        <translation>Минимальный рекомендованный набор данных (4.14)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 8 (RMC rate code; 0 = off, 1/2/3/R = on)</source>
+        <translation>ответ NQUERY, поле 8 (код темпа выдачи RMC; 0 = выкл., 1/2/3/R = вкл.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VTG output</source>
+        <translation>Выдача VTG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Course and speed (4.15)</source>
+        <translation>Скорость и курс относительно земли (4.15)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 9 (VTG rate code; 0 = off, 1/2/3/R = on)</source>
+        <translation>ответ NQUERY, поле 9 (код темпа выдачи VTG; 0 = выкл., 1/2/3/R = вкл.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ZDA output</source>
+        <translation>Выдача ZDA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time and date (4.16)</source>
+        <translation>Время и дата (4.16)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 11 (ZDA rate code; 0 = off, 1/2/3/R = on)</source>
+        <translation>ответ NQUERY, поле 11 (код темпа выдачи ZDA; 0 = выкл., 1/2/3/R = вкл.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DTM output</source>
+        <translation>Выдача DTM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Datum (4.17)</source>
+        <translation>Система координат (4.17)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 12 (DTM rate code; 0 = off, 1/2/3/R = on)</source>
+        <translation>ответ NQUERY, поле 12 (код темпа выдачи DTM; 0 = выкл., 1/2/3/R = вкл.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RLM output</source>
+        <translation>Выдача RLM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Galileo return link message (4.18)</source>
+        <translation>Сообщение обратного канала Galileo (RLM) (4.18)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 13 (RLM rate code; 0 = off, 1/2/3/R = on)</source>
+        <translation>ответ NQUERY, поле 13 (код темпа выдачи RLM; 0 = выкл., 1/2/3/R = вкл.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMEA version</source>
+        <translation>Версия NMEA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMEA v2.x</source>
+        <translation>NMEA v2.x</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMEA v4.10</source>
+        <translation>NMEA v4.10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMEA 0183 standard of the output: v2.x or v4.10 (4.19)</source>
+        <translation>Версия стандарта NMEA 0183 для выходных сообщений: v2.x или v4.10 (4.19)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 3 (2 = v2.x, 4 = v4.10)</source>
+        <translation>ответ NQUERY, поле 3 (2 = v2.x, 4 = v4.10)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output rate</source>
+        <translation>Темп выдачи</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hz</source>
+        <translation>Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1 Hz</source>
+        <translation>1 Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>2 Hz</source>
+        <translation>2 Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5 Hz</source>
+        <translation>5 Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>10 Hz</source>
+        <translation>10 Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Navigation output rate (4.20)</source>
+        <translation>Темп выдачи выходных данных (4.20)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NQUERY reply, field 2 (0 = 10 Hz, 1 = 5 Hz, 2 = 2 Hz, 3 = 1 Hz); also RQUERY configuration register 1 bits 19:18</source>
+        <translation>ответ NQUERY, поле 2 (0 = 10 Гц, 1 = 5 Гц, 2 = 2 Гц, 3 = 1 Гц); также ответ RQUERY, регистр конфигурации 1, биты 19:18</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power</source>
+        <translation>Питание</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power saving</source>
+        <translation>Энергосбережение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power saving modes on/off; in FIX-BY-REQUEST sleep, PSM ON wakes the receiver (4.21). Read back inferred from table 8 bit 24 (power saving modes enabled).</source>
+        <translation>Включение/выключение режимов энергосбережения; в режиме FIX-BY-REQUEST в состоянии СОН команда PSM ON пробуждает приёмник (4.21). Состояние читается по биту 24 таблицы 8 (режимы энергосбережения разрешены) — это соответствие выведено косвенно.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RQUERY reply, configuration register 1 bit 24</source>
+        <translation>ответ RQUERY, регистр конфигурации 1, бит 24</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Navigation</source>
+        <translation>Навигация</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Elevation mask</source>
+        <translation>Маска угла места</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deg</source>
+        <translation>град</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Satellites below the mask are not used in the solution (4.22)</source>
+        <translation>Спутники с углом места меньше заданной маски не используются в решении (4.22)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not reported by RQUERY or NQUERY</source>
+        <translation>не сообщается ни в RQUERY, ни в NQUERY</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Datum</source>
+        <translation>Система координат</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>WGS-84</source>
+        <translation>WGS-84</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PZ-90.11</source>
+        <translation>ПЗ-90.11</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>user-defined (reported by RQUERY; cannot be selected by an NMEA command)</source>
+        <translation>пользовательская (сообщается в RQUERY; NMEA-командой не выбирается)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Coordinate system of the navigation output (4.23)</source>
+        <translation>Система координат, в которой выдаются навигационные определения (4.23)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RQUERY reply, configuration register 2 bits 15:14 (0 = WGS-84, 1 = PZ-90.11, 2 = user-defined)</source>
+        <translation>ответ RQUERY, регистр конфигурации 2, биты 15:14 (0 = WGS-84, 1 = ПЗ-90.11, 2 = пользовательская)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Constellations</source>
+        <translation>Системы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GPS only</source>
+        <translation>Только GPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS only</source>
+        <translation>Только GLONASS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS+GPS+Galileo</source>
+        <translation>GLONASS+GPS+Galileo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GNSS used: GPS only, GLONASS only or GLONASS+GPS+Galileo (4.24)</source>
+        <translation>Режим использования ГНСС: только GPS, только GLONASS или совмещённый GLONASS+GPS+Galileo (4.24)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RQUERY reply, configuration register 1 bits 2:0 (Galileo, GPS, GLONASS in use)</source>
+        <translation>ответ RQUERY, регистр конфигурации 1, биты 2:0 (использование Galileo, GPS, GLONASS)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Port</source>
+        <translation>Порт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Baud rate</source>
+        <translation>Скорость обмена</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bit/s</source>
+        <translation>бит/с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial port speed; takes effect after the command (4.8)</source>
+        <translation>Скорость обмена последовательного порта; вступает в силу после команды (4.8)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not reported (NQUERY gives the port number only)</source>
+        <translation>не сообщается (NQUERY выдаёт только номер порта)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop bits</source>
+        <translation>Стоповые биты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1 stop bit</source>
+        <translation>1 стоповый бит</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>2 stop bits</source>
+        <translation>2 стоповых бита</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial port stop bits (4.9)</source>
+        <translation>Количество стоповых бит последовательного порта (4.9)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Actions</source>
+        <translation>Действия</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Restart</source>
+        <translation>Перезапуск</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cold start</source>
+        <translation>холодный старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>warm start</source>
+        <translation>тёплый старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hot start</source>
+        <translation>горячий старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cold, warm or hot start (4.3-4.5)</source>
+        <translation>Холодный, тёплый или горячий старт (4.3-4.5)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an action: nothing to read back</source>
+        <translation>действие: читать обратно нечего</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save almanacs</source>
+        <translation>Сохранить альманахи</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>save almanacs to flash</source>
+        <translation>сохранить альманахи во Flash</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save almanacs to flash (4.2)</source>
+        <translation>Сохранение альманахов во Flash (4.2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an action: nothing to read back (RQUERY status bit 30 shows a write in progress)</source>
+        <translation>действие: читать обратно нечего (бит 30 слова состояния в ответе RQUERY показывает, что идёт запись)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary protocol</source>
+        <translation>Бинарный протокол</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>switch the port to the binary protocol</source>
+        <translation>переключить порт в бинарный протокол</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switch the port from NMEA to the binary protocol (4.1)</source>
+        <translation>Переключение порта из протокола NMEA в бинарный протокол (4.1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save to flash</source>
+        <translation>Сохранить во флэш</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The almanacs and the settings in force are written to flash.</source>
+        <translation>Альманахи и действующие настройки записываются во флэш-память.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cold start</source>
+        <translation>Холодный старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The receiver restarts without almanac or ephemeris.</source>
+        <translation>Приёмник перезапускается без альманаха и эфемерид.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Warm start</source>
+        <translation>Тёплый старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The receiver restarts with its almanac.</source>
+        <translation>Приёмник перезапускается с альманахом.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hot start</source>
+        <translation>Горячий старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The receiver restarts with almanac and ephemeris.</source>
+        <translation>Приёмник перезапускается с альманахом и эфемеридами.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GPS+GLONASS, 1 Hz, NMEA 4.10</source>
+        <translation>GPS+GLONASS, 1 Гц, NMEA 4.10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS and GPS (the GeoS-5 combines them with Galileo: mode MIX), 1 Hz, NMEA 4.10, GGA, RMC, GSA and GSV on.</source>
+        <translation>GLONASS и GPS (GeoS-5 совмещает их с Galileo: режим MIX), 1 Гц, NMEA 4.10, включены GGA, RMC, GSA и GSV.</translation>
+    </message>
+</context>
+<context>
+    <name>Schema/nemerix</name>
+    <message>
+        <location line="+5"/>
+        <source>Serial port</source>
+        <translation>Последовательный порт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Protocol</source>
+        <translation>Протокол</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMEA</source>
+        <translation>NMEA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Nemerix binary (under development)</source>
+        <translation>Двоичный Nemerix (в разработке)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Port protocol. Sent with the baud rate (serial.baud is required) and parity.</source>
+        <translation>Протокол порта. Передаётся вместе со скоростью (требуется serial.baud) и чётностью.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Baud rate</source>
+        <translation>Скорость порта</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bit/s</source>
+        <translation>бит/с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial speed; the port switches right after the command. The UART word of PNMRX603 message 0 has no documented layout, so the speed cannot be read back.</source>
+        <translation>Скорость последовательного порта; порт переключается сразу после команды. Формат слова UART в PNMRX603, сообщение 0, не документирован, поэтому скорость обратно не читается.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parity</source>
+        <translation>Чётность</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>None</source>
+        <translation>Нет</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Odd</source>
+        <translation>Нечётная</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Even</source>
+        <translation>Чётная</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parity, sent with the baud rate (serial.baud is required).</source>
+        <translation>Чётность; передаётся вместе со скоростью (требуется serial.baud).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMEA output</source>
+        <translation>Выдача NMEA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GGA interval</source>
+        <translation>Интервал GGA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>s</source>
+        <translation>с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output interval in seconds (0 = not output). Read back from PNMRX603 message 0, message delays, assumed to be in the order GGA GLL GSA GSV RMC VTG ZDA.</source>
+        <translation>Интервал выдачи в секундах (0 = не выдаётся). Читается из PNMRX603, сообщение 0, поля message delay; предполагается порядок GGA GLL GSA GSV RMC VTG ZDA.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 0, message delay (order inferred)</source>
+        <translation>PNMRX603, сообщение 0, message delay (порядок предположительный)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLL interval</source>
+        <translation>Интервал GLL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GSA interval</source>
+        <translation>Интервал GSA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GSV interval</source>
+        <translation>Интервал GSV</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMC interval</source>
+        <translation>Интервал RMC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VTG interval</source>
+        <translation>Интервал VTG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ZDA interval</source>
+        <translation>Интервал ZDA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output sequence</source>
+        <translation>Порядок выдачи</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Messages to output, in this order, separated by &apos;;&apos; (GGA GLL GSA GSV RMC VTG ZDA); the others are disabled, the listed ones output every second until rate.* changes them. The sequence in PNMRX603 message 0 has no documented layout.</source>
+        <translation>Выдаваемые сообщения в нужном порядке через «;» (GGA GLL GSA GSV RMC VTG ZDA); остальные отключаются, перечисленные выдаются раз в секунду, пока настройки rate.* не изменят их интервал. Формат последовательности в PNMRX603, сообщение 0, не документирован.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Nemerix messages</source>
+        <translation>Сообщения Nemerix</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Almanac (PNMRX300)</source>
+        <translation>Альманах (PNMRX300)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Disabled</source>
+        <translation>Отключено</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send now</source>
+        <translation>Выдать сейчас</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send on change</source>
+        <translation>Выдавать при изменении</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Send now and on change</source>
+        <translation>Выдать сейчас и при изменении</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the receiver sends its almanac.</source>
+        <translation>Когда приёмник выдаёт свой альманах.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ephemeris (PNMRX301)</source>
+        <translation>Эфемериды (PNMRX301)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the receiver sends ephemerides.</source>
+        <translation>Когда приёмник выдаёт эфемериды.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ionosphere (PNMRX302)</source>
+        <translation>Ионосфера (PNMRX302)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the receiver sends ionospheric corrections.</source>
+        <translation>Когда приёмник выдаёт ионосферные поправки.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>UTC (PNMRX303)</source>
+        <translation>UTC (PNMRX303)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the receiver sends GPS-UTC parameters.</source>
+        <translation>Когда приёмник выдаёт параметры GPS-UTC.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Health (PNMRX304)</source>
+        <translation>Исправность (PNMRX304)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the receiver sends constellation health.</source>
+        <translation>Когда приёмник выдаёт данные об исправности спутников группировки.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Datum</source>
+        <translation>Датум</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>EGM96 correction</source>
+        <translation>Поправка EGM96</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No geoid correction</source>
+        <translation>Без поправки геоида</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>EGM96 geoid correction (datum 216 only)</source>
+        <translation>Поправка геоида EGM96 (только датум 216)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Apply the EGM96 geoid correction (only meaningful with datum 216).</source>
+        <translation>Применять поправку геоида EGM96 (имеет смысл только с датумом 216).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 4, correction mode</source>
+        <translation>PNMRX603, сообщение 4, correction mode</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Map datum</source>
+        <translation>Датум карты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0-218: internal table; 500: user defined (needs dx, dy, dz, inverse flattening and semi-major axis).</source>
+        <translation>0-218: встроенная таблица; 500: пользовательский (нужны dx, dy, dz, обратное сжатие и большая полуось).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 4, map datum</source>
+        <translation>PNMRX603, сообщение 4, map datum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dx</source>
+        <translation>Dx</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>m</source>
+        <translation>м</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>X offset of the user datum.</source>
+        <translation>Сдвиг пользовательского датума по X.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 4, Dx</source>
+        <translation>PNMRX603, сообщение 4, Dx</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dy</source>
+        <translation>Dy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y offset of the user datum.</source>
+        <translation>Сдвиг пользовательского датума по Y.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 4, Dy</source>
+        <translation>PNMRX603, сообщение 4, Dy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dz</source>
+        <translation>Dz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z offset of the user datum.</source>
+        <translation>Сдвиг пользовательского датума по Z.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 4, Dz</source>
+        <translation>PNMRX603, сообщение 4, Dz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inverse flattening</source>
+        <translation>Обратное сжатие</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1/f of the user ellipsoid (sent as (1/f - 290) x 1e6).</source>
+        <translation>1/f пользовательского эллипсоида (передаётся как (1/f - 290) x 1e6).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 4, inverse flatness</source>
+        <translation>PNMRX603, сообщение 4, inverse flatness</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Semi-major axis</source>
+        <translation>Большая полуось</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Semi-major axis of the user ellipsoid (sent as (a - 6370000) x 1000).</source>
+        <translation>Большая полуось пользовательского эллипсоида (передаётся как (a - 6370000) x 1000).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 4, major axis</source>
+        <translation>PNMRX603, сообщение 4, major axis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fix masks</source>
+        <translation>Маски решения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Local time zone</source>
+        <translation>Часовой пояс</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>h:m</source>
+        <translation>ч:мин</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Local time zone as hours:minutes, hours -13..13 (mask 0).</source>
+        <translation>Местный часовой пояс в виде часы:минуты, часы -13..13 (маска 0).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 1, time offset</source>
+        <translation>PNMRX603, сообщение 1, time offset</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Maximum PDOP</source>
+        <translation>Максимальный PDOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 1 (sent x10).</source>
+        <translation>Маска 1 (передаётся с множителем x10).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 2, MaxPDOP</source>
+        <translation>PNMRX603, сообщение 2, MaxPDOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Maximum HDOP</source>
+        <translation>Максимальный HDOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 2 (sent x10).</source>
+        <translation>Маска 2 (передаётся с множителем x10).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 2, MaxHDOP</source>
+        <translation>PNMRX603, сообщение 2, MaxHDOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Maximum VDOP</source>
+        <translation>Максимальный VDOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 3 (sent x10). Not in the settings report.</source>
+        <translation>Маска 3 (передаётся с множителем x10). В отчёте о настройках отсутствует.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Minimum SNR</source>
+        <translation>Минимальное SNR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dB-Hz</source>
+        <translation>дБГц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 4.</source>
+        <translation>Маска 4.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 2, Min CNO</source>
+        <translation>PNMRX603, сообщение 2, Min CNO</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Minimum elevation</source>
+        <translation>Минимальный угол места</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deg</source>
+        <translation>град</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 5.</source>
+        <translation>Маска 5.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 2, Min Elevation</source>
+        <translation>PNMRX603, сообщение 2, Min Elevation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Noise floor</source>
+        <translation>Уровень шума</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 6.</source>
+        <translation>Маска 6.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 3, Noise floor</source>
+        <translation>PNMRX603, сообщение 3, Noise floor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>2D mode altitude</source>
+        <translation>Высота в режиме 2D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 8: altitude above MSL held in 2D mode. Read back from the report&apos;s &apos;Default altitude&apos; (inferred to be the same value).</source>
+        <translation>Маска 8: высота над уровнем моря, которую приёмник удерживает в режиме 2D. Читается из поля «Default altitude» отчёта (предполагается, что это то же значение).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 3, Default altitude</source>
+        <translation>PNMRX603, сообщение 3, Default altitude</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Maximum altitude</source>
+        <translation>Максимальная высота</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 10. Not in the settings report.</source>
+        <translation>Маска 10. В отчёте о настройках отсутствует.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Navigation mode</source>
+        <translation>Режим навигации</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Auto (hold altitude)</source>
+        <translation>Авто (с удержанием высоты)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>2D</source>
+        <translation>2D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>3D (compute altitude)</source>
+        <translation>3D (с расчётом высоты)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 7. Not in the settings report (the report&apos;s Kalman mode has no documented meaning).</source>
+        <translation>Маска 7. В отчёте о настройках отсутствует (значение поля Kalman mode в отчёте не документировано).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Static navigation</source>
+        <translation>Статическая навигация</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Auto</source>
+        <translation>Авто</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Static</source>
+        <translation>Статика</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mask 9.</source>
+        <translation>Маска 9.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Channel count</source>
+        <translation>Число каналов</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Maximum number of tracking modules used.</source>
+        <translation>Максимальное число используемых модулей слежения (каналов).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNMRX603 message 2, Max TM</source>
+        <translation>PNMRX603, сообщение 2, Max TM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power mode</source>
+        <translation>Режим питания</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operating mode</source>
+        <translation>Режим работы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fully active</source>
+        <translation>Полностью активный</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LDCM1 (low duty cycle)</source>
+        <translation>LDCM1 (прерывистый режим)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Low power starts only once the receiver has a complete almanac and a fix.</source>
+        <translation>Режим пониженного энергопотребления включается, только когда у приёмника есть полный альманах и решение.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RF off period</source>
+        <translation>Время отключения РЧ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RF off time between two fixes in LDCM1 (implies power.mode=1).</source>
+        <translation>Время отключения РЧ-тракта между двумя решениями в режиме LDCM1 (подразумевает power.mode=1).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Restore defaults</source>
+        <translation>Заводские настройки</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The receiver returns to its factory settings and restarts.</source>
+        <translation>Приёмник возвращается к заводским настройкам и перезапускается.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cold start</source>
+        <translation>Холодный старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The receiver restarts without almanac or ephemeris.</source>
+        <translation>Приёмник перезапускается без альманаха и эфемерид.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Warm start</source>
+        <translation>Тёплый старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The receiver restarts with its almanac.</source>
+        <translation>Приёмник перезапускается с альманахом.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hot start</source>
+        <translation>Горячий старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The receiver restarts with almanac and ephemeris.</source>
+        <translation>Приёмник перезапускается с альманахом и эфемеридами.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Minimal output for trackers</source>
+        <translation>Минимальная выдача для трекеров</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMC once a second and nothing else: the least traffic for a tracker.</source>
+        <translation>Только RMC раз в секунду: минимальный трафик для трекера.</translation>
+    </message>
+</context>
+<context>
+    <name>Schema/nvs</name>
+    <message>
+        <location line="-409"/>
+        <source>RTK engine</source>
+        <translation>Модуль RTK</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operation mode</source>
+        <translation>Режим работы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Autonomous</source>
+        <translation>Автономный</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base station</source>
+        <translation>Базовая станция</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTK rover</source>
+        <translation>RTK-ровер</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base station with automatic antenna position averaging</source>
+        <translation>Базовая станция с автоматическим усреднением координат антенны</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTK rover + heading (NV08C-RTK-A only)</source>
+        <translation>RTK-ровер + курс (только NV08C-RTK-A)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setting of operation mode: 0 Autonomous, 1 Base Station, 2 RTK-Rover (by default), 3 Base Station with automatic antenna position averaging, 4 RTK Rover + Heading (NV08C-RTK-A only).</source>
+        <translation>Выбор режима работы: 0 — автономный, 1 — базовая станция, 2 — RTK-ровер (по умолчанию), 3 — базовая станция с автоматическим усреднением координат антенны, 4 — RTK-ровер + курс (только NV08C-RTK-A).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PVT rate</source>
+        <translation>Темп PVT</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hz</source>
+        <translation>Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1 Hz</source>
+        <translation>1 Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>2 Hz</source>
+        <translation>2 Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5 Hz</source>
+        <translation>5 Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>10 Hz</source>
+        <translation>10 Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PVT rate, Hz (1, 2, 5 by default, 10).</source>
+        <translation>Темп решения PVT, Гц (1, 2, 5 по умолчанию, 10).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Use GPS</source>
+        <translation>Использовать GPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off</source>
+        <translation>Выкл.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>On</source>
+        <translation>Вкл.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1 - GPS ON (by default), 0 - GPS OFF.</source>
+        <translation>1 — GPS включён (по умолчанию), 0 — GPS выключен.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Use GLONASS</source>
+        <translation>Использовать GLONASS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1 - GLONASS ON (by default), 0 - GLONASS OFF.</source>
+        <translation>1 — GLONASS включён (по умолчанию), 0 — GLONASS выключен.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Use SBAS</source>
+        <translation>Использовать SBAS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1 - SBAS ON (by default), 0 - SBAS OFF.</source>
+        <translation>1 — SBAS включена (по умолчанию), 0 — SBAS выключена.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GPS elevation mask (RTK)</source>
+        <translation>Маска угла места GPS (RTK)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deg</source>
+        <translation>град</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GPS Elevation Mask for RTK mode, degrees (5 by default).</source>
+        <translation>Маска угла места для GPS в режиме RTK, град (5 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS elevation mask (RTK)</source>
+        <translation>Маска угла места GLONASS (RTK)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS Elevation Mask for RTK mode, degrees (5 by default).</source>
+        <translation>Маска угла места для GLONASS в режиме RTK, град (5 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SBAS elevation mask (RTK)</source>
+        <translation>Маска угла места SBAS (RTK)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SBAS Elevation Mask for RTK mode, degrees (5 by default).</source>
+        <translation>Маска угла места для SBAS в режиме RTK, град (5 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Elevation mask (autonomous)</source>
+        <translation>Маска угла места (автономный режим)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Elevation Mask for Autonomous mode, degrees (5 by default).</source>
+        <translation>Маска угла места для автономного режима, град (5 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SNR mask (RTK)</source>
+        <translation>Маска SNR (RTK)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dB-Hz</source>
+        <translation>дБГц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SNR Mask for RTK mode, dB-Hz (33 by default). Range 0-99 as GSV reports SNR.</source>
+        <translation>Маска SNR для режима RTK, дБГц (33 по умолчанию). Диапазон 0-99 — как SNR в сообщении GSV.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SNR mask (autonomous)</source>
+        <translation>Маска SNR (автономный режим)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SNR Mask for Autonomous mode, dB-Hz (12 by default). Range 0-99 as GSV reports SNR.</source>
+        <translation>Маска SNR для автономного режима, дБГц (12 по умолчанию). Диапазон 0-99 — как SNR в сообщении GSV.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Differential age threshold</source>
+        <translation>Порог возраста поправок</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>s</source>
+        <translation>с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Differential age threshold (max age of RTCM data to use for RTK), seconds (45 by default). Range as PNVGBSS reports the data age (up to 999 s).</source>
+        <translation>Порог возраста дифференциальных поправок (максимальный возраст данных RTCM, используемых для RTK), с (45 по умолчанию). Диапазон соответствует тому, как PNVGBSS сообщает возраст данных (до 999 с).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base station ID</source>
+        <translation>Номер базовой станции</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Station ID for Base mode, 0 - 4095 (2 by default).</source>
+        <translation>Номер станции для режима базовой станции, 0 - 4095 (2 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTCM raw data rate</source>
+        <translation>Темп сырых данных RTCM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Same as PVT rate</source>
+        <translation>Как темп PVT</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every 1 s</source>
+        <translation>Раз в 1 с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every 2 s</source>
+        <translation>Раз в 2 с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every 5 s</source>
+        <translation>Раз в 5 с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every 10 s</source>
+        <translation>Раз в 10 с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rate of RTCM messages with raw data (#1002 and #1010): 0 - same as PVT rate; 1 (by default), 2, 5, 10 - interval between RTCM messages, seconds.</source>
+        <translation>Темп выдачи сообщений RTCM с сырыми данными (#1002 и #1010): 0 — как темп PVT; 1 (по умолчанию), 2, 5, 10 — интервал между сообщениями RTCM, с.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base antenna position (ECEF)</source>
+        <translation>Координаты антенны базы (ECEF)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>m</source>
+        <translation>м</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base Station Antenna Reference Point ECEF-X,Y,Z, m (three values x,y,z).</source>
+        <translation>Опорная точка антенны базовой станции ECEF-X,Y,Z, м (три значения x,y,z).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base antenna position (B,L,H)</source>
+        <translation>Координаты антенны базы (B,L,H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rad,rad,m</source>
+        <translation>рад,рад,м</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base Station Antenna Reference Point. Two formats: B,L,H (radians for B and L, metres for H) or NMEA format (ddmm.mmmm,N,dddmm.mmmm,E,H).</source>
+        <translation>Опорная точка антенны базовой станции. Два формата: B,L,H (радианы для B и L, метры для H) или формат NMEA (ddmm.mmmm,N,dddmm.mmmm,E,H).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base coordinates check threshold</source>
+        <translation>Порог проверки координат базы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>BASE coordinates checking threshold, m (500 m by default). If the distance between BASE coordinates and the current 3D position in BASE mode exceeds it, RTCM output stops, the current position is given in NMEA and PNVGBSS shows the distance.</source>
+        <translation>Порог проверки координат базы (BASE), м (500 м по умолчанию). Если в режиме BASE расстояние между координатами базы и текущим 3D-положением превышает этот порог, выдача RTCM прекращается, в NMEA выдаётся текущее положение, а PNVGBSS показывает это расстояние.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMEA coordinates in base mode</source>
+        <translation>Координаты NMEA в режиме базы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base coordinates</source>
+        <translation>Координаты базы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current 3D coordinates</source>
+        <translation>Текущие 3D-координаты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Type of coordinates used for NMEA output in BASE mode: 0 - BASE coordinates (by default), 1 - current 3D coordinates.</source>
+        <translation>Тип координат, выдаваемых в NMEA в режиме BASE: 0 — координаты базы (по умолчанию), 1 — текущие 3D-координаты.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Position averaging time</source>
+        <translation>Время усреднения координат</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>min</source>
+        <translation>мин</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Antenna position averaging time for Base mode, minutes (30 by default).</source>
+        <translation>Время усреднения координат антенны в режиме базовой станции, мин (30 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Position averaging input</source>
+        <translation>Координаты для усреднения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Any valid coordinates</source>
+        <translation>Любые достоверные координаты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fixed &amp; Float</source>
+        <translation>Fixed и Float</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fixed only</source>
+        <translation>Только Fixed</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Type of coordinates used for antenna position averaging: 0 (by default) - any valid coordinates, 1 - Fixed &amp; Float, 2 - Fixed only.</source>
+        <translation>Тип координат, используемых для усреднения координат антенны: 0 (по умолчанию) — любые достоверные координаты, 1 — Fixed и Float, 2 — только Fixed.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RAIM</source>
+        <translation>RAIM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RAIM mode: 0 - OFF, 1 - ON (by default).</source>
+        <translation>Режим RAIM: 0 — выкл., 1 — вкл. (по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Secondary filter mode</source>
+        <translation>Режим вторичного фильтра</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Disable</source>
+        <translation>Отключён</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retain</source>
+        <translation>Удержание</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Transition</source>
+        <translation>Переход</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hybrid</source>
+        <translation>Гибридный</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Secondary filter mode: 0 (by default) DISABLE - output follows the position type with possible jumps; 1 RETAIN - keep the relative offset; 2 TRANSITION - move slowly to the new position type at the Transfer Speed; 3 HYBRID - TRANSITION towards more accurate types, RETAIN towards less accurate ones.</source>
+        <translation>Режим вторичного фильтра: 0 (по умолчанию) DISABLE — выходные координаты следуют типу решения, возможны скачки; 1 RETAIN — сохраняется относительное смещение; 2 TRANSITION — плавный переход к новому типу решения со скоростью перехода (Transfer Speed); 3 HYBRID — TRANSITION при переходе к более точным типам решения, RETAIN — к менее точным.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Secondary filter transfer speed</source>
+        <translation>Скорость перехода вторичного фильтра</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>m/s</source>
+        <translation>м/с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Transfer Speed for Secondary Filter, m/s (0.05 by default).</source>
+        <translation>Скорость перехода (Transfer Speed) вторичного фильтра, м/с (0.05 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delta-phase filter</source>
+        <translation>Фильтр дельта-фазы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delta-Phase Filter mode: 0 - OFF (by default), 1 - ON.</source>
+        <translation>Режим фильтра дельта-фазы: 0 — выкл. (по умолчанию), 1 — вкл.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VRS mode</source>
+        <translation>Режим VRS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VRS mode: 0 - OFF (by default), 1 - ON.</source>
+        <translation>Режим VRS: 0 — выкл. (по умолчанию), 1 — вкл.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS inter-channel bias</source>
+        <translation>Межканальное смещение GLONASS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cycle</source>
+        <translation>цикл</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS Inter-Channel Bias (0 by default): shift between phases of nearest GLONASS carriers in parts of phase cycle (hence -1..1).</source>
+        <translation>Межканальное смещение GLONASS (0 по умолчанию): сдвиг между фазами соседних несущих GLONASS в долях цикла фазы (отсюда диапазон -1..1).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS ICB calibration</source>
+        <translation>Калибровка ICB GLONASS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Initial calibration (GPS as reference)</source>
+        <translation>Начальная калибровка (опора — GPS)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Real-time recalibration</source>
+        <translation>Перекалибровка в реальном времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS Inter-Channel Bias calibration mode: 0 - OFF (default for RTK FW 0028 and earlier), 1 - initial calibration (once, GPS as reference), 2 - real-time recalibration (default for RTK FW 0029).</source>
+        <translation>Режим калибровки межканального смещения GLONASS: 0 — выкл. (по умолчанию для прошивки RTK FW 0028 и более ранних), 1 — начальная калибровка (однократно, GPS в качестве опоры), 2 — перекалибровка в реальном времени (по умолчанию для прошивки RTK FW 0029).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS ICB calibration interval</source>
+        <translation>Интервал калибровки ICB GLONASS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS Inter-Channel Bias calibration interval (length of one step of calibration), seconds (20 by default).</source>
+        <translation>Интервал калибровки межканального смещения GLONASS (длительность одного шага калибровки), с (20 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS ICB (moving base)</source>
+        <translation>ICB GLONASS (подвижная база)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS Inter-Channel Bias for moving-base mode (0 by default), in parts of phase cycle (hence -1..1).</source>
+        <translation>Межканальное смещение GLONASS для режима подвижной базы (0 по умолчанию), в долях цикла фазы (отсюда диапазон -1..1).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS ICB calibration (moving base)</source>
+        <translation>Калибровка ICB GLONASS (подвижная база)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS Inter-Channel Bias calibration mode for moving-base mode: 0 - OFF (by default), 1 - initial calibration, 2 - real-time recalibration.</source>
+        <translation>Режим калибровки межканального смещения GLONASS для режима подвижной базы: 0 — выкл. (по умолчанию), 1 — начальная калибровка, 2 — перекалибровка в реальном времени.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS ICB calibration interval (moving base)</source>
+        <translation>Интервал калибровки ICB GLONASS (подвижная база)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS Inter-Channel Bias calibration interval for moving-base mode, seconds (20 by default).</source>
+        <translation>Интервал калибровки межканального смещения GLONASS для режима подвижной базы, с (20 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ANT1-ANT2 base-line length</source>
+        <translation>Длина базовой линии ANT1-ANT2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ANT1-ANT2 base-line length for Heading mode, metres (0.0 by default: base-line constraint disabled).</source>
+        <translation>Длина базовой линии ANT1-ANT2 для режима определения курса, м (0.0 по умолчанию: ограничение по длине базовой линии отключено).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Initial GPS week</source>
+        <translation>Начальная неделя GPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Initial GPS Week Number for counting time in Cold Start mode (default value depends on RTK FW release date).</source>
+        <translation>Начальный номер недели GPS для отсчёта времени при холодном старте (значение по умолчанию зависит от даты выпуска прошивки RTK FW).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMEA output</source>
+        <translation>Вывод NMEA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time decimals</source>
+        <translation>Знаков дробной части времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Number of digits in fractional part of time output, 0 to 6 (2 by default). PNVGNME sets time and position decimals together.</source>
+        <translation>Число знаков в дробной части выводимого времени, от 0 до 6 (2 по умолчанию). PNVGNME задаёт число знаков времени и координат одновременно.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none documented (PNVGNME answers only when set)</source>
+        <translation>не описано (PNVGNME отвечает только при установке)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Position decimals</source>
+        <translation>Знаков дробной части координат</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Number of digits in fractional part of position output, 0 to 9 (7 by default).</source>
+        <translation>Число знаков в дробной части выводимых координат, от 0 до 9 (7 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Talker ID compatibility</source>
+        <translation>Совместимость Talker ID</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GGA and RMC talker always GP</source>
+        <translation>Talker ID для GGA и RMC всегда GP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compatibility off: talker as specified</source>
+        <translation>Без совместимости: Talker ID по описанию</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 - Talker ID for GGA and RMC always GP (by default); 1 - compatibility mode off, talker ID as specified (GN for combined solutions). Optional field.</source>
+        <translation>0 — Talker ID для GGA и RMC всегда GP (по умолчанию); 1 — режим совместимости выключен, Talker ID согласно описанию сообщений (GN для совмещённого решения). Необязательное поле.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ports</source>
+        <translation>Порты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM1 baud rate</source>
+        <translation>Скорость COM1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bit/s</source>
+        <translation>бит/с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Port baud rate, in bauds from 4,800 to 460,800 (115,200 by default, Table 1). The receiver answers with PNVGRZA and then switches.</source>
+        <translation>Скорость порта в бодах, от 4800 до 460800 (115200 по умолчанию, Table 1). Приёмник отвечает сообщением PNVGRZA и затем переключается на новую скорость.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none documented (PNVGRZA answers only when set)</source>
+        <translation>не описано (PNVGRZA отвечает только при установке)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM1 protocol</source>
+        <translation>Протокол COM1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Disabled</source>
+        <translation>Отключён</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMEA 0183</source>
+        <translation>NMEA 0183</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTCM</source>
+        <translation>RTCM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Protocol type: 0 disable, 1 NMEA 0183, 7 RTCM. Sent together with the baud rate.</source>
+        <translation>Тип протокола: 0 — отключён, 1 — NMEA 0183, 7 — RTCM. Передаётся вместе со скоростью порта.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM2 baud rate</source>
+        <translation>Скорость COM2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM2 protocol</source>
+        <translation>Протокол COM2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>USB baud rate</source>
+        <translation>Скорость USB</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>USB protocol</source>
+        <translation>Протокол USB</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output</source>
+        <translation>Вывод</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM1 output messages</source>
+        <translation>Сообщения на COM1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Messages transmitted on COM1 and their output rates in PVT update intervals, as ADDRESS:RATE items separated by &apos;;&apos; (&quot;RMC:1;GSV:5;PNVGTST:10&quot;); at most 20 messages. Written as a clear followed by one add.</source>
+        <translation>Сообщения, выдаваемые на COM1, и их темп в интервалах обновления PVT, в виде элементов ADDRESS:RATE через «;» («RMC:1;GSV:5;PNVGTST:10»); не более 20 сообщений. Записывается как очистка списка, за которой следует одно добавление.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none documented</source>
+        <translation>не описано</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM2 output messages</source>
+        <translation>Сообщения на COM2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Messages transmitted on COM2 and their output rates in PVT update intervals, as ADDRESS:RATE items separated by &apos;;&apos; (&quot;RMC:1;GSV:5;PNVGTST:10&quot;); at most 20 messages. Written as a clear followed by one add.</source>
+        <translation>Сообщения, выдаваемые на COM2, и их темп в интервалах обновления PVT, в виде элементов ADDRESS:RATE через «;» («RMC:1;GSV:5;PNVGTST:10»); не более 20 сообщений. Записывается как очистка списка, за которой следует одно добавление.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>USB output messages</source>
+        <translation>Сообщения на USB</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Messages transmitted on USB and their output rates in PVT update intervals, as ADDRESS:RATE items separated by &apos;;&apos; (&quot;RMC:1;GSV:5;PNVGTST:10&quot;); at most 20 messages. Written as a clear followed by one add.</source>
+        <translation>Сообщения, выдаваемые на USB, и их темп в интервалах обновления PVT, в виде элементов ADDRESS:RATE через «;» («RMC:1;GSV:5;PNVGTST:10»); не более 20 сообщений. Записывается как очистка списка, за которой следует одно добавление.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time pulse</source>
+        <translation>Импульс времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time pulse type</source>
+        <translation>Тип импульса времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Software-synchronised</source>
+        <translation>Программно синхронизированный</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hardware-synchronised (aligned to internal timescale)</source>
+        <translation>Аппаратно синхронизированный (привязан к внутренней шкале времени)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P (by default) - software-synchronised time pulse; A - hardware-synchronised (aligned to internal timescale).</source>
+        <translation>P (по умолчанию) — программно синхронизированный импульс времени; A — аппаратно синхронизированный (привязан к внутренней шкале времени).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Software time pulse</source>
+        <translation>Программный импульс времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Interval: pulse at PVT update rate</source>
+        <translation>Интервальный: импульс с темпом обновления PVT</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1PPS</source>
+        <translation>1PPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>I - interval time pulse at PVT update rate; S (by default) - 1PPS, one pulse per second.</source>
+        <translation>I — интервальный импульс с темпом обновления PVT; S (по умолчанию) — 1PPS, один импульс в секунду.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1PPS reference</source>
+        <translation>Опорная шкала 1PPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>UTC</source>
+        <translation>UTC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>UTC(SU)</source>
+        <translation>UTC(SU)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLONASS time</source>
+        <translation>Время GLONASS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GPS time</source>
+        <translation>Время GPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1PPS time pulse reference: U - UTC (by default), S - UTC(SU), G - GLONASS time, N - GPS time. Applies to 1PPS only.</source>
+        <translation>Опорная шкала времени для импульса 1PPS: U — UTC (по умолчанию), S — UTC(SU), G — время GLONASS, N — время GPS. Применяется только к 1PPS.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timescale adjustment</source>
+        <translation>Подстройка шкалы времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Internal receiver timescale adjustment: 1 - On (by default), adjusted once the offset to UTC exceeds 1 ms; 0 - Off (not recommended).</source>
+        <translation>Подстройка внутренней шкалы времени приёмника: 1 — вкл. (по умолчанию), шкала подстраивается, как только её расхождение с UTC превышает 1 мс; 0 — выкл. (не рекомендуется).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pulse duration</source>
+        <translation>Длительность импульса</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>us</source>
+        <translation>мкс</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Software-defined time pulse duration in microseconds, 1 to 1000 (1000 by default).</source>
+        <translation>Длительность программно формируемого импульса времени в микросекундах, от 1 до 1000 (1000 по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PPS validity control</source>
+        <translation>Контроль достоверности PPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enabled</source>
+        <translation>Включён</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output PPS only with a valid navigation solution and UTC parameters: E - enabled, D - disabled (by default).</source>
+        <translation>Выдавать PPS только при достоверном навигационном решении и наличии параметров UTC: E — включено, D — выключено (по умолчанию).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Antenna cable delay</source>
+        <translation>Задержка в антенном кабеле</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ns</source>
+        <translation>нс</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delay in antenna cable in nanoseconds (0 by default). Range from the field&apos;s four digits (xxxx).</source>
+        <translation>Задержка в антенном кабеле в наносекундах (0 по умолчанию). Диапазон определяется четырьмя цифрами поля (xxxx).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base stations</source>
+        <translation>Базовые станции</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base station filter</source>
+        <translation>Фильтр базовых станций</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Any base station</source>
+        <translation>Любая базовая станция</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only base stations from the list</source>
+        <translation>Только базовые станции из списка</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 - the receiver may use any base station (by default); 1 - only base stations from the list are allowed.</source>
+        <translation>0 — приёмник может использовать любую базовую станцию (по умолчанию); 1 — разрешены только базовые станции из списка.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none documented ($PNVGIDL,MODE,&lt;x&gt; is echoed when set)</source>
+        <translation>не описано (при установке приёмник возвращает $PNVGIDL,MODE,&lt;x&gt;)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Known base stations</source>
+        <translation>Известные базовые станции</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Known base stations (at most 32) as ID:ICB items separated by &apos;;&apos; (&quot;3:0.072;43:0&quot;); ID 0-4095, ICB = GLONASS inter-channel bias in parts of phase cycle. Written as CLEAR then one ADD per station.</source>
+        <translation>Известные базовые станции (не более 32) в виде элементов ID:ICB через «;» («3:0.072;43:0»); ID 0-4095, ICB — межканальное смещение GLONASS в долях цикла фазы. Записывается командой CLEAR, а затем по одной команде ADD на каждую станцию.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save to flash</source>
+        <translation>Сохранить во флэш</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The settings in force are written to flash and survive a power cycle.</source>
+        <translation>Действующие настройки записываются во флэш-память и сохраняются после выключения питания.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Restore defaults</source>
+        <translation>Заводские настройки</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The saved settings are erased and the receiver restarts with the factory defaults.</source>
+        <translation>Сохранённые настройки стираются, и приёмник перезапускается с заводскими настройками.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cold start</source>
+        <translation>Холодный старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The receiver restarts without almanac or ephemeris; settings are kept.</source>
+        <translation>Приёмник перезапускается без альманаха и эфемерид; настройки сохраняются.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Warm start</source>
+        <translation>Тёплый старт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The receiver restarts with its almanac; settings are kept.</source>
+        <translation>Приёмник перезапускается с имеющимся альманахом; настройки сохраняются.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTK rover 5 Hz</source>
+        <translation>RTK-ровер 5 Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTK rover at 5 Hz on GPS, GLONASS and SBAS; real-time GLONASS bias calibration, hybrid secondary filter.</source>
+        <translation>RTK-ровер с темпом 5 Гц по GPS, GLONASS и SBAS; калибровка межканального смещения GLONASS в реальном времени, гибридный вторичный фильтр.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base station, averaging 30 min</source>
+        <translation>Базовая станция, усреднение 30 мин</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base station that averages its antenna position for 30 minutes from any valid fix, then sends RTCM raw data every second.</source>
+        <translation>Базовая станция, которая усредняет координаты антенны в течение 30 минут по любому достоверному решению, а затем выдаёт сырые данные RTCM каждую секунду.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moving base with heading</source>
+        <translation>Подвижная база с курсом</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTK rover with heading (NV08C-RTK-A) at 5 Hz, GLONASS bias calibration for a moving base.</source>
+        <translation>RTK-ровер с определением курса (NV08C-RTK-A) с темпом 5 Гц, калибровка межканального смещения GLONASS для подвижной базы.</translation>
     </message>
 </context>
 <context>
@@ -324,9 +2361,57 @@
         <translation>Неизвестный имитатор приёмника «%1» (допустимо: %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="+67"/>
+        <location filename="../app/gui/main.cpp" line="+73"/>
         <source>Unknown dock &apos;%1&apos; (use %2)</source>
         <translation>Неизвестная панель «%1» (допустимо: %2)</translation>
+    </message>
+</context>
+<context>
+    <name>Units</name>
+    <message>
+        <location filename="../ui/views/value_format.cpp" line="+4"/>
+        <source>ft</source>
+        <translation>фт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>m</source>
+        <translation>м</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>mph</source>
+        <translation>миль/ч</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>kn</source>
+        <translation>уз</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>m/s</source>
+        <translation>м/с</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>km/h</source>
+        <translation>км/ч</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>mi</source>
+        <translation>миль</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>NM</source>
+        <translation>мор. миль</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>km</source>
+        <translation>км</translation>
     </message>
 </context>
 <context>
@@ -426,12 +2511,12 @@ Serial number: %3</source>
     <name>gnss::app::ConnectionController</name>
     <message>
         <location filename="../app/gui/connection_controller.cpp" line="+23"/>
-        <location line="+140"/>
+        <location line="+148"/>
         <source>Not connected</source>
         <translation>Нет подключения</translation>
     </message>
     <message>
-        <location line="-107"/>
+        <location line="-115"/>
         <source>No source chosen</source>
         <translation>Источник не выбран</translation>
     </message>
@@ -468,12 +2553,12 @@ Serial number: %3</source>
         <translation>%1: определение скорости…</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+137"/>
         <source>%1 cannot take commands</source>
         <translation>%1 не принимает команды</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-126"/>
         <source>Baud rate not found: %1</source>
         <translation>Скорость не найдена: %1</translation>
     </message>
@@ -518,7 +2603,7 @@ Serial number: %3</source>
         <translation>Подключено: %1 (определено)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+28"/>
         <source>Not connected: nothing was sent</source>
         <translation>Нет подключения: ничего не отправлено</translation>
     </message>
@@ -536,7 +2621,7 @@ Serial number: %3</source>
         <translation>Пароль не сохранён в связке ключей: %1</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+80"/>
         <source>Stopped</source>
         <translation>Остановлено</translation>
     </message>
@@ -549,12 +2634,12 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+51"/>
+        <location filename="../app/gui/main_window.cpp" line="+52"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+236"/>
+        <location line="+255"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
@@ -569,7 +2654,7 @@ Serial number: %3</source>
         <translation>В&amp;ыход</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+9"/>
         <source>&amp;Receiver</source>
         <translation>&amp;Приёмник</translation>
     </message>
@@ -599,7 +2684,7 @@ Serial number: %3</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+28"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
@@ -614,12 +2699,12 @@ Serial number: %3</source>
         <translation>О &amp;Qt</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-65"/>
         <source>Open Log</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location line="-210"/>
+        <location line="-229"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -639,12 +2724,12 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+77"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Fix and position</source>
         <translation>Решение и координаты</translation>
     </message>
@@ -654,7 +2739,7 @@ Serial number: %3</source>
         <translation>Решение</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+10"/>
         <location line="+1"/>
         <source>Signal levels</source>
         <translation>Уровни сигналов</translation>
@@ -690,33 +2775,32 @@ Serial number: %3</source>
         <translation>Сведения о приёмнике</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>RTK</source>
         <translation>RTK</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Charts</source>
         <translation>Графики</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Deviation</source>
         <translation>Разброс</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Attitude</source>
         <translation>Ориентация</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Attitude and time marks</source>
         <translation>Ориентация и метки времени</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>Corrections</source>
         <translation>Поправки</translation>
     </message>
@@ -756,7 +2840,22 @@ Serial number: %3</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+6"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Правка</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Preferences...</source>
+        <translation>&amp;Параметры...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ctrl+,</source>
+        <translation>Ctrl+,</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Sky plot &amp;tracks</source>
         <translation>&amp;Треки на небосводе</translation>
     </message>
@@ -786,7 +2885,7 @@ Serial number: %3</source>
         <translation>Тёмное</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+18"/>
         <source>About GNSS Workbench</source>
         <translation>О программе GNSS Workbench</translation>
     </message>
@@ -826,7 +2925,7 @@ Serial number: %3</source>
         <translation>● ЗАПИСЬ</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
@@ -850,6 +2949,11 @@ Serial number: %3</source>
         <source>Cannot record to %1: connect to a receiver first, and check the folder is writable.</source>
         <translation>Не удаётся записывать в %1: сначала подключитесь к приёмнику и проверьте, что папка доступна для записи.</translation>
     </message>
+    <message>
+        <location line="+78"/>
+        <source>The new language is used from the next start of GNSS Workbench.</source>
+        <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
+    </message>
 </context>
 <context>
     <name>gnss::app::PasswordKeychain</name>
@@ -861,9 +2965,102 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
+    <name>gnss::app::PreferencesDialog</name>
+    <message>
+        <location filename="../app/gui/preferences_dialog.cpp" line="+28"/>
+        <source>Preferences</source>
+        <translation>Параметры</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>System (%1)</source>
+        <translation>Как в системе (%1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Language:</source>
+        <translation>&amp;Язык:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The new language is used from the next start of GNSS Workbench.</source>
+        <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Follow the system</source>
+        <translation>Как в системе</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Light</source>
+        <translation>Светлое</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dark</source>
+        <translation>Тёмное</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Theme:</source>
+        <translation>&amp;Оформление:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Metric (m, m/s, km)</source>
+        <translation>Метрические (м, м/с, км)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Imperial (ft, mph, mi)</source>
+        <translation>Английские (фт, миль/ч, мили)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Nautical (m, kn, NM)</source>
+        <translation>Морские (м, уз, мор. мили)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Units:</source>
+        <translation>&amp;Единицы:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Coordinates:</source>
+        <translation>&amp;Координаты:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>UTC</source>
+        <translation>UTC</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Local time (UTC%1%2:%3)</source>
+        <translation>Местное время (UTC%1%2:%3)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>T&amp;ime:</source>
+        <translation>&amp;Время:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The serial speeds baud &quot;auto&quot; tries, in this order, separated by commas</source>
+        <translation>Скорости порта, которые перебирает режим «авто», в этом порядке, через запятую</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Baud rates to try:</source>
+        <translation>&amp;Скорости для перебора:</translation>
+    </message>
+</context>
+<context>
     <name>gnss::config::SettingsEngine</name>
     <message>
-        <location filename="../protocol/config/settings_engine.cpp" line="+31"/>
+        <location filename="../protocol/config/settings_engine.cpp" line="+32"/>
         <source>verified</source>
         <translation>проверено</translation>
     </message>
@@ -1726,7 +3923,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::AttitudeView</name>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="+42"/>
+        <location filename="../ui/views/attitude_view.cpp" line="+38"/>
         <source>Attitude</source>
         <translation>Ориентация</translation>
     </message>
@@ -1747,8 +3944,8 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>Time (UTC)</source>
-        <translation>Время (UTC)</translation>
+        <source>Time</source>
+        <translation>Время</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1776,7 +3973,17 @@ Serial number: %3</source>
         <translation>Метки времени (новые сверху)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+40"/>
+        <source>UTC</source>
+        <translation>UTC</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Local time</source>
+        <translation>Местное время</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Counter</source>
         <translation>Счётчик</translation>
     </message>
@@ -1786,12 +3993,12 @@ Serial number: %3</source>
         <translation>Время недели GPS (с)</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>UTC</source>
-        <translation>UTC</translation>
+        <location line="+2"/>
+        <source>Altitude MSL (%1)</source>
+        <translation>Высота над уровнем моря (%1)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-1"/>
         <source>Latitude</source>
         <translation>Широта</translation>
     </message>
@@ -1801,12 +4008,7 @@ Serial number: %3</source>
         <translation>Долгота</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>Altitude MSL (m)</source>
-        <translation>Высота над уровнем моря (м)</translation>
-    </message>
-    <message>
-        <location line="+36"/>
+        <location line="+15"/>
         <source>m/s²</source>
         <translation>м/с²</translation>
     </message>
@@ -1828,7 +4030,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ChartsView</name>
     <message>
-        <location filename="../ui/views/charts_view.cpp" line="+108"/>
+        <location filename="../ui/views/charts_view.cpp" line="+110"/>
         <source>Series</source>
         <translation>Ряды</translation>
     </message>
@@ -1843,7 +4045,7 @@ Serial number: %3</source>
         <translation> мин</translation>
     </message>
     <message>
-        <location line="+184"/>
+        <location line="+193"/>
         <source>minutes before the latest epoch</source>
         <translation>минуты до последней эпохи</translation>
     </message>
@@ -1914,7 +4116,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CoordinateEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="+265"/>
+        <location filename="../ui/settings/setting_editors.cpp" line="+273"/>
         <location line="+1"/>
         <location line="+1"/>
         <location line="+8"/>
@@ -2046,12 +4248,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+90"/>
+        <location line="+91"/>
         <source>not stored</source>
         <translation>не сохраняется</translation>
     </message>
     <message>
-        <location line="-89"/>
+        <location line="-90"/>
         <source>Password</source>
         <translation>Пароль</translation>
     </message>
@@ -2077,12 +4279,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+141"/>
+        <location line="+143"/>
         <source>Start</source>
         <translation>Запустить</translation>
     </message>
     <message>
-        <location line="-137"/>
+        <location line="-139"/>
         <source>Not started</source>
         <translation>Не запущено</translation>
     </message>
@@ -2127,12 +4329,12 @@ Serial number: %3</source>
         <translation>Приёмник</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>kept in the keychain</source>
         <translation>хранится в связке ключей</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>Give the host of the corrections.</source>
         <translation>Укажите хост источника поправок.</translation>
     </message>
@@ -2177,9 +4379,9 @@ Serial number: %3</source>
         <translation>%1 с</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>%1, %2, %3 m</source>
-        <translation>%1, %2, %3 м</translation>
+        <location line="+5"/>
+        <source>%1, %2, %3</source>
+        <translation>%1, %2, %3</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2192,12 +4394,7 @@ Serial number: %3</source>
         <translation>Базовая станция %1 (%2): %3; расстояние до ровера %4</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1 km</source>
-        <translation>%1 км</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Base station: not yet received (1005/1006)</source>
         <translation>Базовая станция: данных пока нет (1005/1006)</translation>
     </message>
@@ -2230,35 +4427,35 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::DeviationView</name>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="+84"/>
+        <location filename="../ui/views/deviation_view.cpp" line="+81"/>
         <source>No position yet</source>
         <translation>Координат пока нет</translation>
     </message>
     <message>
-        <location line="+39"/>
-        <source>East (m)</source>
-        <translation>Восток (м)</translation>
+        <location line="+41"/>
+        <source>East (%1)</source>
+        <translation>Восток (%1)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>North (m)</source>
-        <translation>Север (м)</translation>
+        <source>North (%1)</source>
+        <translation>Север (%1)</translation>
     </message>
     <message>
         <location line="+35"/>
-        <location line="+108"/>
+        <location line="+109"/>
         <source>CEP50</source>
         <translation>CEP50</translation>
     </message>
     <message>
-        <location line="-107"/>
-        <location line="+108"/>
+        <location line="-108"/>
+        <location line="+109"/>
         <source>CEP95</source>
         <translation>CEP95</translation>
     </message>
     <message>
-        <location line="-107"/>
-        <location line="+108"/>
+        <location line="-108"/>
+        <location line="+109"/>
         <source>2DRMS</source>
         <translation>2DRMS</translation>
     </message>
@@ -2314,7 +4511,7 @@ Serial number: %3</source>
         <translation>Опорная точка не используется: введите градусы, например 55.75123456 N и 37.61812345 E (или со знаком: -33.9 для южной широты). Центр — по среднему положению.</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+26"/>
         <source>reference %1, %2</source>
         <translation>опорная точка %1, %2</translation>
     </message>
@@ -2324,7 +4521,7 @@ Serial number: %3</source>
         <translation>среднее %1, %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>%1 east, %2 north</source>
         <translation>%1 на восток, %2 на север</translation>
     </message>
@@ -2342,7 +4539,17 @@ Serial number: %3</source>
         <translation>Град. мин. сек.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+0"/>
+        <source>Deg min</source>
+        <translation>Град. мин.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How coordinates are written (also in Preferences)</source>
+        <translation>Как записываются координаты (также в «Параметрах»)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Latitude</source>
         <translation>Широта</translation>
     </message>
@@ -2373,8 +4580,8 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>UTC</source>
-        <translation>UTC</translation>
+        <source>Time</source>
+        <translation>Время</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2402,18 +4609,7 @@ Serial number: %3</source>
         <translation>Нет данных</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+1"/>
-        <source>m</source>
-        <translation>м</translation>
-    </message>
-    <message>
-        <location line="+22"/>
-        <source>%1 m/s  (%2 km/h)</source>
-        <translation>%1 м/с  (%2 км/ч)</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+32"/>
         <source>s</source>
         <translation>с</translation>
     </message>
@@ -2683,7 +4879,7 @@ Serial number: %3</source>
         <translation>EDOP</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+64"/>
         <source>Autonomous</source>
         <translation>Автономный</translation>
     </message>
@@ -2693,17 +4889,7 @@ Serial number: %3</source>
         <translation>Дифференциальный</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>m</source>
-        <translation>м</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>m/s</source>
-        <translation>м/с</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+28"/>
         <source>s</source>
         <translation>с</translation>
     </message>
@@ -2779,7 +4965,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SettingEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="-40"/>
+        <location filename="../ui/settings/setting_editors.cpp" line="-41"/>
         <source>Range: %1 to %2 %3</source>
         <translation>Диапазон: от %1 до %2 %3</translation>
     </message>
@@ -2827,12 +5013,12 @@ Serial number: %3</source>
         <translation>Заводские настройки</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Reset</source>
         <translation>Сброс</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Presets</source>
         <translation>Предустановки</translation>
     </message>
@@ -2924,7 +5110,7 @@ Serial number: %3</source>
         <translation>Нет настроек, содержащих «%1».</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>The %1 receiver has no settings this program knows.</source>
         <translation>У приёмника %1 нет настроек, известных программе.</translation>
     </message>
@@ -2949,7 +5135,7 @@ Serial number: %3</source>
         <translation>%1: выберите настройку, чтобы увидеть справку.</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+47"/>
         <source>receiver: %1</source>
         <translation>в приёмнике: %1</translation>
     </message>
@@ -3017,7 +5203,7 @@ Serial number: %3</source>
 %3</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>%1...</source>
         <translation>%1...</translation>
     </message>
@@ -3184,7 +5370,7 @@ elevation %3°, azimuth %4°</source>
 <context>
     <name>gnss::ui::TextEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="-46"/>
+        <location filename="../ui/settings/setting_editors.cpp" line="-52"/>
         <source>items separated by &apos;;&apos;</source>
         <translation>элементы через «;»</translation>
     </message>
@@ -3193,12 +5379,12 @@ elevation %3°, azimuth %4°</source>
     <name>gnss::ui::TimeSeriesModel</name>
     <message>
         <location filename="../ui/models/time_series_model.cpp" line="+145"/>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Satellites used</source>
         <translation>Спутники в решении</translation>
     </message>
     <message>
-        <location line="-35"/>
+        <location line="-36"/>
         <source>HDOP</source>
         <translation>HDOP</translation>
     </message>
@@ -3209,12 +5395,12 @@ elevation %3°, azimuth %4°</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>Fix type</source>
         <translation>Тип решения</translation>
     </message>
     <message>
-        <location line="-34"/>
+        <location line="-35"/>
         <source>Std. dev. latitude</source>
         <translation>СКО широты</translation>
     </message>
@@ -3249,7 +5435,7 @@ elevation %3°, azimuth %4°</source>
         <translation>Среднее С/Ш %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>DOP</source>
         <translation>DOP</translation>
     </message>
@@ -3260,23 +5446,23 @@ elevation %3°, azimuth %4°</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>Standard deviation (m)</source>
-        <translation>СКО (м)</translation>
+        <source>Standard deviation (%1)</source>
+        <translation>СКО (%1)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Baseline length (m)</source>
-        <translation>Длина базовой линии (м)</translation>
+        <source>Baseline length (%1)</source>
+        <translation>Длина базовой линии (%1)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Altitude above sea level (m)</source>
-        <translation>Высота над уровнем моря (м)</translation>
+        <source>Altitude above sea level (%1)</source>
+        <translation>Высота над уровнем моря (%1)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Speed (m/s)</source>
-        <translation>Скорость (м/с)</translation>
+        <source>Speed (%1)</source>
+        <translation>Скорость (%1)</translation>
     </message>
 </context>
 </TS>

@@ -149,6 +149,14 @@ void ConnectionController::setConnected(const QString &description) {
                                                  : tr("Connected: %1").arg(description));
 }
 
+void ConnectionController::setBaudCandidates(const QList<int> &rates) {
+    opener_->setCandidateRates(rates);
+}
+
+QList<int> ConnectionController::baudCandidates() const {
+    return opener_->candidateRates();
+}
+
 void ConnectionController::retryNow() {
     if (connection_) connection_->retryNow();
 }

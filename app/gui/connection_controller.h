@@ -50,6 +50,9 @@ public:
     QString detectionDetail() const { return detectionDetail_; }
     // Tries a lost link again now (a device was plugged in) instead of at the planned time.
     void retryNow();
+    // The rates baud "auto" tries, in order (Preferences); empty: the built-in order.
+    void setBaudCandidates(const QList<int> &rates);
+    QList<int> baudCandidates() const;
 
     // Sends a complete sentence through the command queue; false (with why) before anything is
     // sent when there is no link, the link takes no commands, or the sentence is refused.

@@ -2,6 +2,7 @@
 #include "app_transports.h"
 #include "dialects.h"
 #include "main_window.h"
+#include "preferences.h"
 #include "startup_options.h"
 #include "style/app_icon.h"
 #include "window_screenshot.h"
@@ -27,13 +28,19 @@ int main(int argc, char **argv) {
     // The installed desktop entry (packaging/): Wayland compositors match windows to it by this.
     QApplication::setDesktopFileName(QStringLiteral(GNSS_APP_ID));
 
-    // The interface in the user's language where we have it (translations/), Qt's own strings too.
+    // The interface in the language of the preferences (the system's by default) where we have
+    // it (translations/), Qt's own strings too. English is the source language: no translator.
+    QSettings settings;
+    const QString language = gnss::app::Preferences::load(settings).language;
+    const QLocale locale(gnss::app::localeNameFor(language));
     QTranslator qtTranslator, appTranslator;
-    if (qtTranslator.load(QLocale(), "qtbase", "_",
-                          QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(&qtTranslator);
-    if (appTranslator.load(QLocale(), "gnss-workbench", "_", ":/i18n"))
-        QApplication::installTranslator(&appTranslator);
+    if (language != QLatin1String("en")) {
+        if (qtTranslator.load(locale, "qtbase", "_",
+                              QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+            QApplication::installTranslator(&qtTranslator);
+        if (appTranslator.load(locale, "gnss-workbench", "_", ":/i18n"))
+            QApplication::installTranslator(&appTranslator);
+    }
 
     QString error;
     const auto options = gnss::app::parseStartupOptions(QApplication::arguments(),
@@ -46,7 +53,6 @@ int main(int argc, char **argv) {
     QApplication::setWindowIcon(gnss::style::appIcon());
     const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
     const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory();
-    QSettings settings;
     gnss::app::MainWindow window(registry, transports, &settings);
     window.show();
     using gnss::app::SourceSpec;

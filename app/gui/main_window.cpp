@@ -11,6 +11,7 @@
 #include "models/receiver_session.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
+#include "preferences_dialog.h"
 #include "settings/settings_view.h"
 #include "style/gnss_style.h"
 #include "views/attitude_view.h"
@@ -102,6 +103,8 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
         setWindowState(windowState() | Qt::WindowMaximized);
     }
     defaultState_ = saveState();
+    if (settings_) prefs_ = Preferences::load(*settings_);
+    startLanguage_ = prefs_.language;
     restoreLayout();
 }
 
@@ -162,8 +165,18 @@ void MainWindow::createDocks() {
     sky_ = new ui::SkyPlotView(satellites_, this);
     auto *skyDock =
             addDock(sky_, tr("Sky plot"), tr("Sky plot"), "skyDock", Qt::LeftDockWidgetArea);
-    auto *fixDock = addDock(new ui::FixView(stateModel_, this), tr("Fix"), tr("Fix and position"),
-                            "fixDock", Qt::RightDockWidgetArea);
+    auto *fixView = new ui::FixView(stateModel_, this);
+    auto *fixDock =
+            addDock(fixView, tr("Fix"), tr("Fix and position"), "fixDock", Qt::RightDockWidgetArea);
+    // Units, coordinate format and time zone (Preferences) reach every view that shows them.
+    connect(this, &MainWindow::displayPrefsChanged, fixView, &ui::FixView::setDisplayPrefs);
+    connect(fixView, &ui::FixView::coordinateFormatChosen, this, [this](ui::CoordinateFormat f) {
+        Preferences p = prefs_;
+        p.display.coordinates = f;
+        setPreferences(p);
+    });
+    connect(this, &MainWindow::displayPrefsChanged, console_,
+            [this](const ui::DisplayPrefs &p) { console_->setTimeZone(p.time); });
     auto *signalDock = addDock(new ui::SignalLevelsView(satellites_, this), tr("Signal levels"),
                                tr("Signal levels"), "signalDock", Qt::BottomDockWidgetArea);
     auto *table = new QTableView(this);
@@ -181,16 +194,21 @@ void MainWindow::createDocks() {
     auto *infoDock = addDock(new ui::ReceiverInfoView(stateModel_, this), tr("Receiver"),
                              tr("Receiver information"), "infoDock", Qt::RightDockWidgetArea);
     rtk_ = new ui::RtkView(stateModel_, this);
+    connect(this, &MainWindow::displayPrefsChanged, rtk_, &ui::RtkView::setDisplayPrefs);
     auto *rtkDock = addDock(rtk_, tr("RTK"), tr("RTK"), "rtkDock", Qt::RightDockWidgetArea);
     charts_ = new ui::ChartsView(stateModel_, this);
+    connect(this, &MainWindow::displayPrefsChanged, charts_, &ui::ChartsView::setDisplayPrefs);
     auto *chartsDock =
             addDock(charts_, tr("Charts"), tr("Charts"), "chartsDock", Qt::BottomDockWidgetArea);
     splitDockWidget(skyDock, signalDock, Qt::Vertical);
-    auto *deviationDock = addDock(new ui::DeviationView(stateModel_, this), tr("Deviation"),
-                                  tr("Deviation"), "deviationDock", Qt::LeftDockWidgetArea);
-    auto *attitudeDock =
-            addDock(new ui::AttitudeView(stateModel_, this), tr("Attitude"),
-                    tr("Attitude and time marks"), "attitudeDock", Qt::RightDockWidgetArea);
+    auto *deviation = new ui::DeviationView(stateModel_, this);
+    connect(this, &MainWindow::displayPrefsChanged, deviation, &ui::DeviationView::setDisplayPrefs);
+    auto *deviationDock = addDock(deviation, tr("Deviation"), tr("Deviation"), "deviationDock",
+                                  Qt::LeftDockWidgetArea);
+    auto *attitude = new ui::AttitudeView(stateModel_, this);
+    connect(this, &MainWindow::displayPrefsChanged, attitude, &ui::AttitudeView::setDisplayPrefs);
+    auto *attitudeDock = addDock(attitude, tr("Attitude"), tr("Attitude and time marks"),
+                                 "attitudeDock", Qt::RightDockWidgetArea);
     tabifyDockWidget(skyDock, deviationDock);
     skyDock->raise();
     tabifyDockWidget(fixDock, rtkDock);
@@ -199,6 +217,8 @@ void MainWindow::createDocks() {
     auto *correctionsView = new ui::CorrectionsView(
             corrections_->monitor(), stateModel_, [this] { return corrections_->forwarderStats(); },
             this);
+    connect(this, &MainWindow::displayPrefsChanged, correctionsView,
+            &ui::CorrectionsView::setDisplayPrefs);
     correctionsView->setKeychainAvailable(CorrectionsController::keychainAvailable());
     correctionsView->setRequest(corrections_->remembered());
     connect(corrections_, &CorrectionsController::passwordRecalled, correctionsView,
@@ -303,6 +323,12 @@ void MainWindow::createMenus() {
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
 
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    QAction *prefs = edit->addAction(tr("&Preferences..."), this, &MainWindow::openPreferences);
+    prefs->setObjectName("preferencesAction");
+    prefs->setShortcut(QKeySequence(tr("Ctrl+,")));
+    prefs->setMenuRole(QAction::PreferencesRole);
+
     QMenu *receiver = menuBar()->addMenu(tr("&Receiver"));
     receiver->setObjectName("receiverMenu");
     receiver->addAction(tr("&Connect"), this, [this] { controller_->connectTo(bar_->selection()); })
@@ -328,7 +354,12 @@ void MainWindow::createMenus() {
         a->setCheckable(true);
         a->setData(QString::fromLatin1(id));
         group->addAction(a);
-        connect(a, &QAction::triggered, this, [this, a] { applyTheme(a->data().toString()); });
+        themeActions_ << a;
+        connect(a, &QAction::triggered, this, [this, a] {
+            Preferences p = prefs_;
+            p.theme = a->data().toString();
+            setPreferences(p);
+        });
         if (settings_ && settings_->value("view/theme", "system").toString() == QLatin1String(id))
             a->setChecked(true);
     }
@@ -476,8 +507,30 @@ void MainWindow::restoreLayout() {
     charts_->setWindowMinutes(
             settings_->value("view/chartWindowMinutes", charts_->windowMinutes()).toInt());
     consoleView_->setHistory(settings_->value("console/history").toStringList());
-    const QString theme = settings_->value("view/theme", "system").toString();
-    if (theme != QLatin1String("system")) applyTheme(theme);
+    if (prefs_.theme != QLatin1String("system")) applyTheme(prefs_.theme);
+    controller_->setBaudCandidates(prefs_.detectionBauds);
+    emit displayPrefsChanged(prefs_.display);
+}
+
+void MainWindow::setPreferences(const Preferences &p) {
+    const Preferences before = prefs_;
+    prefs_ = p;
+    if (settings_) p.save(*settings_);
+    if (p.theme != before.theme) applyTheme(p.theme);
+    for (QAction *a : themeActions_) a->setChecked(a->data().toString() == p.theme);
+    controller_->setBaudCandidates(p.detectionBauds);
+    if (!(p.display == before.display)) emit displayPrefsChanged(p.display);
+    if (p.language != startLanguage_)
+        statusBar()->showMessage(
+                tr("The new language is used from the next start of GNSS Workbench."), 10000);
+}
+
+void MainWindow::openPreferences() {
+    auto *dialog = new PreferencesDialog(prefs_, startLanguage_, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this,
+            [this, dialog] { setPreferences(dialog->preferences()); });
+    dialog->open();
 }
 
 void MainWindow::connectAtStart(const SourceSpec &spec) {

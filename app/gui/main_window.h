@@ -2,6 +2,7 @@
 // MainWindow: menus, docks, the connection bar and the status bar. It wires models, views and
 // the connection; it does not decode or draw.
 #include "link/source_spec.h"
+#include "preferences.h"
 
 #include <QMainWindow>
 
@@ -64,6 +65,16 @@ public:
     void saveLayout();
     void restoreLayout();
 
+    // The preferences in force; setting them stores them and every view follows at once (a
+    // new language at the next start).
+    const Preferences &preferences() const { return prefs_; }
+    void setPreferences(const Preferences &prefs);
+    // Opens the Preferences dialog (window-modal; OK applies it).
+    void openPreferences();
+
+signals:
+    void displayPrefsChanged(const gnss::ui::DisplayPrefs &prefs);
+
 protected:
     void closeEvent(QCloseEvent *e) override;
 
@@ -96,6 +107,9 @@ private:
     ui::ChartsView *charts_ = nullptr;
     ui::ConsoleView *consoleView_ = nullptr;
     QMenu *viewMenu_ = nullptr;
+    QList<QAction *> themeActions_;
+    Preferences prefs_;
+    QString startLanguage_; // the language the program started in
     QAction *recordAction_ = nullptr;
     QLabel *stateLabel_ = nullptr, *dialectLabel_ = nullptr, *rateLabel_ = nullptr,
            *errorLabel_ = nullptr, *fixLabel_ = nullptr, *recordLabel_ = nullptr;

@@ -55,6 +55,7 @@ void LinkOpener::start(const SourceSpec &spec, DecoderOptions options) {
     detectingStream_ = std::make_unique<SentenceStream>(port_.get(), registry_);
     detector_ = std::make_unique<BaudDetector>(detectingStream_.get());
     if (listenMs_ > 0) detector_->setListenMs(listenMs_);
+    if (!candidates_.isEmpty()) detector_->setCandidates(candidates_);
     connect(detector_.get(), &BaudDetector::tryingRate, this, &LinkOpener::tryingRate);
     connect(detector_.get(), &BaudDetector::finished, this, &LinkOpener::onDetection);
     detector_->start();

@@ -42,6 +42,10 @@ public:
     // The rates tried (the first `count`, all when -1), with what was seen there.
     static QString attemptsText(const BaudDetection &d, int count = -1);
 
+    // The rates baud detection tries, in order (the user's preference); empty: the detector's
+    // own order (kDetectionBauds, the port's current rate first).
+    void setCandidateRates(QList<int> rates) { candidates_ = std::move(rates); }
+    const QList<int> &candidateRates() const { return candidates_; }
     // Tuning for tests (defaults are those of BaudDetector).
     void setListenMs(int ms) { listenMs_ = ms; }
 
@@ -64,6 +68,7 @@ private:
     std::unique_ptr<Connection> connection_;
     BaudDetection detection_;
     int listenMs_ = 0;
+    QList<int> candidates_;
 };
 
 } // namespace gnss::link

@@ -19,7 +19,10 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
     const ConsoleLine &l = lines_[size_t(index.row())];
     switch (role) {
     case Qt::DisplayRole: {
-        const QString time = QDateTime::fromMSecsSinceEpoch(l.ms, Qt::UTC).toString("hh:mm:ss.zzz");
+        // The host's clock when the line arrived, in the zone the user chose.
+        const QDateTime at = QDateTime::fromMSecsSinceEpoch(l.ms, Qt::UTC);
+        const QString time = (zone_ == TimeZoneChoice::Local ? at.toLocalTime() : at)
+                                     .toString(QStringLiteral("hh:mm:ss.zzz"));
         return time + (l.sent ? QStringLiteral("  ▶ ") : QStringLiteral("    ")) +
                QString::fromLatin1(l.text);
     }

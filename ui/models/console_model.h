@@ -2,6 +2,8 @@
 // ConsoleModel: the lines received and sent, newest last, bounded. Lines arrive per sentence but
 // are handed to views in batches (flush() on the session's timer), so a 20 Hz receiver does not
 // repaint the console twenty times a second per line.
+#include "views/value_format.h"
+
 #include <QAbstractListModel>
 #include <QByteArray>
 #include <deque>
@@ -33,6 +35,11 @@ public:
     void flush(); // moves pending lines into the model (one insert), drops the oldest past the cap
     void clear();
     void setPaused(bool p) { paused_ = p; }
+    // Arrival times in UTC or local time; the rows shown are rewritten.
+    void setTimeZone(TimeZoneChoice zone) {
+        zone_ = zone;
+        if (!lines_.empty()) emit dataChanged(index(0), index(rowCount() - 1), {Qt::DisplayRole});
+    }
     bool paused() const { return paused_; }
 
     // The last raw bytes received, for the hex view.
@@ -40,6 +47,7 @@ public:
     const QByteArray &raw() const { return raw_; }
 
 private:
+    TimeZoneChoice zone_ = TimeZoneChoice::Utc;
     std::deque<ConsoleLine> lines_;
     std::vector<ConsoleLine> pending_;
     QByteArray raw_;

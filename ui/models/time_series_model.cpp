@@ -176,19 +176,30 @@ TimeSeriesModel::Group TimeSeriesModel::group(Series s) {
     }
 }
 
-QString TimeSeriesModel::groupTitle(Group g) {
+QString TimeSeriesModel::groupTitle(Group g, UnitSystem units) {
+    const QString length = fmt::lengthUnit(units);
     switch (g) {
     case Satellites: return tr("Satellites used");
     case Dop: return tr("DOP");
     case Fix: return tr("Fix type");
     case Snr: return tr("Mean SNR (dB-Hz)");
-    case Deviation: return tr("Standard deviation (m)");
-    case Baseline: return tr("Baseline length (m)");
-    case Altitude: return tr("Altitude above sea level (m)");
-    case SpeedGroup: return tr("Speed (m/s)");
+    case Deviation: return tr("Standard deviation (%1)").arg(length);
+    case Baseline: return tr("Baseline length (%1)").arg(length);
+    case Altitude: return tr("Altitude above sea level (%1)").arg(length);
+    case SpeedGroup: return tr("Speed (%1)").arg(fmt::speedUnit(units));
     case GroupCount: break;
     }
     return {};
+}
+
+double TimeSeriesModel::groupFactor(Group g, UnitSystem units) {
+    switch (g) {
+    case Deviation:
+    case Baseline:
+    case Altitude: return fmt::lengthFactor(units);
+    case SpeedGroup: return fmt::speedFactor(units);
+    default: return 1.0;
+    }
 }
 
 } // namespace gnss::ui

@@ -4,6 +4,7 @@
 // sample per navigation epoch, trimmed to a rolling window. Fed from ReceiverStateModel::updated;
 // the chart reads it on its own timer, so the per-epoch cost is a few appends.
 #include "state/receiver_state.h"
+#include "views/value_format.h"
 
 #include <QDateTime>
 #include <QObject>
@@ -85,7 +86,10 @@ public:
     static QString key(Series s);   // stable name for settings: "satsUsed", "snr.GPS", ...
     static QString label(Series s); // translated legend text
     static Group group(Series s);
-    static QString groupTitle(Group g); // translated chart title with its unit
+    // Translated chart title with its unit (lengths and speeds in `units`; samples stay SI).
+    static QString groupTitle(Group g, UnitSystem units = UnitSystem::Metric);
+    // The factor from a group's samples (SI) to what its chart shows in `units`.
+    static double groupFactor(Group g, UnitSystem units);
     static std::optional<Series> fromKey(const QString &key);
 
 private:

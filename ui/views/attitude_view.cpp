@@ -27,10 +27,6 @@ QString degrees(const std::optional<double> &v, int decimals) {
 QString count(const std::optional<std::int64_t> &v) {
     return v ? QString::number(*v) : fmt::dash();
 }
-// UTC with at least milliseconds (time marks keep the receiver's nanoseconds).
-QString utcText(const std::optional<TimeOfDay> &t) {
-    return t ? QString::fromStdString(t->toString(3)) : fmt::dash();
-}
 
 } // namespace
 
@@ -45,7 +41,7 @@ AttitudeView::AttitudeView(ReceiverStateModel *model, QWidget *parent)
     roll_ = addRow(g, tr("Roll"), "attitudeRoll");
     pitch_ = addRow(g, tr("Pitch"), "attitudePitch");
     yaw_ = addRow(g, tr("Yaw"), "attitudeYaw");
-    time_ = addRow(g, tr("Time (UTC)"), "attitudeTime");
+    time_ = addRow(g, tr("Time"), "attitudeTime");
     top->addWidget(att, 1);
 
     auto *acc = new QGroupBox(tr("Acceleration"));
@@ -65,8 +61,7 @@ AttitudeView::AttitudeView(ReceiverStateModel *model, QWidget *parent)
     tl->addWidget(markCount_);
     marks_ = new QTableWidget(0, ColumnCount);
     marks_->setObjectName("timeMarkTable");
-    marks_->setHorizontalHeaderLabels({tr("Counter"), tr("GPS time of week (s)"), tr("UTC"),
-                                       tr("Latitude"), tr("Longitude"), tr("Altitude MSL (m)")});
+    setHeaders();
     marks_->verticalHeader()->hide();
     marks_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
     marks_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -98,6 +93,20 @@ void AttitudeView::poll() {
     if (model_->epochCount() != shownEpochs_) refresh();
 }
 
+void AttitudeView::setHeaders() {
+    const QString zone = prefs_.time == TimeZoneChoice::Utc ? tr("UTC") : tr("Local time");
+    marks_->setHorizontalHeaderLabels({tr("Counter"), tr("GPS time of week (s)"), zone,
+                                       tr("Latitude"), tr("Longitude"),
+                                       tr("Altitude MSL (%1)").arg(fmt::lengthUnit(prefs_.units))});
+}
+
+void AttitudeView::setDisplayPrefs(const DisplayPrefs &prefs) {
+    prefs_ = prefs;
+    setHeaders();
+    shownMarks_ = ~std::size_t(0); // rewrite the table
+    refresh();
+}
+
 void AttitudeView::refresh() {
     shownEpochs_ = model_->epochCount();
     const ReceiverState &st = model_->state();
@@ -106,7 +115,7 @@ void AttitudeView::refresh() {
     roll_->setText(degrees(a.roll, 2));
     pitch_->setText(degrees(a.pitch, 2));
     yaw_->setText(degrees(a.yaw, 2));
-    time_->setText(utcText(a.time));
+    time_->setText(fmt::time(st.epoch.date, a.time, prefs_.time));
     accNorth_->setText(fmt::number(a.accNorth, 3, acc));
     accEast_->setText(fmt::number(a.accEast, 3, acc));
     accDown_->setText(fmt::number(a.accDown, 3, acc));
@@ -123,16 +132,17 @@ void AttitudeView::refresh() {
     markCount_->setText(tm.empty() ? tr("No time marks yet")
                                    : tr("%n time mark(s)", nullptr, int(tm.size())));
     const int rows = std::min<int>(static_cast<int>(tm.size()), kMaxRows);
+    const double k = fmt::lengthFactor(prefs_.units);
     marks_->setUpdatesEnabled(false);
     marks_->setRowCount(rows);
     for (int row = 0; row < rows; ++row) {
         const TimeMarkEvent &e = tm[tm.size() - 1 - static_cast<std::size_t>(row)]; // newest first
         const QString cells[ColumnCount] = {count(e.counter),
                                             fmt::number(e.towSeconds, 6),
-                                            utcText(e.utc),
-                                            fmt::latitude(e.lat, false),
-                                            fmt::longitude(e.lon, false),
-                                            fmt::number(e.altMsl, 3)};
+                                            fmt::time(std::nullopt, e.utc, prefs_.time, false),
+                                            fmt::latitude(e.lat, prefs_.coordinates),
+                                            fmt::longitude(e.lon, prefs_.coordinates),
+                                            e.altMsl ? fmt::number(*e.altMsl * k, 3) : fmt::dash()};
         for (int c = 0; c < ColumnCount; ++c) {
             QTableWidgetItem *item = marks_->item(row, c);
             if (!item) {

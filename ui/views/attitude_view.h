@@ -2,6 +2,8 @@
 // AttitudeView: roll/pitch/yaw and accelerations (NVS PNVGIMU and the like, through
 // ReceiverState::attitude) and a table of time-mark events, newest first. Refreshes on a 10 Hz
 // timer when a new epoch has arrived; the table is rebuilt only when the events changed.
+#include "value_format.h"
+
 #include <QWidget>
 
 #include <cstdint>
@@ -25,10 +27,15 @@ public:
     // Most events listed (the state keeps more).
     static constexpr int kMaxRows = 500;
 
+    // Times in the user's zone, coordinates in their format, altitudes in their unit.
+    void setDisplayPrefs(const DisplayPrefs &prefs);
+
 public slots:
     void refresh();
 
 private:
+    void setHeaders();
+    DisplayPrefs prefs_;
     QLabel *addRow(QGridLayout *grid, const QString &name, const char *objectName);
     void poll();
 

@@ -63,10 +63,12 @@ bool checkedByDefault(TS::Series s) {
 // Points relative to the newest epoch (x in `unitMs` units, negative = older), reduced to each
 // bucket's min and max when there are more than `maxPoints`.
 QList<QPointF> toPoints(const std::deque<TS::Sample> &d, qint64 latest, double unitMs,
-                        int maxPoints) {
+                        int maxPoints, double factor) {
     QList<QPointF> out;
     const std::size_t n = d.size();
-    auto pt = [&](const TS::Sample &s) { return QPointF((s.msecs - latest) / unitMs, s.value); };
+    auto pt = [&](const TS::Sample &s) {
+        return QPointF((s.msecs - latest) / unitMs, s.value * factor);
+    };
     if (n <= static_cast<std::size_t>(maxPoints)) {
         out.reserve(static_cast<qsizetype>(n));
         for (const auto &s : d) out.append(pt(s));
@@ -184,6 +186,14 @@ int ChartsView::windowMinutes() const {
     return window_->value();
 }
 
+void ChartsView::setDisplayPrefs(const DisplayPrefs &prefs) {
+    units_ = prefs.units;
+    for (int g = 0; g < TS::GroupCount; ++g)
+        if (groups_[g].chart) groups_[g].chart->setTitle(TS::groupTitle(TS::Group(g), units_));
+    selectionChanged_ = true; // redraw every line in the new unit
+    redraw();
+}
+
 void ChartsView::setWindowMinutes(int minutes) {
     window_->setValue(minutes);
 }
@@ -192,7 +202,7 @@ ChartsView::GroupChart &ChartsView::ensureGroup(TS::Group g) {
     GroupChart &gc = groups_[g];
     if (gc.view) return gc;
     gc.chart = new QChart;
-    gc.chart->setTitle(TS::groupTitle(g));
+    gc.chart->setTitle(TS::groupTitle(g, units_));
     gc.chart->setMargins(QMargins(4, 2, 4, 2));
     // Up to seven constellations: their legend goes on top; other charts have room at the right.
     gc.chart->legend()->setAlignment(g == TS::Snr ? Qt::AlignTop : Qt::AlignRight);
@@ -291,7 +301,8 @@ void ChartsView::redraw() {
     for (int i = 0; i < TS::SeriesCount; ++i) {
         if (!lines_[i]) continue;
         const auto s = static_cast<TS::Series>(i);
-        const QList<QPointF> pts = toPoints(series_->samples(s), latest, unitMs, kMaxPointsPerLine);
+        const QList<QPointF> pts = toPoints(series_->samples(s), latest, unitMs, kMaxPointsPerLine,
+                                            TS::groupFactor(TS::group(s), units_));
         for (const QPointF &p : pts) {
             lo[TS::group(s)] = std::min(lo[TS::group(s)], p.y());
             hi[TS::group(s)] = std::max(hi[TS::group(s)], p.y());

@@ -36,6 +36,8 @@ public:
     // Rolling window in minutes (default 10).
     int windowMinutes() const;
     void setWindowMinutes(int minutes);
+    // Lengths and speeds in the user's units (titles and values).
+    void setDisplayPrefs(const DisplayPrefs &prefs);
 
     // The line of a series (nullptr while it is not picked); tests read its points.
     QLineSeries *lineSeries(TimeSeriesModel::Series s) const { return lines_[s]; }
@@ -53,6 +55,7 @@ protected:
     void changeEvent(QEvent *e) override;
 
 private:
+    UnitSystem units_ = UnitSystem::Metric;
     struct GroupChart {
         QChartView *view = nullptr;
         QChart *chart = nullptr;

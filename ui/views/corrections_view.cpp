@@ -345,20 +345,22 @@ void CorrectionsView::refresh() {
                     .arg(monitor_.bytesSkipped())
                     .arg(age ? tr("%1 s").arg(double(*age) / 1000.0, 0, 'f', 1) : fmt::dash()));
     if (const auto &b = monitor_.basePosition()) {
-        QString where = b->geodetic ? tr("%1, %2, %3 m")
-                                              .arg(fmt::latitude(b->geodetic->latDeg, false),
-                                                   fmt::longitude(b->geodetic->lonDeg, false))
-                                              .arg(b->geodetic->height, 0, 'f', 2)
-                                    : tr("ECEF %1, %2, %3 m")
-                                              .arg(b->ecef.x, 0, 'f', 3)
-                                              .arg(b->ecef.y, 0, 'f', 3)
-                                              .arg(b->ecef.z, 0, 'f', 3);
+        const UnitSystem u = prefs_.units;
+        // ECEF stays in metres: it is the frame's own unit, as RTCM sends it.
+        QString where =
+                b->geodetic ? tr("%1, %2, %3")
+                                      .arg(fmt::latitude(b->geodetic->latDeg, prefs_.coordinates),
+                                           fmt::longitude(b->geodetic->lonDeg, prefs_.coordinates),
+                                           fmt::length(b->geodetic->height, 2, u))
+                            : tr("ECEF %1, %2, %3 m")
+                                      .arg(b->ecef.x, 0, 'f', 3)
+                                      .arg(b->ecef.y, 0, 'f', 3)
+                                      .arg(b->ecef.z, 0, 'f', 3);
         const auto baseline = monitor_.baselineMetres();
         base_->setText(tr("Base station %1 (%2): %3; distance to the rover %4")
                                .arg(b->station)
                                .arg(b->message)
-                               .arg(where, baseline ? tr("%1 km").arg(*baseline / 1000.0, 0, 'f', 3)
-                                                    : fmt::dash()));
+                               .arg(where, fmt::distance(baseline, 3, u)));
     } else {
         base_->setText(tr("Base station: not yet received (1005/1006)"));
     }

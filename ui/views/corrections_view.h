@@ -9,6 +9,8 @@
 //
 // The view starts nothing itself: it asks (startRequested/stopRequested) and whoever owns the
 // source (the application's CorrectionsController) answers with setStatus().
+#include "value_format.h"
+
 #include <QString>
 #include <QWidget>
 
@@ -78,6 +80,11 @@ public:
 
 public slots:
     void refresh();
+    // Coordinates in the user's format, heights and distances in their units.
+    void setDisplayPrefs(const DisplayPrefs &prefs) {
+        prefs_ = prefs;
+        refresh();
+    }
 
 signals:
     void startRequested(const gnss::ui::CorrectionsRequest &request);
@@ -87,6 +94,7 @@ protected:
     void changeEvent(QEvent *e) override;
 
 private:
+    DisplayPrefs prefs_;
     void onStartStop();
     void updateKind();
 

@@ -34,14 +34,10 @@ double niceCeil(double x) {
     return 10 * p;
 }
 
-QString metres(double v) {
-    const int decimals = std::fabs(v) < 100.0 ? 3 : 1;
-    return QString::number(v, 'f', decimals) + QStringLiteral(" m");
-}
-
-QString lengthText(double v) {
-    // Scale-bar and tick text: as short as the step allows ("0.05 m", "2 m", "500 m").
-    return QString::number(v, 'g', 6) + QStringLiteral(" m");
+// A length in metres, in the user's units: 3 decimals below 100, 1 above.
+QString metres(double v, UnitSystem u) {
+    const double shown = v * fmt::lengthFactor(u);
+    return fmt::length(v, std::fabs(shown) < 100.0 ? 3 : 1, u);
 }
 
 } // namespace
@@ -49,6 +45,7 @@ QString lengthText(double v) {
 // The plot itself: squares the east/north axes, autoscales to the points and circles.
 class DeviationView::Canvas : public QWidget {
 public:
+    UnitSystem units = UnitSystem::Metric; // of the axes and the scale bar
     explicit Canvas(const PositionScatter *s, QWidget *parent) : QWidget(parent), s_(s) {
         setObjectName("deviationCanvas");
         setMinimumSize(260, 260);
@@ -88,7 +85,9 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
     // Half range: every point and every circle fits, with a margin, on 1-2-5 steps.
     double extent = std::max({st.cep95, st.drms2, 0.005});
     for (const auto &pt : pts) extent = std::max({extent, std::fabs(pt.east), std::fabs(pt.north)});
-    const double step = niceCeil(extent * 1.1 / 4.0);
+    // Steps of 1-2-5 in the unit shown (feet when imperial), the plot itself in metres.
+    const double k = fmt::lengthFactor(units);
+    const double step = niceCeil(extent * k * 1.1 / 4.0) / k;
     const double half = step * std::ceil(extent * 1.1 / step);
     const double scale = plot.width() / (2.0 * half); // px per metre
     const QPointF c = QRectF(plot).center();
@@ -112,7 +111,7 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
     p.drawRect(plot);
     for (int i = -ticks; i <= ticks; i += std::max(1, ticks / 2)) {
         const double v = i * step;
-        const QString t = QString::number(v, 'g', 6);
+        const QString t = QString::number(v * k, 'g', 6);
         const QPointF xb = map(v, -half);
         p.drawText(QRectF(xb.x() - 40, plot.bottom() + 2, 80, fm.height()), Qt::AlignHCenter, t);
         const QPointF yl = map(-half, v);
@@ -120,12 +119,12 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
                    Qt::AlignRight | Qt::AlignVCenter, t);
     }
     p.drawText(QRectF(plot.left(), plot.bottom() + 2 + fm.height(), plot.width(), fm.height()),
-               Qt::AlignHCenter, tr("East (m)"));
+               Qt::AlignHCenter, tr("East (%1)").arg(fmt::lengthUnit(units)));
     p.save();
     p.translate(2, plot.center().y());
     p.rotate(-90);
     p.drawText(QRectF(-plot.height() / 2.0, 0, plot.height(), fm.height()), Qt::AlignHCenter,
-               tr("North (m)"));
+               tr("North (%1)").arg(fmt::lengthUnit(units)));
     p.restore();
 
     // Points, oldest first so the newest are on top.
@@ -207,7 +206,8 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
     const double barPx = step * scale;
     const QPointF b1(plot.right() - 10 - barPx, plot.bottom() - 10);
     const QPointF b2(plot.right() - 10, plot.bottom() - 10);
-    const QString bt = lengthText(step);
+    // As short as the step allows ("0.05 m", "2 m", "500 m").
+    const QString bt = QString::number(step * k, 'g', 6) + ' ' + fmt::lengthUnit(units);
     const QRectF bbox(b1.x() - 4, b1.y() - fm.height() - 6, barPx + 8, fm.height() + 10);
     QColor bg = pal.color(QPalette::Base);
     bg.setAlpha(210);
@@ -380,6 +380,12 @@ void DeviationView::applyReference() {
     refresh();
 }
 
+void DeviationView::setDisplayPrefs(const DisplayPrefs &prefs) {
+    prefs_ = prefs;
+    canvas_->units = prefs.units;
+    refresh();
+}
+
 void DeviationView::refresh() {
     dirty_ = false;
     const auto &st = scatter_.stats();
@@ -387,16 +393,17 @@ void DeviationView::refresh() {
     if (st.count == 0) {
         for (QLabel *l : {cep50_, cep95_, drms2_, offset_, centre_}) l->setText(fmt::dash());
     } else {
-        cep50_->setText(metres(st.cep50));
-        cep95_->setText(metres(st.cep95));
-        drms2_->setText(metres(st.drms2));
+        const UnitSystem u = prefs_.units;
+        cep50_->setText(metres(st.cep50, u));
+        cep95_->setText(metres(st.cep95, u));
+        drms2_->setText(metres(st.drms2, u));
         centre_->setText((scatter_.hasReference() ? tr("reference %1, %2") : tr("mean %1, %2"))
-                                 .arg(fmt::latitude(st.centreLat, false),
-                                      fmt::longitude(st.centreLon, false)));
-        offset_->setText(
-                scatter_.hasReference()
-                        ? tr("%1 east, %2 north").arg(metres(st.meanEast), metres(st.meanNorth))
-                        : fmt::dash());
+                                 .arg(fmt::latitude(st.centreLat, prefs_.coordinates),
+                                      fmt::longitude(st.centreLon, prefs_.coordinates)));
+        offset_->setText(scatter_.hasReference()
+                                 ? tr("%1 east, %2 north")
+                                           .arg(metres(st.meanEast, u), metres(st.meanNorth, u))
+                                 : fmt::dash());
     }
     canvas_->update();
 }

@@ -4,6 +4,7 @@
 // figures, autoscaled axes and a scale bar. The statistics live in PositionScatter; this widget
 // collects one position per epoch and repaints on a 10 Hz timer when something changed.
 #include "models/position_scatter.h"
+#include "value_format.h"
 
 #include <QWidget>
 
@@ -35,6 +36,10 @@ public:
     // or out of range (90 for latitude, 180 for longitude).
     static std::optional<double> parseDegrees(const QString &text, bool latitude);
 
+    // Lengths in the user's units (the plot's axes and scale bar too), centre coordinates in
+    // their format.
+    void setDisplayPrefs(const DisplayPrefs &prefs);
+
 public slots:
     void reset();
     // Updates the figures and repaints now (the timer does this when a position arrived).
@@ -50,6 +55,7 @@ private:
     QTimer *timer_;
     bool dirty_ = true;
     Canvas *canvas_;
+    DisplayPrefs prefs_;
     QCheckBox *useRef_;
     QLineEdit *refLat_, *refLon_;
     QSpinBox *capacity_;

@@ -27,9 +27,14 @@ FixView::FixView(ReceiverStateModel *model, QWidget *parent) : QWidget(parent), 
     top->addStretch();
     format_ = new QComboBox(this);
     format_->setObjectName("coordinateFormat");
-    format_->addItems({tr("Degrees"), tr("Deg min sec")});
-    connect(format_, &QComboBox::currentIndexChanged, this,
-            [this](int i) { setDegreesMinutesSeconds(i == 1); });
+    format_->addItems({tr("Degrees"), tr("Deg min"), tr("Deg min sec")});
+    format_->setToolTip(tr("How coordinates are written (also in Preferences)"));
+    connect(format_, &QComboBox::activated, this, [this](int i) {
+        DisplayPrefs p = prefs_;
+        p.coordinates = CoordinateFormat(i);
+        setDisplayPrefs(p);
+        emit coordinateFormatChosen(p.coordinates);
+    });
     top->addWidget(format_);
     outer->addLayout(top);
     grid_ = new QGridLayout;
@@ -41,7 +46,7 @@ FixView::FixView(ReceiverStateModel *model, QWidget *parent) : QWidget(parent), 
     altEll_ = addRow(tr("Altitude (ellipsoid)"), "fixAltEllipsoid");
     sats_ = addRow(tr("Satellites used / in view"), "fixSatellites");
     dops_ = addRow(tr("PDOP / HDOP / VDOP"), "fixDops");
-    utc_ = addRow(tr("UTC"), "fixUtc");
+    utc_ = addRow(tr("Time"), "fixUtc");
     speed_ = addRow(tr("Speed"), "fixSpeed");
     course_ = addRow(tr("Course"), "fixCourse");
     corrAge_ = addRow(tr("Age of corrections"), "fixCorrectionAge");
@@ -71,9 +76,9 @@ QLabel *FixView::addRow(const QString &name, const QString &objectName) {
     return v;
 }
 
-void FixView::setDegreesMinutesSeconds(bool dms) {
-    dms_ = dms;
-    if (format_->currentIndex() != int(dms)) format_->setCurrentIndex(int(dms));
+void FixView::setDisplayPrefs(const DisplayPrefs &prefs) {
+    prefs_ = prefs;
+    format_->setCurrentIndex(int(prefs.coordinates));
     refresh();
 }
 
@@ -89,10 +94,11 @@ void FixView::refresh() {
     badge_->setStyleSheet(QStringLiteral("QLabel { background: %1; color: white; border-radius: "
                                          "6px; padding: 4px 10px; }")
                                   .arg(c.name()));
-    lat_->setText(fmt::latitude(e.lat, dms_));
-    lon_->setText(fmt::longitude(e.lon, dms_));
-    altMsl_->setText(fmt::number(e.altMsl, 3, tr("m")));
-    altEll_->setText(fmt::number(e.altEllipsoid(), 3, tr("m")));
+    const UnitSystem units = prefs_.units;
+    lat_->setText(fmt::latitude(e.lat, prefs_.coordinates));
+    lon_->setText(fmt::longitude(e.lon, prefs_.coordinates));
+    altMsl_->setText(fmt::length(e.altMsl, 3, units));
+    altEll_->setText(fmt::length(e.altEllipsoid(), 3, units));
     int inView = 0;
     {
         QSet<quint64> seen;
@@ -108,16 +114,9 @@ void FixView::refresh() {
     dops_->setText(
             QStringLiteral("%1 / %2 / %3")
                     .arg(fmt::number(e.pdop, 2), fmt::number(e.hdop, 2), fmt::number(e.vdop, 2)));
-    utc_->setText(
-            e.time ? QString::fromStdString(e.date ? e.date->toString() + " " + e.time->toString(3)
-                                                   : e.time->toString(3))
-                   : fmt::dash());
-    if (e.sogKnots) {
-        const double ms = *e.sogKnots * 1852.0 / 3600.0;
-        speed_->setText(tr("%1 m/s  (%2 km/h)").arg(ms, 0, 'f', 2).arg(ms * 3.6, 0, 'f', 1));
-    } else {
-        speed_->setText(fmt::dash());
-    }
+    utc_->setText(fmt::time(e.date, e.time, prefs_.time));
+    speed_->setText(fmt::speed(
+            e.sogKnots ? std::optional(*e.sogKnots * 1852.0 / 3600.0) : std::nullopt, units));
     course_->setText(fmt::number(e.cog, 1, QStringLiteral("°")));
     const auto age = e.dgpsAge ? e.dgpsAge : model_->state().rtk.correctionAge;
     corrAge_->setText(fmt::number(age, 1, tr("s")));

@@ -170,6 +170,11 @@ QColor RtkView::alarmColor() {
     return QColor(0xD3, 0x2F, 0x2F);
 }
 
+void RtkView::setDisplayPrefs(const DisplayPrefs &prefs) {
+    prefs_ = prefs;
+    refresh();
+}
+
 void RtkView::poll() {
     if (model_->epochCount() != shownEpochs_) refresh();
 }
@@ -206,34 +211,38 @@ void RtkView::refresh() {
         mode_->setPalette(QPalette()); // back to the theme's colours
     }
 
-    const QString m = tr("m"), ms = tr("m/s");
+    const UnitSystem u = prefs_.units;
+    const auto m = [u](const std::optional<double> &v) { return fmt::length(v, 3, u); };
+    const auto ms = [u](const std::optional<double> &v) {
+        return v ? fmt::number(*v * fmt::speedFactor(u), 3, fmt::speedUnit(u)) : fmt::dash();
+    };
     rtcmTotal_->setText(count(r.rtcmTotal));
     rtcmOk_->setText(count(r.rtcmOk));
     rtcmErrors_->setText(count(r.rtcmErrors));
-    baseDistance_->setText(fmt::number(r.baseDistance, 3, m));
+    baseDistance_->setText(m(r.baseDistance));
     baseId_->setText(r.baseStationId ? QString::number(*r.baseStationId) : fmt::dash());
     correctionAge_->setText(fmt::number(r.correctionAge, 1, tr("s")));
 
-    blNorth_->setText(fmt::number(r.baseToRover.north, 3, m));
-    blEast_->setText(fmt::number(r.baseToRover.east, 3, m));
-    blVertical_->setText(fmt::number(r.baseToRover.vertical, 3, m));
-    blLength_->setText(fmt::number(r.baseToRover.length, 3, m));
+    blNorth_->setText(m(r.baseToRover.north));
+    blEast_->setText(m(r.baseToRover.east));
+    blVertical_->setText(m(r.baseToRover.vertical));
+    blLength_->setText(m(r.baseToRover.length));
     blCourse_->setText(degrees(r.baseToRover.course, 2));
     blPitch_->setText(degrees(r.baseToRover.pitch, 2));
 
     heading_->setText(degrees(r.heading ? r.heading : r.antennas.course, 2));
     antPitch_->setText(degrees(r.antennas.pitch, 2));
-    antLength_->setText(fmt::number(r.antennas.length, 3, m));
-    antNorth_->setText(fmt::number(r.antennas.north, 3, m));
-    antEast_->setText(fmt::number(r.antennas.east, 3, m));
-    antVertical_->setText(fmt::number(r.antennas.vertical, 3, m));
+    antLength_->setText(m(r.antennas.length));
+    antNorth_->setText(m(r.antennas.north));
+    antEast_->setText(m(r.antennas.east));
+    antVertical_->setText(m(r.antennas.vertical));
 
-    sdLat_->setText(fmt::number(r.sdLat, 3, m));
-    sdLon_->setText(fmt::number(r.sdLon, 3, m));
-    sdHeight_->setText(fmt::number(r.sdHeight, 3, m));
-    sdVelNorth_->setText(fmt::number(r.sdVelNorth, 3, ms));
-    sdVelEast_->setText(fmt::number(r.sdVelEast, 3, ms));
-    sdVelUp_->setText(fmt::number(r.sdVelUp, 3, ms));
+    sdLat_->setText(m(r.sdLat));
+    sdLon_->setText(m(r.sdLon));
+    sdHeight_->setText(m(r.sdHeight));
+    sdVelNorth_->setText(ms(r.sdVelNorth));
+    sdVelEast_->setText(ms(r.sdVelEast));
+    sdVelUp_->setText(ms(r.sdVelUp));
     sdHeading_->setText(degrees(r.sdHeading, 3));
 
     gdop_->setText(fmt::number(r.gdop, 2));

@@ -3,6 +3,8 @@
 // baseline, heading and antenna baseline, standard deviations, receiver DOPs, and a correction
 // age watchdog that turns red past a threshold. Reads ReceiverState::rtk through the model,
 // refreshes on a 10 Hz timer when a new epoch has arrived, never per update.
+#include "value_format.h"
+
 #include <QWidget>
 
 #include <optional>
@@ -25,6 +27,8 @@ public:
     // Correction age (seconds) above which the watchdog turns red; default 10 s.
     double correctionAgeThreshold() const;
     void setCorrectionAgeThreshold(double seconds);
+    // Lengths and speeds in the user's units.
+    void setDisplayPrefs(const DisplayPrefs &prefs);
     // The latest shown correction age is past the threshold.
     bool correctionsLate() const { return late_; }
     // The receiver reports RTK information at all (state.rtk.seen).
@@ -42,6 +46,7 @@ signals:
     void correctionsLateChanged(bool late);
 
 private:
+    DisplayPrefs prefs_;
     QLabel *addRow(QGridLayout *grid, const QString &name, const char *objectName);
     void updateWatchdog(std::optional<double> age);
     void poll();
