@@ -5,6 +5,7 @@
 #include "connection_controller.h"
 #include "dialects.h"
 #include "main_window.h"
+#include "models/message_stats_model.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
 #include "preferences_dialog.h"
@@ -101,6 +102,10 @@ private slots:
             const auto *marks = w.findChild<QTableWidget *>("timeMarkTable");
             QCOMPARE(marks->horizontalHeaderItem(5)->text(), QString("Altitude MSL (ft)"));
             QCOMPARE(marks->horizontalHeaderItem(2)->text(), QString("Local time"));
+            const auto *stats = w.findChild<gnss::ui::MessageStatsModel *>();
+            QCOMPARE(stats->headerData(gnss::ui::MessageStatsModel::LastSeen, Qt::Horizontal)
+                             .toString(),
+                     QString("Last seen (local time)"));
             QCOMPARE(w.controller()->baudCandidates(), (QList<int>{38400, 115200}));
             QVERIFY(w.statusBar()->currentMessage().contains("next start"));
             QCOMPARE(s->value("view/units").toString(), QString("imperial"));

@@ -217,9 +217,792 @@
     </message>
 </context>
 <context>
+    <name>Reports</name>
+    <message>
+        <location filename="schema_texts.cpp" line="+422"/>
+        <source>Self-test</source>
+        <translation>Самотестирование</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tests</source>
+        <translation>Тесты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>name</source>
+        <translation>Название</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>result</source>
+        <translation>Результат</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device_id</source>
+        <translation>Идентификатор устройства</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>antenna</source>
+        <translation>Антенна</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>antenna_status</source>
+        <translation>Состояние антенны</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time pulse</source>
+        <translation>Импульс времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>type</source>
+        <translation>Тип</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mode</source>
+        <translation>Режим</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reference</source>
+        <translation>Опорная шкала времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>adjust</source>
+        <translation>Подстройка шкалы времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>duration</source>
+        <translation>Длительность импульса, мкс</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>validity</source>
+        <translation>Контроль достоверности</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cable_delay</source>
+        <translation>Задержка в антенном кабеле, нс</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Version</source>
+        <translation>Версия</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>manufacturer</source>
+        <translation>Производитель</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device</source>
+        <translation>Устройство</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rtk_fw</source>
+        <translation>Прошивка RTK</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>csm_hw</source>
+        <translation>Аппаратура CSM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>csm_fw</source>
+        <translation>Прошивка CSM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output settings (NQUERY)</source>
+        <translation>Настройки вывода (NQUERY)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>port</source>
+        <translation>Порт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rate_code</source>
+        <translation>Темп выдачи (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rate_hz</source>
+        <translation>Темп выдачи, Гц</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nmea_version</source>
+        <translation>Версия NMEA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>messages</source>
+        <translation>Сообщения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>field</source>
+        <translation>Поле</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>code</source>
+        <translation>Код</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>output</source>
+        <translation>Выдача</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>note</source>
+        <translation>Примечание</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Status and configuration (RQUERY)</source>
+        <translation>Состояние и конфигурация (RQUERY)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>receiver_name</source>
+        <translation>Наименование приёмника</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>firmware</source>
+        <translation>Прошивка</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>firmware_version</source>
+        <translation>Версия прошивки</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>firmware_date</source>
+        <translation>Дата прошивки</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>status</source>
+        <translation>Слово состояния</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw</source>
+        <translation>Исходное значение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jamming_detected</source>
+        <translation>Обнаружены помехи</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>flash_write_in_progress</source>
+        <translation>Идёт запись во флэш-память</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>geopath_active</source>
+        <translation>Режим GeoPath активен</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reference_within_threshold</source>
+        <translation>Расхождение с референсными координатами в пределах порога</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>averaging_in_progress</source>
+        <translation>Идёт усреднение координат</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rtcm_corrections_used</source>
+        <translation>Используются поправки RTCM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sbas_corrections_used</source>
+        <translation>Используются поправки SBAS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>state</source>
+        <translation>Состояние</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>solution_type</source>
+        <translation>Тип решения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>extrapolated</source>
+        <translation>Координаты экстраполированы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stationary</source>
+        <translation>Остановка (статическая навигация)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>solution_available</source>
+        <translation>Есть решение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>valid_since_start</source>
+        <translation>Было достоверное решение после старта</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>solution_dim</source>
+        <translation>Размерность решения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>clock_restored_hot_start</source>
+        <translation>Шкала времени восстановлена при горячем старте</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gps_iono_utc_available</source>
+        <translation>Доступны параметры ионосферы и UTC GPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>date_from_nav_message</source>
+        <translation>Дата получена из навигационного сообщения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time_from_nav_message</source>
+        <translation>Время получено из навигационного сообщения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>almanac_qzss</source>
+        <translation>Альманах QZSS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>almanac_galileo</source>
+        <translation>Альманах Galileo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>almanac_glonass</source>
+        <translation>Альманах GLONASS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>almanac_gps</source>
+        <translation>Альманах GPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>agc_glonass_ok</source>
+        <translation>АРУ GLONASS в норме</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>agc_gps_ok</source>
+        <translation>АРУ GPS в норме</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>settings_loaded_from_flash</source>
+        <translation>Настройки загружены из флэш-памяти</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pll_ok</source>
+        <translation>PLL в норме</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rtc_ok</source>
+        <translation>RTC в норме</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>backup_ram_ok</source>
+        <translation>Резервное ОЗУ в норме</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reserved_bits</source>
+        <translation>Резервные биты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>config1</source>
+        <translation>Регистр конфигурации 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>antenna_power</source>
+        <translation>Питание антенны</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>operating_mode</source>
+        <translation>Режим работы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raim</source>
+        <translation>RAIM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>smoothed_pseudoranges</source>
+        <translation>Сглаженные псевдодальности</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>power_saving_type</source>
+        <translation>Тип энергосбережения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>power_saving_enabled</source>
+        <translation>Энергосбережение разрешено</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dynamics_code</source>
+        <translation>Профиль динамики (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dynamics</source>
+        <translation>Профиль динамики</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>kalman_filter</source>
+        <translation>Фильтр Калмана</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>first_fix_2d_allowed</source>
+        <translation>Режим 2D для первого решения разрешён</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mode_2d_allowed</source>
+        <translation>Режим 2D разрешён</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>geopath</source>
+        <translation>Режим GeoPath</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pps_time_scale_code</source>
+        <translation>Шкала времени 1PPS (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pps_time_scale</source>
+        <translation>Шкала времени 1PPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pps_polarity</source>
+        <translation>Полярность 1PPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pps_enabled</source>
+        <translation>1PPS включён</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>search_unused_systems</source>
+        <translation>Поиск сигналов неиспользуемых систем</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sbas</source>
+        <translation>SBAS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>qzss</source>
+        <translation>QZSS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>galileo</source>
+        <translation>Galileo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gps</source>
+        <translation>GPS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>glonass</source>
+        <translation>GLONASS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>config2</source>
+        <translation>Регистр конфигурации 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>receiver_type_code</source>
+        <translation>Тип приёмника (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>receiver_type</source>
+        <translation>Тип приёмника</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>datum_code</source>
+        <translation>Система координат (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>datum</source>
+        <translation>Система координат</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>differential_allowed</source>
+        <translation>Дифференциальный режим разрешён</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sbas_test_mode_allowed</source>
+        <translation>Поправки SBAS в тестовом режиме разрешены</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>use_all_satellites</source>
+        <translation>Использовать все спутники</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sbas_prn</source>
+        <translation>PRN SBAS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Settings report (PNMRX603)</source>
+        <translation>Отчёт о настройках (PNMRX603)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>message</source>
+        <translation>Сообщение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sequence</source>
+        <translation>Порядок выдачи</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>delay_s</source>
+        <translation>Задержка, с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GGA</source>
+        <translation>GGA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GLL</source>
+        <translation>GLL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GSA</source>
+        <translation>GSA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>GSV</source>
+        <translation>GSV</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMC</source>
+        <translation>RMC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VTG</source>
+        <translation>VTG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ZDA</source>
+        <translation>ZDA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nmrx_enabled</source>
+        <translation>Включённые сообщения Nemerix</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uart_settings</source>
+        <translation>Настройки UART</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>alpha0</source>
+        <translation>alpha0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>alpha0_raw</source>
+        <translation>alpha0 (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>alpha1</source>
+        <translation>alpha1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>alpha1_raw</source>
+        <translation>alpha1 (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>alpha2</source>
+        <translation>alpha2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>alpha2_raw</source>
+        <translation>alpha2 (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>alpha3</source>
+        <translation>alpha3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>alpha3_raw</source>
+        <translation>alpha3 (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beta0</source>
+        <translation>beta0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beta0_raw</source>
+        <translation>beta0 (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beta1</source>
+        <translation>beta1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beta1_raw</source>
+        <translation>beta1 (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beta2</source>
+        <translation>beta2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beta2_raw</source>
+        <translation>beta2 (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beta3</source>
+        <translation>beta3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>beta3_raw</source>
+        <translation>beta3 (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>iono_valid</source>
+        <translation>Достоверность ионосферных данных</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>num_blocks</source>
+        <translation>Число 20-летних блоков</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tz_hours</source>
+        <translation>Часовой пояс, ч</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tz_minutes</source>
+        <translation>Часовой пояс, мин</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max_pdop</source>
+        <translation>Максимальный PDOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max_hdop</source>
+        <translation>Максимальный HDOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid_sv</source>
+        <translation>Маска исключённых спутников</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>excluded_svs</source>
+        <translation>Исключённые спутники</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>min_cno</source>
+        <translation>Минимальное C/N0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>min_elevation</source>
+        <translation>Минимальный угол места</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max_tm</source>
+        <translation>Максимальное число каналов</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max_sv_for_fix</source>
+        <translation>Максимум спутников в решении</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>acq_threshold_1</source>
+        <translation>Порог захвата 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>acq_threshold_2</source>
+        <translation>Порог захвата 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>noise_floor</source>
+        <translation>Уровень шума</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>kalman_mode</source>
+        <translation>Режим фильтра Калмана</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>default_altitude</source>
+        <translation>Высота по умолчанию</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>correction</source>
+        <translation>Поправка геоида EGM96</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dx</source>
+        <translation>dx</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dy</source>
+        <translation>dy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dz</source>
+        <translation>dz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>iflat_raw</source>
+        <translation>Обратное сжатие (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>major_axis_raw</source>
+        <translation>Большая полуось (код)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>inverse_flattening</source>
+        <translation>Обратное сжатие</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>semi_major_axis_m</source>
+        <translation>Большая полуось, м</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Software version (PNMRX600)</source>
+        <translation>Версия ПО (PNMRX600)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>version</source>
+        <translation>Версия</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fields</source>
+        <translation>Поля</translation>
+    </message>
+</context>
+<context>
     <name>Schema/geostar</name>
     <message>
-        <location filename="schema_texts.cpp" line="+195"/>
+        <location line="-382"/>
         <source>Output messages</source>
         <translation>Выходные сообщения</translation>
     </message>
@@ -2639,7 +3422,7 @@ Serial number: %3</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+255"/>
+        <location line="+258"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
@@ -2704,7 +3487,7 @@ Serial number: %3</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location line="-229"/>
+        <location line="-232"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -2739,7 +3522,7 @@ Serial number: %3</source>
         <translation>Решение</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <location line="+1"/>
         <source>Signal levels</source>
         <translation>Уровни сигналов</translation>
@@ -2972,7 +3755,7 @@ Serial number: %3</source>
         <translation>Параметры</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>System (%1)</source>
         <translation>Как в системе (%1)</translation>
     </message>
@@ -2987,7 +3770,7 @@ Serial number: %3</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>Follow the system</source>
         <translation>Как в системе</translation>
     </message>
@@ -3052,7 +3835,7 @@ Serial number: %3</source>
         <translation>Скорости порта, которые перебирает режим «авто», в этом порядке, через запятую</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>&amp;Baud rates to try:</source>
         <translation>&amp;Скорости для перебора:</translation>
     </message>
@@ -4617,7 +5400,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::MessageStatsModel</name>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="+57"/>
+        <location filename="../ui/models/message_stats_model.cpp" line="+66"/>
         <source>Address</source>
         <translation>Адрес</translation>
     </message>
@@ -4630,6 +5413,11 @@ Serial number: %3</source>
         <location line="+1"/>
         <source>Rate (Hz)</source>
         <translation>Частота (Гц)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Last seen (local time)</source>
+        <translation>Последнее (местное время)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4655,7 +5443,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ReceiverInfoView</name>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="+48"/>
+        <location filename="../ui/views/receiver_info_view.cpp" line="+67"/>
         <source>Item</source>
         <translation>Параметр</translation>
     </message>

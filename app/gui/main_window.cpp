@@ -176,7 +176,10 @@ void MainWindow::createDocks() {
         setPreferences(p);
     });
     connect(this, &MainWindow::displayPrefsChanged, console_,
-            [this](const ui::DisplayPrefs &p) { console_->setTimeZone(p.time); });
+            [this](const ui::DisplayPrefs &p) {
+                console_->setTimeZone(p.time);
+                messages_->setTimeZone(p.time);
+            });
     auto *signalDock = addDock(new ui::SignalLevelsView(satellites_, this), tr("Signal levels"),
                                tr("Signal levels"), "signalDock", Qt::BottomDockWidgetArea);
     auto *table = new QTableView(this);

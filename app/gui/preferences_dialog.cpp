@@ -27,6 +27,8 @@ PreferencesDialog::PreferencesDialog(const Preferences &prefs, const QString &ru
     setObjectName("preferencesDialog");
     setWindowTitle(tr("Preferences"));
     auto *outer = new QVBoxLayout(this);
+    // The dialog follows its content: a note or an error shown makes it taller, never clipped.
+    outer->setSizeConstraint(QLayout::SetFixedSize);
     auto *form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
     outer->addLayout(form);
@@ -42,7 +44,6 @@ PreferencesDialog::PreferencesDialog(const Preferences &prefs, const QString &ru
                                   "Workbench."),
                                this);
     languageNote_->setObjectName("prefLanguageNote");
-    languageNote_->setWordWrap(true);
     languageNote_->setForegroundRole(QPalette::PlaceholderText);
     form->addRow(QString(), languageNote_);
 
@@ -83,11 +84,13 @@ PreferencesDialog::PreferencesDialog(const Preferences &prefs, const QString &ru
     bauds_->setObjectName("prefBauds");
     bauds_->setToolTip(tr("The serial speeds baud \"auto\" tries, in this order, separated by "
                           "commas"));
+    // Wide enough for the whole built-in list: the order is the point, none of it scrolled away.
+    bauds_->setMinimumWidth(
+            bauds_->fontMetrics().horizontalAdvance(baudListText(defaultDetectionBauds())) + 24);
     form->addRow(tr("&Baud rates to try:"), bauds_);
     baudError_ = new QLabel(this);
     baudError_->setObjectName("prefBaudError");
     baudError_->setStyleSheet(QStringLiteral("color: #C62828;"));
-    baudError_->setWordWrap(true);
     form->addRow(QString(), baudError_);
 
     buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel |

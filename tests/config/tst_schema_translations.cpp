@@ -1,7 +1,8 @@
-// The dialects' schema texts in Russian: the catalog lupdate reads (translations/schema_texts.cpp)
-// is the one the dialect records give today; every label, group, unit, option name, help text,
-// action and preset of every built-in dialect has a Russian translation in the application's
-// compiled .qm; and the settings form, built in Russian, shows them.
+// The dialects' texts in Russian: the catalog lupdate reads (translations/schema_texts.cpp) is the
+// one the dialect records give today; every label, group, unit, option name, help text, action
+// and preset of every built-in dialect, and every report title and field name their receivers
+// give, has a Russian translation in the application's compiled .qm; and the settings form,
+// built in Russian, shows them.
 #include "engine_rig.h"
 
 #include "dialects.h"
@@ -45,7 +46,8 @@ private slots:
         QFile f(QStringLiteral(GNSS_SCHEMA_CATALOG));
         QVERIFY2(f.open(QIODevice::ReadOnly), GNSS_SCHEMA_CATALOG);
         const std::vector<const Dialect *> dialects = builtinDialects();
-        const QByteArray expected = QByteArray::fromStdString(schemaCatalogSource(dialects));
+        const QByteArray expected =
+                QByteArray::fromStdString(schemaCatalogSource(dialects, registry()));
         QVERIFY2(f.readAll() == expected,
                  "translations/schema_texts.cpp is stale: run `cmake --build --preset dev "
                  "--target update_translations` and translate what it adds");
@@ -67,6 +69,20 @@ private slots:
             if (ru(d->id, t).isEmpty()) missing << QString::fromStdString(t);
         QVERIFY2(missing.isEmpty(), qPrintable("no Russian for: " + missing.join(" | ")));
         QVERIFY(texts.size() > 50);
+    }
+
+    // The Receiver dock's report titles and field names, as the simulated receivers give them.
+    void everyReportFieldIsInRussian() {
+        QStringList missing;
+        std::size_t texts = 0;
+        for (const Dialect *d : builtinDialects())
+            for (const std::string &t : reportTexts(*d, registry())) {
+                ++texts;
+                if (russian_.translate(kReportsContext, t.c_str()).isEmpty())
+                    missing << QString::fromStdString(t);
+            }
+        QVERIFY2(missing.isEmpty(), qPrintable("no Russian for: " + missing.join(" | ")));
+        QVERIFY(texts > 50);
     }
 
     void theSettingsFormSpeaksRussian_data() { everySchemaTextIsInRussian_data(); }

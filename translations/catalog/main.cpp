@@ -13,6 +13,7 @@ int main(int argc, char **argv) {
     }
     const std::vector<const gnss::Dialect *> dialects = gnss::builtinDialects();
     std::ofstream out(argv[1], std::ios::binary | std::ios::trunc);
-    out << gnss::schemaCatalogSource(dialects);
+    const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
+    out << gnss::schemaCatalogSource(dialects, registry);
     return out.good() ? 0 : 1;
 }

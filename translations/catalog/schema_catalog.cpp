@@ -1,8 +1,13 @@
 #include "schema_catalog.h"
 
 #include "core/dialect.h"
+#include "core/dialect_registry.h"
+#include "core/stream_decoder.h"
+#include "sim/receiver.h"
+#include "state/state_tracker.h"
 
 #include <algorithm>
+#include <regex>
 
 namespace gnss {
 namespace {
@@ -59,7 +64,48 @@ std::vector<std::string> schemaTexts(const Dialect &d) {
     return out;
 }
 
-std::string schemaCatalogSource(std::span<const Dialect *const> dialects) {
+std::vector<std::string> reportTexts(const Dialect &d, const DialectRegistry &registry) {
+    std::vector<std::string> out;
+    std::unique_ptr<sim::Receiver> rx = d.makeSimulator ? d.makeSimulator(sim::SimOptions{})
+                                                        : sim::makeReceiver(d.id);
+    if (!rx) return out;
+    // Everything the application asks: the identity, then every readable setting.
+    std::string asked = std::string(d.probeCommand) + "\r\n";
+    std::vector<std::string> keys;
+    for (const SettingDef &def : d.settings)
+        if (def.access != SettingAccess::WriteOnly) keys.emplace_back(def.key);
+    if (d.encodeQueries)
+        for (const std::string &q : d.encodeQueries(keys).sentences)
+            asked += q.ends_with("\n") ? q : q + "\r\n";
+    StreamDecoder decoder(registry);
+    StateTracker tracker(&d);
+    auto run = [&](double seconds) {
+        for (double t = 0; t < seconds; t += 0.5) {
+            rx->advance(0.5);
+            decoder.feed(rx->takeOutput(), [&](const SentenceEvent &ev) {
+                if (ev.message) tracker.add(ev.sentence, *ev.message, ev.dialect, [](auto &) {});
+            });
+        }
+    };
+    run(2);
+    rx->receive(asked);
+    run(10);
+    auto add = [&](std::string s) {
+        if (s.empty() || std::find(out.begin(), out.end(), s) != out.end()) return;
+        out.push_back(std::move(s));
+    };
+    static const std::regex trailingNumber(R"( \d+$)");
+    static const std::regex jsonKey(R"re("((?:[^"\\]|\\.)*)"\s*:)re");
+    for (const auto &[title, json] : tracker.state().reports) {
+        add(std::regex_replace(title, trailingNumber, ""));
+        for (std::sregex_iterator it(json.begin(), json.end(), jsonKey), end; it != end; ++it)
+            add((*it)[1].str());
+    }
+    return out;
+}
+
+std::string schemaCatalogSource(std::span<const Dialect *const> dialects,
+                                const DialectRegistry &registry) {
     std::string out =
             "// Generated from the dialect records by the update_schema_catalog target (run by\n"
             "// update_translations): the texts of the settings schemas, actions and presets,\n"
@@ -72,6 +118,20 @@ std::string schemaCatalogSource(std::span<const Dialect *const> dialects) {
         out += "\n// " + std::string(d->displayName) + "\n";
         out += "static const char *const " + std::string(d->id) + "_texts[] = {\n";
         for (const std::string &t : texts)
+            out += "    QT_TRANSLATE_NOOP(" + context + ", " + literal(t) + "),\n";
+        out += "};\n";
+    }
+    // Report titles and field names: one context for every dialect (many fields are shared).
+    std::vector<std::string> reports;
+    for (const Dialect *d : dialects)
+        for (std::string &t : reportTexts(*d, registry))
+            if (std::find(reports.begin(), reports.end(), t) == reports.end())
+                reports.push_back(std::move(t));
+    if (!reports.empty()) {
+        const std::string context = literal(kReportsContext);
+        out += "\n// Receiver reports: titles and field names (the Receiver dock)\n";
+        out += "static const char *const report_texts[] = {\n";
+        for (const std::string &t : reports)
             out += "    QT_TRANSLATE_NOOP(" + context + ", " + literal(t) + "),\n";
         out += "};\n";
     }

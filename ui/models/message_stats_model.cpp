@@ -41,14 +41,23 @@ QVariant MessageStatsModel::data(const QModelIndex &index, int role) const {
     case Count: return QString::number(r.count);
     case Rate: return QString::number(r.rateHz, 'f', r.rateHz < 10 ? 2 : 1);
     case LastSeen:
-        return r.lastSeenMs ? QDateTime::fromMSecsSinceEpoch(r.lastSeenMs, Qt::UTC)
-                                      .toString("hh:mm:ss.zzz")
-                            : QStringLiteral("—");
+        if (!r.lastSeenMs) return QStringLiteral("—");
+        {
+            const QDateTime at = QDateTime::fromMSecsSinceEpoch(r.lastSeenMs, Qt::UTC);
+            return (zone_ == TimeZoneChoice::Local ? at.toLocalTime() : at)
+                    .toString(QStringLiteral("hh:mm:ss.zzz"));
+        }
     case ChecksumErrors: return QString::number(r.checksumErrors);
     case DecodeErrors: return QString::number(r.decodeErrors);
     case Unknown: return QString::number(r.unknown);
     }
     return {};
+}
+
+void MessageStatsModel::setTimeZone(TimeZoneChoice zone) {
+    zone_ = zone;
+    emit headerDataChanged(Qt::Horizontal, LastSeen, LastSeen);
+    if (!rows_.empty()) emit dataChanged(index(0, LastSeen), index(rowCount() - 1, LastSeen));
 }
 
 QVariant MessageStatsModel::headerData(int section, Qt::Orientation o, int role) const {
@@ -57,7 +66,9 @@ QVariant MessageStatsModel::headerData(int section, Qt::Orientation o, int role)
     case Address: return tr("Address");
     case Count: return tr("Count");
     case Rate: return tr("Rate (Hz)");
-    case LastSeen: return tr("Last seen (UTC)");
+    case LastSeen:
+        return zone_ == TimeZoneChoice::Local ? tr("Last seen (local time)")
+                                              : tr("Last seen (UTC)");
     case ChecksumErrors: return tr("Checksum errors");
     case DecodeErrors: return tr("Decode errors");
     case Unknown: return tr("Unknown");

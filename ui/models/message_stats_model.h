@@ -2,6 +2,7 @@
 // MessageStatsModel: per address count, rate, last seen and errors. Refreshed from the decoder's
 // own counters on a timer, so counting costs nothing per sentence.
 #include "core/stream_decoder.h"
+#include "views/value_format.h"
 
 #include <QAbstractTableModel>
 #include <vector>
@@ -32,6 +33,8 @@ public:
     // Takes the decoder's counters at host time nowMs; rates are measured over the last 5 s.
     void refresh(const std::vector<AddressStats> &stats, qint64 nowMs);
     void clear();
+    // When each address was last seen: UTC or local time (Preferences).
+    void setTimeZone(TimeZoneChoice zone);
 
     struct Row {
         QString address;
@@ -44,6 +47,7 @@ public:
 
 private:
     std::vector<Row> rows_;
+    TimeZoneChoice zone_ = TimeZoneChoice::Utc;
 };
 
 } // namespace gnss::ui

@@ -117,7 +117,7 @@ void FixView::refresh() {
     utc_->setText(fmt::time(e.date, e.time, prefs_.time));
     speed_->setText(fmt::speed(
             e.sogKnots ? std::optional(*e.sogKnots * 1852.0 / 3600.0) : std::nullopt, units));
-    course_->setText(fmt::number(e.cog, 1, QStringLiteral("°")));
+    course_->setText(e.cog ? fmt::number(e.cog, 1) + QStringLiteral("°") : fmt::dash());
     const auto age = e.dgpsAge ? e.dgpsAge : model_->state().rtk.correctionAge;
     corrAge_->setText(fmt::number(age, 1, tr("s")));
     base_->setText(fmt::integer(e.dgpsStation));

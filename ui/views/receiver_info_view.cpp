@@ -3,11 +3,13 @@
 #include "models/receiver_state_model.h"
 #include "value_format.h"
 
+#include <QCoreApplication>
 #include <QHeaderView>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QRegularExpression>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -27,6 +29,23 @@ QString prettyKey(QString k) {
     k.replace('_', ' ');
     if (!k.isEmpty()) k[0] = k[0].toUpper();
     return k;
+}
+
+// A report's field name in the user's language (the "Reports" context the catalog in
+// translations/ lists), else made readable: "firmware_date" -> "Firmware date".
+QString fieldLabel(const QString &key) {
+    const QByteArray k = key.toUtf8();
+    const QString t = QCoreApplication::translate("Reports", k.constData());
+    return t != key ? t : prettyKey(key);
+}
+
+// A report's title, translated; a trailing number ("Settings report (PNMRX603) 2") is kept.
+QString titleLabel(const QString &title) {
+    static const QRegularExpression number(QStringLiteral(" (\\d+)$"));
+    const QRegularExpressionMatch m = number.match(title);
+    const QString base = m.hasMatch() ? title.left(m.capturedStart()) : title;
+    const QString t = QCoreApplication::translate("Reports", base.toUtf8().constData());
+    return m.hasMatch() ? t + ' ' + m.captured(1) : t;
 }
 
 } // namespace
@@ -58,7 +77,7 @@ ReceiverInfoView::ReceiverInfoView(ReceiverStateModel *model, QWidget *parent)
 }
 
 void ReceiverInfoView::addJson(QTreeWidgetItem *parent, const QString &key, const QJsonValue &v) {
-    auto *item = new QTreeWidgetItem(parent, {prettyKey(key)});
+    auto *item = new QTreeWidgetItem(parent, {fieldLabel(key)});
     if (v.isObject()) {
         const QJsonObject o = v.toObject();
         for (auto it = o.begin(); it != o.end(); ++it) addJson(item, it.key(), it.value());
@@ -128,7 +147,7 @@ void ReceiverInfoView::refresh() {
         if (tree_->topLevelItem(i)->isExpanded()) expanded.insert(tree_->topLevelItem(i)->text(0));
     tree_->clear();
     for (const auto &[title, json] : st.reports) {
-        const QString t = QString::fromStdString(title);
+        const QString t = titleLabel(QString::fromStdString(title));
         auto *top = new QTreeWidgetItem(tree_, {t});
         const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(json));
         const QJsonObject o = doc.object();
