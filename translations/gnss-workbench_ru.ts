@@ -217,6 +217,139 @@
     </message>
 </context>
 <context>
+    <name>Refusal</name>
+    <message>
+        <location filename="../protocol/core/settings_schema.cpp" line="+77"/>
+        <source>%1: %2 is out of range; accepted: %3</source>
+        <translation>%1: %2 вне допустимого диапазона; допустимо: %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 is out of range; accepted: %3 %4</source>
+        <translation>%1: %2 вне допустимого диапазона; допустимо: %3 %4</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: character not allowed in a value: &apos;%2&apos;</source>
+        <translation>%1: недопустимый символ в значении: «%2»</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: expected 0 or 1, got &apos;%2&apos;</source>
+        <translation>%1: ожидается 0 или 1, получено «%2»</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: expected an integer, got &apos;%2&apos;</source>
+        <translation>%1: ожидается целое число, получено «%2»</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: expected a number, got &apos;%2&apos;</source>
+        <translation>%1: ожидается число, получено «%2»</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: &apos;%2&apos; is not one of: %3</source>
+        <translation>%1: «%2» не входит в список: %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: expected numbers separated by &apos;,&apos;, got &apos;%2&apos;</source>
+        <translation>%1: ожидаются числа через «,», получено «%2»</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: &apos;,&apos; is not allowed in this value</source>
+        <translation>%1: символ «,» в этом значении недопустим</translation>
+    </message>
+    <message>
+        <location filename="../protocol/geostar/geostar_schema.cpp" line="+186"/>
+        <source>unknown setting &apos;%1&apos; (geostar settings: %2)</source>
+        <translation>неизвестная настройка «%1» (настройки geostar: %2)</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1: &apos;%2&apos; is reported by the receiver but cannot be set with an NMEA command</source>
+        <translation>%1: значение «%2» приёмник сообщает, но установить его командой NMEA нельзя</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_settings.cpp" line="+81"/>
+        <source>%1: unknown setting of the nemerix dialect</source>
+        <translation>%1: неизвестная настройка диалекта nemerix</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>fix.timeZone: &apos;%1&apos; is not accepted; accepted: h:m with hours -13..13 and minutes 0..59</source>
+        <translation>fix.timeZone: «%1» недопустимо; допустимо: ч:м, часы -13..13, минуты 0..59</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>datum.mapDatum: %1 is out of range; accepted: 0..218 (internal table) or 500 (user defined)</source>
+        <translation>datum.mapDatum: %1 вне допустимого диапазона; допустимо: 0..218 (встроенная таблица) или 500 (задаётся пользователем)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>datum.mapDatum: required with any datum.* setting; accepted: 0..218 or 500</source>
+        <translation>datum.mapDatum: обязательна вместе с любой настройкой datum.*; допустимо: 0..218 или 500</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>power.offPeriod: only used with power.mode=1 (LDCM1)</source>
+        <translation>power.offPeriod: используется только при power.mode=1 (LDCM1)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>serial.baud: required with serial.protocol / serial.parity (PNMRX100 sends all three); accepted: 1200, 2400, 4800, 9600, 19200, 38400, 57600</source>
+        <translation>serial.baud: обязательна вместе с serial.protocol / serial.parity (PNMRX100 передаёт все три); допустимо: 1200, 2400, 4800, 9600, 19200, 38400, 57600</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nvs/nvs_encode_util.cpp" line="+8"/>
+        <source>unknown setting &apos;%1&apos;</source>
+        <translation>неизвестная настройка «%1»</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nvs/nvs_rtk.cpp" line="+99"/>
+        <source>PNVGRTK: unknown parameter &apos;%1&apos; (Table 4: MODE, PVTRATE, ... INITGPSWEEK)</source>
+        <translation>PNVGRTK: неизвестный параметр «%1» (таблица 4: MODE, PVTRATE, ... INITGPSWEEK)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rtk.%1: a value is required (an empty value is a query)</source>
+        <translation>rtk.%1: нужно значение (пустое значение — это запрос)</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nvs/nvs_settings.cpp" line="+43"/>
+        <source>%1: &apos;%2&apos; is not ADDRESS:RATE (rate in PVT intervals, &gt;= 1)</source>
+        <translation>%1: «%2» не в виде АДРЕС:ТЕМП (темп в интервалах PVT, &gt;= 1)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>idl.stations: &apos;%1&apos; is not ID:ICB</source>
+        <translation>idl.stations: «%1» не в виде ID:ICB</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>idl.stations: %1 stations is out of range; accepted: 0..32 stations</source>
+        <translation>idl.stations: число станций %1 вне допустимого диапазона; допустимо: 0..32</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>unknown setting &apos;%1&apos; (gnss-cli schema nvs lists them)</source>
+        <translation>неизвестная настройка «%1» (их список выводит gnss-cli schema nvs)</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>PNVGNME sets time and position decimals together: give %1 too</source>
+        <translation>PNVGNME задаёт число знаков времени и координат вместе: укажите также %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>PNVGRZA sets baud rate and protocol together: give %1 too</source>
+        <translation>PNVGRZA задаёт скорость и протокол вместе: укажите также %1</translation>
+    </message>
+</context>
+<context>
     <name>Reports</name>
     <message>
         <location filename="schema_texts.cpp" line="+422"/>
@@ -3843,7 +3976,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::config::SettingsEngine</name>
     <message>
-        <location filename="../protocol/config/settings_engine.cpp" line="+32"/>
+        <location filename="../protocol/config/settings_engine.cpp" line="+33"/>
         <source>verified</source>
         <translation>проверено</translation>
     </message>
@@ -3939,7 +4072,7 @@ Serial number: %3</source>
         <translation>у приёмника %1 нет команды «%2»</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+102"/>
         <source>could not read back: %1</source>
         <translation>не удалось прочитать обратно: %1</translation>
     </message>

@@ -5,6 +5,7 @@
 #include "settings_engine.h"
 
 #include "connection.h"
+#include "refusal_text.h"
 #include "schema_texts.h"
 #include "setting_values.h"
 #include "transport.h"
@@ -262,7 +263,7 @@ bool SettingsEngine::read(const std::vector<std::string> &keys) {
     if (!wanted.empty() && dialect_->encodeQueries) {
         const EncodeResult q = dialect_->encodeQueries(wanted);
         if (!q.ok()) {
-            report_.error = qs(q.error);
+            report_.error = refusalText(q, dialect_->id);
             end();
             return false;
         }
@@ -341,7 +342,7 @@ bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
     applying_ = withCompanions(changes);
     EncodeResult enc = dialect_->encodeSettings(applying_);
     if (!enc.ok()) {
-        report_.error = tr("nothing was sent: %1").arg(qs(enc.error));
+        report_.error = tr("nothing was sent: %1").arg(refusalText(enc, dialect_->id));
         for (const auto &kv : changes)
             report_.checks.push_back({kv.key, kv.value, {}, Verdict::NotSent});
         end();
@@ -472,7 +473,8 @@ void SettingsEngine::startVerify() {
     const EncodeResult q = dialect_->encodeQueries(keys);
     for (const auto &k : keys) reported_.erase(k);
     if (!q.ok() || q.sentences.empty() || !enqueue(q.sentences)) {
-        if (!q.ok()) report_.error = tr("could not read back: %1").arg(qs(q.error));
+        if (!q.ok())
+            report_.error = tr("could not read back: %1").arg(refusalText(q, dialect_->id));
         if (pending_.empty()) {
             finishVerify();
             end();

@@ -53,6 +53,7 @@ const SettingDef *findSettingByRole(std::span<const SettingDef> schema, SettingR
 
 namespace {
 
+// The accepted range without its unit: "0..90", ">= 4800".
 std::string rangeText(const SettingDef &d) {
     std::string r;
     auto fmt = [&](double v) {
@@ -65,45 +66,51 @@ std::string rangeText(const SettingDef &d) {
         r = ">= " + fmt(*d.min);
     else if (d.max)
         r = "<= " + fmt(*d.max);
-    if (!d.unit.empty() && !r.empty()) r += " " + std::string(d.unit);
     return r;
 }
 
-bool checkRange(const SettingDef &d, double v, std::string &err) {
+Refusal checkRange(const SettingDef &d, double v) {
     if ((d.min && v < *d.min) || (d.max && v > *d.max)) {
-        err = std::string(d.key) + ": " + formatFixed(v, v == std::floor(v) ? 0 : 6) +
-              " is out of range; accepted: " + rangeText(d);
-        return false;
+        std::vector<std::string> args{std::string(d.key),
+                                      formatFixed(v, v == std::floor(v) ? 0 : 6), rangeText(d)};
+        if (d.unit.empty())
+            return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
+                           std::move(args));
+        args.emplace_back(d.unit);
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3 %4"),
+                       std::move(args));
     }
-    return true;
+    return {};
 }
 
 } // namespace
 
-std::string validateSetting(const SettingDef &d, std::string_view value) {
-    std::string err;
+Refusal validateSetting(const SettingDef &d, std::string_view value) {
+    const std::string key(d.key), given(value);
     for (char c : value) {
         if (c == '*' || c == '$' || c == '!' || static_cast<unsigned char>(c) < 0x20 ||
             static_cast<unsigned char>(c) >= 0x7F)
-            return std::string(d.key) + ": character not allowed in a value: '" + c + "'";
+            return refusal(
+                    QT_TRANSLATE_NOOP("Refusal", "%1: character not allowed in a value: '%2'"),
+                    {key, std::string(1, c)});
     }
     switch (d.type) {
     case SettingType::Bool:
         if (value == "0" || value == "1") return {};
-        return std::string(d.key) + ": expected 0 or 1, got '" + std::string(value) + "'";
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: expected 0 or 1, got '%2'"), {key, given});
     case SettingType::Integer: {
         std::int64_t v;
         if (!parseInt(value, v))
-            return std::string(d.key) + ": expected an integer, got '" + std::string(value) + "'";
-        checkRange(d, static_cast<double>(v), err);
-        return err;
+            return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: expected an integer, got '%2'"),
+                           {key, given});
+        return checkRange(d, static_cast<double>(v));
     }
     case SettingType::Real: {
         double v;
         if (!parseReal(value, v))
-            return std::string(d.key) + ": expected a number, got '" + std::string(value) + "'";
-        checkRange(d, v, err);
-        return err;
+            return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: expected a number, got '%2'"),
+                           {key, given});
+        return checkRange(d, v);
     }
     case SettingType::Enum: {
         std::string accepted;
@@ -112,7 +119,8 @@ std::string validateSetting(const SettingDef &d, std::string_view value) {
             if (!accepted.empty()) accepted += ", ";
             accepted += o.value;
         }
-        return std::string(d.key) + ": '" + std::string(value) + "' is not one of: " + accepted;
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: '%2' is not one of: %3"),
+                       {key, given, accepted});
     }
     case SettingType::Coordinates: {
         std::string_view rest = value;
@@ -121,8 +129,9 @@ std::string validateSetting(const SettingDef &d, std::string_view value) {
             const auto comma = rest.find(',');
             double v;
             if (!parseReal(rest.substr(0, comma), v))
-                return std::string(d.key) + ": expected numbers separated by ',', got '" +
-                       std::string(value) + "'";
+                return refusal(QT_TRANSLATE_NOOP("Refusal",
+                                                 "%1: expected numbers separated by ',', got '%2'"),
+                               {key, given});
             ++n;
             if (comma == std::string_view::npos) break;
             rest.remove_prefix(comma + 1);
@@ -132,7 +141,8 @@ std::string validateSetting(const SettingDef &d, std::string_view value) {
     }
     case SettingType::Text:
         if (value.find(',') != std::string_view::npos)
-            return std::string(d.key) + ": ',' is not allowed in this value";
+            return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: ',' is not allowed in this value"),
+                           {key});
         return {};
     case SettingType::List: return {};
     }

@@ -3,6 +3,8 @@
 //
 // One table per dialect is the single source of truth that the settings forms, `gnss-cli schema`,
 // `gnss-cli encode`, configuration profiles and the simulator all read.
+#include "refusal.h"
+
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -75,15 +77,22 @@ struct KeyValue {
 struct EncodeResult {
     std::vector<std::string> sentences;
     std::string error; // names the parameter and the accepted range when a value is refused
+    // The same as a translatable template when the encoder gave one (refuse()); a GUI shows
+    // it when its text is `error`.
+    Refusal refusal;
     bool ok() const { return error.empty(); }
+    void refuse(Refusal r) {
+        error = r.text;
+        refusal = std::move(r);
+    }
 };
 
 const SettingDef *findSetting(std::span<const SettingDef> schema, std::string_view key);
 // The setting with this role (the first, when a dialect has several), nullptr when none.
 const SettingDef *findSettingByRole(std::span<const SettingDef> schema, SettingRole role);
 
-// Checks `value` against the setting's type, range and options. Returns an empty string when
-// valid, else a message naming the parameter and what it accepts.
-std::string validateSetting(const SettingDef &def, std::string_view value);
+// Checks `value` against the setting's type, range and options. Returns an empty refusal when
+// valid, else one naming the parameter and what it accepts.
+Refusal validateSetting(const SettingDef &def, std::string_view value);
 
 } // namespace gnss

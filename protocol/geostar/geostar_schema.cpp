@@ -180,10 +180,11 @@ std::string normalise(const SettingDef &d, std::string_view value) {
     return std::string(value);
 }
 
-std::string unknownKey(std::string_view key) {
+Refusal unknownKey(std::string_view key) {
     std::string known;
     for (const auto &d : kSchema) known += (known.empty() ? "" : ", ") + std::string(d.key);
-    return "unknown setting '" + std::string(key) + "' (geostar settings: " + known + ")";
+    return refusal(QT_TRANSLATE_NOOP("Refusal", "unknown setting '%1' (geostar settings: %2)"),
+                   {std::string(key), known});
 }
 
 int effectOrder(CommandEffect e) {
@@ -198,22 +199,24 @@ int effectOrder(CommandEffect e) {
 }
 
 bool plan(std::span<const KeyValue> values, std::vector<const CommandDef *> &out,
-          std::string &error) {
+          EncodeResult &error) {
     for (const auto &kv : values) {
         const SettingDef *d = findSetting(kSchema, kv.key);
         if (!d) {
-            error = unknownKey(kv.key);
+            error.refuse(unknownKey(kv.key));
             return false;
         }
         const std::string v = normalise(*d, kv.value);
-        if (std::string e = validateSetting(*d, v); !e.empty()) {
-            error = e;
+        if (Refusal e = validateSetting(*d, v); !e.empty()) {
+            error.refuse(std::move(e));
             return false;
         }
         const CommandDef *c = findCommandFor(d->key, v);
         if (!c) {
-            error = std::string(d->key) + ": '" + v +
-                    "' is reported by the receiver but cannot be set with an NMEA command";
+            error.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: '%2' is reported by the "
+                                                              "receiver but cannot be set with "
+                                                              "an NMEA command"),
+                                 {std::string(d->key), v}));
             return false;
         }
         out.push_back(c);
@@ -245,7 +248,7 @@ std::span<const SettingDef> settingsSchema() {
 EncodeResult encodeSettingCommands(std::span<const KeyValue> values) {
     EncodeResult r;
     std::vector<const CommandDef *> planned;
-    if (!plan(values, planned, r.error)) return r;
+    if (!plan(values, planned, r)) return r;
     for (const CommandDef *c : planned) r.sentences.push_back(encodeCommand(*c));
     return r;
 }
@@ -253,7 +256,7 @@ EncodeResult encodeSettingCommands(std::span<const KeyValue> values) {
 EncodeResult encodeSettings(std::span<const KeyValue> values) {
     EncodeResult r;
     std::vector<const CommandDef *> planned;
-    if (!plan(values, planned, r.error)) return r;
+    if (!plan(values, planned, r)) return r;
     // Commands, then the confirming queries, then whatever resets / re-speeds / leaves NMEA
     // (after those a query would not be answered on the same terms).
     std::vector<std::string> confirm;

@@ -78,22 +78,28 @@ EncodeResult encodeSettingsUnchecked(std::span<const KeyValue> values) {
     for (const auto &kv : values) {
         const SettingDef *def = findSetting(schema, kv.key);
         if (!def) {
-            out.error = kv.key + ": unknown setting of the nemerix dialect";
+            out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: unknown setting of the nemerix "
+                                                            "dialect"),
+                               {kv.key}));
             return out;
         }
-        out.error = validateSetting(*def, kv.value);
+        out.refuse(validateSetting(*def, kv.value));
         if (!out.ok()) return out;
         v.byKey[std::string(def->key)] = kv.value;
     }
     // Checks the generic validation cannot make.
     if (v.has("fix.timeZone") && !parseTimeZone(v.get("fix.timeZone"))) {
-        out.error = "fix.timeZone: '" + v.get("fix.timeZone") +
-                    "' is not accepted; accepted: h:m with hours -13..13 and minutes 0..59";
+        out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "fix.timeZone: '%1' is not accepted; "
+                                                        "accepted: h:m with hours -13..13 and "
+                                                        "minutes 0..59"),
+                           {v.get("fix.timeZone")}));
         return out;
     }
     if (auto d = v.integer("datum.mapDatum"); d && *d > 218 && *d != 500) {
-        out.error = "datum.mapDatum: " + std::to_string(*d) +
-                    " is out of range; accepted: 0..218 (internal table) or 500 (user defined)";
+        out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "datum.mapDatum: %1 is out of range; "
+                                                        "accepted: 0..218 (internal table) or 500 "
+                                                        "(user defined)"),
+                           {std::to_string(*d)}));
         return out;
     }
 
@@ -103,8 +109,10 @@ EncodeResult encodeSettingsUnchecked(std::span<const KeyValue> values) {
                           v.has("datum.inverseFlattening") || v.has("datum.semiMajorAxis");
     if (anyDatum) {
         if (!v.has("datum.mapDatum")) {
-            out.error = "datum.mapDatum: required with any datum.* setting; accepted: 0..218 or "
-                        "500";
+            out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal",
+                                                 "datum.mapDatum: required with any datum.* "
+                                                 "setting; accepted: 0..218 or 500"),
+                               {}));
             return out;
         }
         DatumParams p;
@@ -136,7 +144,10 @@ EncodeResult encodeSettingsUnchecked(std::span<const KeyValue> values) {
         const int mode = v.integer("power.mode").value_or(1);
         const auto off = v.integer("power.offPeriod");
         if (mode == 0 && off) {
-            out.error = "power.offPeriod: only used with power.mode=1 (LDCM1)";
+            out.refuse(refusal(
+                    QT_TRANSLATE_NOOP("Refusal",
+                                      "power.offPeriod: only used with power.mode=1 (LDCM1)"),
+                    {}));
             return out;
         }
         if (!append(out, encodePowerMode(mode, off))) return out;
@@ -168,8 +179,12 @@ EncodeResult encodeSettingsUnchecked(std::span<const KeyValue> values) {
     // PNMRX100, last
     if (v.has("serial.protocol") || v.has("serial.baud") || v.has("serial.parity")) {
         if (!v.has("serial.baud")) {
-            out.error = "serial.baud: required with serial.protocol / serial.parity (PNMRX100 "
-                        "sends all three); accepted: 1200, 2400, 4800, 9600, 19200, 38400, 57600";
+            out.refuse(
+                    refusal(QT_TRANSLATE_NOOP("Refusal",
+                                              "serial.baud: required with serial.protocol / "
+                                              "serial.parity (PNMRX100 sends all three); accepted: "
+                                              "1200, 2400, 4800, 9600, 19200, 38400, 57600"),
+                            {}));
             return out;
         }
         if (!append(out, encodeSerialPort(v.integer("serial.protocol").value_or(0),

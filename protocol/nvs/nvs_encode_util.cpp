@@ -2,9 +2,10 @@
 
 namespace gnss::nvs {
 
-std::string checkSetting(std::string_view key, std::string_view value) {
+Refusal checkSetting(std::string_view key, std::string_view value) {
     const SettingDef *def = findSetting(settingsSchema(), key);
-    if (!def) return "unknown setting '" + std::string(key) + "'";
+    if (!def)
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "unknown setting '%1'"), {std::string(key)});
     return validateSetting(*def, value);
 }
 

@@ -63,6 +63,6 @@ std::span<const std::string_view> rtkParameterNames();
 bool isRtkParameter(std::string_view name);
 
 // Validation of one PNVGRTK value against Table 4 (empty string when valid).
-std::string validateRtkValue(std::string_view name, std::string_view value);
+Refusal validateRtkValue(std::string_view name, std::string_view value);
 
 } // namespace gnss::nvs

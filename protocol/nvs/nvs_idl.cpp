@@ -100,7 +100,8 @@ EncodeResult encodeIdlMode(int mode) {
 }
 
 EncodeResult encodeIdlAdd(std::optional<int> stationId, std::optional<double> icb) {
-    if (icb && !stationId) return refuse("PNVGIDL ADD: a GLONASS ICB needs a station ID before it");
+    if (icb && !stationId)
+        return refuse(std::string("PNVGIDL ADD: a GLONASS ICB needs a station ID before it"));
     std::string body = "PNVGIDL,ADD";
     if (stationId) {
         if (auto err = checkStation(*stationId); !err.empty()) return refuse(err);

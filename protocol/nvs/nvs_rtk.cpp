@@ -94,13 +94,15 @@ bool isRtkParameter(std::string_view name) {
     return false;
 }
 
-std::string validateRtkValue(std::string_view name, std::string_view value) {
+Refusal validateRtkValue(std::string_view name, std::string_view value) {
     if (!isRtkParameter(name))
-        return "PNVGRTK: unknown parameter '" + std::string(name) +
-               "' (Table 4: MODE, PVTRATE, "
-               "... INITGPSWEEK)";
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "PNVGRTK: unknown parameter '%1' (Table 4: "
+                                                    "MODE, PVTRATE, ... INITGPSWEEK)"),
+                       {std::string(name)});
     if (value.empty())
-        return "rtk." + std::string(name) + ": a value is required (an empty value is a query)";
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "rtk.%1: a value is required (an empty value "
+                                                    "is a query)"),
+                       {std::string(name)});
     if (name == "BASEXYZ") return validateBaseXyz(value);
     if (name == "BASEBLH") return validateBaseBlh(value);
     return checkSetting("rtk." + std::string(name), value);
@@ -152,7 +154,7 @@ void Rtk::writeJson(JsonWriter &w) const {
 
 EncodeResult encodeRtk(std::span<const RtkSet> set, std::span<const std::string> query) {
     if (set.empty() && query.empty())
-        return refuse("PNVGRTK: name at least one parameter to set or query");
+        return refuse(std::string("PNVGRTK: name at least one parameter to set or query"));
     std::string body = "PNVGRTK";
     for (const auto &p : set) {
         if (auto err = validateRtkValue(p.name, p.value); !err.empty()) return refuse(err);

@@ -35,13 +35,14 @@ std::vector<std::string_view> splitList(std::string_view v) {
 }
 
 // "RMC:1;GSV:5" (a bare address means rate 1).
-std::string parseOutputList(std::string_view key, std::string_view v, std::vector<RzbEntry> &out) {
+Refusal parseOutputList(std::string_view key, std::string_view v, std::vector<RzbEntry> &out) {
     for (auto item : splitList(v)) {
         const auto colon = item.find(':');
         std::int64_t rate = 1;
         if (colon != std::string_view::npos && !parseInt(item.substr(colon + 1), rate))
-            return std::string(key) + ": '" + std::string(item) +
-                   "' is not ADDRESS:RATE (rate in PVT intervals, >= 1)";
+            return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: '%2' is not ADDRESS:RATE (rate in PVT "
+                                                        "intervals, >= 1)"),
+                           {std::string(key), std::string(item)});
         out.push_back({std::string(item.substr(0, colon)), static_cast<int>(rate)});
     }
     return {};
@@ -52,21 +53,23 @@ struct Station {
     int id;
     std::optional<double> icb;
 };
-std::string parseStations(std::string_view v, std::vector<Station> &out) {
+Refusal parseStations(std::string_view v, std::vector<Station> &out) {
     for (auto item : splitList(v)) {
         const auto colon = item.find(':');
         std::int64_t id;
         double icb = 0;
         if (!parseInt(item.substr(0, colon), id) ||
             (colon != std::string_view::npos && !parseReal(item.substr(colon + 1), icb)))
-            return "idl.stations: '" + std::string(item) + "' is not ID:ICB";
+            return refusal(QT_TRANSLATE_NOOP("Refusal", "idl.stations: '%1' is not ID:ICB"),
+                           {std::string(item)});
         Station s{static_cast<int>(id), std::nullopt};
         if (colon != std::string_view::npos) s.icb = icb;
         out.push_back(s);
     }
     if (out.size() > 32)
-        return "idl.stations: " + std::to_string(out.size()) +
-               " stations is out of range; accepted: 0..32 stations";
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "idl.stations: %1 stations is out of range; "
+                                                    "accepted: 0..32 stations"),
+                       {std::to_string(out.size())});
     return {};
 }
 
@@ -85,10 +88,12 @@ EncodeResult encodeSettings(std::span<const KeyValue> values) {
     for (const auto &kv : values) {
         const SettingDef *def = findSetting(settingsSchema(), kv.key);
         if (!def)
-            return refuse("unknown setting '" + kv.key + "' (gnss-cli schema nvs lists them)");
+            return refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "unknown setting '%1' (gnss-cli "
+                                                               "schema nvs lists them)"),
+                                  {kv.key}));
         const std::string_view key = def->key;
         const std::string &v = kv.value;
-        std::string err;
+        Refusal err;
         if (auto name = after(key, "rtk."); !name.empty()) {
             err = validateRtkValue(name, v);
             rtk.push_back({std::string(name), v});
@@ -140,18 +145,21 @@ EncodeResult encodeSettings(std::span<const KeyValue> values) {
         if (!err.empty()) return refuse(err);
     }
     if ((nme[0] || nme[1] || nme[2]) && !(nme[0] && nme[1]))
-        return refuse(std::string("PNVGNME sets time and position decimals together: give ") +
-                      (nme[0] ? "nmea.position_decimals" : "nmea.time_decimals") + " too");
+        return refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "PNVGNME sets time and position "
+                                                           "decimals together: give %1 too"),
+                              {nme[0] ? "nmea.position_decimals" : "nmea.time_decimals"}));
     for (const auto &[port, slot] : ports)
         if (!slot.first || !slot.second)
-            return refuse("PNVGRZA sets baud rate and protocol together: give port." +
-                          std::string(portName(port)) + (slot.first ? ".protocol" : ".baud") +
-                          " too");
+            return refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "PNVGRZA sets baud rate and "
+                                                               "protocol together: give %1 too"),
+                                  {"port." + std::string(portName(port)) +
+                                   (slot.first ? ".protocol" : ".baud")}));
 
     // Everything is valid: build, in the safe order.
     EncodeResult result;
     auto add = [&](EncodeResult r) {
-        if (!r.ok() && result.error.empty()) result.error = r.error;
+        if (!r.ok() && result.error.empty())
+            result.refuse(r.refusal.text == r.error ? r.refusal : Refusal(r.error));
         for (auto &s : r.sentences) result.sentences.push_back(std::move(s));
     };
     if (!rtk.empty()) add(encodeRtk(rtk));

@@ -6,6 +6,7 @@
 #include "engine_rig.h"
 
 #include "dialects.h"
+#include "refusal_text.h"
 #include "schema_catalog.h"
 #include "schema_texts.h"
 #include "settings/settings_view.h"
@@ -83,6 +84,60 @@ private slots:
             }
         QVERIFY2(missing.isEmpty(), qPrintable("no Russian for: " + missing.join(" | ")));
         QVERIFY(texts > 50);
+    }
+
+    // A refused value is said in Russian, with the dialect's own unit, through the engine as the
+    // settings form applies it; the English text (the command line's) is unchanged.
+    void refusalsAreInRussian_data() {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<QString>("value");
+        QTest::addColumn<QString>("english");
+        QTest::addColumn<QString>("russian");
+        QTest::newRow("nvs range, unit") << "nvs"
+                                         << "rtk.ELGPS"
+                                         << "95"
+                                         << "rtk.ELGPS: 95 is out of range; accepted: 0..90 deg"
+                                         << "rtk.ELGPS: 95 вне допустимого диапазона; допустимо: "
+                                            "0..90 град";
+        QTest::newRow("nvs list syntax")
+                << "nvs"
+                << "output.COM1"
+                << "RMC:x"
+                << "output.COM1: 'RMC:x' is not ADDRESS:RATE (rate in PVT intervals, >= 1)"
+                << "output.COM1: «RMC:x» не в виде АДРЕС:ТЕМП (темп в интервалах PVT, >= 1)";
+        QTest::newRow("geostar not a number") << "geostar"
+                                              << "nav.ELEV"
+                                              << "high"
+                                              << "nav.ELEV: expected an integer, got 'high'"
+                                              << "nav.ELEV: ожидается целое число, получено «high»";
+        QTest::newRow("nemerix beyond the schema")
+                << "nemerix"
+                << "fix.timeZone"
+                << "25:00"
+                << "fix.timeZone: '25:00' is not accepted; accepted: h:m with hours -13..13 and "
+                   "minutes 0..59"
+                << "fix.timeZone: «25:00» недопустимо; допустимо: ч:м, часы -13..13, минуты "
+                   "0..59";
+    }
+    void refusalsAreInRussian() {
+        QFETCH(QString, dialect);
+        QFETCH(QString, key);
+        QFETCH(QString, value);
+        EngineRig rig(dialect);
+        const KeyValue kv{key.toStdString(), value.toStdString()};
+        const EncodeResult enc = rig.dialect->encodeSettings(std::span(&kv, 1));
+        QTEST(QString::fromStdString(enc.error), "english");
+        QTEST(config::refusalText(enc, rig.dialect->id), "english"); // no translator yet
+        QCoreApplication::installTranslator(&russian_);
+        const auto restore = qScopeGuard([this] { QCoreApplication::removeTranslator(&russian_); });
+        QTEST(config::refusalText(enc, rig.dialect->id), "russian");
+        const auto before = rig.queue.history().size();
+        const config::OperationReport r = rig.apply({kv});
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error.endsWith(config::refusalText(enc, rig.dialect->id)), qPrintable(r.error));
+        QVERIFY2(!r.error.contains("nothing was sent"), qPrintable(r.error)); // the frame too
+        QCOMPARE(rig.queue.history().size(), before);                         // nothing sent
     }
 
     void theSettingsFormSpeaksRussian_data() { everySchemaTextIsInRussian_data(); }
