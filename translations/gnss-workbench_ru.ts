@@ -319,6 +319,16 @@
         <translation>rtk.%1: нужно значение (пустое значение — это запрос)</translation>
     </message>
     <message>
+        <location line="+25"/>
+        <source>a value before any parameter name</source>
+        <translation>значение перед именем параметра</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>PNVGRTK names no parameter</source>
+        <translation>в PNVGRTK не назван ни один параметр</translation>
+    </message>
+    <message>
         <location filename="../protocol/nvs/nvs_settings.cpp" line="+43"/>
         <source>%1: &apos;%2&apos; is not ADDRESS:RATE (rate in PVT intervals, &gt;= 1)</source>
         <translation>%1: «%2» не в виде АДРЕС:ТЕМП (темп в интервалах PVT, &gt;= 1)</translation>
@@ -347,6 +357,389 @@
         <location line="+5"/>
         <source>PNVGRZA sets baud rate and protocol together: give %1 too</source>
         <translation>PNVGRZA задаёт скорость и протокол вместе: укажите также %1</translation>
+    </message>
+    <message>
+        <location filename="../protocol/core/field_reader.cpp" line="+9"/>
+        <source>field %1 (%2): %3: &apos;%4&apos;</source>
+        <translation>поле %1 (%2): %3: «%4»</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>expected at least %1 fields, got %2</source>
+        <translation>ожидается не менее %1 полей, получено %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>not an integer</source>
+        <translation>не целое число</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="+119"/>
+        <location filename="../protocol/nemerix/nemerix_nav_init.cpp" line="+37"/>
+        <location line="+2"/>
+        <location filename="../protocol/nmea/gsv.cpp" line="+44"/>
+        <location line="+2"/>
+        <location filename="../protocol/nmea/zda.cpp" line="+20"/>
+        <location line="+2"/>
+        <source>out of range</source>
+        <translation>вне допустимого диапазона</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location filename="../protocol/nemerix/nemerix_hex.cpp" line="+15"/>
+        <source>not hexadecimal</source>
+        <translation>не шестнадцатеричное число</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>expected one character</source>
+        <translation>ожидается один символ</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>not a ddmm.mmmm coordinate</source>
+        <translation>не координата вида ддмм.мммм</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>bad hemisphere</source>
+        <translation>неверное полушарие</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>not an hhmmss.ss time</source>
+        <translation>не время вида ччммсс.сс</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>not a ddmmyy date</source>
+        <translation>не дата вида ддммгг</translation>
+    </message>
+    <message>
+        <location filename="../protocol/core/field_reader.h" line="+30"/>
+        <source>not a number</source>
+        <translation>не число</translation>
+    </message>
+    <message>
+        <location filename="../protocol/core/sentence.cpp" line="+68"/>
+        <source>not a sentence</source>
+        <translation>не сообщение NMEA</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>sentence too long</source>
+        <translation>слишком длинное сообщение</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="+105"/>
+        <location filename="../protocol/nemerix/nemerix_version.cpp" line="+29"/>
+        <source>too many fields</source>
+        <translation>слишком много полей</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>empty address</source>
+        <translation>пустой адрес</translation>
+    </message>
+    <message>
+        <location filename="../protocol/core/stream_decoder.cpp" line="+148"/>
+        <source>unknown sentence</source>
+        <translation>неизвестное сообщение</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>checksum mismatch: sent %1, computed %2</source>
+        <translation>контрольная сумма не совпадает: передано %1, вычислено %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>checksum missing</source>
+        <translation>нет контрольной суммы</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>malformed</source>
+        <translation>искажённое сообщение</translation>
+    </message>
+    <message>
+        <location filename="../protocol/geostar/geostar_nquery.cpp" line="+38"/>
+        <source>not 0-3</source>
+        <translation>не 0-3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not 0-3/R</source>
+        <translation>не 0-3/R</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>NQUERY reply has more than 10 message codes</source>
+        <translation>в ответе NQUERY больше 10 кодов сообщений</translation>
+    </message>
+    <message>
+        <location filename="../protocol/geostar/geostar_rlm.cpp" line="+33"/>
+        <source>not 15 hex digits</source>
+        <translation>не 15 шестнадцатеричных цифр</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not one hex digit</source>
+        <translation>не одна шестнадцатеричная цифра</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not 4 or 24 hex digits</source>
+        <translation>не 4 и не 24 шестнадцатеричные цифры</translation>
+    </message>
+    <message>
+        <location filename="../protocol/geostar/geostar_rquery.cpp" line="+21"/>
+        <source>longer than 8 hex digits</source>
+        <translation>длиннее 8 шестнадцатеричных цифр</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>RQUERY reply needs three hex words</source>
+        <translation>в ответе RQUERY должно быть три шестнадцатеричных слова</translation>
+    </message>
+    <message>
+        <location filename="../protocol/geostar/geostar_sgg.cpp" line="+28"/>
+        <source>JAMDET: unexpected field %1</source>
+        <translation>JAMDET: лишнее поле %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>unknown GPSGG message or command &apos;%1&apos;</source>
+        <translation>неизвестное сообщение или команда GPSGG «%1»</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>GPSGG,%1 takes no parameters</source>
+        <translation>GPSGG,%1 не принимает параметров</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_almanac.cpp" line="+54"/>
+        <source>expected 12 (or 11) hex fields after the SV id, got %1</source>
+        <translation>после номера спутника ожидается 12 (или 11) шестнадцатеричных полей, получено %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+79"/>
+        <source>out of range 1..32</source>
+        <translation>вне диапазона 1..32</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+20"/>
+        <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="-21"/>
+        <location line="+17"/>
+        <location filename="../protocol/nemerix/nemerix_power.cpp" line="+16"/>
+        <location filename="../protocol/nvs/nvs_rzb.cpp" line="+30"/>
+        <source>missing</source>
+        <translation>отсутствует</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_datum.cpp" line="+39"/>
+        <location filename="../protocol/nemerix/nemerix_power.cpp" line="+2"/>
+        <location filename="../protocol/nemerix/nemerix_serial.cpp" line="+28"/>
+        <source>not 0 or 1</source>
+        <translation>не 0 и не 1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not 0..218 or 500</source>
+        <translation>не 0..218 и не 500</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>out of range -9999..9999</source>
+        <translation>вне диапазона -9999..9999</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>out of range 6000000..12000000</source>
+        <translation>вне диапазона 6000000..12000000</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>out of range 6000000..9000000</source>
+        <translation>вне диапазона 6000000..9000000</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="-18"/>
+        <source>not 1, 2 or 3</source>
+        <translation>не 1, 2 или 3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>SV id and subframe are required</source>
+        <translation>нужны номер спутника и подкадр</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>subframe %1: expected %2 hex fields, got %3</source>
+        <translation>подкадр %1: ожидается %2 шестнадцатеричных полей, получено %3</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="-29"/>
+        <source>no mask given</source>
+        <translation>маска не задана</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>mask ids and values must come in pairs</source>
+        <translation>номера масок и значения должны идти парами</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>too many masks</source>
+        <translation>слишком много масок</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>unknown mask (0..10)</source>
+        <translation>неизвестная маска (0..10)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>expected h:m</source>
+        <translation>ожидается ч:м</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_hex.cpp" line="+14"/>
+        <source>does not fit the field&apos;s bit width</source>
+        <translation>не помещается в разрядность поля</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="-38"/>
+        <source>expected the SV id and 8 hex coefficients, got %1 fields</source>
+        <translation>ожидаются номер спутника и 8 шестнадцатеричных коэффициентов, получено полей: %1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>expected the SV id and at least 8 hex fields</source>
+        <translation>ожидаются номер спутника и не менее 8 шестнадцатеричных полей</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_nav_init.cpp" line="+2"/>
+        <source>out of range 12..16</source>
+        <translation>вне диапазона 12..16</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>ECEF x, y and z must be given together</source>
+        <translation>ECEF x, y и z задаются вместе</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>latitude, longitude and altitude must be given together</source>
+        <translation>широта, долгота и высота задаются вместе</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_output.cpp" line="+38"/>
+        <location line="+66"/>
+        <source>no message id given</source>
+        <translation>не задан номер сообщения</translation>
+    </message>
+    <message>
+        <location line="-63"/>
+        <source>message ids and values must come in pairs</source>
+        <translation>номера сообщений и значения должны идти парами</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>too many entries</source>
+        <translation>слишком много записей</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+62"/>
+        <source>unknown message</source>
+        <translation>неизвестное сообщение</translation>
+    </message>
+    <message>
+        <location line="-58"/>
+        <source>not 0..3</source>
+        <translation>не 0..3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not 0..9</source>
+        <translation>не 0..9</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>too many message ids</source>
+        <translation>слишком много номеров сообщений</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_power.cpp" line="+2"/>
+        <source>out of range 5..10</source>
+        <translation>вне диапазона 5..10</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_reset.cpp" line="+40"/>
+        <source>out of range 0..255</source>
+        <translation>вне диапазона 0..255</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>expected 0..255 or FACTORY/COLD/WARM/HOT</source>
+        <translation>ожидается 0..255 или FACTORY/COLD/WARM/HOT</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_serial.cpp" line="+2"/>
+        <source>not a supported speed</source>
+        <translation>неподдерживаемая скорость</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not 0, 1 or 2</source>
+        <translation>не 0, 1 или 2</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nemerix/nemerix_settings_report.cpp" line="+36"/>
+        <source>not 0..4</source>
+        <translation>не 0..4</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>out of range -13..13</source>
+        <translation>вне диапазона -13..13</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>out of range -59..59</source>
+        <translation>вне диапазона -59..59</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nmea/gsv.cpp" line="-12"/>
+        <source>too many satellites in one GSV sentence</source>
+        <translation>слишком много спутников в одном сообщении GSV</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>sentence number outside 1..%1</source>
+        <translation>номер сообщения вне диапазона 1..%1</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nmea/query.cpp" line="+16"/>
+        <location filename="../protocol/nvs/nvs_cfg.cpp" line="+18"/>
+        <location filename="../protocol/nvs/nvs_rzb.cpp" line="-4"/>
+        <location line="+11"/>
+        <source>empty</source>
+        <translation>пусто</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nvs/nvs_idl.cpp" line="+68"/>
+        <source>not MODE, ADD, REMOVE, CLEAR, SHOW or a list item</source>
+        <translation>не MODE, ADD, REMOVE, CLEAR, SHOW и не элемент списка</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nvs/nvs_rst.cpp" line="+17"/>
+        <source>not F or W</source>
+        <translation>не F и не W</translation>
     </message>
 </context>
 <context>

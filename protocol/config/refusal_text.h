@@ -13,5 +13,8 @@ namespace gnss::config {
 QString refusalText(const Refusal &r, std::string_view dialectId = {});
 // An encoder's refusal: the translated template when it gave one for this error, else the error.
 QString refusalText(const EncodeResult &r, std::string_view dialectId = {});
+// A decoder's word on a sentence (SentenceEvent::error and ::problem): translated the same way,
+// a phrase without arguments ("checksum missing") looked up as it is.
+QString refusalText(std::string_view error, const Refusal *problem);
 
 } // namespace gnss::config

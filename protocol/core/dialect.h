@@ -45,8 +45,14 @@ public:
     // Hands the decoded message to the caller (valid only during the call).
     void deliver(const Message &m) { emit_(m); }
 
-    // Why decoding failed (set by the decode function when it returns false).
+    // Why decoding failed (set by the decode function when it returns false), and the same as
+    // a translatable refusal when the decoder gave one (fail()).
     std::string error;
+    Refusal problem;
+    void fail(Refusal why) {
+        error = why.text;
+        problem = std::move(why);
+    }
 
 private:
     SatelliteRef mapSatelliteByDialect(Constellation system, int id) const;

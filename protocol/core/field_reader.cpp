@@ -5,26 +5,19 @@
 namespace gnss {
 
 void FieldReader::fail(std::size_t i, const char *name, const char *what) {
-    if (!error_.empty()) return;
-    error_ = "field ";
-    error_ += std::to_string(i + 1);
-    error_ += " (";
-    error_ += name;
-    error_ += "): ";
-    error_ += what;
-    error_ += ": '";
-    error_ += s_.field(i);
-    error_ += "'";
+    if (!problem_.empty()) return;
+    problem_ = refusal(QT_TRANSLATE_NOOP("Refusal", "field %1 (%2): %3: '%4'"),
+                       {std::to_string(i + 1), name, what, std::string(s_.field(i))});
 }
 
-void FieldReader::failSentence(std::string message) {
-    if (error_.empty()) error_ = std::move(message);
+void FieldReader::failSentence(Refusal why) {
+    if (problem_.empty()) problem_ = std::move(why);
 }
 
 bool FieldReader::require(std::size_t n) {
     if (s_.fieldCount() >= n) return true;
-    failSentence("expected at least " + std::to_string(n) + " fields, got " +
-                 std::to_string(s_.fieldCount()));
+    failSentence(refusal(QT_TRANSLATE_NOOP("Refusal", "expected at least %1 fields, got %2"),
+                         {std::to_string(n), std::to_string(s_.fieldCount())}));
     return false;
 }
 
@@ -33,7 +26,7 @@ std::optional<std::int64_t> FieldReader::integer64(std::size_t i, const char *na
     if (t.empty()) return std::nullopt;
     std::int64_t v;
     if (!parseInt(t, v)) {
-        fail(i, name, "not an integer");
+        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not an integer"));
         return std::nullopt;
     }
     return v;
@@ -43,7 +36,7 @@ std::optional<int> FieldReader::integerSlow(std::size_t i, const char *name) {
     auto v = integer64(i, name);
     if (!v) return std::nullopt;
     if (*v < INT_MIN || *v > INT_MAX) {
-        fail(i, name, "out of range");
+        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "out of range"));
         return std::nullopt;
     }
     return static_cast<int>(*v);
@@ -54,7 +47,7 @@ std::optional<std::uint64_t> FieldReader::hex(std::size_t i, const char *name) {
     if (t.empty()) return std::nullopt;
     std::uint64_t v;
     if (!parseHex(t, v)) {
-        fail(i, name, "not hexadecimal");
+        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not hexadecimal"));
         return std::nullopt;
     }
     return v;
@@ -64,7 +57,7 @@ std::optional<char> FieldReader::letter(std::size_t i, const char *name) {
     auto t = s_.field(i);
     if (t.empty()) return std::nullopt;
     if (t.size() != 1) {
-        fail(i, name, "expected one character");
+        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "expected one character"));
         return std::nullopt;
     }
     return t.front();
@@ -77,11 +70,11 @@ std::optional<double> FieldReader::coordinate(std::size_t i, const char *name, i
     if (t.empty()) return std::nullopt;
     double v;
     if (!parseDegreesMinutes(t, maxDeg, v)) {
-        fail(i, name, "not a ddmm.mmmm coordinate");
+        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not a ddmm.mmmm coordinate"));
         return std::nullopt;
     }
     if (h.size() != 1 || (h.front() != pos && h.front() != neg)) {
-        fail(i + 1, name, "bad hemisphere");
+        fail(i + 1, name, QT_TRANSLATE_NOOP("Refusal", "bad hemisphere"));
         return std::nullopt;
     }
     return h.front() == neg ? -v : v;
@@ -100,7 +93,7 @@ std::optional<TimeOfDay> FieldReader::time(std::size_t i, const char *name) {
     if (t.empty()) return std::nullopt;
     TimeOfDay v;
     if (!parseTimeOfDay(t, v)) {
-        fail(i, name, "not an hhmmss.ss time");
+        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not an hhmmss.ss time"));
         return std::nullopt;
     }
     return v;
@@ -111,7 +104,7 @@ std::optional<Date> FieldReader::date(std::size_t i, const char *name) {
     if (t.empty()) return std::nullopt;
     Date v;
     if (!parseDateDdMmYy(t, v)) {
-        fail(i, name, "not a ddmmyy date");
+        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not a ddmmyy date"));
         return std::nullopt;
     }
     return v;

@@ -5,6 +5,7 @@
 // (the first one wins) and also reads as std::nullopt, so a decoder reads every field straight
 // through and checks ok() once at the end. Nothing throws.
 #include "field_parse.h"
+#include "refusal.h"
 #include "sentence.h"
 
 #include <optional>
@@ -26,7 +27,7 @@ public:
         if (t.empty()) return std::nullopt;
         double v;
         if (parseReal(t, v)) return v;
-        fail(i, name, "not a number");
+        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not a number"));
         return std::nullopt;
     }
     [[gnu::always_inline]] std::optional<int> integer(std::size_t i, const char *name) {
@@ -52,20 +53,23 @@ public:
 
     // Records an error unless the sentence has at least n fields after the address.
     bool require(std::size_t n);
-    // Records an error for field i.
+    // Records an error for field i: `what` is a phrase marked QT_TRANSLATE_NOOP("Refusal", ...)
+    // ("not a number"), shown translated in "field 3 (quality): not a number: 'x'".
     void fail(std::size_t i, const char *name, const char *what);
-    // Records a sentence-level error.
-    void failSentence(std::string message);
+    // Records a sentence-level error: a refusal, or a plain sentence (a literal marked
+    // QT_TRANSLATE_NOOP("Refusal", ...) is translated as it is).
+    void failSentence(Refusal why);
 
-    bool ok() const { return error_.empty(); }
-    const std::string &error() const { return error_; }
+    bool ok() const { return problem_.empty(); }
+    const std::string &error() const { return problem_.text; }
+    const Refusal &problem() const { return problem_; }
 
 private:
     std::optional<int> integerSlow(std::size_t i, const char *name);
     std::optional<double> coordinate(std::size_t i, const char *name, int maxDeg, char pos,
                                      char neg);
     const Sentence &s_;
-    std::string error_;
+    Refusal problem_;
 };
 
 } // namespace gnss

@@ -1,5 +1,7 @@
 #include "sentence.h"
 
+#include "refusal.h"
+
 #include <cstring>
 
 #if defined(__SSE2__)
@@ -63,7 +65,7 @@ bool Sentence::parse(std::string_view line) {
     address_ = {};
     if (line.size() < 2 || (line.front() != '$' && line.front() != '!')) {
         body_ = {};
-        error_ = "not a sentence";
+        error_ = QT_TRANSLATE_NOOP("Refusal", "not a sentence");
         return false;
     }
 
@@ -96,7 +98,7 @@ bool Sentence::parse(std::string_view line) {
     const char *p = body_.data();
     const std::size_t n = body_.size();
     if (n > 65000) {
-        error_ = "sentence too long";
+        error_ = QT_TRANSLATE_NOOP("Refusal", "sentence too long");
         return false;
     }
     // Field starts are written straight into start_: start_[k] = offset after comma k. The
@@ -158,14 +160,14 @@ bool Sentence::parse(std::string_view line) {
         checksumStatus_ = ChecksumStatus::Bad;
 
     if (overflow) {
-        error_ = "too many fields";
+        error_ = QT_TRANSLATE_NOOP("Refusal", "too many fields");
         return false;
     }
     const std::size_t addrEnd = ncommas ? start_[0] - 1u : n;
     address_ = body_.substr(0, addrEnd);
     while (!address_.empty() && address_.back() == ' ') address_.remove_suffix(1);
     if (address_.empty()) {
-        error_ = "empty address";
+        error_ = QT_TRANSLATE_NOOP("Refusal", "empty address");
         return false;
     }
     // start_[0] is the address's end: fields begin after it.

@@ -145,21 +145,23 @@ void StreamDecoder::decodeLine(std::string_view line, Handler handler) {
 
     if (!r.match.rule) {
         ++st.unknown;
-        handler(SentenceEvent{s, nullptr, "unknown sentence", nullptr, true});
+        handler(SentenceEvent{s, nullptr, QT_TRANSLATE_NOOP("Refusal", "unknown sentence"), nullptr,
+                              true});
         return;
     }
     if (!checksumAcceptable(s, r.match.dialect)) {
         ++st.rejected;
         char a[3], b[3];
         if (s.checksum() == ChecksumStatus::Bad) {
-            error_ = "checksum mismatch: sent ";
-            error_ += s.checksumPlaceholder() ? "?" : hexByte(s.declaredChecksum(), a);
-            error_ += ", computed ";
-            error_ += hexByte(s.computedChecksum(), b);
+            problem_ =
+                    refusal(QT_TRANSLATE_NOOP("Refusal", "checksum mismatch: sent %1, computed %2"),
+                            {s.checksumPlaceholder() ? "?" : hexByte(s.declaredChecksum(), a),
+                             hexByte(s.computedChecksum(), b)});
+            handler(SentenceEvent{s, nullptr, problem_.text, r.match.dialect, false, &problem_});
         } else {
-            error_ = "checksum missing";
+            handler(SentenceEvent{s, nullptr, QT_TRANSLATE_NOOP("Refusal", "checksum missing"),
+                                  r.match.dialect});
         }
-        handler(SentenceEvent{s, nullptr, error_, r.match.dialect});
         return;
     }
 
@@ -174,8 +176,11 @@ void StreamDecoder::decodeLine(std::string_view line, Handler handler) {
     const bool ok = r.match.rule->decode(s, ctx);
     if (!ok) {
         ++st.decodeErrors;
-        handler(SentenceEvent{s, nullptr, ctx.error.empty() ? "malformed" : ctx.error,
-                              r.match.dialect});
+        const bool formed = ctx.problem.form && ctx.problem.text == ctx.error;
+        handler(SentenceEvent{s, nullptr,
+                              ctx.error.empty() ? QT_TRANSLATE_NOOP("Refusal", "malformed")
+                                                : std::string_view(ctx.error),
+                              r.match.dialect, false, formed ? &ctx.problem : nullptr});
         return;
     }
     (void)emitted;

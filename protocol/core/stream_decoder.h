@@ -44,6 +44,9 @@ struct SentenceEvent {
     std::string_view error;           // why not decoded (empty when decoded)
     const Dialect *dialect = nullptr; // dialect of the rule that matched (nullptr: standard)
     bool unknown = false;             // no decoder for this address (not an error on a line)
+    // `error` as a translatable refusal, when it was made from one; otherwise `error` is a
+    // phrase marked QT_TRANSLATE_NOOP("Refusal", ...) or plain text.
+    const Refusal *problem = nullptr;
 };
 
 // The JSON object `gnss-cli decode` prints for one sentence: line, address, talker, type,
@@ -104,7 +107,7 @@ private:
     std::size_t cacheUsed_ = 0;
     std::uint64_t malformed_ = 0;
     std::string aliasBuffer_;
-    std::string error_;
+    Refusal problem_; // of the last checksum refusal (the event points at it)
 };
 
 } // namespace gnss

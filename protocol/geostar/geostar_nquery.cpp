@@ -34,16 +34,19 @@ bool decodeNquery(const Sentence &s, DecodeContext &ctx) {
         m.port = r.integer(1, "port");
         m.rateCode = r.integer(2, "rate code");
         m.nmeaVersion = r.integer(3, "NMEA version");
-        if (m.rateCode && rateCodeToHz(*m.rateCode) == 0) r.fail(2, "rate code", "not 0-3");
+        if (m.rateCode && rateCodeToHz(*m.rateCode) == 0)
+            r.fail(2, "rate code", QT_TRANSLATE_NOOP("Refusal", "not 0-3"));
         for (std::size_t i = 0; i < Nquery::kMessages && 4 + i < r.count(); ++i) {
             const auto c = r.letter(4 + i, "message rate code");
             if (!c) continue;
-            if (nqueryCodeMeaning(*c) == "unknown") r.fail(4 + i, "message rate code", "not 0-3/R");
+            if (nqueryCodeMeaning(*c) == "unknown")
+                r.fail(4 + i, "message rate code", QT_TRANSLATE_NOOP("Refusal", "not 0-3/R"));
             m.codes[i] = *c;
             m.codeCount = i + 1;
         }
         if (r.count() > 4 + Nquery::kMessages)
-            r.failSentence("NQUERY reply has more than 10 message codes");
+            r.failSentence(std::string(
+                    QT_TRANSLATE_NOOP("Refusal", "NQUERY reply has more than 10 message codes")));
     }
     return nmea::finishDecode(r, ctx, m);
 }

@@ -30,16 +30,16 @@ bool decodeRlm(const Sentence &s, DecodeContext &ctx) {
     if (r.require(4)) {
         m.beaconId = r.text(0);
         if (m.beaconId.size() != 15 || !allHex(m.beaconId))
-            r.fail(0, "beacon id", "not 15 hex digits");
+            r.fail(0, "beacon id", QT_TRANSLATE_NOOP("Refusal", "not 15 hex digits"));
         m.time = r.time(1, "time");
         const std::string_view code = r.text(2);
         if (code.size() != 1 || !allHex(code))
-            r.fail(2, "message code", "not one hex digit");
+            r.fail(2, "message code", QT_TRANSLATE_NOOP("Refusal", "not one hex digit"));
         else
             m.messageCode = static_cast<int>(*r.hex(2, "message code"));
         m.parameters = r.text(3);
         if ((m.parameters.size() != 4 && m.parameters.size() != 24) || !allHex(m.parameters))
-            r.fail(3, "parameters", "not 4 or 24 hex digits");
+            r.fail(3, "parameters", QT_TRANSLATE_NOOP("Refusal", "not 4 or 24 hex digits"));
     }
     return nmea::finishDecode(r, ctx, m);
 }

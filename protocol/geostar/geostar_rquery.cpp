@@ -18,7 +18,7 @@ namespace {
 
 std::optional<std::uint32_t> word(FieldReader &r, std::size_t i, const char *name) {
     if (r.text(i).size() > 8) {
-        r.fail(i, name, "longer than 8 hex digits");
+        r.fail(i, name, QT_TRANSLATE_NOOP("Refusal", "longer than 8 hex digits"));
         return std::nullopt;
     }
     auto v = r.hex(i, name);
@@ -42,7 +42,9 @@ bool decodeRquery(const Sentence &s, DecodeContext &ctx) {
         const auto cfg1 = word(r, 5, "configuration register 1");
         const auto cfg2 = word(r, 6, "configuration register 2");
         if (!status || !cfg1 || !cfg2) {
-            if (r.ok()) r.failSentence("RQUERY reply needs three hex words");
+            if (r.ok())
+                r.failSentence(std::string(
+                        QT_TRANSLATE_NOOP("Refusal", "RQUERY reply needs three hex words")));
         } else {
             m.status = StatusWord::decode(*status);
             m.config1 = ConfigRegister1::decode(*cfg1);

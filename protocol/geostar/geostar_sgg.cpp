@@ -25,7 +25,8 @@ bool decodeJamdet(const Sentence &s, DecodeContext &ctx) {
     // "$GPSGG,JAMDET,": one empty field after the name; anything else there is unexpected.
     for (std::size_t i = 1; i < s.fieldCount(); ++i) {
         if (!s.field(i).empty()) {
-            ctx.error = "JAMDET: unexpected field " + std::to_string(i + 1);
+            ctx.fail(refusal(QT_TRANSLATE_NOOP("Refusal", "JAMDET: unexpected field %1"),
+                             {std::to_string(i + 1)}));
             return false;
         }
     }
@@ -41,11 +42,13 @@ bool decodeCommand(const Sentence &s, DecodeContext &ctx) {
     Command m;
     m.def = findCommand(s.field(0));
     if (!m.def) {
-        ctx.error = "unknown GPSGG message or command '" + std::string(s.field(0)) + "'";
+        ctx.fail(refusal(QT_TRANSLATE_NOOP("Refusal", "unknown GPSGG message or command '%1'"),
+                         {std::string(s.field(0))}));
         return false;
     }
     if (s.fieldCount() > 1) {
-        ctx.error = "GPSGG," + std::string(m.def->text) + " takes no parameters";
+        ctx.fail(refusal(QT_TRANSLATE_NOOP("Refusal", "GPSGG,%1 takes no parameters"),
+                         {std::string(m.def->text)}));
         return false;
     }
     ctx.deliver(m);

@@ -51,11 +51,13 @@ bool decodeAlmanac(const Sentence &s, DecodeContext &ctx) {
     std::size_t n = r.count();
     while (n > 1 && r.empty(n - 1)) --n;
     if (n != 1 + Almanac::kFieldCount && n != Almanac::kFieldCount)
-        r.failSentence("expected 12 (or 11) hex fields after the SV id, got " +
-                       std::to_string(n > 0 ? n - 1 : 0));
+        r.failSentence(refusal(QT_TRANSLATE_NOOP("Refusal", "expected 12 (or 11) hex fields "
+                                                            "after the SV id, got %1"),
+                               {std::to_string(n > 0 ? n - 1 : 0)}));
     const auto sv = r.integer(0, "SV id");
-    if (sv && (*sv < 1 || *sv > 32)) r.fail(0, "SV id", "out of range 1..32");
-    if (!sv && r.ok()) r.fail(0, "SV id", "missing");
+    if (sv && (*sv < 1 || *sv > 32))
+        r.fail(0, "SV id", QT_TRANSLATE_NOOP("Refusal", "out of range 1..32"));
+    if (!sv && r.ok()) r.fail(0, "SV id", QT_TRANSLATE_NOOP("Refusal", "missing"));
     if (sv) m.sv = *sv;
     const bool withMean = n == 1 + Almanac::kFieldCount;
     std::size_t i = 1;

@@ -36,17 +36,18 @@ bool decodeDatum(const Sentence &s, DecodeContext &ctx) {
     m.iflatRaw = r.integer64(5, "inverse flatness");
     m.majorARaw = r.integer64(6, "semi-major axis");
     if (m.correction && (*m.correction < 0 || *m.correction > 1))
-        r.fail(0, "correction mode", "not 0 or 1");
+        r.fail(0, "correction mode", QT_TRANSLATE_NOOP("Refusal", "not 0 or 1"));
     if (m.datum && !((*m.datum >= 0 && *m.datum <= 218) || *m.datum == 500))
-        r.fail(1, "map datum", "not 0..218 or 500");
+        r.fail(1, "map datum", QT_TRANSLATE_NOOP("Refusal", "not 0..218 or 500"));
     const std::optional<int> *offsets[] = {&m.dx, &m.dy, &m.dz};
     for (std::size_t i = 0; i < 3; ++i)
         if (*offsets[i] && std::abs(**offsets[i]) > 9999)
-            r.fail(2 + i, "offset", "out of range -9999..9999");
+            r.fail(2 + i, "offset", QT_TRANSLATE_NOOP("Refusal", "out of range -9999..9999"));
     if (m.iflatRaw && (*m.iflatRaw < 6000000 || *m.iflatRaw > 12000000))
-        r.fail(5, "inverse flatness", "out of range 6000000..12000000");
+        r.fail(5, "inverse flatness",
+               QT_TRANSLATE_NOOP("Refusal", "out of range 6000000..12000000"));
     if (m.majorARaw && (*m.majorARaw < 6000000 || *m.majorARaw > 9000000))
-        r.fail(6, "semi-major axis", "out of range 6000000..9000000");
+        r.fail(6, "semi-major axis", QT_TRANSLATE_NOOP("Refusal", "out of range 6000000..9000000"));
     return finishDecode(r, ctx, m);
 }
 

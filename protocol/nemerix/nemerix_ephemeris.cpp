@@ -75,9 +75,13 @@ bool decodeEphemeris(const Sentence &s, DecodeContext &ctx) {
     if (r.require(2)) {
         const auto sv = r.integer(0, "SV id");
         const auto sf = r.integer(1, "subframe");
-        if (sv && (*sv < 1 || *sv > 32)) r.fail(0, "SV id", "out of range 1..32");
-        if (sf && (*sf < 1 || *sf > 3)) r.fail(1, "subframe", "not 1, 2 or 3");
-        if ((!sv || !sf) && r.ok()) r.failSentence("SV id and subframe are required");
+        if (sv && (*sv < 1 || *sv > 32))
+            r.fail(0, "SV id", QT_TRANSLATE_NOOP("Refusal", "out of range 1..32"));
+        if (sf && (*sf < 1 || *sf > 3))
+            r.fail(1, "subframe", QT_TRANSLATE_NOOP("Refusal", "not 1, 2 or 3"));
+        if ((!sv || !sf) && r.ok())
+            r.failSentence(
+                    std::string(QT_TRANSLATE_NOOP("Refusal", "SV id and subframe are required")));
         if (r.ok()) {
             m.sv = *sv;
             m.subframe = *sf;
@@ -85,12 +89,14 @@ bool decodeEphemeris(const Sentence &s, DecodeContext &ctx) {
             std::size_t n = r.count();
             while (n > 2 && r.empty(n - 1)) --n;
             if (n != 2 + defs.size())
-                r.failSentence("subframe " + std::to_string(m.subframe) + ": expected " +
-                               std::to_string(defs.size()) + " hex fields, got " +
-                               std::to_string(n - 2));
+                r.failSentence(refusal(QT_TRANSLATE_NOOP("Refusal", "subframe %1: expected %2 "
+                                                                    "hex fields, got %3"),
+                                       {std::to_string(m.subframe), std::to_string(defs.size()),
+                                        std::to_string(n - 2)}));
             for (std::size_t f = 0; f < defs.size() && r.ok(); ++f) {
                 m.raw[f] = readHex(r, 2 + f, defs[f]);
-                if (!m.raw[f] && r.ok()) r.fail(2 + f, defs[f].key.data(), "missing");
+                if (!m.raw[f] && r.ok())
+                    r.fail(2 + f, defs[f].key.data(), QT_TRANSLATE_NOOP("Refusal", "missing"));
             }
         }
     }

@@ -83,36 +83,40 @@ bool decodeFixSettings(const Sentence &s, DecodeContext &ctx) {
     FixSettings m;
     std::size_t n = r.count();
     while (n > 0 && r.empty(n - 1)) --n;
-    if (n == 0) r.failSentence("no mask given");
-    if (n % 2 != 0) r.failSentence("mask ids and values must come in pairs");
+    if (n == 0) r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "no mask given")));
+    if (n % 2 != 0)
+        r.failSentence(std::string(
+                QT_TRANSLATE_NOOP("Refusal", "mask ids and values must come in pairs")));
     for (std::size_t i = 0; r.ok() && i + 1 < n; i += 2) {
         if (m.count == FixSettings::kMax) {
-            r.failSentence("too many masks");
+            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many masks")));
             break;
         }
         FixMask &f = m.masks[m.count++];
         const auto id = r.integer(i, "mask id");
         if (!id) {
-            if (r.ok()) r.fail(i, "mask id", "missing");
+            if (r.ok()) r.fail(i, "mask id", QT_TRANSLATE_NOOP("Refusal", "missing"));
             break;
         }
         if (*id < 0 || *id >= kMaskCount) {
-            r.fail(i, "mask id", "unknown mask (0..10)");
+            r.fail(i, "mask id", QT_TRANSLATE_NOOP("Refusal", "unknown mask (0..10)"));
             break;
         }
         f.id = *id;
         f.text = r.text(i + 1);
         if (f.id == 0) {
             f.tzMinutes = parseTimeZone(f.text);
-            if (!f.tzMinutes) r.fail(i + 1, "local time zone", "expected h:m");
+            if (!f.tzMinutes)
+                r.fail(i + 1, "local time zone", QT_TRANSLATE_NOOP("Refusal", "expected h:m"));
             continue;
         }
         const auto v = r.integer64(i + 1, kMasks[f.id].name);
         if (!v) {
-            if (r.ok()) r.fail(i + 1, kMasks[f.id].name, "missing");
+            if (r.ok()) r.fail(i + 1, kMasks[f.id].name, QT_TRANSLATE_NOOP("Refusal", "missing"));
             break;
         }
-        if (!validValue(f.id, *v)) r.fail(i + 1, kMasks[f.id].name, "out of range");
+        if (!validValue(f.id, *v))
+            r.fail(i + 1, kMasks[f.id].name, QT_TRANSLATE_NOOP("Refusal", "out of range"));
         f.value = static_cast<double>(*v) / kMasks[f.id].divisor;
     }
     return finishDecode(r, ctx, m);

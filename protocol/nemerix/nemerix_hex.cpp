@@ -12,7 +12,7 @@ std::optional<std::int64_t> readHex(FieldReader &r, std::size_t i, const HexFiel
     if (text.empty()) return std::nullopt;
     std::uint64_t v;
     if (!parseHex(text, v)) {
-        r.fail(i, def.key.data(), "not hexadecimal");
+        r.fail(i, def.key.data(), QT_TRANSLATE_NOOP("Refusal", "not hexadecimal"));
         return std::nullopt;
     }
     const int bits = def.bits;
@@ -25,7 +25,8 @@ std::optional<std::int64_t> readHex(FieldReader &r, std::size_t i, const HexFiel
             def.isSigned && signBit && text.size() * 4 > static_cast<std::size_t>(bits) &&
             high == (~mask & ((text.size() >= 16) ? ~0ULL : ((1ULL << (text.size() * 4)) - 1)));
     if (!plain && !extended) {
-        r.fail(i, def.key.data(), "does not fit the field's bit width");
+        r.fail(i, def.key.data(),
+               QT_TRANSLATE_NOOP("Refusal", "does not fit the field's bit width"));
         return std::nullopt;
     }
     std::uint64_t low = v & mask;

@@ -64,8 +64,9 @@ bool decodeIonosphere(const Sentence &s, DecodeContext &ctx) {
         m.sv = r.integer(0, "SV id");
         first = 1;
     } else if (n != 8) {
-        r.failSentence("expected the SV id and 8 hex coefficients, got " + std::to_string(n) +
-                       " fields");
+        r.failSentence(refusal(QT_TRANSLATE_NOOP("Refusal", "expected the SV id and 8 hex "
+                                                            "coefficients, got %1 fields"),
+                               {std::to_string(n)}));
     }
     for (std::size_t f = 0; f < 8 && r.ok(); ++f) m.raw[f] = readHex(r, first + f, kIono[f]);
     return finishDecode(r, ctx, m);
@@ -81,7 +82,9 @@ bool decodeUtc(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     UtcParameters m;
     const std::size_t n = usedFields(r);
-    if (n < 9) r.failSentence("expected the SV id and at least 8 hex fields");
+    if (n < 9)
+        r.failSentence(std::string(
+                QT_TRANSLATE_NOOP("Refusal", "expected the SV id and at least 8 hex fields")));
     m.sv = r.integer(0, "SV id");
     for (std::size_t f = 0; f < UtcParameters::kFieldCount && r.ok(); ++f)
         m.raw[f] = readHex(r, 1 + f, kUtc[f]);
@@ -99,7 +102,7 @@ bool decodeHealth(const Sentence &s, DecodeContext &ctx) {
     ConstellationHealth m;
     for (std::size_t i = 0; i < r.count(); ++i) {
         if (m.count == ConstellationHealth::kMax) {
-            r.failSentence("too many fields");
+            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many fields")));
             break;
         }
         m.codes[m.count++] = r.text(i);

@@ -33,10 +33,12 @@ const char *fixProcedureName(const std::optional<int> &code) {
 
 void checkCommon(FieldReader &r, std::size_t first, const std::optional<int> &tow,
                  const std::optional<int> &week, const std::optional<int> &channels) {
-    if (tow && (*tow < 0 || *tow > 604799)) r.fail(first, "time of week", "out of range");
-    if (week && (*week < 0 || *week > 9999)) r.fail(first + 1, "week number", "out of range");
+    if (tow && (*tow < 0 || *tow > 604799))
+        r.fail(first, "time of week", QT_TRANSLATE_NOOP("Refusal", "out of range"));
+    if (week && (*week < 0 || *week > 9999))
+        r.fail(first + 1, "week number", QT_TRANSLATE_NOOP("Refusal", "out of range"));
     if (channels && (*channels < 12 || *channels > 16))
-        r.fail(first + 2, "channel count", "out of range 12..16");
+        r.fail(first + 2, "channel count", QT_TRANSLATE_NOOP("Refusal", "out of range 12..16"));
 }
 
 } // namespace
@@ -61,7 +63,8 @@ bool decodeNavInit(const Sentence &s, DecodeContext &ctx) {
     m.channels = r.integer(6, "channel count");
     m.fixProcedure = r.integer(8, "fix procedure");
     if (r.ok() && (m.x.has_value() != m.y.has_value() || m.x.has_value() != m.z.has_value()))
-        r.failSentence("ECEF x, y and z must be given together");
+        r.failSentence(std::string(
+                QT_TRANSLATE_NOOP("Refusal", "ECEF x, y and z must be given together")));
     checkCommon(r, 4, m.timeOfWeek, m.week, m.channels);
     return finishDecode(r, ctx, m);
 }
@@ -96,7 +99,8 @@ bool decodeLlaInit(const Sentence &s, DecodeContext &ctx) {
     m.channels = r.integer(8, "channel count");
     if (r.ok() &&
         (m.lat.has_value() != m.lon.has_value() || m.lat.has_value() != m.altitude.has_value()))
-        r.failSentence("latitude, longitude and altitude must be given together");
+        r.failSentence(std::string(QT_TRANSLATE_NOOP(
+                "Refusal", "latitude, longitude and altitude must be given together")));
     checkCommon(r, 6, m.timeOfWeek, m.week, m.channels);
     return finishDecode(r, ctx, m);
 }

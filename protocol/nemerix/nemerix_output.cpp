@@ -35,20 +35,24 @@ bool decodeRates(const Sentence &s, DecodeContext &ctx, const MessageType &type,
     RateList m(type);
     std::size_t n = r.count();
     while (n > 0 && r.empty(n - 1)) --n; // fixed-length form: trailing empty field
-    if (n == 0) r.failSentence("no message id given");
-    if (n % 2 != 0) r.failSentence("message ids and values must come in pairs");
+    if (n == 0) r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "no message id given")));
+    if (n % 2 != 0)
+        r.failSentence(std::string(
+                QT_TRANSLATE_NOOP("Refusal", "message ids and values must come in pairs")));
     for (std::size_t i = 0; r.ok() && i + 1 < n; i += 2) {
         if (m.count == RateList::kMax) {
-            r.failSentence("too many entries");
+            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many entries")));
             break;
         }
         RateEntry &e = m.entries[m.count++];
         e.id = r.text(i);
         const bool known = nemerix ? oneOf(e.id, kNemerixIds, true) : oneOf(e.id, kNmeaIds, true);
-        if (!known) r.fail(i, "message id", "unknown message");
+        if (!known) r.fail(i, "message id", QT_TRANSLATE_NOOP("Refusal", "unknown message"));
         e.value = r.integer(i + 1, nemerix ? "mode" : "rate");
         if (e.value && (*e.value < 0 || *e.value > (nemerix ? 3 : 9)))
-            r.fail(i + 1, nemerix ? "mode" : "rate", nemerix ? "not 0..3" : "not 0..9");
+            r.fail(i + 1, nemerix ? "mode" : "rate",
+                   nemerix ? QT_TRANSLATE_NOOP("Refusal", "not 0..3")
+                           : QT_TRANSLATE_NOOP("Refusal", "not 0..9"));
     }
     return finishDecode(r, ctx, m);
 }
@@ -97,14 +101,15 @@ bool decodeNmeaSequence(const Sentence &s, DecodeContext &ctx) {
     NmeaSequence m;
     std::size_t n = r.count();
     while (n > 0 && r.empty(n - 1)) --n;
-    if (n == 0) r.failSentence("no message id given");
+    if (n == 0) r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "no message id given")));
     for (std::size_t i = 0; r.ok() && i < n; ++i) {
         if (m.count == NmeaSequence::kMax) {
-            r.failSentence("too many message ids");
+            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many message ids")));
             break;
         }
         const auto id = r.text(i);
-        if (!oneOf(id, kNmeaIds, false)) r.fail(i, "message id", "unknown message");
+        if (!oneOf(id, kNmeaIds, false))
+            r.fail(i, "message id", QT_TRANSLATE_NOOP("Refusal", "unknown message"));
         m.ids[m.count++] = id;
     }
     return finishDecode(r, ctx, m);

@@ -13,10 +13,11 @@ bool decodePowerMode(const Sentence &s, DecodeContext &ctx) {
     PowerMode m;
     m.mode = r.integer(0, "operating mode");
     m.offPeriod = r.integer(1, "off period");
-    if (!m.mode && r.ok()) r.fail(0, "operating mode", "missing");
-    if (m.mode && (*m.mode < 0 || *m.mode > 1)) r.fail(0, "operating mode", "not 0 or 1");
+    if (!m.mode && r.ok()) r.fail(0, "operating mode", QT_TRANSLATE_NOOP("Refusal", "missing"));
+    if (m.mode && (*m.mode < 0 || *m.mode > 1))
+        r.fail(0, "operating mode", QT_TRANSLATE_NOOP("Refusal", "not 0 or 1"));
     if (m.offPeriod && (*m.offPeriod < 5 || *m.offPeriod > 10))
-        r.fail(1, "off period", "out of range 5..10");
+        r.fail(1, "off period", QT_TRANSLATE_NOOP("Refusal", "out of range 5..10"));
     return finishDecode(r, ctx, m);
 }
 

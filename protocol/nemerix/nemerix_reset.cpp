@@ -36,13 +36,15 @@ bool decodeSoftwareReset(const Sentence &s, DecodeContext &ctx) {
         std::int64_t v;
         if (parseInt(t, v)) {
             if (v < 0 || v > 255)
-                r.fail(0, "invalidate parameter", "out of range 0..255");
+                r.fail(0, "invalidate parameter",
+                       QT_TRANSLATE_NOOP("Refusal", "out of range 0..255"));
             else
                 m.bits = static_cast<int>(v);
         } else if (isNamed(t)) {
             m.named = t;
         } else {
-            r.fail(0, "invalidate parameter", "expected 0..255 or FACTORY/COLD/WARM/HOT");
+            r.fail(0, "invalidate parameter",
+                   QT_TRANSLATE_NOOP("Refusal", "expected 0..255 or FACTORY/COLD/WARM/HOT"));
         }
     }
     return finishDecode(r, ctx, m);

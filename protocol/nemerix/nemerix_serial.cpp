@@ -24,9 +24,12 @@ bool decodeSerialPort(const Sentence &s, DecodeContext &ctx) {
     m.protocol = r.integer(0, "protocol");
     m.baud = r.integer(1, "baud");
     m.parity = r.integer(2, "parity");
-    if (m.protocol && (*m.protocol < 0 || *m.protocol > 1)) r.fail(0, "protocol", "not 0 or 1");
-    if (m.baud && !knownBaud(*m.baud)) r.fail(1, "baud", "not a supported speed");
-    if (m.parity && (*m.parity < 0 || *m.parity > 2)) r.fail(2, "parity", "not 0, 1 or 2");
+    if (m.protocol && (*m.protocol < 0 || *m.protocol > 1))
+        r.fail(0, "protocol", QT_TRANSLATE_NOOP("Refusal", "not 0 or 1"));
+    if (m.baud && !knownBaud(*m.baud))
+        r.fail(1, "baud", QT_TRANSLATE_NOOP("Refusal", "not a supported speed"));
+    if (m.parity && (*m.parity < 0 || *m.parity > 2))
+        r.fail(2, "parity", QT_TRANSLATE_NOOP("Refusal", "not 0, 1 or 2"));
     return finishDecode(r, ctx, m);
 }
 

@@ -33,7 +33,7 @@ bool decodeSettingsReport(const Sentence &s, DecodeContext &ctx) {
     SettingsReport m;
     const auto nb = r.integer(0, "message number");
     if (!nb || *nb < 0 || *nb > 4) {
-        if (r.ok()) r.fail(0, "message number", "not 0..4");
+        if (r.ok()) r.fail(0, "message number", QT_TRANSLATE_NOOP("Refusal", "not 0..4"));
         return finishDecode(r, ctx, m);
     }
     m.number = *nb;
@@ -62,9 +62,9 @@ bool decodeSettingsReport(const Sentence &s, DecodeContext &ctx) {
         m.tzHours = r.integer(11, "local zone hours");
         m.tzMinutes = r.integer(12, "local zone minutes");
         if (m.tzHours && (*m.tzHours < -13 || *m.tzHours > 13))
-            r.fail(11, "local zone hours", "out of range -13..13");
+            r.fail(11, "local zone hours", QT_TRANSLATE_NOOP("Refusal", "out of range -13..13"));
         if (m.tzMinutes && (*m.tzMinutes < -59 || *m.tzMinutes > 59))
-            r.fail(12, "local zone minutes", "out of range -59..59");
+            r.fail(12, "local zone minutes", QT_TRANSLATE_NOOP("Refusal", "out of range -59..59"));
         break;
     }
     case 2:

@@ -26,7 +26,7 @@ bool decodeReport(const Sentence &s, DecodeContext &ctx, const MessageType &type
     VersionReport m(type);
     for (std::size_t i = 0; i < r.count(); ++i) {
         if (m.count == VersionReport::kMax) {
-            r.failSentence("too many fields");
+            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many fields")));
             break;
         }
         m.fieldsText[m.count++] = r.text(i);

@@ -4,7 +4,7 @@ namespace gnss::nmea {
 
 bool finishDecode(FieldReader &r, DecodeContext &ctx, const Message &m) {
     if (!r.ok()) {
-        ctx.error = r.error();
+        ctx.fail(r.problem());
         return false;
     }
     ctx.deliver(m);

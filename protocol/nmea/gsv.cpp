@@ -30,7 +30,8 @@ bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
             auto id = r.integer(i, "satellite id");
             if (!id) continue;
             if (m.satelliteCount == Gsv::kMaxSatellites) {
-                r.failSentence("too many satellites in one GSV sentence");
+                r.failSentence(std::string(
+                        QT_TRANSLATE_NOOP("Refusal", "too many satellites in one GSV sentence")));
                 break;
             }
             GsvSatellite &sv = m.satellites[m.satelliteCount++];
@@ -40,12 +41,13 @@ bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
             sv.azimuth = r.integer(i + 2, "azimuth");
             sv.snr = r.integer(i + 3, "SNR");
             if (sv.elevation && (*sv.elevation < -90 || *sv.elevation > 90))
-                r.fail(i + 1, "elevation", "out of range");
+                r.fail(i + 1, "elevation", QT_TRANSLATE_NOOP("Refusal", "out of range"));
             if (sv.azimuth && (*sv.azimuth < 0 || *sv.azimuth > 360))
-                r.fail(i + 2, "azimuth", "out of range");
+                r.fail(i + 2, "azimuth", QT_TRANSLATE_NOOP("Refusal", "out of range"));
         }
         if (m.total && m.index && (*m.index < 1 || *m.index > *m.total))
-            r.failSentence("sentence number outside 1.." + std::to_string(*m.total));
+            r.failSentence(refusal(QT_TRANSLATE_NOOP("Refusal", "sentence number outside 1..%1"),
+                                   {std::to_string(*m.total)}));
     }
     return finishDecode(r, ctx, m);
 }

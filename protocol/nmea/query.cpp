@@ -13,7 +13,7 @@ bool decodeQuery(const Sentence &s, DecodeContext &ctx) {
         m.requester = s.address().substr(0, 2);
         m.listener = s.address().substr(2, 2);
         m.address = r.text(0);
-        if (m.address.empty()) r.fail(0, "address", "empty");
+        if (m.address.empty()) r.fail(0, "address", QT_TRANSLATE_NOOP("Refusal", "empty"));
     }
     return finishDecode(r, ctx, m);
 }

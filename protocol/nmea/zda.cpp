@@ -17,8 +17,9 @@ bool decodeZda(const Sentence &s, DecodeContext &ctx) {
         auto mo = r.integer(2, "month");
         auto y = r.integer(3, "year");
         if (d && mo && y) {
-            if (*d < 1 || *d > 31) r.fail(1, "day", "out of range");
-            if (*mo < 1 || *mo > 12) r.fail(2, "month", "out of range");
+            if (*d < 1 || *d > 31) r.fail(1, "day", QT_TRANSLATE_NOOP("Refusal", "out of range"));
+            if (*mo < 1 || *mo > 12)
+                r.fail(2, "month", QT_TRANSLATE_NOOP("Refusal", "out of range"));
             m.date = Date{*y, *mo, *d};
         }
         m.tzHours = r.integer(4, "zone hours");

@@ -15,7 +15,7 @@ bool decodeCfg(const Sentence &s, DecodeContext &ctx) {
     Cfg m;
     if (r.require(1)) {
         m.action = r.text(0);
-        if (m.action.empty()) r.fail(0, "action", "empty");
+        if (m.action.empty()) r.fail(0, "action", QT_TRANSLATE_NOOP("Refusal", "empty"));
         for (std::size_t i = 1; i < s.fieldCount(); ++i) m.extra.push_back(r.text(i));
     }
     return finish(r, ctx, m);

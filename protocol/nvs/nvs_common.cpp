@@ -6,7 +6,7 @@ namespace gnss::nvs {
 
 bool finish(FieldReader &r, DecodeContext &ctx, const Message &m) {
     if (!r.ok()) {
-        ctx.error = r.error();
+        ctx.fail(r.problem());
         return false;
     }
     ctx.deliver(m);

@@ -64,7 +64,9 @@ bool decodeIdl(const Sentence &s, DecodeContext &ctx) {
                 m.icb = r.real(3, "GLONASS ICB");
             }
         } else {
-            r.fail(0, "subcommand", "not MODE, ADD, REMOVE, CLEAR, SHOW or a list item");
+            r.fail(0, "subcommand",
+                   QT_TRANSLATE_NOOP("Refusal",
+                                     "not MODE, ADD, REMOVE, CLEAR, SHOW or a list item"));
         }
     }
     return finish(r, ctx, m);

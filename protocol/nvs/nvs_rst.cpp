@@ -13,7 +13,8 @@ bool decodeRst(const Sentence &s, DecodeContext &ctx) {
     Rst m;
     if (r.require(1)) {
         m.type = r.letter(0, "reset type");
-        if (m.type && *m.type != 'F' && *m.type != 'W') r.fail(0, "reset type", "not F or W");
+        if (m.type && *m.type != 'F' && *m.type != 'W')
+            r.fail(0, "reset type", QT_TRANSLATE_NOOP("Refusal", "not F or W"));
     }
     return finish(r, ctx, m);
 }

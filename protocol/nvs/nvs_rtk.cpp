@@ -124,13 +124,15 @@ bool decodeRtk(const Sentence &s, DecodeContext &ctx) {
             if (isNameToken(t)) {
                 m.params.push_back({t, {}});
             } else if (m.params.empty()) {
-                r.fail(i, "parameter", "a value before any parameter name");
+                r.fail(i, "parameter",
+                       QT_TRANSLATE_NOOP("Refusal", "a value before any parameter name"));
                 break;
             } else {
                 m.params.back().values.push_back(t);
             }
         }
-        if (r.ok() && m.params.empty()) r.failSentence("PNVGRTK names no parameter");
+        if (r.ok() && m.params.empty())
+            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "PNVGRTK names no parameter")));
     }
     return finish(r, ctx, m);
 }

@@ -23,18 +23,18 @@ bool decodeRzb(const Sentence &s, DecodeContext &ctx) {
     for (; i < s.fieldCount() && r.ok(); i += 2) {
         if (r.empty(i) && i + 1 >= s.fieldCount()) break; // trailing comma
         if (r.empty(i)) {
-            r.fail(i, "message address", "empty");
+            r.fail(i, "message address", QT_TRANSLATE_NOOP("Refusal", "empty"));
             break;
         }
         if (i + 1 >= s.fieldCount()) {
-            r.fail(i, "output rate", "missing");
+            r.fail(i, "output rate", QT_TRANSLATE_NOOP("Refusal", "missing"));
             break;
         }
         const auto rate = r.integer(i + 1, "output rate");
         if (rate)
             m.entries.push_back({std::string(r.text(i)), *rate});
         else if (r.ok())
-            r.fail(i + 1, "output rate", "empty");
+            r.fail(i + 1, "output rate", QT_TRANSLATE_NOOP("Refusal", "empty"));
     }
     return finish(r, ctx, m);
 }

@@ -9,6 +9,7 @@
 #include "refusal_text.h"
 #include "schema_catalog.h"
 #include "schema_texts.h"
+#include "session_feed.h"
 #include "settings/settings_view.h"
 
 #include <QComboBox>
@@ -138,6 +139,28 @@ private slots:
         QVERIFY2(r.error.endsWith(config::refusalText(enc, rig.dialect->id)), qPrintable(r.error));
         QVERIFY2(!r.error.contains("nothing was sent"), qPrintable(r.error)); // the frame too
         QCOMPARE(rig.queue.history().size(), before);                         // nothing sent
+    }
+
+    // The console says what is wrong with a line in Russian: a field the decoder refuses, a
+    // checksum, a sentence without enough fields.
+    void consoleDiagnosticsAreInRussian() {
+        QCoreApplication::installTranslator(&russian_);
+        const auto restore = qScopeGuard([this] { QCoreApplication::removeTranslator(&russian_); });
+        test::SessionFixture f;
+        f.feedBytes("$GPGGA,120000.00,5550.6,N,03732.2,E,x,08,0.9,150.0,M,14.4,M,,*26\r\n"
+                    "$GPGGA,120001.00,5550.6,N,03732.2,E,1,08,0.9,150.0,M,14.4,M,,*00\r\n"
+                    "$GPZDA,120002.00*4B\r\n");
+        f.session.refresh();
+        QStringList tips;
+        for (int row = 0; row < f.console.rowCount(); ++row)
+            tips << f.console.data(f.console.index(row), Qt::ToolTipRole).toString();
+        QCOMPARE(tips.size(), 3);
+        QVERIFY2(tips[0].startsWith("поле 6 (quality)") &&
+                         tips[0].contains(": не целое число: «x»"),
+                 qPrintable(tips[0]));
+        QVERIFY2(tips[1].startsWith("контрольная сумма не совпадает: передано 00, вычислено "),
+                 qPrintable(tips[1]));
+        QVERIFY2(tips[2].startsWith("ожидается не менее"), qPrintable(tips[2]));
     }
 
     void theSettingsFormSpeaksRussian_data() { everySchemaTextIsInRussian_data(); }

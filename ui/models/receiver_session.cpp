@@ -1,5 +1,7 @@
 #include "receiver_session.h"
 
+#include "refusal_text.h"
+
 #include <QDateTime>
 
 namespace gnss::ui {
@@ -45,7 +47,8 @@ void ReceiverSession::consume(const SentenceEvent &ev, const Dialect *dialect) {
         l.address = QByteArray(s.address().data(), qsizetype(s.address().size()));
         l.checksumBad = s.checksum() == ChecksumStatus::Bad;
         if (!ev.message) {
-            const QString why = QString::fromUtf8(ev.error.data(), qsizetype(ev.error.size()));
+            // The decoder's word in the user's language (core/refusal.h).
+            const QString why = config::refusalText(ev.error, ev.problem);
             if (ev.unknown)
                 l.note = why; // not decoded, but nothing wrong with the line
             else
