@@ -4346,12 +4346,12 @@ Serial number: %3</source>
         <translation>UTC</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Local time (UTC%1%2:%3)</source>
-        <translation>Местное время (UTC%1%2:%3)</translation>
+        <location line="+1"/>
+        <source>Local time (%1)</source>
+        <translation>Местное время (%1)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>T&amp;ime:</source>
         <translation>&amp;Время:</translation>
     </message>

@@ -72,11 +72,8 @@ PreferencesDialog::PreferencesDialog(const Preferences &prefs, const QString &ru
     time_ = new QComboBox(this);
     time_->setObjectName("prefTime");
     time_->addItem(tr("UTC"), int(ui::TimeZoneChoice::Utc));
-    const int offset = QDateTime::currentDateTime().offsetFromUtc();
-    time_->addItem(tr("Local time (UTC%1%2:%3)")
-                           .arg(offset < 0 ? '-' : '+')
-                           .arg(std::abs(offset) / 3600, 2, 10, QChar('0'))
-                           .arg(std::abs(offset) / 60 % 60, 2, 10, QChar('0')),
+    time_->addItem(tr("Local time (%1)")
+                           .arg(ui::fmt::utcOffset(QDateTime::currentDateTime().offsetFromUtc())),
                    int(ui::TimeZoneChoice::Local));
     form->addRow(tr("T&ime:"), time_);
 

@@ -164,6 +164,13 @@ QString distance(const std::optional<double> &metres, int decimals, UnitSystem u
     return number(*metres / 1000.0, decimals, unitText(QT_TRANSLATE_NOOP("Units", "km")));
 }
 
+QString utcOffset(int offset) {
+    return QStringLiteral("UTC%1%2:%3")
+            .arg(offset < 0 ? '-' : '+')
+            .arg(std::abs(offset) / 3600, 2, 10, QChar('0'))
+            .arg(std::abs(offset) / 60 % 60, 2, 10, QChar('0'));
+}
+
 QString time(const std::optional<Date> &date, const std::optional<TimeOfDay> &t,
              TimeZoneChoice zone, bool withZone) {
     if (!t) return dash();
@@ -176,11 +183,7 @@ QString time(const std::optional<Date> &date, const std::optional<TimeOfDay> &t,
     const qint64 ms = t->nanos / 1'000'000;
     QDateTime utc(day, QTime(0, 0), QTimeZone::utc());
     const QDateTime local = utc.addMSecs(ms).toLocalTime();
-    const int offset = local.offsetFromUtc();
-    const QString zoneText = QStringLiteral("UTC%1%2:%3")
-                                     .arg(offset < 0 ? '-' : '+')
-                                     .arg(std::abs(offset) / 3600, 2, 10, QChar('0'))
-                                     .arg(std::abs(offset) / 60 % 60, 2, 10, QChar('0'));
+    const QString zoneText = utcOffset(local.offsetFromUtc());
     const QString when = local.toString(date ? QStringLiteral("yyyy-MM-dd hh:mm:ss.zzz")
                                              : QStringLiteral("hh:mm:ss.zzz"));
     return withZone ? when + ' ' + zoneText : when;
