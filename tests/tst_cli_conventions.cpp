@@ -2,6 +2,7 @@
 // program and each gnss-cli command (also `gnss-cli help COMMAND`), --opt=value as well as
 // --opt value, unknown options refused, data on standard output and messages on standard error,
 // and the exit codes: 0 done, 1 failed, 2 usage error, 128 + signal when interrupted.
+#include <QDir>
 #include <QFile>
 #include <QProcess>
 #include <QRegularExpression>
@@ -308,6 +309,50 @@ private slots:
             const Run r = run(gui, args, {}, env);
             QVERIFY2(r.exitCode == 2 && r.out.isEmpty(), qPrintable(args.join(' ') + why(r)));
         }
+#endif
+    }
+
+    // The language of the preferences is the language the workbench starts in: Russian on an
+    // English system when chosen, English on a Russian system when chosen, the system's by
+    // default. (Its message about an unknown dock shows which.)
+    void gnssWorkbenchStartsInThePreferredLanguage_data() {
+        QTest::addColumn<QString>("preference");
+        QTest::addColumn<QString>("systemLanguage");
+        QTest::addColumn<bool>("russian");
+        QTest::newRow("ru on an English system") << "ru"
+                                                 << "en_US.UTF-8" << true;
+        QTest::newRow("en on a Russian system") << "en"
+                                                << "ru_RU.UTF-8" << false;
+        QTest::newRow("system, Russian") << "system"
+                                         << "ru_RU.UTF-8" << true;
+        QTest::newRow("system, English") << "system"
+                                         << "en_US.UTF-8" << false;
+    }
+    void gnssWorkbenchStartsInThePreferredLanguage() {
+#ifndef GNSS_WORKBENCH_PATH
+        QSKIP("the GUI is not built");
+#else
+        QFETCH(QString, preference);
+        QFETCH(QString, systemLanguage);
+        QFETCH(bool, russian);
+        QTemporaryDir home;
+        QVERIFY(home.isValid());
+        {
+            QDir().mkpath(home.filePath("GNSS Workbench"));
+            QFile conf(home.filePath("GNSS Workbench/GNSS Workbench.conf"));
+            QVERIFY(conf.open(QIODevice::WriteOnly));
+            conf.write("[ui]\nlanguage=" + preference.toUtf8() + "\n");
+        }
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("QT_QPA_PLATFORM", "offscreen");
+        env.insert("XDG_CONFIG_HOME", home.path());
+        for (const char *v : {"LANG", "LC_ALL", "LC_MESSAGES", "LANGUAGE"})
+            env.insert(v, systemLanguage);
+        env.remove("LANGUAGE");
+        const Run r = run(QStringLiteral(GNSS_WORKBENCH_PATH), {"--show-dock", "nosuch"}, {}, env);
+        QCOMPARE(r.exitCode, 2);
+        const QString err = QString::fromUtf8(r.err);
+        QVERIFY2(err.contains(russian ? "Неизвестная панель" : "Unknown dock"), qPrintable(err));
 #endif
     }
 };
