@@ -284,7 +284,12 @@
         <translation>fix.timeZone: «%1» недопустимо; допустимо: ч:м, часы -13..13, минуты 0..59</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
+        <source>fix.timeZone: &apos;%1&apos; is UTC itself: write 0:0</source>
+        <translation>fix.timeZone: «%1» — это и есть UTC: пишите 0:0</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>datum.mapDatum: %1 is out of range; accepted: 0..218 (internal table) or 500 (user defined)</source>
         <translation>datum.mapDatum: %1 вне допустимого диапазона; допустимо: 0..218 (встроенная таблица) или 500 (задаётся пользователем)</translation>
     </message>

@@ -95,6 +95,15 @@ EncodeResult encodeSettingsUnchecked(std::span<const KeyValue> values) {
                            {v.get("fix.timeZone")}));
         return out;
     }
+    // "-0:0" is UTC and reads back as "0:0": one way of writing it, so that what is applied is
+    // what the receiver reports (the settings engine compares them).
+    if (v.has("fix.timeZone") && v.get("fix.timeZone").front() == '-' &&
+        *parseTimeZone(v.get("fix.timeZone")) == 0) {
+        out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "fix.timeZone: '%1' is UTC itself: write "
+                                                        "0:0"),
+                           {v.get("fix.timeZone")}));
+        return out;
+    }
     if (auto d = v.integer("datum.mapDatum"); d && *d > 218 && *d != 500) {
         out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "datum.mapDatum: %1 is out of range; "
                                                         "accepted: 0..218 (internal table) or 500 "
