@@ -161,6 +161,8 @@ CorrectionsView::CorrectionsView(const corrections::CorrectionsMonitor &monitor,
     ageX_->setLabelFormat(QStringLiteral("%d"));
     ageY_ = new QValueAxis;
     ageY_->setRange(0, 5);
+    ageY_->setLabelFormat(QStringLiteral("%d")); // whole seconds
+    ageY_->setTruncateLabels(false);             // Qt 6.4 elides them to "…" in a low chart
     chart->addAxis(ageX_, Qt::AlignBottom);
     chart->addAxis(ageY_, Qt::AlignLeft);
     ageSeries_->attachAxis(ageX_);
