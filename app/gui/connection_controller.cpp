@@ -5,6 +5,7 @@
 #include "link/link_opener.h"
 #include "link/replay_transport.h"
 #include "link/sentence_stream.h"
+#include "link/vendor_detector.h"
 #include "models/receiver_session.h"
 
 namespace gnss::app {
@@ -147,6 +148,7 @@ void ConnectionController::wire(link::Connection *c) {
 void ConnectionController::setConnected(const QString &description) {
     setState(State::Connected, detectedBaud_ > 0 ? tr("Connected: %1 (detected)").arg(description)
                                                  : tr("Connected: %1").arg(description));
+    if (connection_) identify(connection_.get());
 }
 
 void ConnectionController::setBaudCandidates(const QList<int> &rates) {
@@ -161,7 +163,24 @@ void ConnectionController::retryNow() {
     if (connection_) connection_->retryNow();
 }
 
+void ConnectionController::identify(link::Connection *c) {
+    // A receiver whose output names no vendor (a GeoS-5 sends only standard sentences until it
+    // is asked) is asked with each dialect's probe, as gnss-cli probe does, and the link speaks
+    // the dialect that answers. Not through a link that takes no commands.
+    if (c->stream()->dialect() || !sendRefusal().isEmpty()) return;
+    identifier_ = std::make_unique<link::VendorDetector>(c->stream());
+    connect(identifier_.get(), &link::VendorDetector::finished, this,
+            [this, c](const link::VendorIdentity &v) {
+                if (connection_.get() != c || c->stream()->dialect() || !v.found) return;
+                if (const Dialect *d = registry_.find(v.dialect.toStdString());
+                    d && d->id != "nmea")
+                    c->stream()->setDialect(d);
+            });
+    identifier_->start();
+}
+
 void ConnectionController::disconnectFromSource() {
+    identifier_.reset();
     opener_->cancel();
     if (connection_) {
         connection_->close();

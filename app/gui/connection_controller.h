@@ -15,6 +15,7 @@ class DialectRegistry;
 namespace link {
 class Connection;
 class LinkOpener;
+class VendorDetector;
 class TransportFactory;
 struct CommandResult;
 } // namespace link
@@ -73,6 +74,7 @@ signals:
     void detectionFinished(int baud);
 
 private:
+    void identify(link::Connection *c);
     void setState(State s, const QString &text);
     void setConnected(const QString &description);
     void onOpenerReady();
@@ -85,6 +87,9 @@ private:
     SourceSpec spec_;
     std::unique_ptr<link::LinkOpener> opener_;
     std::unique_ptr<link::Connection> connection_;
+    // Asks who is on a link whose output names no vendor (declared after connection_: it goes
+    // first, it listens to the connection's stream).
+    std::unique_ptr<link::VendorDetector> identifier_;
     int detectedBaud_ = 0;
     QString detectionDetail_;
     State state_ = State::Disconnected;

@@ -10,6 +10,7 @@
 #include "connection_controller.h"
 #include "dialects.h"
 #include "link/connection.h"
+#include "link/sentence_stream.h"
 #include "main_window.h"
 #include "models/console_model.h"
 #include "models/receiver_state_model.h"
@@ -380,6 +381,21 @@ private slots:
         QVERIFY2(watch.worst < 250, QByteArray::number(watch.worst));
         QVERIFY2(w_->controller()->stateText().contains(where),
                  qPrintable(w_->controller()->stateText()));
+        w_->controller()->disconnectFromSource();
+    }
+
+    // A GeoS-5 sends only standard sentences until asked: the window asks each dialect's probe
+    // (as gnss-cli probe does), speaks GeoStar from then on and shows the receiver's identity.
+    void aReceiverWhoseOutputNamesNoVendorIsAsked() {
+        link::test::SimProcess geostar(QStringList{"--dialect", "geostar", "--baud", "38400"});
+        if (!geostar.ok()) QSKIP(qPrintable("gnss-sim: " + geostar.error));
+        w_->controller()->connectTo(SourceSpec{SourceSpec::Kind::Serial, geostar.device, 0});
+        QTRY_VERIFY_WITH_TIMEOUT(
+                w_->controller()->state() == ConnectionController::State::Connected, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(QString::fromStdString(w_->stateModel()->state().identity.model),
+                                  QString("GeoS-5M"), 20000);
+        auto *c = w_->controller()->connection();
+        QVERIFY(c->stream()->dialect() && c->stream()->dialect()->id == "geostar");
         w_->controller()->disconnectFromSource();
     }
 
