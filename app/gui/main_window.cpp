@@ -53,6 +53,8 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
     setObjectName("MainWindow");
     setDockNestingEnabled(true);
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks | GroupedDragging);
+    if (settings_) prefs_ = Preferences::load(*settings_);
+    startLanguage_ = prefs_.language;
     createModels();
     ports_ = new link::PortWatcher({}, this);
     ports_->start();
@@ -103,8 +105,6 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
         setWindowState(windowState() | Qt::WindowMaximized);
     }
     defaultState_ = saveState();
-    if (settings_) prefs_ = Preferences::load(*settings_);
-    startLanguage_ = prefs_.language;
     restoreLayout();
 }
 
@@ -175,11 +175,10 @@ void MainWindow::createDocks() {
         p.display.coordinates = f;
         setPreferences(p);
     });
-    connect(this, &MainWindow::displayPrefsChanged, console_,
-            [this](const ui::DisplayPrefs &p) {
-                console_->setTimeZone(p.time);
-                messages_->setTimeZone(p.time);
-            });
+    connect(this, &MainWindow::displayPrefsChanged, console_, [this](const ui::DisplayPrefs &p) {
+        console_->setTimeZone(p.time);
+        messages_->setTimeZone(p.time);
+    });
     auto *signalDock = addDock(new ui::SignalLevelsView(satellites_, this), tr("Signal levels"),
                                tr("Signal levels"), "signalDock", Qt::BottomDockWidgetArea);
     auto *table = new QTableView(this);
@@ -363,8 +362,7 @@ void MainWindow::createMenus() {
             p.theme = a->data().toString();
             setPreferences(p);
         });
-        if (settings_ && settings_->value("view/theme", "system").toString() == QLatin1String(id))
-            a->setChecked(true);
+        a->setChecked(prefs_.theme == QLatin1String(id));
     }
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
@@ -457,7 +455,6 @@ void MainWindow::toggleRecording(bool on) {
 }
 
 void MainWindow::applyTheme(const QString &theme) {
-    if (settings_) settings_->setValue("view/theme", theme);
     if (theme == QLatin1String("system")) {
         QApplication::setPalette(QApplication::style()->standardPalette());
         return;

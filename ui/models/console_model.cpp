@@ -1,7 +1,6 @@
 #include "console_model.h"
 
 #include <QColor>
-#include <QDateTime>
 
 namespace gnss::ui {
 namespace {
@@ -20,9 +19,7 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
     switch (role) {
     case Qt::DisplayRole: {
         // The host's clock when the line arrived, in the zone the user chose.
-        const QDateTime at = QDateTime::fromMSecsSinceEpoch(l.ms, Qt::UTC);
-        const QString time = (zone_ == TimeZoneChoice::Local ? at.toLocalTime() : at)
-                                     .toString(QStringLiteral("hh:mm:ss.zzz"));
+        const QString time = fmt::hostTime(l.ms, zone_);
         return time + (l.sent ? QStringLiteral("  ▶ ") : QStringLiteral("    ")) +
                QString::fromLatin1(l.text);
     }

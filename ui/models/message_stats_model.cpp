@@ -1,7 +1,6 @@
 #include "message_stats_model.h"
 
 #include <QColor>
-#include <QDateTime>
 
 namespace gnss::ui {
 namespace {
@@ -40,13 +39,7 @@ QVariant MessageStatsModel::data(const QModelIndex &index, int role) const {
     case Address: return r.address;
     case Count: return QString::number(r.count);
     case Rate: return QString::number(r.rateHz, 'f', r.rateHz < 10 ? 2 : 1);
-    case LastSeen:
-        if (!r.lastSeenMs) return QStringLiteral("—");
-        {
-            const QDateTime at = QDateTime::fromMSecsSinceEpoch(r.lastSeenMs, Qt::UTC);
-            return (zone_ == TimeZoneChoice::Local ? at.toLocalTime() : at)
-                    .toString(QStringLiteral("hh:mm:ss.zzz"));
-        }
+    case LastSeen: return r.lastSeenMs ? fmt::hostTime(r.lastSeenMs, zone_) : fmt::dash();
     case ChecksumErrors: return QString::number(r.checksumErrors);
     case DecodeErrors: return QString::number(r.decodeErrors);
     case Unknown: return QString::number(r.unknown);

@@ -190,7 +190,7 @@ void ChartsView::setDisplayPrefs(const DisplayPrefs &prefs) {
     units_ = prefs.units;
     for (int g = 0; g < TS::GroupCount; ++g)
         if (groups_[g].chart) groups_[g].chart->setTitle(TS::groupTitle(TS::Group(g), units_));
-    selectionChanged_ = true; // redraw every line in the new unit
+    drawnRevision_ = ~quint64(0); // redraw every line in the new unit (the charts stay)
     redraw();
 }
 

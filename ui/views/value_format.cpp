@@ -164,6 +164,12 @@ QString distance(const std::optional<double> &metres, int decimals, UnitSystem u
     return number(*metres / 1000.0, decimals, unitText(QT_TRANSLATE_NOOP("Units", "km")));
 }
 
+QString hostTime(qint64 ms, TimeZoneChoice zone) {
+    const QDateTime at = QDateTime::fromMSecsSinceEpoch(ms, QTimeZone::utc());
+    return (zone == TimeZoneChoice::Local ? at.toLocalTime() : at)
+            .toString(QStringLiteral("hh:mm:ss.zzz"));
+}
+
 QString utcOffset(int offset) {
     return QStringLiteral("UTC%1%2:%3")
             .arg(offset < 0 ? '-' : '+')

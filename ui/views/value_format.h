@@ -65,6 +65,8 @@ QString distance(const std::optional<double> &metres, int decimals, UnitSystem u
 // The receiver's UTC date (may be absent) and time: "2026-12-01 05:46:15.250 UTC", or local
 // time with its offset "2026-12-01 08:46:15.250 UTC+03:00" (today's date when the receiver
 // sends none). Without the zone's name when `withZone` is false (a table column that says it).
+// A host clock reading (ms since the epoch) as "hh:mm:ss.zzz", in UTC or local time.
+QString hostTime(qint64 msSinceEpoch, TimeZoneChoice zone);
 // "UTC+03:00" for an offset from UTC in seconds.
 QString utcOffset(int seconds);
 QString time(const std::optional<Date> &date, const std::optional<TimeOfDay> &time,
