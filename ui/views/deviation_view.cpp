@@ -59,6 +59,8 @@ private:
     const PositionScatter *s_;
 };
 
+// Texts through DeviationView::tr: the canvas is a plain QWidget, whose tr() would look them up
+// under "QWidget", not where lupdate files them.
 void DeviationView::Canvas::paintEvent(QPaintEvent *) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
@@ -78,7 +80,7 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
     if (pts.empty()) {
         p.setPen(text);
         p.drawRect(plot);
-        p.drawText(plot, Qt::AlignCenter, tr("No position yet"));
+        p.drawText(plot, Qt::AlignCenter, DeviationView::tr("No position yet"));
         return;
     }
 
@@ -119,12 +121,12 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
                    Qt::AlignRight | Qt::AlignVCenter, t);
     }
     p.drawText(QRectF(plot.left(), plot.bottom() + 2 + fm.height(), plot.width(), fm.height()),
-               Qt::AlignHCenter, tr("East (%1)").arg(fmt::lengthUnit(units)));
+               Qt::AlignHCenter, DeviationView::tr("East (%1)").arg(fmt::lengthUnit(units)));
     p.save();
     p.translate(2, plot.center().y());
     p.rotate(-90);
     p.drawText(QRectF(-plot.height() / 2.0, 0, plot.height(), fm.height()), Qt::AlignHCenter,
-               tr("North (%1)").arg(fmt::lengthUnit(units)));
+               DeviationView::tr("North (%1)").arg(fmt::lengthUnit(units)));
     p.restore();
 
     // Points, oldest first so the newest are on top.
@@ -159,9 +161,9 @@ void DeviationView::Canvas::paintEvent(QPaintEvent *) {
         Qt::PenStyle style;
         QString name;
     };
-    const Circle circles[] = {{st.cep50, Qt::DashLine, tr("CEP50")},
-                              {st.cep95, Qt::SolidLine, tr("CEP95")},
-                              {st.drms2, Qt::DotLine, tr("2DRMS")}};
+    const Circle circles[] = {{st.cep50, Qt::DashLine, DeviationView::tr("CEP50")},
+                              {st.cep95, Qt::SolidLine, DeviationView::tr("CEP95")},
+                              {st.drms2, Qt::DotLine, DeviationView::tr("2DRMS")}};
     p.setBrush(Qt::NoBrush);
     for (const Circle &ci : circles) {
         if (ci.radius <= 0) continue;
