@@ -75,7 +75,10 @@ int main(int argc, char **argv) {
                                         window.dockNames().join(QStringLiteral(", ")))));
         return 2;
     }
-    window.connectAtStart(start);
+    if (!options->open.isEmpty())
+        window.openLog(options->open);
+    else
+        window.connectAtStart(start);
 
     const double delay =
             options->quitAfter > 0 ? options->quitAfter : (options->screenshot.isEmpty() ? 0 : 1);

@@ -6,6 +6,7 @@
 #include "core/dialect_registry.h"
 #include "corrections_controller.h"
 #include "link/port_watcher.h"
+#include "log_viewer.h"
 #include "models/console_model.h"
 #include "models/message_stats_model.h"
 #include "models/receiver_session.h"
@@ -261,6 +262,7 @@ void MainWindow::createDocks() {
                 settingsEngine->attach(controller_->connection(), session_->dialect());
             });
     fixDock->raise();
+    createLogViewer();
     tabifyDockWidget(consoleDock, statsDock);
     tabifyDockWidget(statsDock, chartsDock);
     consoleDock->raise();
@@ -307,16 +309,8 @@ const SettingDef *MainWindow::elevationMaskSetting(const Dialect *d) {
 
 void MainWindow::createMenus() {
     QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *open = file->addAction(tr("&Open Log..."), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(
-                this, tr("Open Log"), {}, tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
-        if (!path.isEmpty()) {
-            const SourceSpec s{SourceSpec::Kind::Replay, path};
-            bar_->select(s);
-            controller_->connectTo(s);
-        }
-    });
-    open->setShortcut(QKeySequence::Open);
+    createLogMenu(file);
+    file->addSeparator();
     recordAction_ = file->addAction(tr("&Record..."));
     recordAction_->setCheckable(true);
     recordAction_->setShortcut(QKeySequence(tr("Ctrl+R")));
@@ -399,12 +393,14 @@ void MainWindow::createStatusBar() {
 }
 
 void MainWindow::updateStatus() {
-    stateLabel_->setText(controller_->stateText());
+    const bool log = logViewer_ && logViewer_->isOpen();
+    stateLabel_->setText(log ? logViewer_->statusText() : controller_->stateText());
     // The whole text too, for a message longer than the status bar shows.
-    stateLabel_->setToolTip(controller_->detectionDetail().isEmpty()
+    stateLabel_->setToolTip(log ? logViewer_->path()
+                            : controller_->detectionDetail().isEmpty()
                                     ? controller_->stateText()
                                     : controller_->detectionDetail());
-    const Dialect *d = session_->dialect();
+    const Dialect *d = log ? logViewer_->dialectAtCursor() : session_->dialect();
     const ReceiverIdentity &id = stateModel_->state().identity;
     QString who = d ? QString::fromLatin1(d->displayName.data(), int(d->displayName.size()))
                   : session_->counters().sentences > 0 ? tr("NMEA-0183 (no vendor sentences)")
@@ -412,21 +408,27 @@ void MainWindow::updateStatus() {
     if (!id.model.empty()) who = QString::fromStdString(id.vendor + " " + id.model);
     if (!id.firmware.empty()) who += tr(" (firmware %1)").arg(QString::fromStdString(id.firmware));
     dialectLabel_->setText(who);
+    // A log's rates and errors are its statistics' business, not the status bar's.
     const auto &c = session_->counters();
+    rateLabel_->setVisible(!log);
+    errorLabel_->setVisible(!log);
     rateLabel_->setText(tr("%1 B/s · %2 sentences/s")
                                 .arg(qRound(c.bytesPerSecond))
                                 .arg(c.sentencesPerSecond, 0, 'f', 1));
     errorLabel_->setText(tr("checksum errors: %1").arg(c.checksumErrors));
-    errorLabel_->setStyleSheet(c.checksumErrors ? QStringLiteral("color: #c62828;") : QString());
+    errorLabel_->setStyleSheet(
+            c.checksumErrors ? QStringLiteral("color: %1;").arg(style::errorColor().name())
+                             : QString());
     const bool rec = controller_->recording();
     recordLabel_->setText(rec ? tr("● REC") : QString());
-    recordLabel_->setStyleSheet(rec ? QStringLiteral("color: #c62828; font-weight: bold;")
-                                    : QString());
+    recordLabel_->setStyleSheet(
+            rec ? QStringLiteral("color: %1; font-weight: bold;").arg(style::errorColor().name())
+                : QString());
     // The badge is the live fix: none once the receiver is disconnected (the docks keep the last).
     const auto link = controller_->state();
     const bool live = link != ConnectionController::State::Disconnected &&
                       link != ConnectionController::State::Failed;
-    const bool any = live && stateModel_->epochCount() > 0;
+    const bool any = (live || log) && stateModel_->epochCount() > 0;
     const FixType fix = any ? stateModel_->state().epoch.fix : FixType::None;
     fixLabel_->setText(any ? style::fixTypeLabel(fix) : tr("No fix"));
     fixLabel_->setStyleSheet(

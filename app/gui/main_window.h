@@ -9,6 +9,8 @@
 class QLabel;
 class QSettings;
 class QDockWidget;
+class QToolBar;
+class QMenu;
 
 namespace gnss {
 class DialectRegistry;
@@ -38,6 +40,7 @@ using link::SourceSpec;
 class ConnectionBar;
 class ConnectionController;
 class CorrectionsController;
+class LogViewer;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -72,11 +75,23 @@ public:
     // Opens the Preferences dialog (window-modal; OK applies it).
     void openPreferences();
 
+    // The offline log viewer: opens a log (the live link is closed), shows the timeline and the
+    // log's docks; every dock follows the timeline's cursor.
+    void openLog(const QString &path);
+    void closeLog();
+    LogViewer *logViewer() const { return logViewer_; }
+    // Asks where, then exports the selected range (or the whole log) in the format of the
+    // file's suffix.
+    void exportLog();
+    QStringList recentLogs() const;
+
 signals:
     void displayPrefsChanged(const gnss::ui::DisplayPrefs &prefs);
 
 protected:
     void closeEvent(QCloseEvent *e) override;
+    void dragEnterEvent(QDragEnterEvent *e) override;
+    void dropEvent(QDropEvent *e) override;
 
 private:
     void createModels();
@@ -88,6 +103,10 @@ private:
     void updateStatus();
     void applyTheme(const QString &theme);
     void toggleRecording(bool on);
+    void createLogViewer();
+    void createLogMenu(QMenu *file);
+    void rememberLog(const QString &path);
+    void updateRecentMenu();
     static const SettingDef *elevationMaskSetting(const Dialect *d);
 
     const DialectRegistry &registry_;
@@ -111,6 +130,11 @@ private:
     Preferences prefs_;
     QString startLanguage_; // the language the program started in
     QAction *recordAction_ = nullptr;
+    LogViewer *logViewer_ = nullptr;
+    QToolBar *timelineBar_ = nullptr;
+    QMenu *recentMenu_ = nullptr;
+    QAction *exportAction_ = nullptr, *closeLogAction_ = nullptr;
+    bool logDocksShown_ = false;
     QLabel *stateLabel_ = nullptr, *dialectLabel_ = nullptr, *rateLabel_ = nullptr,
            *errorLabel_ = nullptr, *fixLabel_ = nullptr, *recordLabel_ = nullptr;
     QByteArray defaultState_;

@@ -4,6 +4,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFileInfo>
 
 namespace gnss::app {
 
@@ -29,6 +30,15 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
     const QCommandLineOption replay(
             "replay", QCoreApplication::translate("StartupOptions", "Replay a recorded log."),
             "file");
+    const QCommandLineOption openLog(
+            "open",
+            QCoreApplication::translate("StartupOptions",
+                                        "Open a log in the offline viewer (a timeline, every dock "
+                                        "at its cursor); the same as giving FILE alone."),
+            "file");
+    p.addPositionalArgument(
+            "file", QCoreApplication::translate("StartupOptions", "A log to open in the viewer."),
+            "[file]");
     const QCommandLineOption sim(
             "sim",
             QCoreApplication::translate("StartupOptions", "Built-in simulated receiver: %1.")
@@ -55,20 +65,26 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             "quit-after",
             QCoreApplication::translate("StartupOptions", "Quit after this many seconds."),
             "seconds");
-    p.addOptions({port, baud, tcp, replay, sim, gpsd, showDock, shot, quit});
+    p.addOptions({port, baud, tcp, replay, openLog, sim, gpsd, showDock, shot, quit});
     if (!p.parse(arguments)) {
         error = p.errorText();
         return std::nullopt;
     }
     if (p.isSet("help")) p.showHelp(0);
     if (p.isSet("version")) p.showVersion();
-    if (!p.positionalArguments().isEmpty()) {
+    const QStringList files = p.positionalArguments();
+    if (files.size() > 1 || (files.size() == 1 && p.isSet(openLog))) {
         error = QCoreApplication::translate("StartupOptions", "Unexpected argument '%1'")
-                        .arg(p.positionalArguments().constFirst());
+                        .arg(files.constLast());
         return std::nullopt;
     }
 
     StartupOptions o;
+    o.open = files.isEmpty() ? p.value(openLog) : files.constFirst();
+    if (!o.open.isEmpty() && !QFileInfo(o.open).isFile()) {
+        error = QCoreApplication::translate("StartupOptions", "No such log: %1").arg(o.open);
+        return std::nullopt;
+    }
     o.port = p.value(port);
     o.tcp = p.value(tcp);
     o.replay = p.value(replay);
@@ -113,11 +129,11 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             o.gpsd = o.gpsd.mid(7);
     }
     const int sources = int(!o.port.isEmpty()) + int(!o.tcp.isEmpty()) + int(!o.replay.isEmpty()) +
-                        int(!o.sim.isEmpty()) + int(!o.gpsd.isEmpty());
+                        int(!o.open.isEmpty()) + int(!o.sim.isEmpty()) + int(!o.gpsd.isEmpty());
     if (sources > 1) {
-        error = QCoreApplication::translate(
-                "StartupOptions",
-                "Give one source at most: --port, --tcp, --gpsd, --replay or --sim.");
+        error = QCoreApplication::translate("StartupOptions",
+                                            "Give one source at most: --port, --tcp, --gpsd, "
+                                            "--replay, --sim or a log to open.");
         return std::nullopt;
     }
     return o;

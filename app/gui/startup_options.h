@@ -11,6 +11,7 @@ struct StartupOptions {
     int baud = 0;         // --baud B (0: auto)
     QString tcp;          // --tcp HOST:PORT
     QString replay;       // --replay FILE
+    QString open;         // FILE or --open FILE: a log in the offline viewer
     QString sim;          // --sim nvs|geostar|nemerix|nmea
     QString gpsd;         // --gpsd HOST[:PORT][/DEVICE] (or gpsd://...)
     QString showDock;     // --show-dock NAME: show and raise this dock (settings, console, ...)

@@ -26,6 +26,21 @@ bool isFix(FixType f) {
 
 } // namespace
 
+LocalFrame::LocalFrame(double lat0, double lon0) : lat0_(lat0), lon0_(lon0) {
+    const double a = 6378137.0, e2 = 6.69437999014e-3; // WGS-84
+    const double sinPhi = std::sin(lat0 * kPi / 180);
+    const double w = std::sqrt(1 - e2 * sinPhi * sinPhi);
+    northPerDeg_ = a * (1 - e2) / (w * w * w) * kPi / 180;        // meridian radius
+    eastPerDeg_ = a / w * std::cos(lat0 * kPi / 180) * kPi / 180; // parallel radius
+}
+
+std::pair<double, double> LocalFrame::toEastNorth(double lat, double lon) const {
+    double dl = lon - lon0_;
+    if (dl > 180) dl -= 360;
+    if (dl < -180) dl += 360;
+    return {dl * eastPerDeg_, (lat - lat0_) * northPerDeg_};
+}
+
 Spread horizontalSpread(std::span<const double> lats, std::span<const double> lons) {
     Spread s;
     const std::size_t n = std::min(lats.size(), lons.size());
@@ -41,19 +56,11 @@ Spread horizontalSpread(std::span<const double> lats, std::span<const double> lo
     }
     s.meanLat = lats[0] + static_cast<double>(dLat / n);
     s.meanLon = lons[0] + static_cast<double>(dLon / n);
-    const double a = 6378137.0, e2 = 6.69437999014e-3;
-    const double sinPhi = std::sin(s.meanLat * kPi / 180);
-    const double w = std::sqrt(1 - e2 * sinPhi * sinPhi);
-    const double m = a * (1 - e2) / (w * w * w);                 // meridian radius
-    const double nRad = a / w * std::cos(s.meanLat * kPi / 180); // parallel radius
+    const LocalFrame frame(s.meanLat, s.meanLon);
     std::vector<double> r(n);
     double sumSq = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        double dl = lons[i] - s.meanLon;
-        if (dl > 180) dl -= 360;
-        if (dl < -180) dl += 360;
-        const double east = dl * kPi / 180 * nRad;
-        const double north = (lats[i] - s.meanLat) * kPi / 180 * m;
+        const auto [east, north] = frame.toEastNorth(lats[i], lons[i]);
         r[i] = std::hypot(east, north);
         sumSq += east * east + north * north;
     }

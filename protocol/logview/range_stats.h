@@ -7,6 +7,7 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <utility>
 
 namespace gnss::logview {
 
@@ -49,6 +50,17 @@ RangeStats rangeStats(std::span<const EpochRecord> records, std::uint64_t first,
 struct Spread {
     double meanLat = 0, meanLon = 0, cep50 = 0, cep95 = 0, drms2 = 0;
 };
+// East and north metres about a point (WGS-84 radii of curvature at its latitude): exact enough
+// for the spread and the track of one receiver (kilometres), not for a continent.
+class LocalFrame {
+public:
+    LocalFrame(double lat0, double lon0); // degrees
+    std::pair<double, double> toEastNorth(double lat, double lon) const;
+
+private:
+    double lat0_, lon0_, eastPerDeg_ = 0, northPerDeg_ = 0;
+};
+
 Spread horizontalSpread(std::span<const double> lats, std::span<const double> lons);
 
 } // namespace gnss::logview

@@ -37,31 +37,6 @@ double since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// kB of anonymous memory (heap, stacks: not the mapped file) and of file pages mapped.
-long statusKb(const char *key) {
-    std::ifstream f("/proc/self/status");
-    std::string line;
-    while (std::getline(f, line))
-        if (line.rfind(key, 0) == 0) return std::atol(line.c_str() + std::strlen(key));
-    return -1;
-}
-
-bool generate(const std::string &path, std::size_t bytes) {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        std::string log;
-        log.reserve(bytes + 4096);
-        gnss::bench::generateLog(log, bytes);
-        std::FILE *f = std::fopen(path.c_str(), "wb");
-        const bool ok = f && std::fwrite(log.data(), 1, log.size(), f) == log.size();
-        if (f) std::fclose(f);
-        std::_Exit(ok ? 0 : 1);
-    }
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
-
 // Framing and checksums only, on the same pieces and threads as the index.
 std::uint64_t checksumPass(std::string_view log, unsigned threads) {
     const auto pieces = gnss::cutLog(log, threads);
@@ -106,7 +81,7 @@ int main(int argc, char **argv) {
         std::printf("generating %s (1 GB, 10 Hz, GPS+GLONASS+Galileo+BeiDou)...\n", path.c_str());
         std::fflush(stdout);
         const auto t0 = Clock::now();
-        if (!generate(path, 1'000'000'000)) {
+        if (!gnss::bench::writeLogFile(path, 1'000'000'000)) {
             std::fprintf(stderr, "cannot write %s\n", path.c_str());
             return 1;
         }
@@ -136,7 +111,7 @@ int main(int argc, char **argv) {
         ::close(fd);
     }
 
-    const long anonBefore = statusKb("RssAnon:");
+    const long anonBefore = gnss::bench::statusKb("RssAnon:");
     gnss::logview::LogViewOptions options;
     options.index.threads = threads;
     gnss::logview::LogView view(registry, options);
@@ -153,7 +128,7 @@ int main(int argc, char **argv) {
         std::fprintf(stderr, "index failed: %s\n", view.error().c_str());
         return 1;
     }
-    const long anonAfter = statusKb("RssAnon:");
+    const long anonAfter = gnss::bench::statusKb("RssAnon:");
     const std::size_t epochs = view.epochCount();
     std::printf("index complete:          %6.3f s  (%5.0f MB/s, %zu epochs, %zu events)\n", indexed,
                 mb / indexed, epochs, view.events().size());
@@ -181,7 +156,7 @@ int main(int argc, char **argv) {
                 "of it; checkpoints and the rest %.0f MB); file pages mapped: %ld MB\n",
                 static_cast<double>(anonAfter - anonBefore) / 1024, recordsMb,
                 static_cast<double>(anonAfter - anonBefore) / 1024 - recordsMb,
-                statusKb("RssFile:") / 1024);
+                gnss::bench::statusKb("RssFile:") / 1024);
     if (generated && !keep) {
         ::unlink(path.c_str());
         std::printf("deleted %s\n", path.c_str());

@@ -4,6 +4,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace gnss::bench {
 namespace {
@@ -83,6 +89,30 @@ void generateLog(std::string &out, std::size_t bytes) {
         add(out, b);
         ++epoch;
     }
+}
+
+bool writeLogFile(const std::string &path, std::size_t bytes) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        std::string log;
+        log.reserve(bytes + 4096);
+        generateLog(log, bytes);
+        std::FILE *f = std::fopen(path.c_str(), "wb");
+        const bool ok = f && std::fwrite(log.data(), 1, log.size(), f) == log.size();
+        if (f) std::fclose(f);
+        std::_Exit(ok ? 0 : 1);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+long statusKb(const char *key) {
+    std::ifstream f("/proc/self/status");
+    std::string line;
+    while (std::getline(f, line))
+        if (line.rfind(key, 0) == 0) return std::atol(line.c_str() + std::strlen(key));
+    return -1;
 }
 
 } // namespace gnss::bench

@@ -9,4 +9,10 @@ namespace gnss::bench {
 // Appends epochs until `out` holds at least `bytes` bytes.
 void generateLog(std::string &out, std::size_t bytes);
 
+// Writes such a log of `bytes` to `path` from a child process (its memory is not the caller's).
+bool writeLogFile(const std::string &path, std::size_t bytes);
+
+// A /proc/self/status figure in kB ("RssAnon:": heap and stacks, not mapped files); -1 unknown.
+long statusKb(const char *key);
+
 } // namespace gnss::bench

@@ -63,3 +63,11 @@ QColor fixTypeColor(FixType f) {
 }
 
 } // namespace gnss::style
+
+namespace gnss::style {
+
+QColor errorColor() {
+    return QColor(0xc6, 0x28, 0x28);
+}
+
+} // namespace gnss::style

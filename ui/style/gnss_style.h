@@ -18,4 +18,7 @@ Marker constellationMarker(Constellation c);
 QString fixTypeLabel(FixType f);
 QColor fixTypeColor(FixType f);
 
+// Errors and warnings in text, ticks and badges (checksum errors, REC, refused input).
+QColor errorColor();
+
 } // namespace gnss::style

@@ -48,7 +48,7 @@ public:
     UnitSystem units = UnitSystem::Metric; // of the axes and the scale bar
     explicit Canvas(const PositionScatter *s, QWidget *parent) : QWidget(parent), s_(s) {
         setObjectName("deviationCanvas");
-        setMinimumSize(260, 260);
+        setMinimumSize(200, 160); // fits beside the signal bars on a 1280x800 laptop
         setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     }
 

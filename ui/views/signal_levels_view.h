@@ -34,7 +34,7 @@ public:
     QVector<Bar> layoutBars() const { return layout().bars; }
 
     QSize sizeHint() const override { return {600, 220}; }
-    QSize minimumSizeHint() const override { return {200, 120}; }
+    QSize minimumSizeHint() const override { return {200, 100}; }
 
 protected:
     void paintEvent(QPaintEvent *) override;

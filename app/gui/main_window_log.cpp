@@ -1,0 +1,228 @@
+// MainWindow's offline log viewer: the timeline under the views, the log's own docks (events,
+// range statistics, whole-log charts, track), File → Open Log / Open Recent / Export / Close,
+// drag and drop. The live docks are the same ones: LogViewer publishes the state at the cursor
+// into their models.
+#include "connection_controller.h"
+#include "log_events_view.h"
+#include "log_summary_view.h"
+#include "log_viewer.h"
+#include "main_window.h"
+#include "models/receiver_session.h"
+#include "timeline_panel.h"
+#include "timeline_strip.h"
+#include "whole_log_panels.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMimeData>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace gnss::app {
+
+namespace {
+constexpr int kRecentLogs = 8;
+const char *const kRecentKey = "logview/recent";
+} // namespace
+
+void MainWindow::createLogViewer() {
+    logViewer_ = new LogViewer(registry_, {stateModel_, satellites_, messages_, console_}, this);
+    ui::LogCursor *cursor = logViewer_->cursor();
+    auto *panel = new ui::TimelinePanel(cursor, this);
+    timelineBar_ = new QToolBar(tr("Timeline"), this);
+    timelineBar_->setObjectName("timelineBar");
+    timelineBar_->setMovable(false);
+    timelineBar_->setAllowedAreas(Qt::BottomToolBarArea | Qt::TopToolBarArea);
+    timelineBar_->addWidget(panel);
+    timelineBar_->toggleViewAction()->setText(tr("Log timeline"));
+    addToolBar(Qt::BottomToolBarArea, timelineBar_);
+    timelineBar_->hide();
+    connect(panel, &ui::TimelinePanel::playRequested, logViewer_, &LogViewer::setPlaying);
+    connect(logViewer_, &LogViewer::playingChanged, panel, &ui::TimelinePanel::setPlaying);
+    connect(panel, &ui::TimelinePanel::speedChanged, logViewer_, &LogViewer::setSpeed);
+    connect(panel, &ui::TimelinePanel::followRequested, logViewer_, &LogViewer::setFollowing);
+    connect(logViewer_, &LogViewer::progress, panel->strip(), &ui::TimelineStrip::setProgress);
+    connect(logViewer_, &LogViewer::statusChanged, this, &MainWindow::updateStatus);
+    connect(logViewer_, &LogViewer::exportFinished, this,
+            [this](bool, const QString &message) { statusBar()->showMessage(message, 10000); });
+
+    auto *events = new ui::LogEventsView(cursor, registry_, this);
+    auto *eventsDock = addDock(events, tr("Events"), tr("Log events"), "logEventsDock",
+                               Qt::RightDockWidgetArea);
+    connect(events, &ui::LogEventsView::exportRequested, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(
+                this, tr("Save events"), QStringLiteral("events.csv"), tr("CSV (*.csv)"));
+        QString why;
+        if (!path.isEmpty() && !logViewer_->exportTo(LogViewer::Export::EventsCsv, path, &why))
+            statusBar()->showMessage(tr("Not exported: %1").arg(why), 8000);
+    });
+    auto *summary = new ui::LogSummaryView(cursor, this);
+    connect(this, &MainWindow::displayPrefsChanged, summary, &ui::LogSummaryView::setDisplayPrefs);
+    auto *summaryDock = addDock(summary, tr("Log statistics"), tr("Log statistics (range)"),
+                                "logSummaryDock", Qt::RightDockWidgetArea);
+    connect(summary, &ui::LogSummaryView::exportRequested, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save statistics"),
+                                                          QStringLiteral("statistics.json"),
+                                                          tr("JSON (*.json)"));
+        QString why;
+        if (!path.isEmpty() && !logViewer_->exportTo(LogViewer::Export::StatsJson, path, &why))
+            statusBar()->showMessage(tr("Not exported: %1").arg(why), 8000);
+    });
+    auto *charts = new ui::LogChartsPanel(cursor, this);
+    connect(this, &MainWindow::displayPrefsChanged, charts->plot(), &ui::LogPlot::setDisplayPrefs);
+    auto *chartsDock = addDock(charts, tr("Log charts"), tr("Log charts (whole log)"),
+                               "logChartsDock", Qt::BottomDockWidgetArea);
+    auto *track = new ui::LogTrackPanel(cursor, this);
+    connect(this, &MainWindow::displayPrefsChanged, track->track(), &ui::LogTrack::setDisplayPrefs);
+    auto *trackDock = addDock(track, tr("Track"), tr("Track (whole log)"), "logTrackDock",
+                              Qt::LeftDockWidgetArea);
+    for (QDockWidget *d : {eventsDock, summaryDock, chartsDock, trackDock}) d->hide();
+
+    // A live source closes the log (the docks show one thing at a time).
+    connect(controller_, &ConnectionController::stateChanged, this, [this] {
+        const auto s = controller_->state();
+        if (logViewer_->isOpen() && s != ConnectionController::State::Disconnected &&
+            s != ConnectionController::State::Failed)
+            closeLog();
+    });
+    setAcceptDrops(true);
+}
+
+void MainWindow::createLogMenu(QMenu *file) {
+    QAction *open = file->addAction(tr("&Open Log..."), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+                this, tr("Open Log"), {},
+                tr("NMEA logs (*.nmea *.log *.txt *.gz *.nmea.gz);;All files (*)"));
+        if (!path.isEmpty()) openLog(path);
+    });
+    open->setObjectName("openLogAction");
+    open->setShortcut(QKeySequence::Open);
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    recentMenu_->setObjectName("recentLogsMenu");
+    updateRecentMenu();
+    exportAction_ = file->addAction(tr("&Export Log..."), this, &MainWindow::exportLog);
+    exportAction_->setObjectName("exportLogAction");
+    exportAction_->setShortcut(QKeySequence(tr("Ctrl+E")));
+    exportAction_->setEnabled(false);
+    closeLogAction_ = file->addAction(tr("&Close Log"), this, &MainWindow::closeLog);
+    closeLogAction_->setObjectName("closeLogAction");
+    closeLogAction_->setShortcut(QKeySequence::Close);
+    closeLogAction_->setEnabled(false);
+    connect(logViewer_, &LogViewer::indexed, this, [this] {
+        exportAction_->setEnabled(logViewer_->isOpen() && !logViewer_->cursor()->empty());
+    });
+}
+
+QStringList MainWindow::recentLogs() const {
+    return settings_ ? settings_->value(kRecentKey).toStringList() : QStringList();
+}
+
+void MainWindow::rememberLog(const QString &path) {
+    if (!settings_) return;
+    QStringList list = recentLogs();
+    const QString abs = QFileInfo(path).absoluteFilePath();
+    list.removeAll(abs);
+    list.prepend(abs);
+    while (list.size() > kRecentLogs) list.removeLast();
+    settings_->setValue(kRecentKey, list);
+    updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu() {
+    if (!recentMenu_) return;
+    recentMenu_->clear();
+    const QStringList list = recentLogs();
+    for (const QString &p : list)
+        recentMenu_->addAction(QFileInfo(p).fileName(), this, [this, p] { openLog(p); })
+                ->setToolTip(p);
+    recentMenu_->setEnabled(!list.isEmpty());
+    if (!list.isEmpty()) {
+        recentMenu_->addSeparator();
+        recentMenu_->addAction(tr("Clear the list"), this, [this] {
+            if (settings_) settings_->remove(kRecentKey);
+            updateRecentMenu();
+        });
+    }
+}
+
+void MainWindow::openLog(const QString &path) {
+    controller_->disconnectFromSource();
+    session_->reset();
+    logViewer_->open(path);
+    rememberLog(path);
+    timelineBar_->show();
+    closeLogAction_->setEnabled(true);
+    exportAction_->setEnabled(false);
+    setWindowTitle(tr("%1 — GNSS Workbench").arg(QFileInfo(path).fileName()));
+    if (!logDocksShown_) {
+        // The first log of the session brings its docks forward, beside the live ones.
+        logDocksShown_ = true;
+        auto show = [this](const char *name, const char *beside) {
+            QDockWidget *d = dock(QString::fromLatin1(name));
+            QDockWidget *b = dock(QString::fromLatin1(beside));
+            if (!d) return;
+            if (b && b->isVisible() && !d->isVisible()) tabifyDockWidget(b, d);
+            d->show();
+            d->raise();
+        };
+        show("logEventsDock", "fixDock");
+        show("logSummaryDock", "logEventsDock");
+        show("logTrackDock", "skyDock");
+        show("logChartsDock", "consoleDock");
+        if (QDockWidget *e = dock("logEventsDock")) e->raise();
+    }
+    updateStatus();
+}
+
+void MainWindow::closeLog() {
+    if (!logViewer_->isOpen()) return;
+    logViewer_->close();
+    timelineBar_->hide();
+    closeLogAction_->setEnabled(false);
+    exportAction_->setEnabled(false);
+    setWindowTitle(tr("GNSS Workbench"));
+    updateStatus();
+}
+
+void MainWindow::exportLog() {
+    if (!logViewer_->isOpen() || logViewer_->cursor()->empty()) return;
+    const auto [first, last] = logViewer_->cursor()->selection();
+    const QString base = QFileInfo(logViewer_->path()).completeBaseName();
+    QString filter;
+    const QString path = QFileDialog::getSaveFileName(
+            this,
+            logViewer_->cursor()->hasRange() ? tr("Export epochs %1 to %2").arg(first).arg(last)
+                                             : tr("Export the whole log"),
+            base + QStringLiteral(".gpx"),
+            tr("GPX track (*.gpx);;KML, coloured by fix (*.kml);;CSV, one row per epoch "
+               "(*.csv);;NMEA, the bytes as in the file (*.nmea);;Statistics (*.json)"),
+            &filter);
+    if (path.isEmpty()) return;
+    QString why;
+    const auto format = LogViewer::formatOfSuffix(QFileInfo(path).suffix());
+    if (!format)
+        why = tr("name the file .gpx, .kml, .csv, .nmea or .json: the suffix says the format");
+    else if (logViewer_->exportTo(*format, path, &why))
+        statusBar()->showMessage(tr("Exporting to %1…").arg(path));
+    if (!why.isEmpty()) statusBar()->showMessage(tr("Not exported: %1").arg(why), 10000);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent *e) {
+    const auto urls = e->mimeData()->urls();
+    if (!urls.isEmpty() && urls.constFirst().isLocalFile()) e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent *e) {
+    const auto urls = e->mimeData()->urls();
+    if (urls.isEmpty() || !urls.constFirst().isLocalFile()) return;
+    openLog(urls.constFirst().toLocalFile());
+    e->acceptProposedAction();
+}
+
+} // namespace gnss::app

@@ -1,0 +1,363 @@
+// The offline log viewer in the real main window at laptop size (1280x800, offscreen): a log with
+// known faults is opened, the timeline, events, statistics, whole-log charts and track appear,
+// and every live dock shows exactly what a front-to-back decode has at the cursor, however the
+// cursor moves (keys, the strip, an event, a typed time, the track, the chart, playing). Bad
+// files say so in the status bar; exports write what the engine writes.
+#include "app_transports.h"
+#include "dialects.h"
+#include "log_events_view.h"
+#include "log_summary_view.h"
+#include "log_viewer.h"
+#include "logview_files.h"
+#include "main_window.h"
+#include "models/console_model.h"
+#include "models/message_stats_model.h"
+#include "models/receiver_state_model.h"
+#include "models/satellite_model.h"
+#include "scenario_log.h"
+#include "startup_options.h"
+#include "timeline_panel.h"
+#include "timeline_strip.h"
+#include "whole_log_panels.h"
+
+#include <QDockWidget>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTableView>
+#include <QTableWidget>
+#include <QToolBar>
+#include <random>
+
+using namespace gnss;
+using gnss::app::LogViewer;
+using gnss::app::MainWindow;
+
+class TestLogviewWindow : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    DialectRegistry registry_ = makeBuiltinRegistry();
+    link::TransportFactory transports_ = app::makeTransportFactory();
+    std::string scenario_;
+
+    std::unique_ptr<QSettings> settings() {
+        return std::make_unique<QSettings>(dir_.filePath("settings.ini"), QSettings::IniFormat);
+    }
+    std::unique_ptr<MainWindow> window(QSettings *s) {
+        auto w = std::make_unique<MainWindow>(registry_, transports_, s);
+        w->resize(1280, 800);
+        w->show();
+        return w;
+    }
+    // Opens the scenario log and waits for its index.
+    static bool openScenario(MainWindow &w, const std::string &path) {
+        w.openLog(QString::fromStdString(path));
+        return QTest::qWaitFor([&] { return w.logViewer()->ready(); }, 30000) &&
+               !w.logViewer()->cursor()->empty();
+    }
+    // The docks show what the engine rebuilds at k (itself checked against a front-to-back
+    // decode by tst_logview_index).
+    static void expectStateAt(MainWindow &w, std::size_t k) {
+        const logview::LogView *view = w.logViewer()->view();
+        ReceiverState expected;
+        QVERIFY(view->stateAt(k, expected));
+        QCOMPARE(w.logViewer()->cursor()->current(), k);
+        QVERIFY(w.stateModel()->state().epoch == expected.epoch);
+        std::size_t sats = 0;
+        for (const auto &row : w.satelliteModel()->rows()) sats += row.inView ? 1 : 0;
+        QCOMPARE(sats, expected.epoch.satellites.size());
+    }
+
+private slots:
+    void initTestCase() {
+        test::Scenario sc;
+        scenario_ = dir_.filePath("drive.nmea").toStdString();
+        QVERIFY(test::writeFile(scenario_, test::scenarioLog(sc)));
+    }
+
+    void openingALogShowsItsDocksAndTheStateAtTheCursor() {
+        auto s = settings();
+        auto w = window(s.get());
+        QVERIFY(openScenario(*w, scenario_));
+        QVERIFY(w->findChild<QToolBar *>("timelineBar")->isVisible());
+        // Everything fits a 1280x800 laptop (less a title bar and a panel): the timeline and the
+        // status bar are on screen, not pushed below it.
+        QVERIFY2(w->minimumSizeHint().height() <= 740 && w->minimumSizeHint().width() <= 1280,
+                 qPrintable(QString("%1x%2")
+                                    .arg(w->minimumSizeHint().width())
+                                    .arg(w->minimumSizeHint().height())));
+        for (const char *d : {"logEventsDock", "logSummaryDock", "logChartsDock", "logTrackDock"})
+            QVERIFY2(w->dock(d)->isVisibleTo(w.get()), d);
+        QCOMPARE(w->logViewer()->cursor()->epochCount(), std::size_t(600));
+        expectStateAt(*w, 0);
+        // The strip: fix colours everywhere, the gap and the checksum burst marked.
+        auto *strip = w->findChild<ui::TimelineStrip *>("timelineStrip");
+        QVERIFY(strip->width() > 600);
+        bool gap = false, errors = false, event = false;
+        for (const auto &b : strip->bins()) gap |= b.gap, errors |= b.errors, event |= b.event;
+        QVERIFY(gap && errors && event);
+        // Seek to random epochs: every dock follows, the console ends with the epoch's lines.
+        std::mt19937 rng(7);
+        for (int i = 0; i < 20; ++i) {
+            const std::size_t k = rng() % 600;
+            w->logViewer()->cursor()->seek(k, true);
+            expectStateAt(*w, k);
+            QVERIFY(w->logViewer()->lastPublishMs() < 1000);
+        }
+        auto *console = w->findChild<ui::ConsoleModel *>();
+        QVERIFY(console->rowCount() > 10);
+        const logview::LogView *view = w->logViewer()->view();
+        const std::size_t k = w->logViewer()->cursor()->current();
+        const auto lines = view->linesAround(view->epochEnd(k), 1, 0);
+        QCOMPARE(console->data(console->index(console->rowCount() - 1), Qt::DisplayRole)
+                         .toString()
+                         .endsWith(QString::fromLatin1(
+                                 view->bytes(lines[0].offset, lines[0].length).data(),
+                                 int(lines[0].length))),
+                 true);
+        // Status bar: the file and its epochs; the window's title names it.
+        QTRY_VERIFY(w->findChild<QLabel *>("connectionState")->text().contains("600 epochs"));
+        QVERIFY(w->windowTitle().startsWith("drive.nmea"));
+        QCOMPARE(w->recentLogs().value(0),
+                 QFileInfo(QString::fromStdString(scenario_)).absoluteFilePath());
+        // Message statistics of the whole log arrive from the worker.
+        auto *messages = w->findChild<ui::MessageStatsModel *>();
+        QTRY_VERIFY(messages->rowCount() >= 3);
+    }
+
+    void theTransportMovesTheCursor() {
+        auto s = settings();
+        auto w = window(s.get());
+        QVERIFY(openScenario(*w, scenario_));
+        ui::LogCursor *cursor = w->logViewer()->cursor();
+        auto *panel = w->findChild<ui::TimelinePanel *>("timelinePanel");
+        auto act = [&](const char *name) {
+            auto *a = panel->findChild<QAction *>(name);
+            QVERIFY2(a && a->isEnabled(), name);
+            a->trigger();
+        };
+        act("logStepForward");
+        expectStateAt(*w, 1);
+        act("logEnd");
+        expectStateAt(*w, 599);
+        act("logStepBack");
+        expectStateAt(*w, 598);
+        act("logStart");
+        act("logNextEvent");
+        const auto next = w->logViewer()->view()->nextEvent(0);
+        QVERIFY(next);
+        expectStateAt(*w, *next);
+        act("logNextEvent");
+        QVERIFY(cursor->current() > *next);
+        act("logPrevEvent");
+        QCOMPARE(cursor->current(), *next);
+        // The same through the keyboard.
+        cursor->seek(10);
+        w->activateWindow();
+        QTest::keyClick(w.get(), Qt::Key_Right);
+        QCOMPARE(cursor->current(), std::size_t(11));
+        // A typed time: 10:05:00 is epoch 300 before the 30 s gap... the gap starts at 300, so
+        // the first epoch at or after it is the one after the gap.
+        QVERIFY(panel->goTo("#123"));
+        expectStateAt(*w, 123);
+        QVERIFY(panel->goTo("10:02:00"));
+        QCOMPARE(cursor->current(), std::size_t(120));
+        QVERIFY(!panel->goTo("yesterday"));
+        QVERIFY(!panel->goTo("23:59:59"));
+        QCOMPARE(cursor->current(), std::size_t(120));
+        QVERIFY(panel->positionText().startsWith("#120 / 599"));
+        // Play at 100x: the cursor runs, the docks follow; pause stops it.
+        panel->setSpeed(100);
+        act("logPlay");
+        QVERIFY(w->logViewer()->playing());
+        QTRY_VERIFY_WITH_TIMEOUT(cursor->current() > 150, 5000);
+        act("logPlay");
+        QVERIFY(!w->logViewer()->playing());
+        const std::size_t stopped = cursor->current();
+        QTest::qWait(200);
+        QCOMPARE(cursor->current(), stopped);
+        expectStateAt(*w, stopped);
+        // As fast as possible reaches the end and stops there.
+        panel->setSpeed(0);
+        act("logPlay");
+        QTRY_VERIFY_WITH_TIMEOUT(!w->logViewer()->playing(), 30000);
+        QCOMPARE(cursor->current(), std::size_t(599));
+    }
+
+    void theStripTheEventsTheTrackAndTheChartSeek() {
+        auto s = settings();
+        auto w = window(s.get());
+        QVERIFY(openScenario(*w, scenario_));
+        ui::LogCursor *cursor = w->logViewer()->cursor();
+        auto *strip = w->findChild<ui::TimelineStrip *>("timelineStrip");
+        QTest::mouseClick(strip, Qt::LeftButton, {}, QPoint(strip->xOfEpoch(450), 10));
+        QVERIFY(qAbs(qint64(cursor->current()) - 450) <= 1);
+        expectStateAt(*w, cursor->current());
+        // Shift+drag selects a range; the statistics follow it.
+        QTest::mousePress(strip, Qt::LeftButton, Qt::ShiftModifier,
+                          QPoint(strip->xOfEpoch(100), 10));
+        QTest::mouseMove(strip, QPoint(strip->xOfEpoch(199), 10));
+        QTest::mouseRelease(strip, Qt::LeftButton, Qt::ShiftModifier,
+                            QPoint(strip->xOfEpoch(199), 10));
+        QVERIFY(cursor->hasRange());
+        const auto [a, b] = cursor->selection();
+        QVERIFY(qAbs(qint64(a) - 100) <= 1 && qAbs(qint64(b) - 199) <= 1);
+        auto *summary = w->findChild<ui::LogSummaryView *>("logSummaryView");
+        QCOMPARE(summary->stats().first, a);
+        QCOMPARE(summary->stats().last, b);
+        QCOMPARE(summary->valueOf("Epochs"), QString::number(b - a + 1));
+        // Epochs 100..199 are RTK float (quality 5) in the scenario.
+        QVERIFY(summary->valueOf("RTK float (availability)").startsWith("100.0 %"));
+        cursor->clearRange();
+        QCOMPARE(summary->valueOf("Epochs"), QString("600"));
+
+        // An event in the list.
+        auto *events = w->findChild<ui::LogEventsView *>("logEventsView");
+        QTableWidget *table = events->table();
+        QCOMPARE(std::size_t(table->rowCount()), w->logViewer()->view()->events().size());
+        const int row = 3;
+        const auto epoch = table->item(row, 0)->data(Qt::UserRole).toULongLong();
+        QTest::mouseClick(table->viewport(), Qt::LeftButton, {},
+                          table->visualItemRect(table->item(row, 1)).center());
+        QCOMPARE(cursor->current(), std::size_t(epoch));
+        // Every description is in words, none empty.
+        for (int r = 0; r < table->rowCount(); ++r) QVERIFY(!table->item(r, 2)->text().isEmpty());
+
+        // The track: a click on an epoch's dot goes there.
+        w->showDock("logTrack");
+        auto *track = w->findChild<ui::LogTrack *>("logTrack");
+        QTRY_VERIFY(track->isVisible());
+        const auto en = track->enOf(250);
+        QVERIFY(en);
+        const QPoint px = track->toPixel(*en).toPoint();
+        QTest::mouseClick(track, Qt::LeftButton, {}, px);
+        const auto near = track->epochNear(px, 12);
+        QVERIFY(near);
+        QCOMPARE(cursor->current(), *near);
+
+        // The chart: a click goes to the epoch under it; the wheel zooms about the mouse.
+        w->showDock("logCharts");
+        auto *plot = w->findChild<ui::LogPlot *>("logPlot");
+        QTRY_VERIFY(plot->isVisible());
+        const int x = int(plot->xOfEpoch(520));
+        QTest::mouseClick(plot, Qt::LeftButton, {}, QPoint(x, plot->plotRect().center().y()));
+        QVERIFY(qAbs(qint64(cursor->current()) - 520) <= 1);
+        QWheelEvent wheel(QPointF(x, 50), plot->mapToGlobal(QPointF(x, 50)), {}, QPoint(0, 120),
+                          Qt::NoButton, {}, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(plot, &wheel);
+        const auto [f0, f1] = plot->window();
+        QVERIFY(f1 - f0 < 599);
+        QVERIFY(f0 <= 520 && f1 >= 520);
+    }
+
+    void exportsWriteWhatTheEngineWrites() {
+        auto s = settings();
+        auto w = window(s.get());
+        QVERIFY(openScenario(*w, scenario_));
+        ui::LogCursor *cursor = w->logViewer()->cursor();
+        cursor->setRange(100, 199);
+        QSignalSpy done(w->logViewer(), &LogViewer::exportFinished);
+        const QString gpx = dir_.filePath("range.gpx");
+        QVERIFY(w->logViewer()->exportTo(LogViewer::Export::Gpx, gpx));
+        QVERIFY(done.wait(20000));
+        QVERIFY(done.at(0).at(0).toBool());
+        QFile f(gpx);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray doc = f.readAll();
+        QCOMPARE(doc.count("<trkpt "), 100);
+        // NMEA: the bytes of the range exactly as in the file.
+        const QString nmea = dir_.filePath("range.nmea");
+        QVERIFY(w->logViewer()->exportTo(LogViewer::Export::Nmea, nmea));
+        QVERIFY(done.wait(20000));
+        const logview::LogView *view = w->logViewer()->view();
+        const auto from = view->epoch(100)->offset, to = view->epoch(200)->offset;
+        QFile n(nmea);
+        QVERIFY(n.open(QIODevice::ReadOnly));
+        const std::string_view expected = view->bytes(from, to - from);
+        QCOMPARE(n.readAll(), QByteArray(expected.data(), qsizetype(expected.size())));
+        // Statistics as JSON, and a refused name.
+        const QString json = dir_.filePath("range.json");
+        QVERIFY(w->logViewer()->exportTo(LogViewer::Export::StatsJson, json));
+        QVERIFY(done.wait(20000));
+        QFile j(json);
+        QVERIFY(j.open(QIODevice::ReadOnly));
+        QVERIFY(j.readAll().contains("\"epochs\":100"));
+        QVERIFY(!LogViewer::formatOfSuffix("docx"));
+        QString why;
+        QVERIFY(!w->logViewer()->exportTo(LogViewer::Export::Gpx,
+                                          dir_.filePath("no/such/folder/x.gpx"), &why) ||
+                (done.wait(20000) && !done.last().at(0).toBool()));
+    }
+
+    void badFilesSaySoAndNothingBreaks_data() {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<QString>("word");
+        QTest::newRow("empty") << QByteArray() << "";
+        QByteArray noise(100000, '\0');
+        std::mt19937 rng(3);
+        for (auto &c : noise) c = char(rng() % 256);
+        QTest::newRow("random bytes") << noise << "no NMEA found";
+        QByteArray longLine = "$GPGGA," + QByteArray(4096, '1') + "*00\r\n";
+        QTest::newRow("4096-byte line") << longLine << "";
+    }
+    void badFilesSaySoAndNothingBreaks() {
+        QFETCH(QByteArray, bytes);
+        QFETCH(QString, word);
+        const QString path = dir_.filePath("bad.nmea");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            f.write(bytes);
+        }
+        auto s = settings();
+        auto w = window(s.get());
+        w->openLog(path);
+        QTRY_VERIFY_WITH_TIMEOUT(
+                w->logViewer()->view()->progress().phase != logview::LogView::Phase::Indexing &&
+                        w->logViewer()->view()->progress().phase != logview::LogView::Phase::Idle,
+                20000);
+        QTest::qWait(200);
+        const QString status = w->findChild<QLabel *>("connectionState")->text();
+        QVERIFY2(status.startsWith("Log bad.nmea: "), qPrintable(status));
+        if (!word.isEmpty()) QVERIFY2(status.contains(word), qPrintable(status));
+        QVERIFY(w->logViewer()->cursor()->empty());
+        // The transport is off; a key does nothing.
+        QTest::keyClick(w.get(), Qt::Key_Right);
+        QVERIFY(!w->findChild<QAction *>("logStepForward")->isEnabled());
+        // A missing file too.
+        w->openLog(dir_.filePath("missing.nmea"));
+        QTRY_VERIFY(w->logViewer()->failed());
+        QVERIFY(w->findChild<QLabel *>("connectionState")->text().startsWith("Log missing.nmea: "));
+    }
+
+    void aLiveSourceClosesTheLogAndTheCommandLineOpensOne() {
+        auto s = settings();
+        auto w = window(s.get());
+        QVERIFY(openScenario(*w, scenario_));
+        w->connectAtStart(link::SourceSpec{link::SourceSpec::Kind::Simulator, "nmea"});
+        QTRY_VERIFY(!w->logViewer()->isOpen());
+        QVERIFY(!w->findChild<QToolBar *>("timelineBar")->isVisible());
+        QString error;
+        const QStringList simulated{"nvs"};
+        const QString log = QString::fromStdString(scenario_);
+        auto o = app::parseStartupOptions({"gnss-workbench", log}, simulated, error);
+        QVERIFY(o);
+        QCOMPARE(o->open, log);
+        o = app::parseStartupOptions({"gnss-workbench", "--open", log}, simulated, error);
+        QVERIFY(o);
+        QCOMPARE(o->open, log);
+        QVERIFY(!app::parseStartupOptions({"gnss-workbench", "x.nmea"}, simulated, error));
+        QCOMPARE(error, QString("No such log: x.nmea"));
+        QVERIFY(!app::parseStartupOptions({"gnss-workbench", "a.nmea", "b.nmea"}, simulated,
+                                          error));
+        QVERIFY(!app::parseStartupOptions({"gnss-workbench", log, "--sim", "nvs"}, simulated,
+                                          error));
+    }
+};
+
+QTEST_MAIN(TestLogviewWindow)
+#include "tst_logview_window.moc"

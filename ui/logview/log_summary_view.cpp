@@ -1,0 +1,136 @@
+#include "log_summary_view.h"
+
+#include "style/gnss_style.h"
+
+#include <QCheckBox>
+#include <QCoreApplication>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace gnss::ui {
+
+namespace {
+QString seconds(const std::optional<double> &s) {
+    return s ? QCoreApplication::translate("gnss::ui::LogSummaryView", "%1 s")
+                           .arg(*s, 0, 'f', *s < 100 ? 1 : 0)
+             : fmt::dash();
+}
+} // namespace
+
+LogSummaryView::LogSummaryView(LogCursor *cursor, QWidget *parent)
+    : QWidget(parent), cursor_(cursor) {
+    setObjectName("logSummaryView");
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    title_ = new QLabel(this);
+    title_->setObjectName("summaryTitle");
+    title_->setWordWrap(true);
+    layout->addWidget(title_);
+    auto *row = new QHBoxLayout;
+    stationary_ = new QCheckBox(tr("Spread of the epochs standing still"), this);
+    stationary_->setObjectName("stationaryOnly");
+    stationary_->setToolTip(tr("CEP and 2DRMS of the epochs whose speed is under 0.5 m/s (all "
+                               "epochs when there are none)"));
+    row->addWidget(stationary_, 1);
+    auto *save = new QPushButton(tr("Save JSON…"), this);
+    save->setObjectName("exportSummary");
+    row->addWidget(save);
+    layout->addLayout(row);
+    table_ = new QTableWidget(0, 2, this);
+    table_->setObjectName("summaryTable");
+    table_->horizontalHeader()->hide();
+    table_->verticalHeader()->hide();
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setStretchLastSection(true);
+    layout->addWidget(table_, 1);
+    connect(stationary_, &QCheckBox::toggled, this, &LogSummaryView::reload);
+    connect(save, &QPushButton::clicked, this, &LogSummaryView::exportRequested);
+    connect(cursor_, &LogCursor::indexChanged, this, &LogSummaryView::reload);
+    connect(cursor_, &LogCursor::rangeChanged, this, &LogSummaryView::reload);
+    reload();
+}
+
+bool LogSummaryView::stationaryOnly() const {
+    return stationary_->isChecked();
+}
+
+void LogSummaryView::setDisplayPrefs(const DisplayPrefs &prefs) {
+    prefs_ = prefs;
+    reload();
+}
+
+QString LogSummaryView::valueOf(const QString &name) const {
+    for (int r = 0; r < table_->rowCount(); ++r)
+        if (table_->item(r, 0)->text() == name) return table_->item(r, 1)->text();
+    return {};
+}
+
+void LogSummaryView::addRow(const QString &name, const QString &value, const QColor &swatch) {
+    const int r = table_->rowCount();
+    table_->insertRow(r);
+    auto *n = new QTableWidgetItem(name);
+    if (swatch.isValid()) n->setData(Qt::DecorationRole, swatch);
+    table_->setItem(r, 0, n);
+    table_->setItem(r, 1, new QTableWidgetItem(value));
+}
+
+void LogSummaryView::reload() {
+    table_->setRowCount(0);
+    const logview::LogView *log = cursor_->log();
+    if (!log || cursor_->empty()) {
+        stats_ = {};
+        title_->setText(log ? tr("Indexing…") : tr("No log open"));
+        return;
+    }
+    const auto [first, last] = cursor_->selection();
+    stats_ = log->stats(first, last, stationary_->isChecked());
+    const auto a = log->epoch(first), b = log->epoch(last);
+    title_->setText((cursor_->hasRange() ? tr("Selected range: epochs %1 to %2")
+                                         : tr("Whole log: epochs %1 to %2"))
+                            .arg(first)
+                            .arg(last) +
+                    (a && b ? QStringLiteral("\n%1 – %2")
+                                      .arg(QString::fromStdString(logview::formatTime(*a)),
+                                           QString::fromStdString(logview::formatTime(*b)))
+                            : QString()));
+    const auto &s = stats_;
+    addRow(tr("Epochs"), QString::number(s.epochs));
+    addRow(tr("Duration"), seconds(s.durationS));
+    for (std::size_t f = 0; f < s.perFix.size(); ++f) {
+        if (s.perFix[f] == 0) continue;
+        const auto fix = static_cast<FixType>(f);
+        addRow(tr("%1 (availability)").arg(style::fixTypeLabel(fix)),
+               tr("%1 % (%2 epochs)").arg(s.availability(fix), 0, 'f', 1).arg(s.perFix[f]),
+               style::fixTypeColor(fix));
+    }
+    addRow(tr("Time to first fix"), seconds(s.timeToFirstFixS));
+    addRow(tr("Time to RTK fixed"), seconds(s.timeToRtkFixedS));
+    addRow(tr("Data gaps"), s.gaps ? tr("%1, the longest %2 (before epoch %3)")
+                                             .arg(s.gaps)
+                                             .arg(seconds(s.longestGapS))
+                                             .arg(s.longestGapEpoch)
+                                   : tr("none"));
+    addRow(tr("Time jumps"), QString::number(s.timeJumps));
+    addRow(tr("Checksum errors"), QString::number(s.checksumErrors));
+    addRow(tr("Epochs with junk"), QString::number(s.epochsWithJunk));
+    addRow(tr("Positions"), s.stationaryOnly ? tr("%1 (standing still)").arg(s.positions)
+                                             : QString::number(s.positions));
+    addRow(tr("Mean position"),
+           s.meanLat && s.meanLon ? tr("%1, %2").arg(fmt::latitude(s.meanLat, prefs_.coordinates),
+                                                     fmt::longitude(s.meanLon, prefs_.coordinates))
+                                  : fmt::dash());
+    addRow(tr("Mean altitude"), fmt::length(s.meanAlt, 2, prefs_.units));
+    addRow(tr("CEP50"), fmt::length(s.cep50, 3, prefs_.units));
+    addRow(tr("CEP95"), fmt::length(s.cep95, 3, prefs_.units));
+    addRow(tr("2DRMS"), fmt::length(s.drms2, 3, prefs_.units));
+    addRow(tr("Max HDOP"),
+           s.maxHdop ? tr("%1 (epoch %2)").arg(*s.maxHdop, 0, 'f', 1).arg(s.maxHdopEpoch)
+                     : fmt::dash());
+}
+
+} // namespace gnss::ui

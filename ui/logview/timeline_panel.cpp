@@ -1,0 +1,221 @@
+#include "timeline_panel.h"
+
+#include "style/gnss_style.h"
+#include "timeline_strip.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QStyle>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace gnss::ui {
+
+TimelinePanel::TimelinePanel(LogCursor *cursor, QWidget *parent)
+    : QWidget(parent), cursor_(cursor) {
+    setObjectName("timelinePanel");
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 0, 2, 0);
+    layout->setSpacing(0);
+    auto *row = new QHBoxLayout;
+    row->setSpacing(2);
+    auto button = [&](QAction *a, QStyle::StandardPixmap icon) {
+        a->setIcon(style()->standardIcon(icon));
+        auto *b = new QToolButton(this);
+        b->setDefaultAction(a);
+        b->setAutoRaise(true);
+        row->addWidget(b);
+    };
+    button(addAction(tr("Go to the start"), Qt::Key_Home, "logStart", [this] { cursor_->seek(0); }),
+           QStyle::SP_MediaSkipBackward);
+    button(addAction(tr("Previous event"), QKeySequence(Qt::CTRL | Qt::Key_Left), "logPrevEvent",
+                     [this] { jumpToEvent(false); }),
+           QStyle::SP_MediaSeekBackward);
+    button(addAction(tr("Step back one epoch"), Qt::Key_Left, "logStepBack", [this] { step(-1); }),
+           QStyle::SP_ArrowLeft);
+    play_ = addAction(tr("Play"), Qt::Key_Space, "logPlay",
+                      [this] { emit playRequested(play_->isChecked()); });
+    play_->setCheckable(true);
+    button(play_, QStyle::SP_MediaPlay);
+    button(addAction(tr("Step forward one epoch"), Qt::Key_Right, "logStepForward",
+                     [this] { step(1); }),
+           QStyle::SP_ArrowRight);
+    button(addAction(tr("Next event"), QKeySequence(Qt::CTRL | Qt::Key_Right), "logNextEvent",
+                     [this] { jumpToEvent(true); }),
+           QStyle::SP_MediaSeekForward);
+    button(addAction(tr("Go to the end"), Qt::Key_End, "logEnd",
+                     [this] { cursor_->seek(cursor_->epochCount()); }),
+           QStyle::SP_MediaSkipForward);
+    speed_ = new QComboBox(this);
+    speed_->setObjectName("logSpeed");
+    speed_->setToolTip(tr("Playing speed (Ctrl+Up faster, Ctrl+Down slower)"));
+    for (double s : speeds())
+        speed_->addItem(s > 0 ? tr("%1×").arg(s) : tr("as fast as possible"), s);
+    speed_->setCurrentIndex(
+            int(std::find(speeds().begin(), speeds().end(), 1.0) - speeds().begin()));
+    row->addWidget(speed_);
+    addAction(tr("Faster"), QKeySequence(Qt::CTRL | Qt::Key_Up), "logFaster", [this] {
+        speed_->setCurrentIndex(std::min(speed_->count() - 1, speed_->currentIndex() + 1));
+    });
+    addAction(tr("Slower"), QKeySequence(Qt::CTRL | Qt::Key_Down), "logSlower",
+              [this] { speed_->setCurrentIndex(std::max(0, speed_->currentIndex() - 1)); });
+    connect(speed_, &QComboBox::currentIndexChanged, this, [this] { emit speedChanged(speed()); });
+    goTo_ = new QLineEdit(this);
+    goTo_->setObjectName("logGoTo");
+    goTo_->setPlaceholderText(tr("Go to: 10:42:00, #1200"));
+    goTo_->setToolTip(tr("A time of day (10:42:00), a UTC time (2024-03-15T10:42:00Z) or an "
+                         "epoch number (#1200), then Enter (Ctrl+G)"));
+    goTo_->setClearButtonEnabled(true);
+    goTo_->setMaximumWidth(200);
+    row->addWidget(goTo_);
+    connect(goTo_, &QLineEdit::returnPressed, this, [this] { goTo(goTo_->text()); });
+    addAction(tr("Go to a time…"), QKeySequence(Qt::CTRL | Qt::Key_G), "logGoToTime", [this] {
+        goTo_->setFocus();
+        goTo_->selectAll();
+    });
+    auto textButton = [&](QAction *a) {
+        auto *b = new QToolButton(this);
+        b->setDefaultAction(a);
+        b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        row->addWidget(b);
+    };
+    textButton(addAction(tr("Range start"), Qt::Key_BracketLeft, "logRangeStart",
+                         [this] { cursor_->setRangeStart(cursor_->current()); }));
+    textButton(addAction(tr("Range end"), Qt::Key_BracketRight, "logRangeEnd",
+                         [this] { cursor_->setRangeEnd(cursor_->current()); }));
+    textButton(addAction(tr("Whole log"), QKeySequence(Qt::CTRL | Qt::Key_Backslash),
+                         "logRangeClear", [this] { cursor_->clearRange(); }));
+    follow_ = new QCheckBox(tr("Follow"), this);
+    follow_->setObjectName("logFollow");
+    follow_->setToolTip(tr("Keep reading a log that is still being written; the cursor stays "
+                           "at its end"));
+    connect(follow_, &QCheckBox::toggled, this, &TimelinePanel::followRequested);
+    row->addWidget(follow_);
+    message_ = new QLabel(this);
+    message_->setObjectName("logMessage");
+    message_->setStyleSheet(QStringLiteral("color: %1;").arg(style::errorColor().name()));
+    row->addWidget(message_);
+    row->addStretch(1);
+    position_ = new QLabel(this);
+    position_->setObjectName("logPosition");
+    position_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    row->addWidget(position_);
+    layout->addLayout(row);
+    strip_ = new TimelineStrip(cursor_, this);
+    strip_->setToolTip(tr("Click or drag to move; Shift+drag selects a range"));
+    layout->addWidget(strip_);
+    connect(cursor_, &LogCursor::moved, this, &TimelinePanel::updateState);
+    connect(cursor_, &LogCursor::indexChanged, this, &TimelinePanel::updateState);
+    connect(cursor_, &LogCursor::rangeChanged, this, &TimelinePanel::updateState);
+    updateState();
+}
+
+const std::vector<double> &TimelinePanel::speeds() {
+    static const std::vector<double> s{0.1, 0.25, 0.5, 1, 2, 5, 10, 20, 50, 100, 0};
+    return s;
+}
+
+double TimelinePanel::speed() const {
+    return speed_->currentData().toDouble();
+}
+
+void TimelinePanel::setSpeed(double factor) {
+    const int i = speed_->findData(factor);
+    if (i >= 0) speed_->setCurrentIndex(i);
+}
+
+void TimelinePanel::setPlaying(bool playing) {
+    play_->setChecked(playing);
+    play_->setText(playing ? tr("Pause") : tr("Play"));
+    play_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+}
+
+bool TimelinePanel::playing() const {
+    return play_->isChecked();
+}
+bool TimelinePanel::following() const {
+    return follow_->isChecked();
+}
+
+QAction *TimelinePanel::addAction(const QString &text, const QKeySequence &key, const char *name,
+                                  const std::function<void()> &run) {
+    auto *a = new QAction(text, this);
+    a->setObjectName(QString::fromLatin1(name));
+    a->setShortcut(key);
+    a->setShortcutContext(Qt::WindowShortcut);
+    a->setToolTip(tr("%1 (%2)").arg(text, key.toString(QKeySequence::NativeText)));
+    connect(a, &QAction::triggered, this, run);
+    QWidget::addAction(a);
+    actions_ << a;
+    return a;
+}
+
+void TimelinePanel::step(long long delta) {
+    if (cursor_->empty()) return;
+    const long long k = std::clamp<long long>(static_cast<long long>(cursor_->current()) + delta, 0,
+                                              static_cast<long long>(cursor_->epochCount()) - 1);
+    cursor_->seek(std::size_t(k));
+}
+
+void TimelinePanel::jumpToEvent(bool forward) {
+    const logview::LogView *log = cursor_->log();
+    if (!log || cursor_->empty()) return;
+    const auto k =
+            forward ? log->nextEvent(cursor_->current()) : log->previousEvent(cursor_->current());
+    if (k)
+        cursor_->seek(*k);
+    else
+        message_->setText(forward ? tr("no later event") : tr("no earlier event"));
+}
+
+bool TimelinePanel::goTo(const QString &text) {
+    const logview::LogView *log = cursor_->log();
+    const auto spec = logview::parseTimeSpec(text.trimmed().toStdString());
+    if (!spec) {
+        message_->setText(tr("not a time: write 10:42:00, 2024-03-15T10:42:00Z or #1200"));
+        return false;
+    }
+    const auto k = log ? log->epochAt(*spec) : std::nullopt;
+    if (!k) {
+        message_->setText(tr("the log has no epoch at or after %1").arg(text.trimmed()));
+        return false;
+    }
+    message_->clear();
+    cursor_->seek(*k, true);
+    return true;
+}
+
+QString TimelinePanel::positionText() const {
+    return position_->text();
+}
+
+void TimelinePanel::updateState() {
+    const bool open = cursor_->log() && !cursor_->empty();
+    for (QAction *a : actions_) a->setEnabled(open);
+    speed_->setEnabled(open);
+    goTo_->setEnabled(open);
+    if (!open) {
+        position_->clear();
+        return;
+    }
+    message_->clear();
+    const std::size_t k = cursor_->current();
+    const auto r = cursor_->log()->epoch(k);
+    QString text = tr("#%1 / %2").arg(k).arg(cursor_->epochCount() - 1);
+    if (r) {
+        text += tr(" · %1 · %2")
+                        .arg(QString::fromStdString(logview::formatTime(*r)))
+                        .arg(style::fixTypeLabel(r->fixType()));
+    }
+    if (cursor_->hasRange()) {
+        const auto [a, b] = cursor_->selection();
+        text += tr(" · range #%1–#%2").arg(a).arg(b);
+    }
+    position_->setText(text);
+}
+
+} // namespace gnss::ui

@@ -1,0 +1,65 @@
+#pragma once
+// TimelinePanel: the log viewer's transport under the views. The strip of the whole log, and
+// buttons (each with a shortcut, active only while a log is open) to play and pause, change the
+// speed (0.1x to 100x, or as fast as the views draw), step an epoch, jump to the previous or
+// next event, to the start or end, to a typed time, and to mark a range. It moves the cursor
+// itself; playing and following a growing file are the application's (it owns the timers).
+#include "log_cursor.h"
+
+#include <QWidget>
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QToolButton;
+
+namespace gnss::ui {
+
+class TimelineStrip;
+
+class TimelinePanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit TimelinePanel(LogCursor *cursor, QWidget *parent = nullptr);
+
+    TimelineStrip *strip() const { return strip_; }
+    // Speeds offered (0: as fast as possible).
+    static const std::vector<double> &speeds();
+    double speed() const;
+    void setSpeed(double factor);
+    void setPlaying(bool playing);
+    bool playing() const;
+    bool following() const;
+    // Goes to a typed time ("10:42:00", "2024-03-15T10:42:00Z", "#1200"); false (and a word
+    // beside the box) when it names no epoch of the log.
+    bool goTo(const QString &text);
+    // Every action of the panel, for the window's menu.
+    QList<QAction *> actions() const { return actions_; }
+    // The words under the strip ("#1200 of 5000 · 10:42:00.000 · RTK fixed").
+    QString positionText() const;
+
+signals:
+    void playRequested(bool play);
+    void speedChanged(double factor);
+    void followRequested(bool follow);
+
+private:
+    QAction *addAction(const QString &text, const QKeySequence &key, const char *name,
+                       const std::function<void()> &run);
+    void updateState();
+    void step(long long delta);
+    void jumpToEvent(bool forward);
+
+    LogCursor *cursor_;
+    TimelineStrip *strip_;
+    QList<QAction *> actions_;
+    QAction *play_ = nullptr;
+    QComboBox *speed_;
+    QLineEdit *goTo_;
+    QCheckBox *follow_;
+    QLabel *position_, *message_;
+};
+
+} // namespace gnss::ui
