@@ -3590,7 +3590,7 @@
 <context>
     <name>StartupOptions</name>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="+14"/>
+        <location filename="../app/gui/startup_options.cpp" line="+15"/>
         <source>Configure and monitor GNSS receivers.</source>
         <translation>Настройка и мониторинг приёмников ГНСС.</translation>
     </message>
@@ -3621,6 +3621,16 @@
     </message>
     <message>
         <location line="+4"/>
+        <source>Open a log in the offline viewer (a timeline, every dock at its cursor); the same as giving FILE alone.</source>
+        <translation>Открыть журнал в просмотрщике (шкала времени, все панели показывают момент под курсором); то же, что указать FILE без ключа.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A log to open in the viewer.</source>
+        <translation>Журнал, который открыть в просмотрщике.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Built-in simulated receiver: %1.</source>
         <translation>Встроенный имитатор приёмника: %1.</translation>
     </message>
@@ -3635,17 +3645,22 @@
         <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info.</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+30"/>
+        <source>No such log: %1</source>
+        <translation>Нет такого журнала: %1</translation>
+    </message>
+    <message>
+        <location line="+38"/>
         <source>Invalid --gpsd: %1</source>
         <translation>Неверное значение --gpsd: %1</translation>
     </message>
     <message>
         <location line="+11"/>
-        <source>Give one source at most: --port, --tcp, --gpsd, --replay or --sim.</source>
-        <translation>Укажите не более одного источника: --port, --tcp, --gpsd, --replay или --sim.</translation>
+        <source>Give one source at most: --port, --tcp, --gpsd, --replay, --sim or a log to open.</source>
+        <translation>Укажите не более одного источника: --port, --tcp, --gpsd, --replay, --sim или журнал.</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-72"/>
         <source>Save an image of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
@@ -3655,12 +3670,12 @@
         <translation>Выйти через указанное число секунд.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Unexpected argument &apos;%1&apos;</source>
         <translation>Лишний аргумент «%1»</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>Invalid baud rate: %1</source>
         <translation>Неверная скорость порта: %1</translation>
     </message>
@@ -3824,13 +3839,13 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::ConnectionController</name>
     <message>
-        <location filename="../app/gui/connection_controller.cpp" line="+23"/>
-        <location line="+148"/>
+        <location filename="../app/gui/connection_controller.cpp" line="+24"/>
+        <location line="+166"/>
         <source>Not connected</source>
         <translation>Нет подключения</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="-133"/>
         <source>No source chosen</source>
         <translation>Источник не выбран</translation>
     </message>
@@ -3867,12 +3882,12 @@ Serial number: %3</source>
         <translation>%1: определение скорости…</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+155"/>
         <source>%1 cannot take commands</source>
         <translation>%1 не принимает команды</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-144"/>
         <source>Baud rate not found: %1</source>
         <translation>Скорость не найдена: %1</translation>
     </message>
@@ -3917,7 +3932,7 @@ Serial number: %3</source>
         <translation>Подключено: %1 (определено)</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+46"/>
         <source>Not connected: nothing was sent</source>
         <translation>Нет подключения: ничего не отправлено</translation>
     </message>
@@ -3946,9 +3961,79 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
+    <name>gnss::app::LogViewer</name>
+    <message>
+        <location filename="../app/gui/log_viewer.cpp" line="+123"/>
+        <source>Log %1: unpacking, %2 %</source>
+        <translation>Журнал %1: распаковка, %2 %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Log %1: indexing, %2 % of %3 MB</source>
+        <translation>Журнал %1: индексация, %2 % из %3 МБ</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Log %1: indexing cancelled</source>
+        <translation>Журнал %1: индексация отменена</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+6"/>
+        <source>Log %1: %2</source>
+        <translation>Журнал %1: %2</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Log %1: no epochs found</source>
+        <translation>Журнал %1: эпох не найдено</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Log %1: %2 epochs</source>
+        <translation>Журнал %1: эпох — %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> · %1</source>
+        <translation> · %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> · following</source>
+        <translation> · слежение за файлом</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>not a sentence</source>
+        <translation>не сообщение NMEA</translation>
+    </message>
+    <message>
+        <location line="+119"/>
+        <source>no log is open, or it is still being indexed</source>
+        <translation>журнал не открыт или ещё индексируется</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>an export is already running</source>
+        <translation>экспорт уже идёт</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>Exported epochs %1 to %2 to %3</source>
+        <translation>Эпохи с %1 по %2 экспортированы в %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Could not write %1 (the disk is full, or the folder is not writable)</source>
+        <translation>Не удалось записать %1 (диск заполнен или нет прав на запись в папку)</translation>
+    </message>
+</context>
+<context>
     <name>gnss::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+52"/>
+        <location filename="../app/gui/main_window.cpp" line="+53"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+189"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
@@ -3958,12 +4043,149 @@ Serial number: %3</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-151"/>
+        <source>Timeline</source>
+        <translation>Шкала времени</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Log timeline</source>
+        <translation>Шкала времени журнала</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Events</source>
+        <translation>События</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Log events</source>
+        <translation>События журнала</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Save events</source>
+        <translation>Сохранить события</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+12"/>
+        <location line="+138"/>
+        <source>Not exported: %1</source>
+        <translation>Не экспортировано: %1</translation>
+    </message>
+    <message>
+        <location line="-146"/>
+        <source>Log statistics</source>
+        <translation>Статистика журнала</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Log statistics (range)</source>
+        <translation>Статистика журнала (интервал)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save statistics</source>
+        <translation>Сохранить статистику</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>JSON (*.json)</source>
+        <translation>JSON (*.json)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Log charts</source>
+        <translation>Графики журнала</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Log charts (whole log)</source>
+        <translation>Графики журнала (весь журнал)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Track</source>
+        <translation>Трек</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Track (whole log)</source>
+        <translation>Трек (весь журнал)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>&amp;Open Log...</source>
         <translation>&amp;Открыть журнал...</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>NMEA logs (*.nmea *.log *.txt *.gz *.nmea.gz);;All files (*)</source>
+        <translation>Журналы NMEA (*.nmea *.log *.txt *.gz *.nmea.gz);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Open &amp;Recent</source>
+        <translation>Открыть &amp;недавний</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Export Log...</source>
+        <translation>&amp;Экспорт журнала...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Close Log</source>
+        <translation>&amp;Закрыть журнал</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Clear the list</source>
+        <translation>Очистить список</translation>
+    </message>
+    <message>
         <location line="+15"/>
+        <source>%1 — GNSS Workbench</source>
+        <translation>%1 — GNSS Workbench</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>Export epochs %1 to %2</source>
+        <translation>Экспорт эпох с %1 по %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export the whole log</source>
+        <translation>Экспорт всего журнала</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GPX track (*.gpx);;KML, coloured by fix (*.kml);;CSV, one row per epoch (*.csv);;NMEA, the bytes as in the file (*.nmea);;Statistics (*.json)</source>
+        <translation>Трек GPX (*.gpx);;KML, цвет по типу решения (*.kml);;CSV, строка на эпоху (*.csv);;NMEA, байты как в файле (*.nmea);;Статистика (*.json)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>name the file .gpx, .kml, .csv, .nmea or .json: the suffix says the format</source>
+        <translation>назовите файл .gpx, .kml, .csv, .nmea или .json: формат задаётся расширением</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exporting to %1…</source>
+        <translation>Экспорт в %1…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="+8"/>
         <source>&amp;Quit</source>
         <translation>В&amp;ыход</translation>
     </message>
@@ -3998,7 +4220,7 @@ Serial number: %3</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
@@ -4013,12 +4235,12 @@ Serial number: %3</source>
         <translation>О &amp;Qt</translation>
     </message>
     <message>
-        <location line="-65"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-112"/>
         <source>Open Log</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location filename="../app/gui/main_window.cpp" line="-286"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -4038,7 +4260,7 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+75"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
     </message>
@@ -4053,7 +4275,7 @@ Serial number: %3</source>
         <translation>Решение</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <location line="+1"/>
         <source>Signal levels</source>
         <translation>Уровни сигналов</translation>
@@ -4134,17 +4356,12 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
     <message>
         <location line="+42"/>
-        <source>NMEA logs (*.nmea *.log *.txt);;All files (*)</source>
-        <translation>Журналы NMEA (*.nmea *.log *.txt);;Все файлы (*)</translation>
-    </message>
-    <message>
-        <location line="+8"/>
         <source>&amp;Record...</source>
         <translation>&amp;Запись...</translation>
     </message>
@@ -4199,7 +4416,7 @@ Serial number: %3</source>
         <translation>Тёмное</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>About GNSS Workbench</source>
         <translation>О программе GNSS Workbench</translation>
     </message>
@@ -4209,7 +4426,7 @@ Serial number: %3</source>
         <translation>&lt;b&gt;GNSS Workbench&lt;/b&gt; %1&lt;br&gt;Настройка и мониторинг приёмников NVS NV08C-RTK, GeoStar GeoS-5, Nemerix и NMEA-0183.</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+40"/>
         <source>NMEA-0183 (no vendor sentences)</source>
         <translation>NMEA-0183 (без фирменных сообщений)</translation>
     </message>
@@ -4224,7 +4441,7 @@ Serial number: %3</source>
         <translation> (прошивка %1)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>%1 B/s · %2 sentences/s</source>
         <translation>%1 Б/с · %2 предл./с</translation>
     </message>
@@ -4234,12 +4451,12 @@ Serial number: %3</source>
         <translation>ошибок контрольной суммы: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>● REC</source>
         <translation>● ЗАПИСЬ</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
@@ -4264,7 +4481,7 @@ Serial number: %3</source>
         <translation>Не удаётся записывать в %1: сначала подключитесь к приёмнику и проверьте, что папка доступна для записи.</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+77"/>
         <source>The new language is used from the next start of GNSS Workbench.</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
     </message>
@@ -5562,12 +5779,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+91"/>
+        <location line="+93"/>
         <source>not stored</source>
         <translation>не сохраняется</translation>
     </message>
     <message>
-        <location line="-90"/>
+        <location line="-92"/>
         <source>Password</source>
         <translation>Пароль</translation>
     </message>
@@ -5593,12 +5810,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+143"/>
+        <location line="+145"/>
         <source>Start</source>
         <translation>Запустить</translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-141"/>
         <source>Not started</source>
         <translation>Не запущено</translation>
     </message>
@@ -5638,7 +5855,7 @@ Serial number: %3</source>
         <translation>Возраст поправок, с (последние 10 мин)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Receiver</source>
         <translation>Приёмник</translation>
     </message>
@@ -5741,7 +5958,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::DeviationView</name>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="+81"/>
+        <location filename="../ui/views/deviation_view.cpp" line="+83"/>
         <source>No position yet</source>
         <translation>Координат пока нет</translation>
     </message>
@@ -5929,9 +6146,456 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
+    <name>gnss::ui::LogChartsPanel</name>
+    <message>
+        <location filename="../ui/logview/whole_log_panels.cpp" line="+26"/>
+        <source>wheel: zoom · drag: pan · click: go there</source>
+        <translation>колесо: масштаб · перетаскивание: сдвиг · щелчок: перейти</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Whole log</source>
+        <translation>Весь журнал</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::LogEventsView</name>
+    <message>
+        <location filename="../ui/logview/log_events_view.cpp" line="+40"/>
+        <source>Show:</source>
+        <translation>Показать:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>All events</source>
+        <translation>Все события</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export CSV…</source>
+        <translation>Экспорт CSV…</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Time</source>
+        <translation>Время</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Event</source>
+        <translation>Событие</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Details</source>
+        <translation>Подробности</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Fix change</source>
+        <translation>Смена решения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data gap</source>
+        <translation>Пропуск данных</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Link lost</source>
+        <translation>Потеря связи</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Checksum errors</source>
+        <translation>Ошибки контрольной суммы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time jump</source>
+        <translation>Скачок времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Receiver change</source>
+        <translation>Смена приёмника</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time mark</source>
+        <translation>Метка времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jamming</source>
+        <translation>Помехи</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base station</source>
+        <translation>Базовая станция</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>standard NMEA</source>
+        <translation>стандартный NMEA</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no epochs for %1 s</source>
+        <translation>нет эпох в течение %1 с</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>time went back %1 s</source>
+        <translation>время ушло назад на %1 с</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 sentences with a wrong checksum in %2 epochs</source>
+        <translation>сообщений с неверной контрольной суммой: %1 в %2 эпохах</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 sentences (after %2)</source>
+        <translation>сообщения %1 (после %2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 sentences</source>
+        <translation>сообщения %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>time mark</source>
+        <translation>метка времени</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>jamming detected</source>
+        <translation>обнаружены помехи</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>jamming cleared</source>
+        <translation>помехи пропали</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>station %1 (was %2)</source>
+        <translation>станция %1 (была %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>station %1</source>
+        <translation>станция %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Epoch %1</source>
+        <translation>Эпоха %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No log open</source>
+        <translation>Журнал не открыт</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Indexing…</source>
+        <translation>Индексация…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No events: the fix never changed, and there were no gaps, resets or checksum errors</source>
+        <translation>Событий нет: решение не менялось, пропусков, сбросов и ошибок контрольной суммы не было</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n event(s); click one to go there</source>
+        <translation>
+            <numerusform>%n событие; щёлкните, чтобы перейти к нему</numerusform>
+            <numerusform>%n события; щёлкните, чтобы перейти к событию</numerusform>
+            <numerusform>%n событий; щёлкните, чтобы перейти к событию</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::LogPlot</name>
+    <message>
+        <location filename="../ui/logview/log_plot.cpp" line="+49"/>
+        <source>Altitude</source>
+        <translation>Высота</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Satellites used</source>
+        <translation>Спутников в решении</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>HDOP</source>
+        <translation>HDOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mean SNR</source>
+        <translation>Средний SNR</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>dB-Hz</source>
+        <translation>дБГц</translation>
+    </message>
+    <message>
+        <location line="+90"/>
+        <source>Indexing…</source>
+        <translation>Индексация…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No log open</source>
+        <translation>Журнал не открыт</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>The log has no %1</source>
+        <translation>В журнале нет величины «%1»</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::LogSummaryView</name>
+    <message>
+        <location filename="../ui/logview/log_summary_view.cpp" line="+18"/>
+        <source>%1 s</source>
+        <translation>%1 с</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Spread of the epochs standing still</source>
+        <translation>Разброс только для эпох без движения</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CEP and 2DRMS of the epochs whose speed is under 0.5 m/s (all epochs when there are none)</source>
+        <translation>CEP и 2DRMS по эпохам со скоростью меньше 0,5 м/с (по всем эпохам, если таких нет)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save JSON…</source>
+        <translation>Сохранить JSON…</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>Indexing…</source>
+        <translation>Индексация…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No log open</source>
+        <translation>Журнал не открыт</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Selected range: epochs %1 to %2</source>
+        <translation>Выбранный интервал: эпохи с %1 по %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Whole log: epochs %1 to %2</source>
+        <translation>Весь журнал: эпохи с %1 по %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Epochs</source>
+        <translation>Эпох</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Duration</source>
+        <translation>Длительность</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 (availability)</source>
+        <translation>%1 (доступность)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 % (%2 epochs)</source>
+        <translation>%1 % (эпох: %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Time to first fix</source>
+        <translation>Время до первого решения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time to RTK fixed</source>
+        <translation>Время до RTK fixed</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data gaps</source>
+        <translation>Пропуски данных</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1, the longest %2 (before epoch %3)</source>
+        <translation>%1, самый долгий %2 (перед эпохой %3)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time jumps</source>
+        <translation>Скачки времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Checksum errors</source>
+        <translation>Ошибки контрольной суммы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Epochs with junk</source>
+        <translation>Эпохи с мусором</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Positions</source>
+        <translation>Координат</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 (standing still)</source>
+        <translation>%1 (без движения)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mean position</source>
+        <translation>Среднее положение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Mean altitude</source>
+        <translation>Средняя высота</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CEP50</source>
+        <translation>CEP50</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CEP95</source>
+        <translation>CEP95</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>2DRMS</source>
+        <translation>2DRMS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Max HDOP</source>
+        <translation>Наибольший HDOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (epoch %2)</source>
+        <translation>%1 (эпоха %2)</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::LogTrack</name>
+    <message>
+        <location filename="../ui/logview/log_track.cpp" line="+166"/>
+        <source>Indexing…</source>
+        <translation>Индексация…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No positions</source>
+        <translation>Нет координат</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Origin %1, %2%3</source>
+        <translation>Начало отсчёта %1, %2%3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> (reference)</source>
+        <translation> (опорная точка)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> (mean)</source>
+        <translation> (среднее)</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::LogTrackPanel</name>
+    <message>
+        <location filename="../ui/logview/whole_log_panels.cpp" line="+16"/>
+        <source>Reference:</source>
+        <translation>Опорная точка:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the mean position</source>
+        <translation>среднее положение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latitude, longitude in degrees (55.75, 37.62); empty for the mean of the log&apos;s positions</source>
+        <translation>Широта, долгота в градусах (55.75, 37.62); пусто — среднее по координатам журнала</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Fit</source>
+        <translation>Вписать</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Write the reference as latitude, longitude in degrees: 55.75, 37.62</source>
+        <translation>Запишите опорную точку как широту, долготу в градусах: 55.75, 37.62</translation>
+    </message>
+</context>
+<context>
     <name>gnss::ui::MessageStatsModel</name>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="+66"/>
+        <location filename="../ui/models/message_stats_model.cpp" line="+59"/>
         <source>Address</source>
         <translation>Адрес</translation>
     </message>
@@ -6782,6 +7446,173 @@ elevation %3°, azimuth %4°</source>
         <location line="+1"/>
         <source>Speed (%1)</source>
         <translation>Скорость (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::TimelinePanel</name>
+    <message>
+        <location filename="../ui/logview/timeline_panel.cpp" line="+33"/>
+        <source>Go to the start</source>
+        <translation>В начало</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Previous event</source>
+        <translation>Предыдущее событие</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Step back one epoch</source>
+        <translation>На эпоху назад</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+93"/>
+        <source>Play</source>
+        <translation>Воспроизвести</translation>
+    </message>
+    <message>
+        <location line="-89"/>
+        <source>Step forward one epoch</source>
+        <translation>На эпоху вперёд</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Next event</source>
+        <translation>Следующее событие</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Go to the end</source>
+        <translation>В конец</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Playing speed (Ctrl+Up faster, Ctrl+Down slower)</source>
+        <translation>Скорость воспроизведения (Ctrl+Вверх — быстрее, Ctrl+Вниз — медленнее)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>as fast as possible</source>
+        <translation>как можно быстрее</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Faster</source>
+        <translation>Быстрее</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Slower</source>
+        <translation>Медленнее</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Go to: 10:42:00, #1200</source>
+        <translation>Перейти: 10:42:00, #1200</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A time of day (10:42:00), a UTC time (2024-03-15T10:42:00Z) or an epoch number (#1200), then Enter (Ctrl+G)</source>
+        <translation>Время суток (10:42:00), время UTC (2024-03-15T10:42:00Z) или номер эпохи (#1200), затем Enter (Ctrl+G)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Go to a time…</source>
+        <translation>Перейти ко времени…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Range start</source>
+        <translation>Начало интервала</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Range end</source>
+        <translation>Конец интервала</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Whole log</source>
+        <translation>Весь журнал</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Follow</source>
+        <translation>Следить</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Keep reading a log that is still being written; the cursor stays at its end</source>
+        <translation>Дочитывать журнал, который ещё пишется; курсор остаётся в его конце</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Click or drag to move; Shift+drag selects a range</source>
+        <translation>Щелчок или перетаскивание — переход; Shift+перетаскивание — выбор интервала</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>no later event</source>
+        <translation>дальше событий нет</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no earlier event</source>
+        <translation>раньше событий нет</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>not a time: write 10:42:00, 2024-03-15T10:42:00Z or #1200</source>
+        <translation>это не время: напишите 10:42:00, 2024-03-15T10:42:00Z или #1200</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the log has no epoch at or after %1</source>
+        <translation>в журнале нет эпохи в %1 или позже</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>#%1 / %2</source>
+        <translation>№%1 / %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> · %1 · %2</source>
+        <translation> · %1 · %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> · range #%1–#%2</source>
+        <translation> · интервал №%1–№%2</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::TimelineStrip</name>
+    <message>
+        <location filename="../ui/logview/timeline_strip.cpp" line="+144"/>
+        <source>Open a log (File → Open Log…)</source>
+        <translation>Откройте журнал (Файл → Открыть журнал…)</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>#%1 · %2 · %3</source>
+        <translation>№%1 · %2 · %3</translation>
     </message>
 </context>
 </TS>

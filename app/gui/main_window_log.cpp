@@ -157,6 +157,8 @@ void MainWindow::openLog(const QString &path) {
     logViewer_->open(path);
     rememberLog(path);
     timelineBar_->show();
+    // The transport's keys (Space, arrows) act at once, not in the source box's text.
+    if (auto *strip = timelineBar_->findChild<ui::TimelineStrip *>()) strip->setFocus();
     closeLogAction_->setEnabled(true);
     exportAction_->setEnabled(false);
     setWindowTitle(tr("%1 — GNSS Workbench").arg(QFileInfo(path).fileName()));

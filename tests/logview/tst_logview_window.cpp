@@ -20,6 +20,7 @@
 #include "timeline_strip.h"
 #include "whole_log_panels.h"
 
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QFile>
 #include <QLabel>
@@ -31,6 +32,7 @@
 #include <QTableView>
 #include <QTableWidget>
 #include <QToolBar>
+#include <QTranslator>
 #include <random>
 
 using namespace gnss;
@@ -127,6 +129,23 @@ private slots:
         // Message statistics of the whole log arrive from the worker.
         auto *messages = w->findChild<ui::MessageStatsModel *>();
         QTRY_VERIFY(messages->rowCount() >= 3);
+    }
+
+    // In Russian too, whose words are longer: the window still fits a 1280x800 screen.
+    void theViewerFitsALaptopInRussian() {
+        QTranslator russian;
+        QVERIFY2(russian.load(QStringLiteral(GNSS_RU_QM)), GNSS_RU_QM);
+        QCoreApplication::installTranslator(&russian);
+        {
+            auto s = settings();
+            auto w = window(s.get());
+            QVERIFY(openScenario(*w, scenario_));
+            const QSize min = w->minimumSizeHint();
+            QVERIFY2(min.width() <= 1280 && min.height() <= 740,
+                     qPrintable(QString("%1x%2").arg(min.width()).arg(min.height())));
+            QVERIFY(w->findChild<QAction *>("logPlay")->text() != QLatin1String("Play"));
+        }
+        QCoreApplication::removeTranslator(&russian);
     }
 
     void theTransportMovesTheCursor() {
@@ -291,6 +310,34 @@ private slots:
         QVERIFY(!w->logViewer()->exportTo(LogViewer::Export::Gpx,
                                           dir_.filePath("no/such/folder/x.gpx"), &why) ||
                 (done.wait(20000) && !done.last().at(0).toBool()));
+    }
+
+    // A logger still writing: with Follow on, the timeline grows and the cursor stays at the end.
+    void aGrowingLogIsFollowed() {
+        test::Scenario sc;
+        const std::string all = test::scenarioLog(sc);
+        const std::string half = all.substr(0, all.find("$GPRMC,100140.00")); // 100 epochs
+        const QString path = dir_.filePath("growing.nmea");
+        QVERIFY(test::writeFile(path.toStdString(), half));
+        auto s = settings();
+        auto w = window(s.get());
+        QVERIFY(openScenario(*w, path.toStdString()));
+        ui::LogCursor *cursor = w->logViewer()->cursor();
+        const std::size_t before = cursor->epochCount();
+        QVERIFY(before >= 99 && before <= 100);
+        cursor->seek(before - 1);
+        w->findChild<QCheckBox *>("logFollow")->setChecked(true);
+        QVERIFY(w->logViewer()->following());
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::Append));
+            f.write(QByteArray::fromStdString(
+                    all.substr(half.size(), all.find("$GPRMC,100220.00") - half.size())));
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(cursor->epochCount() >= 139, 5000);
+        QCOMPARE(cursor->current(), cursor->epochCount() - 1);
+        expectStateAt(*w, cursor->current());
+        QVERIFY(w->findChild<QLabel *>("connectionState")->text().contains("following"));
     }
 
     void badFilesSaySoAndNothingBreaks_data() {

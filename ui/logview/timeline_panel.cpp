@@ -2,10 +2,12 @@
 
 #include "style/gnss_style.h"
 #include "timeline_strip.h"
+#include "transport_icons.h"
 
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -23,33 +25,33 @@ TimelinePanel::TimelinePanel(LogCursor *cursor, QWidget *parent)
     layout->setSpacing(0);
     auto *row = new QHBoxLayout;
     row->setSpacing(2);
-    auto button = [&](QAction *a, QStyle::StandardPixmap icon) {
-        a->setIcon(style()->standardIcon(icon));
+    auto button = [&](QAction *a, TransportIcon icon) {
+        icons_.push_back({a, icon});
         auto *b = new QToolButton(this);
         b->setDefaultAction(a);
         b->setAutoRaise(true);
         row->addWidget(b);
     };
     button(addAction(tr("Go to the start"), Qt::Key_Home, "logStart", [this] { cursor_->seek(0); }),
-           QStyle::SP_MediaSkipBackward);
+           TransportIcon::Start);
     button(addAction(tr("Previous event"), QKeySequence(Qt::CTRL | Qt::Key_Left), "logPrevEvent",
                      [this] { jumpToEvent(false); }),
-           QStyle::SP_MediaSeekBackward);
+           TransportIcon::PreviousEvent);
     button(addAction(tr("Step back one epoch"), Qt::Key_Left, "logStepBack", [this] { step(-1); }),
-           QStyle::SP_ArrowLeft);
+           TransportIcon::StepBack);
     play_ = addAction(tr("Play"), Qt::Key_Space, "logPlay",
                       [this] { emit playRequested(play_->isChecked()); });
     play_->setCheckable(true);
-    button(play_, QStyle::SP_MediaPlay);
+    button(play_, TransportIcon::Play);
     button(addAction(tr("Step forward one epoch"), Qt::Key_Right, "logStepForward",
                      [this] { step(1); }),
-           QStyle::SP_ArrowRight);
+           TransportIcon::StepForward);
     button(addAction(tr("Next event"), QKeySequence(Qt::CTRL | Qt::Key_Right), "logNextEvent",
                      [this] { jumpToEvent(true); }),
-           QStyle::SP_MediaSeekForward);
+           TransportIcon::NextEvent);
     button(addAction(tr("Go to the end"), Qt::Key_End, "logEnd",
                      [this] { cursor_->seek(cursor_->epochCount()); }),
-           QStyle::SP_MediaSkipForward);
+           TransportIcon::End);
     speed_ = new QComboBox(this);
     speed_->setObjectName("logSpeed");
     speed_->setToolTip(tr("Playing speed (Ctrl+Up faster, Ctrl+Down slower)"));
@@ -71,6 +73,7 @@ TimelinePanel::TimelinePanel(LogCursor *cursor, QWidget *parent)
                          "epoch number (#1200), then Enter (Ctrl+G)"));
     goTo_->setClearButtonEnabled(true);
     goTo_->setMaximumWidth(200);
+    goTo_->setMinimumWidth(90);
     row->addWidget(goTo_);
     connect(goTo_, &QLineEdit::returnPressed, this, [this] { goTo(goTo_->text()); });
     addAction(tr("Go to a time…"), QKeySequence(Qt::CTRL | Qt::Key_G), "logGoToTime", [this] {
@@ -99,19 +102,33 @@ TimelinePanel::TimelinePanel(LogCursor *cursor, QWidget *parent)
     message_->setObjectName("logMessage");
     message_->setStyleSheet(QStringLiteral("color: %1;").arg(style::errorColor().name()));
     row->addWidget(message_);
-    row->addStretch(1);
     position_ = new QLabel(this);
     position_->setObjectName("logPosition");
     position_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    row->addWidget(position_);
+    // The words may be longer than the room left (Russian, a narrow window): clipped, never
+    // widening the window past the screen; the whole text is in the tooltip.
+    position_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    position_->setMinimumWidth(120);
+    row->addWidget(position_, 1);
     layout->addLayout(row);
     strip_ = new TimelineStrip(cursor_, this);
     strip_->setToolTip(tr("Click or drag to move; Shift+drag selects a range"));
     layout->addWidget(strip_);
+    paintIcons();
     connect(cursor_, &LogCursor::moved, this, &TimelinePanel::updateState);
     connect(cursor_, &LogCursor::indexChanged, this, &TimelinePanel::updateState);
     connect(cursor_, &LogCursor::rangeChanged, this, &TimelinePanel::updateState);
     updateState();
+}
+
+void TimelinePanel::paintIcons() {
+    for (const auto &[action, icon] : icons_)
+        action->setIcon(transportIcon(icon, palette().color(QPalette::ButtonText)));
+}
+
+void TimelinePanel::changeEvent(QEvent *e) {
+    if (e->type() == QEvent::PaletteChange) paintIcons(); // the theme changed
+    QWidget::changeEvent(e);
 }
 
 const std::vector<double> &TimelinePanel::speeds() {
@@ -131,7 +148,9 @@ void TimelinePanel::setSpeed(double factor) {
 void TimelinePanel::setPlaying(bool playing) {
     play_->setChecked(playing);
     play_->setText(playing ? tr("Pause") : tr("Play"));
-    play_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    for (auto &[action, icon] : icons_)
+        if (action == play_) icon = playing ? TransportIcon::Pause : TransportIcon::Play;
+    paintIcons();
 }
 
 bool TimelinePanel::playing() const {
@@ -216,6 +235,7 @@ void TimelinePanel::updateState() {
         text += tr(" · range #%1–#%2").arg(a).arg(b);
     }
     position_->setText(text);
+    position_->setToolTip(text);
 }
 
 } // namespace gnss::ui

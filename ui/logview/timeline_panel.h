@@ -5,6 +5,7 @@
 // next event, to the start or end, to a typed time, and to mark a range. It moves the cursor
 // itself; playing and following a growing file are the application's (it owns the timers).
 #include "log_cursor.h"
+#include "transport_icons.h"
 
 #include <QWidget>
 
@@ -45,7 +46,11 @@ signals:
     void speedChanged(double factor);
     void followRequested(bool follow);
 
+protected:
+    void changeEvent(QEvent *e) override;
+
 private:
+    void paintIcons();
     QAction *addAction(const QString &text, const QKeySequence &key, const char *name,
                        const std::function<void()> &run);
     void updateState();
@@ -56,6 +61,7 @@ private:
     TimelineStrip *strip_;
     QList<QAction *> actions_;
     QAction *play_ = nullptr;
+    std::vector<std::pair<QAction *, TransportIcon>> icons_;
     QComboBox *speed_;
     QLineEdit *goTo_;
     QCheckBox *follow_;
