@@ -3961,6 +3961,89 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
+    <name>gnss::app::LogPlayer</name>
+    <message>
+        <location filename="../app/gui/log_player.cpp" line="+42"/>
+        <source>no log is open</source>
+        <translation>журнал не открыт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the speed must be above 0 and at most 1000</source>
+        <translation>скорость должна быть больше 0 и не больше 1000</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the range is empty</source>
+        <translation>интервал пуст</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>choose a serial port and a standard baud rate</source>
+        <translation>выберите последовательный порт и стандартную скорость</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>choose a TCP port from 1 to 65535</source>
+        <translation>выберите порт TCP от 1 до 65535</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>cannot make a pseudo-terminal: %1</source>
+        <translation>не удалось создать псевдотерминал: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>cannot listen on 127.0.0.1:%1: %2</source>
+        <translation>не удалось открыть порт 127.0.0.1:%1: %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>cannot open %1: %2</source>
+        <translation>не удалось открыть %1: %2</translation>
+    </message>
+    <message>
+        <location line="+135"/>
+        <source>Not playing</source>
+        <translation>Не воспроизводится</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Pseudo-terminal %1</source>
+        <translation>Псевдотерминал %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>127.0.0.1:%1, waiting for a client</source>
+        <translation>127.0.0.1:%1, ожидание клиента</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>127.0.0.1:%1, clients: %2</source>
+        <translation>127.0.0.1:%1, клиентов: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 at %2 baud</source>
+        <translation>%1 на скорости %2 бод</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: epoch %2 of %3, %4 kB sent</source>
+        <translation>%1: эпоха %2 из %3, отправлено %4 кБ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: finished, %2 of %3 epochs, %4 kB sent</source>
+        <translation>%1: готово, эпох %2 из %3, отправлено %4 кБ</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>, %1 kB dropped (the reader did not keep up)</source>
+        <translation>, потеряно %1 кБ (читающая сторона не успевала)</translation>
+    </message>
+</context>
+<context>
     <name>gnss::app::LogViewer</name>
     <message>
         <location filename="../app/gui/log_viewer.cpp" line="+123"/>
@@ -4033,7 +4116,7 @@ Serial number: %3</source>
     <name>gnss::app::MainWindow</name>
     <message>
         <location filename="../app/gui/main_window.cpp" line="+53"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+189"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+200"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
@@ -4043,7 +4126,7 @@ Serial number: %3</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-151"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-159"/>
         <source>Timeline</source>
         <translation>Шкала времени</translation>
     </message>
@@ -4075,12 +4158,12 @@ Serial number: %3</source>
     <message>
         <location line="+3"/>
         <location line="+12"/>
-        <location line="+138"/>
+        <location line="+146"/>
         <source>Not exported: %1</source>
         <translation>Не экспортировано: %1</translation>
     </message>
     <message>
-        <location line="-146"/>
+        <location line="-154"/>
         <source>Log statistics</source>
         <translation>Статистика журнала</translation>
     </message>
@@ -4146,21 +4229,26 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
+        <source>&amp;Play Out...</source>
+        <translation>&amp;Воспроизвести наружу...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&amp;Close Log</source>
         <translation>&amp;Закрыть журнал</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>Clear the list</source>
         <translation>Очистить список</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <source>%1 — GNSS Workbench</source>
         <translation>%1 — GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>Export epochs %1 to %2</source>
         <translation>Экспорт эпох с %1 по %2</translation>
     </message>
@@ -4235,7 +4323,7 @@ Serial number: %3</source>
         <translation>О &amp;Qt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-112"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-120"/>
         <source>Open Log</source>
         <translation>Открыть журнал</translation>
     </message>
@@ -4493,6 +4581,106 @@ Serial number: %3</source>
         <location line="+16"/>
         <source>this build has no keychain support</source>
         <translation>эта сборка не поддерживает связку ключей</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::app::PlayOutDialog</name>
+    <message>
+        <location filename="../app/gui/play_out_dialog.cpp" line="+22"/>
+        <source>Play Out</source>
+        <translation>Воспроизвести наружу</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Send the log to other software at its own pace, as a receiver would: the bytes exactly as in the file.</source>
+        <translation>Передать журнал другой программе в его собственном темпе, как это делал бы приёмник: байты в точности как в файле.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Epochs:</source>
+        <translation>Эпохи:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A new pseudo-terminal</source>
+        <translation>Новый псевдотерминал</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A TCP server on 127.0.0.1</source>
+        <translation>Сервер TCP на 127.0.0.1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A serial port</source>
+        <translation>Последовательный порт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>To:</source>
+        <translation>Куда:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>TCP port:</source>
+        <translation>Порт TCP:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Serial port:</source>
+        <translation>Последовательный порт:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Baud rate:</source>
+        <translation>Скорость, бод:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>×</source>
+        <translation>×</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed:</source>
+        <translation>Скорость:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start again at the end</source>
+        <translation>По достижении конца начать снова</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+39"/>
+        <source>Start</source>
+        <translation>Начать</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <location line="+27"/>
+        <source>Not started: %1</source>
+        <translation>Не начато: %1</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <source>Stop</source>
+        <translation>Остановить</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 to %2 (the selected range)</source>
+        <translation>с %1 по %2 (выбранный интервал)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 to %2 (the whole log)</source>
+        <translation>с %1 по %2 (весь журнал)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no log is open</source>
+        <translation>журнал не открыт</translation>
     </message>
 </context>
 <context>
@@ -6315,14 +6503,10 @@ Serial number: %3</source>
         <source>No events: the fix never changed, and there were no gaps, resets or checksum errors</source>
         <translation>Событий нет: решение не менялось, пропусков, сбросов и ошибок контрольной суммы не было</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location line="+3"/>
-        <source>%n event(s); click one to go there</source>
-        <translation>
-            <numerusform>%n событие; щёлкните, чтобы перейти к нему</numerusform>
-            <numerusform>%n события; щёлкните, чтобы перейти к событию</numerusform>
-            <numerusform>%n событий; щёлкните, чтобы перейти к событию</numerusform>
-        </translation>
+        <source>Events: %1; click one to go there</source>
+        <translation>Событий: %1; щёлкните событие, чтобы перейти к нему</translation>
     </message>
 </context>
 <context>
@@ -7451,7 +7635,7 @@ elevation %3°, azimuth %4°</source>
 <context>
     <name>gnss::ui::TimelinePanel</name>
     <message>
-        <location filename="../ui/logview/timeline_panel.cpp" line="+33"/>
+        <location filename="../ui/logview/timeline_panel.cpp" line="+35"/>
         <source>Go to the start</source>
         <translation>В начало</translation>
     </message>
@@ -7467,12 +7651,12 @@ elevation %3°, azimuth %4°</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+93"/>
+        <location line="+108"/>
         <source>Play</source>
         <translation>Воспроизвести</translation>
     </message>
     <message>
-        <location line="-89"/>
+        <location line="-104"/>
         <source>Step forward one epoch</source>
         <translation>На эпоху вперёд</translation>
     </message>
@@ -7522,7 +7706,7 @@ elevation %3°, azimuth %4°</source>
         <translation>Время суток (10:42:00), время UTC (2024-03-15T10:42:00Z) или номер эпохи (#1200), затем Enter (Ctrl+G)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Go to a time…</source>
         <translation>Перейти ко времени…</translation>
     </message>
@@ -7552,17 +7736,17 @@ elevation %3°, azimuth %4°</source>
         <translation>Дочитывать журнал, который ещё пишется; курсор остаётся в его конце</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <source>Click or drag to move; Shift+drag selects a range</source>
         <translation>Щелчок или перетаскивание — переход; Shift+перетаскивание — выбор интервала</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+35"/>
         <source>Pause</source>
         <translation>Пауза</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>

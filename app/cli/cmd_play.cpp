@@ -3,6 +3,7 @@
 // times of a recording's index when it has them, else the epochs' UTC times. The bytes sent are
 // exactly the file's.
 #include "log_open.h"
+#include "play_schedule.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -214,25 +215,12 @@ int cmdPlay(const CliContext &ctx) {
     std::signal(SIGPIPE, SIG_IGN);
     if (!out.waitForClient(g_stop)) return 128 + g_stop;
 
-    // When each epoch is due, in seconds from the first: host times (a recording), else the
-    // epochs' own times; a time that goes back (a reset) or is missing adds nothing.
     std::vector<logview::EpochRecord> recs;
     log.view->withRecords([&](std::span<const logview::EpochRecord> all) {
         recs.assign(all.begin() + static_cast<std::ptrdiff_t>(log.first),
                     all.begin() + static_cast<std::ptrdiff_t>(log.last) + 1);
     });
-    const bool host = log.view->hasHostTimes();
-    std::vector<double> due(recs.size(), 0);
-    std::int64_t prev = logview::kNoTime;
-    double t = 0;
-    for (std::size_t i = 0; i < recs.size(); ++i) {
-        const std::int64_t now = host ? recs[i].hostMs : recs[i].utcMs;
-        if (now != logview::kNoTime) {
-            if (prev != logview::kNoTime && now > prev) t += (now - prev) / 1000.0;
-            prev = now;
-        }
-        due[i] = t / speed;
-    }
+    const std::vector<double> due = logview::playSchedule(recs, log.view->hasHostTimes(), speed);
     const std::uint64_t end = log.view->epochEnd(log.last);
     const bool loop = args.flag("loop");
     do {

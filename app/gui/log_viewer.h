@@ -37,6 +37,8 @@ public:
     QString path() const { return path_; }
     ui::LogCursor *cursor() { return &cursor_; }
     const logview::LogView *view() const { return view_.get(); }
+    // The open log, for work that may outlive it being closed (play out).
+    std::shared_ptr<const logview::LogView> shared() const { return view_; }
 
     // The status bar's words: what is open, how far indexing is, or what went wrong.
     QString statusText() const;

@@ -40,6 +40,7 @@ using link::SourceSpec;
 class ConnectionBar;
 class ConnectionController;
 class CorrectionsController;
+class LogPlayer;
 class LogViewer;
 
 class MainWindow : public QMainWindow {
@@ -80,6 +81,9 @@ public:
     void openLog(const QString &path);
     void closeLog();
     LogViewer *logViewer() const { return logViewer_; }
+    LogPlayer *logPlayer() const { return logPlayer_; }
+    // File → Play Out: the dialog that sends the log to other software.
+    void openPlayOut();
     // Asks where, then exports the selected range (or the whole log) in the format of the
     // file's suffix.
     void exportLog();
@@ -131,6 +135,8 @@ private:
     QString startLanguage_; // the language the program started in
     QAction *recordAction_ = nullptr;
     LogViewer *logViewer_ = nullptr;
+    LogPlayer *logPlayer_ = nullptr;
+    QAction *playOutAction_ = nullptr;
     QToolBar *timelineBar_ = nullptr;
     QMenu *recentMenu_ = nullptr;
     QAction *exportAction_ = nullptr, *closeLogAction_ = nullptr;

@@ -4,10 +4,12 @@
 // into their models.
 #include "connection_controller.h"
 #include "log_events_view.h"
+#include "log_player.h"
 #include "log_summary_view.h"
 #include "log_viewer.h"
 #include "main_window.h"
 #include "models/receiver_session.h"
+#include "play_out_dialog.h"
 #include "timeline_panel.h"
 #include "timeline_strip.h"
 #include "whole_log_panels.h"
@@ -33,6 +35,7 @@ const char *const kRecentKey = "logview/recent";
 
 void MainWindow::createLogViewer() {
     logViewer_ = new LogViewer(registry_, {stateModel_, satellites_, messages_, console_}, this);
+    logPlayer_ = new LogPlayer(this);
     ui::LogCursor *cursor = logViewer_->cursor();
     auto *panel = new ui::TimelinePanel(cursor, this);
     timelineBar_ = new QToolBar(tr("Timeline"), this);
@@ -110,12 +113,16 @@ void MainWindow::createLogMenu(QMenu *file) {
     exportAction_->setObjectName("exportLogAction");
     exportAction_->setShortcut(QKeySequence(tr("Ctrl+E")));
     exportAction_->setEnabled(false);
+    playOutAction_ = file->addAction(tr("&Play Out..."), this, &MainWindow::openPlayOut);
+    playOutAction_->setObjectName("playOutAction");
+    playOutAction_->setEnabled(false);
     closeLogAction_ = file->addAction(tr("&Close Log"), this, &MainWindow::closeLog);
     closeLogAction_->setObjectName("closeLogAction");
     closeLogAction_->setShortcut(QKeySequence::Close);
     closeLogAction_->setEnabled(false);
     connect(logViewer_, &LogViewer::indexed, this, [this] {
         exportAction_->setEnabled(logViewer_->isOpen() && !logViewer_->cursor()->empty());
+        playOutAction_->setEnabled(exportAction_->isEnabled());
     });
 }
 
@@ -161,6 +168,7 @@ void MainWindow::openLog(const QString &path) {
     if (auto *strip = timelineBar_->findChild<ui::TimelineStrip *>()) strip->setFocus();
     closeLogAction_->setEnabled(true);
     exportAction_->setEnabled(false);
+    playOutAction_->setEnabled(false);
     setWindowTitle(tr("%1 — GNSS Workbench").arg(QFileInfo(path).fileName()));
     if (!logDocksShown_) {
         // The first log of the session brings its docks forward, beside the live ones.
@@ -188,6 +196,7 @@ void MainWindow::closeLog() {
     timelineBar_->hide();
     closeLogAction_->setEnabled(false);
     exportAction_->setEnabled(false);
+    playOutAction_->setEnabled(false);
     setWindowTitle(tr("GNSS Workbench"));
     updateStatus();
 }
@@ -213,6 +222,13 @@ void MainWindow::exportLog() {
     else if (logViewer_->exportTo(*format, path, &why))
         statusBar()->showMessage(tr("Exporting to %1…").arg(path));
     if (!why.isEmpty()) statusBar()->showMessage(tr("Not exported: %1").arg(why), 10000);
+}
+
+void MainWindow::openPlayOut() {
+    auto *dialog = findChild<PlayOutDialog *>();
+    if (!dialog) dialog = new PlayOutDialog(logViewer_, logPlayer_, this);
+    dialog->show();
+    dialog->raise();
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent *e) {

@@ -6,6 +6,7 @@
 #include "app_transports.h"
 #include "dialects.h"
 #include "log_events_view.h"
+#include "log_player.h"
 #include "log_summary_view.h"
 #include "log_viewer.h"
 #include "logview_files.h"
@@ -14,6 +15,7 @@
 #include "models/message_stats_model.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
+#include "play_out_dialog.h"
 #include "scenario_log.h"
 #include "startup_options.h"
 #include "timeline_panel.h"
@@ -31,9 +33,15 @@
 #include <QStatusBar>
 #include <QTableView>
 #include <QTableWidget>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QToolBar>
 #include <QTranslator>
 #include <random>
+
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
 
 using namespace gnss;
 using gnss::app::LogViewer;
@@ -310,6 +318,82 @@ private slots:
         QVERIFY(!w->logViewer()->exportTo(LogViewer::Export::Gpx,
                                           dir_.filePath("no/such/folder/x.gpx"), &why) ||
                 (done.wait(20000) && !done.last().at(0).toBool()));
+    }
+
+    // Play Out: the range's bytes, exactly, to a TCP client and to a pseudo-terminal's reader;
+    // a malformed request is refused before anything is opened.
+    void playOutSendsTheRangeAsInTheFile() {
+        auto s = settings();
+        auto w = window(s.get());
+        QVERIFY(openScenario(*w, scenario_));
+        w->logViewer()->cursor()->setRange(100, 199);
+        const logview::LogView *view = w->logViewer()->view();
+        const auto from = view->epoch(100)->offset, to = view->epoch(200)->offset;
+        const std::string_view expectedView = view->bytes(from, to - from);
+        const QByteArray expected(expectedView.data(), qsizetype(expectedView.size()));
+        app::LogPlayer *player = w->logPlayer();
+        QSignalSpy finished(player, &app::LogPlayer::finished);
+
+        app::LogPlayer::Target tcp;
+        tcp.kind = app::LogPlayer::Target::Kind::Tcp;
+        {
+            QTcpServer probe; // a free port
+            QVERIFY(probe.listen(QHostAddress::LocalHost, 0));
+            tcp.tcpPort = probe.serverPort();
+        }
+        QString why;
+        QVERIFY2(player->start(w->logViewer()->shared(), 100, 199, 1000, false, tcp, &why),
+                 qPrintable(why));
+        QVERIFY(player->statusText().contains("waiting for a client"));
+        QTcpSocket client;
+        client.connectToHost(QHostAddress::LocalHost, tcp.tcpPort);
+        QVERIFY(client.waitForConnected(5000));
+        QByteArray got;
+        QTRY_VERIFY_WITH_TIMEOUT((got += client.readAll(), got.size() >= expected.size()) ||
+                                         (finished.size() > 0 && client.bytesAvailable() == 0 &&
+                                          got.size() >= expected.size()),
+                                 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 5000);
+        got += client.readAll();
+        QCOMPARE(got, expected);
+
+        app::LogPlayer::Target pty; // the default: a new pseudo-terminal
+        QVERIFY2(player->start(w->logViewer()->shared(), 100, 199, 200, false, pty, &why),
+                 qPrintable(why));
+        const QString device = player->ptyPath();
+        QVERIFY(device.startsWith("/dev/pts/"));
+        const int fd =
+                ::open(QFile::encodeName(device).constData(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
+        QVERIFY(fd >= 0);
+        termios t{};
+        ::tcgetattr(fd, &t);
+        ::cfmakeraw(&t);
+        ::tcsetattr(fd, TCSANOW, &t);
+        QByteArray viaPty;
+        QTRY_VERIFY_WITH_TIMEOUT(([&] {
+                                     char buf[4096];
+                                     for (ssize_t n; (n = ::read(fd, buf, sizeof buf)) > 0;)
+                                         viaPty.append(buf, n);
+                                     return viaPty.size() >= expected.size();
+                                 })(),
+                                 10000);
+        ::close(fd);
+        QCOMPARE(viaPty, expected);
+        QTRY_VERIFY(!player->running());
+        QVERIFY(player->statusText().contains("finished"));
+        QCOMPARE(player->bytesDropped(), quint64(0));
+
+        app::LogPlayer::Target serial;
+        serial.kind = app::LogPlayer::Target::Kind::Serial;
+        QVERIFY(!player->start(w->logViewer()->shared(), 0, 10, 1, false, serial, &why));
+        QVERIFY(why.contains("serial port"));
+        QVERIFY(!player->start(w->logViewer()->shared(), 0, 10, 0, false, pty, &why));
+        QVERIFY(why.contains("speed"));
+        QVERIFY(!player->running());
+        // The dialog is there, with the range.
+        w->findChild<QAction *>("playOutAction")->trigger();
+        auto *dialog = w->findChild<app::PlayOutDialog *>();
+        QVERIFY(dialog && dialog->isVisible());
     }
 
     // A logger still writing: with Follow on, the timeline grows and the cursor stays at the end.

@@ -171,7 +171,7 @@ void LogEventsView::reload() {
         count_->setText(tr("No events: the fix never changed, and there were no gaps, resets or "
                            "checksum errors"));
     else
-        count_->setText(tr("%n event(s); click one to go there", nullptr, int(events_.size())));
+        count_->setText(tr("Events: %1; click one to go there").arg(events_.size()));
 }
 
 } // namespace gnss::ui
