@@ -49,3 +49,13 @@ shot geostar --sim geostar --show-dock info
 shot nemerix --sim nemerix --show-dock satellites
 shot nmea --sim nmea --show-dock charts
 shot settings --sim nvs --show-dock settings
+
+# The log viewer, on a log the simulator writes: 13 minutes of an NV08C-RTK going from no fix to
+# RTK fixed, with a 40 s silence and a few wrong checksums (gnss-sim at 100x for 8 s).
+sim=$(dirname "$app")/../sim/gnss-sim
+[[ -x $sim ]] || sim=$(command -v gnss-sim || true)
+if [[ -n $sim ]]; then
+    (sleep 9 | timeout 8 "$sim" --dialect nvs --stdout --speed 100 --internal-base \
+        --faults silence=40@200,badcs=0.0005 >"$tmp/drive.nmea") || true
+    shot logview "$tmp/drive.nmea" --at 10:04:45
+fi

@@ -3590,7 +3590,7 @@
 <context>
     <name>StartupOptions</name>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="+15"/>
+        <location filename="../app/gui/startup_options.cpp" line="+16"/>
         <source>Configure and monitor GNSS receivers.</source>
         <translation>Настройка и мониторинг приёмников ГНСС.</translation>
     </message>
@@ -3625,7 +3625,12 @@
         <translation>Открыть журнал в просмотрщике (шкала времени, все панели показывают момент под курсором); то же, что указать FILE без ключа.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
+        <source>With a log: start the viewer at this time of day (10:42:00), UTC time (2024-03-15T10:42:00Z) or epoch (#1200).</source>
+        <translation>С журналом: открыть просмотр на этом времени суток (10:42:00), времени UTC (2024-03-15T10:42:00Z) или эпохе (#1200).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>A log to open in the viewer.</source>
         <translation>Журнал, который открыть в просмотрщике.</translation>
     </message>
@@ -3645,7 +3650,17 @@
         <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info.</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
+        <source>--at needs a log to open</source>
+        <translation>--at указывается вместе с журналом</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid --at: %1 (write 10:42:00, 2024-03-15T10:42:00Z or #1200)</source>
+        <translation>Неверное значение --at: %1 (напишите 10:42:00, 2024-03-15T10:42:00Z или #1200)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>No such log: %1</source>
         <translation>Нет такого журнала: %1</translation>
     </message>
@@ -3660,7 +3675,7 @@
         <translation>Укажите не более одного источника: --port, --tcp, --gpsd, --replay, --sim или журнал.</translation>
     </message>
     <message>
-        <location line="-72"/>
+        <location line="-82"/>
         <source>Save an image of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
@@ -3675,7 +3690,7 @@
         <translation>Лишний аргумент «%1»</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+32"/>
         <source>Invalid baud rate: %1</source>
         <translation>Неверная скорость порта: %1</translation>
     </message>
@@ -3963,7 +3978,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::LogPlayer</name>
     <message>
-        <location filename="../app/gui/log_player.cpp" line="+42"/>
+        <location filename="../app/gui/log_player.cpp" line="+44"/>
         <source>no log is open</source>
         <translation>журнал не открыт</translation>
     </message>
@@ -3993,7 +4008,7 @@ Serial number: %3</source>
         <translation>не удалось создать псевдотерминал: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>cannot listen on 127.0.0.1:%1: %2</source>
         <translation>не удалось открыть порт 127.0.0.1:%1: %2</translation>
     </message>
@@ -4003,7 +4018,7 @@ Serial number: %3</source>
         <translation>не удалось открыть %1: %2</translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+136"/>
         <source>Not playing</source>
         <translation>Не воспроизводится</translation>
     </message>
@@ -4013,7 +4028,7 @@ Serial number: %3</source>
         <translation>Псевдотерминал %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>127.0.0.1:%1, waiting for a client</source>
         <translation>127.0.0.1:%1, ожидание клиента</translation>
     </message>
@@ -4038,7 +4053,7 @@ Serial number: %3</source>
         <translation>%1: готово, эпох %2 из %3, отправлено %4 кБ</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>, %1 kB dropped (the reader did not keep up)</source>
         <translation>, потеряно %1 кБ (читающая сторона не успевала)</translation>
     </message>
@@ -4046,7 +4061,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::LogViewer</name>
     <message>
-        <location filename="../app/gui/log_viewer.cpp" line="+123"/>
+        <location filename="../app/gui/log_viewer.cpp" line="+125"/>
         <source>Log %1: unpacking, %2 %</source>
         <translation>Журнал %1: распаковка, %2 %</translation>
     </message>
@@ -4087,7 +4102,7 @@ Serial number: %3</source>
         <translation> · слежение за файлом</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+90"/>
         <source>not a sentence</source>
         <translation>не сообщение NMEA</translation>
     </message>
@@ -4652,7 +4667,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+39"/>
+        <location line="+41"/>
         <source>Start</source>
         <translation>Начать</translation>
     </message>
@@ -6445,8 +6460,8 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+4"/>
-        <source>%1 sentences with a wrong checksum in %2 epochs</source>
-        <translation>сообщений с неверной контрольной суммой: %1 в %2 эпохах</translation>
+        <source>checksum errors: %1, over epochs: %2</source>
+        <translation>ошибок контрольной суммы: %1, в эпохах: %2</translation>
     </message>
     <message>
         <location line="+7"/>

@@ -3,6 +3,7 @@
 #include "core/dialect_registry.h"
 #include "core/json_writer.h"
 #include "core/sentence.h"
+#include "log_time.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -67,10 +68,11 @@ template <class Work, class Done> void LogViewer::runAsync(Work work, Done done)
     thread->start();
 }
 
-void LogViewer::open(const QString &path) {
+void LogViewer::open(const QString &path, const QString &at) {
     close();
     ++generation_;
     path_ = path;
+    startAt_ = at;
     view_ = std::make_shared<logview::LogView>(registry_);
     firstShown_ = readyNoted_ = havePublished_ = false;
     if (models_.state) models_.state->clear();
@@ -153,7 +155,10 @@ void LogViewer::poll() {
         if (p.phase == Phase::Ready && !readyNoted_) {
             readyNoted_ = true;
             cursor_.notifyIndexChanged();
-            if (!cursor_.empty()) cursor_.seek(0, true);
+            std::optional<std::size_t> start;
+            if (const auto spec = logview::parseTimeSpec(startAt_.toStdString()))
+                start = view_->epochAt(*spec);
+            if (!cursor_.empty()) cursor_.seek(start.value_or(0), true);
             publishMessages();
             emit indexed();
         }

@@ -29,7 +29,8 @@ public:
 
     // Opens a log (a log open before is closed); indexing starts at once, the first epoch is
     // shown as soon as it is read.
-    void open(const QString &path);
+    // `at`: a time or epoch ("10:42:00", "#1200") the cursor goes to once indexed.
+    void open(const QString &path, const QString &at = {});
     void close();
     bool isOpen() const { return view_ != nullptr; }
     // Indexed, and the cursor and views know it.
@@ -88,7 +89,7 @@ private:
     ui::SessionModels models_;
     std::shared_ptr<logview::LogView> view_; // shared with the workers that read it
     ui::LogCursor cursor_;
-    QString path_;
+    QString path_, startAt_;
     QTimer pollTimer_, playTimer_, followTimer_;
     bool firstShown_ = false, readyNoted_ = false;
     std::size_t lastPublished_ = 0;

@@ -76,7 +76,7 @@ int main(int argc, char **argv) {
         return 2;
     }
     if (!options->open.isEmpty())
-        window.openLog(options->open);
+        window.openLog(options->open, options->at);
     else
         window.connectAtStart(start);
 

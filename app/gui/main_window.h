@@ -78,7 +78,8 @@ public:
 
     // The offline log viewer: opens a log (the live link is closed), shows the timeline and the
     // log's docks; every dock follows the timeline's cursor.
-    void openLog(const QString &path);
+    // `at`: where the cursor goes once indexed ("10:42:00", "#1200"; empty: the start).
+    void openLog(const QString &path, const QString &at = {});
     void closeLog();
     LogViewer *logViewer() const { return logViewer_; }
     LogPlayer *logPlayer() const { return logPlayer_; }

@@ -158,10 +158,10 @@ void MainWindow::updateRecentMenu() {
     }
 }
 
-void MainWindow::openLog(const QString &path) {
+void MainWindow::openLog(const QString &path, const QString &at) {
     controller_->disconnectFromSource();
     session_->reset();
-    logViewer_->open(path);
+    logViewer_->open(path, at);
     rememberLog(path);
     timelineBar_->show();
     // The transport's keys (Space, arrows) act at once, not in the source box's text.

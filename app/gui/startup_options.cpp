@@ -1,6 +1,7 @@
 #include "startup_options.h"
 
 #include "link/gpsd_transport.h"
+#include "log_time.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -36,6 +37,13 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                                         "Open a log in the offline viewer (a timeline, every dock "
                                         "at its cursor); the same as giving FILE alone."),
             "file");
+    const QCommandLineOption at(
+            "at",
+            QCoreApplication::translate("StartupOptions",
+                                        "With a log: start the viewer at this time of day "
+                                        "(10:42:00), UTC time (2024-03-15T10:42:00Z) or epoch "
+                                        "(#1200)."),
+            "time");
     p.addPositionalArgument(
             "file", QCoreApplication::translate("StartupOptions", "A log to open in the viewer."),
             "[file]");
@@ -65,7 +73,7 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             "quit-after",
             QCoreApplication::translate("StartupOptions", "Quit after this many seconds."),
             "seconds");
-    p.addOptions({port, baud, tcp, replay, openLog, sim, gpsd, showDock, shot, quit});
+    p.addOptions({port, baud, tcp, replay, openLog, at, sim, gpsd, showDock, shot, quit});
     if (!p.parse(arguments)) {
         error = p.errorText();
         return std::nullopt;
@@ -81,6 +89,16 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
 
     StartupOptions o;
     o.open = files.isEmpty() ? p.value(openLog) : files.constFirst();
+    o.at = p.value(at);
+    if (!o.at.isEmpty() && (o.open.isEmpty() || !logview::parseTimeSpec(o.at.toStdString()))) {
+        error = o.open.isEmpty()
+                        ? QCoreApplication::translate("StartupOptions", "--at needs a log to open")
+                        : QCoreApplication::translate("StartupOptions",
+                                                      "Invalid --at: %1 (write 10:42:00, "
+                                                      "2024-03-15T10:42:00Z or #1200)")
+                                  .arg(o.at);
+        return std::nullopt;
+    }
     if (!o.open.isEmpty() && !QFileInfo(o.open).isFile()) {
         error = QCoreApplication::translate("StartupOptions", "No such log: %1").arg(o.open);
         return std::nullopt;

@@ -12,6 +12,7 @@ struct StartupOptions {
     QString tcp;          // --tcp HOST:PORT
     QString replay;       // --replay FILE
     QString open;         // FILE or --open FILE: a log in the offline viewer
+    QString at;           // --at TIME: where the viewer's cursor starts (10:42:00, #1200)
     QString sim;          // --sim nvs|geostar|nemerix|nmea
     QString gpsd;         // --gpsd HOST[:PORT][/DEVICE] (or gpsd://...)
     QString showDock;     // --show-dock NAME: show and raise this dock (settings, console, ...)

@@ -481,6 +481,16 @@ private slots:
         o = app::parseStartupOptions({"gnss-workbench", "--open", log}, simulated, error);
         QVERIFY(o);
         QCOMPARE(o->open, log);
+        o = app::parseStartupOptions({"gnss-workbench", log, "--at", "10:02:00"}, simulated, error);
+        QVERIFY(o);
+        QCOMPARE(o->at, QString("10:02:00"));
+        QVERIFY(!app::parseStartupOptions({"gnss-workbench", log, "--at", "soon"}, simulated,
+                                          error));
+        QVERIFY(!app::parseStartupOptions({"gnss-workbench", "--at", "#5"}, simulated, error));
+        w->openLog(log, "10:02:00");
+        QTRY_VERIFY(w->logViewer()->ready());
+        QCOMPARE(w->logViewer()->cursor()->current(), std::size_t(120));
+        expectStateAt(*w, 120);
         QVERIFY(!app::parseStartupOptions({"gnss-workbench", "x.nmea"}, simulated, error));
         QCOMPARE(error, QString("No such log: x.nmea"));
         QVERIFY(!app::parseStartupOptions({"gnss-workbench", "a.nmea", "b.nmea"}, simulated,

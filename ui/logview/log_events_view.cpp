@@ -117,9 +117,7 @@ QString LogEventsView::describe(const logview::LogEvent &e) const {
         break;
     case logview::EventKind::ChecksumErrors:
         if (numbers.size() >= 2)
-            return tr("%1 sentences with a wrong checksum in %2 epochs")
-                    .arg(numbers[0])
-                    .arg(numbers[1]);
+            return tr("checksum errors: %1, over epochs: %2").arg(numbers[0]).arg(numbers[1]);
         break;
     case logview::EventKind::DialectChange:
         if (cur)
