@@ -21,7 +21,7 @@ preset=${GNSS_PRESET:-dev}
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  qt6-base-dev qt6-base-dev-tools libqt6serialport6-dev libqt6charts6-dev
+  qt6-base-dev qt6-base-dev-tools qt6-serialport-dev qt6-charts-dev
   # Qt6ChartsConfig.cmake needs Qt6OpenGL/OpenGLWidgets; Debian's charts -dev does not pull them.
   libqt6opengl6-dev
   # lupdate/lrelease (translations) and Qt's own Russian strings.
