@@ -105,11 +105,11 @@ std::optional<MessageTypeStats> CorrectionsMonitor::messageType(unsigned number,
     return statsOf(number, it->second, nowMs);
 }
 
-void CorrectionsMonitor::setRoverPosition(const rtcm::Geodetic &rover) {
+void CorrectionsMonitor::setRoverPosition(const wgs84::Geodetic &rover) {
     if (!std::isfinite(rover.latDeg) || !std::isfinite(rover.lonDeg) ||
         !std::isfinite(rover.height))
         return rover_.reset();
-    rover_ = rtcm::geodeticToEcef(rover);
+    rover_ = wgs84::toEcef(rover);
 }
 
 std::optional<double> CorrectionsMonitor::baselineMetres() const {

@@ -12,6 +12,7 @@
 //     of it for a chart (sampleAge() once a second keeps the last 10 minutes).
 //
 // Plain C++ on gnss_rtcm (no Qt): whoever owns it decides when to sample and repaint.
+#include "core/wgs84.h"
 #include "rtcm/rtcm_stream_decoder.h"
 
 #include <array>
@@ -40,8 +41,8 @@ struct MessageTypeStats {
 struct BasePosition {
     unsigned station = 0;
     unsigned message = 0; // 1005 or 1006
-    rtcm::Ecef ecef;
-    std::optional<rtcm::Geodetic> geodetic;
+    wgs84::Ecef ecef;
+    std::optional<wgs84::Geodetic> geodetic;
     std::optional<double> antennaHeight; // 1006
     std::int64_t receivedMs = 0;
 };
@@ -72,7 +73,7 @@ public:
     const rtcm::RtcmFramerStats &framerStats() const { return decoder_.framerStats(); }
 
     const std::optional<BasePosition> &basePosition() const { return base_; }
-    void setRoverPosition(const rtcm::Geodetic &rover);
+    void setRoverPosition(const wgs84::Geodetic &rover);
     void clearRoverPosition() { rover_.reset(); }
     // Straight-line distance from the rover to the base's antenna reference point, metres.
     std::optional<double> baselineMetres() const;
@@ -108,7 +109,7 @@ private:
     std::uint64_t messages_ = 0;
     std::optional<std::int64_t> lastObservationMs_, lastMessageMs_;
     std::optional<BasePosition> base_;
-    std::optional<rtcm::Ecef> rover_;
+    std::optional<wgs84::Ecef> rover_;
     std::deque<AgeSample> history_;
 };
 

@@ -1,5 +1,6 @@
 #include "range_stats.h"
 
+#include "core/wgs84.h"
 #include "log_time.h"
 
 #include <algorithm>
@@ -8,8 +9,6 @@
 
 namespace gnss::logview {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double percentile(std::vector<double> &v, double p) {
     if (v.empty()) return 0;
@@ -27,11 +26,9 @@ bool isFix(FixType f) {
 } // namespace
 
 LocalFrame::LocalFrame(double lat0, double lon0) : lat0_(lat0), lon0_(lon0) {
-    const double a = 6378137.0, e2 = 6.69437999014e-3; // WGS-84
-    const double sinPhi = std::sin(lat0 * kPi / 180);
-    const double w = std::sqrt(1 - e2 * sinPhi * sinPhi);
-    northPerDeg_ = a * (1 - e2) / (w * w * w) * kPi / 180;        // meridian radius
-    eastPerDeg_ = a / w * std::cos(lat0 * kPi / 180) * kPi / 180; // parallel radius
+    const wgs84::MetresPerDegree per = wgs84::metresPerDegree(lat0);
+    northPerDeg_ = per.north;
+    eastPerDeg_ = per.east;
 }
 
 std::pair<double, double> LocalFrame::toEastNorth(double lat, double lon) const {

@@ -1,12 +1,14 @@
 #include "mountpoint_distance.h"
 
+#include "core/wgs84.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace gnss::ntrip {
 
 double greatCircleMetres(double lat1Deg, double lon1Deg, double lat2Deg, double lon2Deg) {
-    constexpr double kDeg = 3.14159265358979323846 / 180.0;
+    constexpr double kDeg = wgs84::kDegree;
     const double phi1 = lat1Deg * kDeg, phi2 = lat2Deg * kDeg;
     const double dPhi = phi2 - phi1, dLambda = (lon2Deg - lon1Deg) * kDeg;
     const double a = std::sin(dPhi / 2) * std::sin(dPhi / 2) + std::cos(phi1) * std::cos(phi2) *

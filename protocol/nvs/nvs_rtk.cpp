@@ -11,6 +11,7 @@
 #include "core/field_parse.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace gnss::nvs {
 
@@ -51,7 +52,7 @@ std::string validateBaseBlh(std::string_view value) {
     double b, l, h;
     if (parts.size() == 3 && parseReal(parts[0], b) && parseReal(parts[1], l) &&
         parseReal(parts[2], h)) {
-        constexpr double kPi = 3.14159265358979323846;
+        constexpr double kPi = std::numbers::pi;
         if (std::fabs(b) > kPi / 2)
             return "rtk.BASEBLH: latitude B " + std::string(parts[0]) +
                    " rad is out of range; accepted: -1.5708..1.5708 rad";
@@ -134,7 +135,7 @@ bool decodeRtk(const Sentence &s, DecodeContext &ctx) {
         if (r.ok() && m.params.empty())
             r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "PNVGRTK names no parameter")));
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Rtk::writeJson(JsonWriter &w) const {

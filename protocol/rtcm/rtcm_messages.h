@@ -3,7 +3,7 @@
 // and an error text instead of exceptions. decodeMessage() accepts any payload (empty, truncated,
 // random) and always returns; a message it cannot read whole keeps its number and length, the
 // station id when it got that far, and says why in `error`.
-#include "geodetic.h"
+#include "core/wgs84.h"
 
 #include <array>
 #include <cstddef>
@@ -23,17 +23,17 @@ std::string_view systemName(System s);
 
 // 1005 (stationary RTK reference station ARP) and 1006 (the same with antenna height).
 struct StationArp {
-    unsigned station = 0;                  // DF003
-    unsigned itrfYear = 0;                 // DF021, realisation year field (0..63)
-    bool gps = false;                      // DF022
-    bool glonass = false;                  // DF023
-    bool galileo = false;                  // DF024
-    bool nonPhysical = false;              // DF141: 1 = non-physical (computed) station
-    bool singleReceiverOscillator = false; // DF142
-    unsigned quarterCycle = 0;             // DF364
-    double x = 0, y = 0, z = 0;            // DF025-027, antenna reference point ECEF, metres
-    std::optional<double> antennaHeight;   // DF028, metres (1006 only)
-    std::optional<Geodetic> position;      // the ARP on WGS-84 (none for a point near the centre)
+    unsigned station = 0;                    // DF003
+    unsigned itrfYear = 0;                   // DF021, realisation year field (0..63)
+    bool gps = false;                        // DF022
+    bool glonass = false;                    // DF023
+    bool galileo = false;                    // DF024
+    bool nonPhysical = false;                // DF141: 1 = non-physical (computed) station
+    bool singleReceiverOscillator = false;   // DF142
+    unsigned quarterCycle = 0;               // DF364
+    double x = 0, y = 0, z = 0;              // DF025-027, antenna reference point ECEF, metres
+    std::optional<double> antennaHeight;     // DF028, metres (1006 only)
+    std::optional<wgs84::Geodetic> position; // the ARP on WGS-84 (none for a point near the centre)
 };
 
 // 1007 (antenna descriptor), 1008 (+ antenna serial number), 1033 (+ receiver).

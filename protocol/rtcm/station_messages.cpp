@@ -41,7 +41,7 @@ void decodeStationArp(BitReader &r, RtcmMessage &m) {
         m.error = "truncated";
         return;
     }
-    a.position = ecefToGeodetic({a.x, a.y, a.z});
+    a.position = wgs84::toGeodetic({a.x, a.y, a.z});
     m.body = std::move(a);
 }
 

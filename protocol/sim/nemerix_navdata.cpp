@@ -5,12 +5,13 @@
 #include "nemerix/nemerix_ephemeris.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace gnss::sim::nemerixdata {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 constexpr double kEarthRate = 7.2921151467e-5; // rad/s (IS-GPS-200)
 
 const SkyModel::Orbit *gpsOrbit(const SkyModel &sky, int prn) {

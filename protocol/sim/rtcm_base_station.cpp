@@ -1,4 +1,5 @@
 #include "rtcm_base_station.h"
+#include "core/wgs84.h"
 
 #include "rtcm/bit_writer.h"
 #include "rtcm/rtcm_encoder.h"
@@ -12,7 +13,6 @@ namespace gnss::sim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kLightMsPerMetre = 1000.0 / 299792458.0; // ms of light travel per metre
 constexpr double kStartSecondOfDay = 10 * 3600.0;         // 10:00:00 UTC
 constexpr double kLeapSeconds = 18;                       // GPS − UTC in 2024
@@ -50,7 +50,10 @@ std::uint32_t RtcmBaseStation::glonassTodMs(double t) {
 RtcmBaseStation::RtcmBaseStation(const BaseStationConfig &config)
     : config_(config),
       model_(config.seed, Observer{config.latDeg, config.lonDeg, config.height, 0}) {
-    geodeticToEcef(config.latDeg, config.lonDeg, config.height, ecef_);
+    const wgs84::Ecef e = wgs84::toEcef({config.latDeg, config.lonDeg, config.height});
+    ecef_[0] = e.x;
+    ecef_[1] = e.y;
+    ecef_[2] = e.z;
 }
 
 void RtcmBaseStation::advance(double seconds) {
@@ -105,7 +108,7 @@ std::string RtcmBaseStation::msm4(Constellation system, double t, bool moreFollo
             if (o.system == system && o.prn == s.prn) radius = o.radius;
         if (radius <= baseRadius) continue;
         // Slant range to a satellite at `radius` seen at elevation el from `baseRadius`.
-        const double el = s.elevation * kPi / 180.0;
+        const double el = wgs84::radians(s.elevation);
         const double sinEl = std::sin(el);
         const double range =
                 std::sqrt(radius * radius - baseRadius * baseRadius * (1 - sinEl * sinEl)) -

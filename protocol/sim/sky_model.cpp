@@ -1,19 +1,20 @@
 #include "sky_model.h"
 
+#include "core/wgs84.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace gnss::sim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = wgs84::kDegree;
 constexpr double kGm = 3.986004418e14;         // m^3/s^2
 constexpr double kEarthRate = 7.2921151467e-5; // rad/s
-constexpr double kWgsA = 6378137.0;
-constexpr double kWgsE2 = 6.69437999014e-3;
 constexpr double kGeoRadius = 42164172.0;
 
 // Real GLONASS slot → frequency channel plan (antipodal slots share a channel).
@@ -45,12 +46,10 @@ constexpr std::array<Geo, 6> kSbas = {
         {{120, -15.5}, {123, 31.5}, {125, -16.0}, {136, 5.0}, {140, 95.0}, {141, 167.0}}};
 
 void ecefOfObserver(const Observer &o, double &x, double &y, double &z) {
-    const double phi = o.latDeg * kDeg, lam = o.lonDeg * kDeg;
-    const double h = o.altMsl + o.geoidSep;
-    const double n = kWgsA / std::sqrt(1 - kWgsE2 * std::sin(phi) * std::sin(phi));
-    x = (n + h) * std::cos(phi) * std::cos(lam);
-    y = (n + h) * std::cos(phi) * std::sin(lam);
-    z = (n * (1 - kWgsE2) + h) * std::sin(phi);
+    const wgs84::Ecef e = wgs84::toEcef({o.latDeg, o.lonDeg, o.altMsl + o.geoidSep});
+    x = e.x;
+    y = e.y;
+    z = e.z;
 }
 
 double gaussian(std::mt19937 &rng) {
@@ -250,32 +249,19 @@ SkySnapshot SkyModel::update(double time, const UseMask &mask, FixKind fix, doub
     snap.velEast = snap.sigmaVel * gaussian(rng_);
     snap.velUp = snap.sigmaVel * 1.5 * gaussian(rng_);
 
-    const double phi = observer_.latDeg * kDeg;
-    const double w = 1 - kWgsE2 * std::sin(phi) * std::sin(phi);
-    const double m = kWgsA * (1 - kWgsE2) / std::pow(w, 1.5);
-    const double n = kWgsA / std::sqrt(w);
-    snap.lat = observer_.latDeg + snap.errNorth / m / kDeg;
-    snap.lon = observer_.lonDeg + snap.errEast / (n * std::cos(phi)) / kDeg;
+    const wgs84::MetresPerDegree per = wgs84::metresPerDegree(observer_.latDeg);
+    snap.lat = observer_.latDeg + snap.errNorth / per.north;
+    snap.lon = observer_.lonDeg + snap.errEast / per.east;
     snap.altMsl = observer_.altMsl + snap.errUp;
     snap.geoidSep = observer_.geoidSep;
     return snap;
 }
 
-void geodeticToEcef(double latDeg, double lonDeg, double height, double xyz[3]) {
-    Observer o;
-    o.latDeg = latDeg;
-    o.lonDeg = lonDeg;
-    o.altMsl = height;
-    o.geoidSep = 0;
-    ecefOfObserver(o, xyz[0], xyz[1], xyz[2]);
-}
-
 void offsetGeodetic(double &latDeg, double &lonDeg, double &height, double north, double east,
                     double up) {
-    const double phi = latDeg * kDeg;
-    const double w = 1 - kWgsE2 * std::sin(phi) * std::sin(phi);
-    latDeg += north / (kWgsA * (1 - kWgsE2) / std::pow(w, 1.5)) / kDeg;
-    lonDeg += east / (kWgsA / std::sqrt(w) * std::cos(phi)) / kDeg;
+    const wgs84::MetresPerDegree per = wgs84::metresPerDegree(latDeg);
+    latDeg += north / per.north;
+    lonDeg += east / per.east;
     height += up;
 }
 

@@ -108,8 +108,6 @@ private:
     double errN_ = 0, errE_ = 0, errU_ = 0, lastTime_ = -1;
 };
 
-// WGS 84 geodetic (degrees, ellipsoidal height in metres) → ECEF metres.
-void geodeticToEcef(double latDeg, double lonDeg, double height, double xyz[3]);
 // Geodetic position `north`/`east`/`up` metres away from (latDeg, lonDeg, height).
 void offsetGeodetic(double &latDeg, double &lonDeg, double &height, double north, double east,
                     double up);

@@ -1,5 +1,7 @@
 #include "standard_output.h"
 
+#include "core/wgs84.h"
+
 #include <cmath>
 
 namespace gnss::sim {
@@ -78,7 +80,7 @@ double speedKnots(const SkySnapshot &snap) {
 }
 
 double courseDegrees(const SkySnapshot &snap) {
-    double c = std::atan2(snap.velEast, snap.velNorth) * 180.0 / 3.14159265358979323846;
+    double c = wgs84::degrees(std::atan2(snap.velEast, snap.velNorth));
     return c < 0 ? c + 360.0 : c;
 }
 

@@ -149,9 +149,9 @@ private slots:
         // 33.5 S 70.25 W 520 m, as XYZ; BLH filled from it.
         xyz->setValue("1799238.6454,-5011294.7024,-3500621.2953");
         blh->convertButton()->click();
-        const Geodetic g = blh->geodetic();
-        QVERIFY(std::fabs(degrees(g.lat) + 33.5) < 1e-8);
-        QVERIFY(std::fabs(degrees(g.lon) + 70.25) < 1e-8);
+        const wgs84::Geodetic g = blh->geodetic();
+        QVERIFY(std::fabs(g.latDeg + 33.5) < 1e-8);
+        QVERIFY(std::fabs(g.lonDeg + 70.25) < 1e-8);
         QVERIFY(std::fabs(g.height - 520.0) < 1e-3);
         QVERIFY(view.isEdited("rtk.BASEBLH"));
         // Southern and western hemispheres are letters, not minus signs.

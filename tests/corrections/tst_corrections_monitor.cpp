@@ -92,7 +92,7 @@ private slots:
         QVERIFY(!m.basePosition());
         rtcm::StationArp arp;
         arp.station = 42;
-        const rtcm::Ecef ecef = rtcm::geodeticToEcef({55.7512, 37.6184, 166.6});
+        const wgs84::Ecef ecef = wgs84::toEcef({55.7512, 37.6184, 166.6});
         arp.x = ecef.x;
         arp.y = ecef.y;
         arp.z = ecef.z;

@@ -1,17 +1,12 @@
 #include "position_scatter.h"
 
+#include "core/wgs84.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace gnss::ui {
-
-namespace {
-constexpr double kA = 6378137.0;           // WGS-84 semi-major axis
-constexpr double kF = 1.0 / 298.257223563; // flattening
-constexpr double kE2 = kF * (2.0 - kF);    // first eccentricity squared
-constexpr double kDeg = std::numbers::pi / 180.0;
-} // namespace
 
 void PositionScatter::setCapacity(std::size_t n) {
     capacity_ = std::max<std::size_t>(1, n);
@@ -48,15 +43,12 @@ const PositionScatter::Stats &PositionScatter::stats() const {
 
 void PositionScatter::toEastNorth(double lat0, double lon0, double lat, double lon, double &east,
                                   double &north) {
-    const double s = std::sin(lat0 * kDeg);
-    const double w = std::sqrt(1.0 - kE2 * s * s);
-    const double primeVertical = kA / w;                    // N
-    const double meridian = kA * (1.0 - kE2) / (w * w * w); // M
+    const wgs84::MetresPerDegree per = wgs84::metresPerDegree(lat0);
     double dLon = lon - lon0;
     if (dLon > 180.0) dLon -= 360.0;
     if (dLon < -180.0) dLon += 360.0;
-    east = dLon * kDeg * primeVertical * std::cos(lat0 * kDeg);
-    north = (lat - lat0) * kDeg * meridian;
+    east = dLon * per.east;
+    north = (lat - lat0) * per.north;
 }
 
 double PositionScatter::percentile(std::vector<double> v, double p) {

@@ -224,6 +224,14 @@ double fromNmea(const QString &s) {
     return deg + (v - deg * 100) / 60;
 }
 
+// BASEBLH's text: latitude and longitude in radians, height in metres.
+QString blhText(const wgs84::Geodetic &g) {
+    return QString("%1,%2,%3")
+            .arg(wgs84::radians(g.latDeg), 0, 'f', 11)
+            .arg(wgs84::radians(g.lonDeg), 0, 'f', 11)
+            .arg(g.height, 0, 'f', 4);
+}
+
 } // namespace
 
 SettingEditor::SettingEditor(const SettingDef &def, const config::SchemaTexts &texts,
@@ -315,11 +323,7 @@ QString CoordinateEditor::value() const {
                 .arg(a_->value(), 0, 'f', 4)
                 .arg(b_->value(), 0, 'f', 4)
                 .arg(c_->value(), 0, 'f', 4);
-    const config::Geodetic g = geodetic();
-    return QString("%1,%2,%3")
-            .arg(g.lat, 0, 'f', 11)
-            .arg(g.lon, 0, 'f', 11)
-            .arg(g.height, 0, 'f', 4);
+    return blhText(geodetic());
 }
 
 void CoordinateEditor::setValue(const QString &value) {
@@ -330,38 +334,36 @@ void CoordinateEditor::setValue(const QString &value) {
         b_->setValue(p[1].toDouble());
         c_->setValue(p[2].toDouble());
     } else if (kind_ == Kind::Geodetic && (p.size() == 3 || p.size() == 5)) {
-        config::Geodetic g;
+        wgs84::Geodetic g;
         if (p.size() == 3) { // radians, radians, metres
-            g = {p[0].toDouble(), p[1].toDouble(), p[2].toDouble()};
+            g = {wgs84::degrees(p[0].toDouble()), wgs84::degrees(p[1].toDouble()), p[2].toDouble()};
         } else { // ddmm.mmmm,N,dddmm.mmmm,E,H
-            const double lat = fromNmea(p[0]) * (p[1].trimmed() == "S" ? -1 : 1);
-            const double lon = fromNmea(p[2]) * (p[3].trimmed() == "W" ? -1 : 1);
-            g = {config::radians(lat), config::radians(lon), p[4].toDouble()};
+            g = {fromNmea(p[0]) * (p[1].trimmed() == "S" ? -1 : 1),
+                 fromNmea(p[2]) * (p[3].trimmed() == "W" ? -1 : 1), p[4].toDouble()};
         }
-        a_->setValue(std::fabs(config::degrees(g.lat)));
-        ns_->setCurrentIndex(g.lat < 0 ? 1 : 0);
-        b_->setValue(std::fabs(config::degrees(g.lon)));
-        ew_->setCurrentIndex(g.lon < 0 ? 1 : 0);
+        a_->setValue(std::fabs(g.latDeg));
+        ns_->setCurrentIndex(g.latDeg < 0 ? 1 : 0);
+        b_->setValue(std::fabs(g.lonDeg));
+        ew_->setCurrentIndex(g.lonDeg < 0 ? 1 : 0);
         c_->setValue(g.height);
     }
     loading_ = false;
 }
 
-config::Geodetic CoordinateEditor::geodetic() const {
-    if (kind_ == Kind::Ecef) return config::toGeodetic({a_->value(), b_->value(), c_->value()});
-    return {config::radians(a_->value() * (ns_->currentIndex() == 1 ? -1 : 1)),
-            config::radians(b_->value() * (ew_->currentIndex() == 1 ? -1 : 1)), c_->value()};
+wgs84::Geodetic CoordinateEditor::geodetic() const {
+    if (kind_ == Kind::Ecef)
+        return wgs84::toGeodetic({a_->value(), b_->value(), c_->value()})
+                .value_or(wgs84::Geodetic{});
+    return {a_->value() * (ns_->currentIndex() == 1 ? -1 : 1),
+            b_->value() * (ew_->currentIndex() == 1 ? -1 : 1), c_->value()};
 }
 
-void CoordinateEditor::setGeodetic(const config::Geodetic &g) {
+void CoordinateEditor::setGeodetic(const wgs84::Geodetic &g) {
     if (kind_ == Kind::Ecef) {
-        const config::Ecef e = config::toEcef(g);
+        const wgs84::Ecef e = wgs84::toEcef(g);
         setValue(QString("%1,%2,%3").arg(e.x, 0, 'f', 4).arg(e.y, 0, 'f', 4).arg(e.z, 0, 'f', 4));
     } else {
-        setValue(QString("%1,%2,%3")
-                         .arg(g.lat, 0, 'f', 11)
-                         .arg(g.lon, 0, 'f', 11)
-                         .arg(g.height, 0, 'f', 4));
+        setValue(blhText(g));
     }
     emit edited();
 }

@@ -4,7 +4,7 @@
 // X, Y, Z in metres or latitude, longitude with hemispheres and height, converting between the
 // two on WGS-84), a line edit otherwise. Every editor reads and writes the schema's value text.
 #include "core/settings_schema.h"
-#include "geodesy.h"
+#include "core/wgs84.h"
 #include "schema_texts.h"
 
 #include <QWidget>
@@ -58,8 +58,8 @@ public:
     void setValue(const QString &value) override;
     QWidget *input() const override;
 
-    config::Geodetic geodetic() const;
-    void setGeodetic(const config::Geodetic &g); // the user's edit: emits edited()
+    wgs84::Geodetic geodetic() const;
+    void setGeodetic(const wgs84::Geodetic &g); // the user's edit: emits edited()
     // The button that fills this editor from the other form ("From BASEXYZ").
     QPushButton *convertButton() const { return convert_; }
 

@@ -1,4 +1,5 @@
 #include "sky_plot_view.h"
+#include "models/refresh_intervals.h"
 
 #include "models/satellite_model.h"
 #include "style/gnss_style.h"
@@ -11,6 +12,7 @@
 #include <QToolTip>
 #include <QtMath>
 
+#include <numbers>
 #include <numeric>
 
 namespace gnss::ui {
@@ -20,7 +22,7 @@ void drawConstellationMarker(QPainter &p, Constellation c, QPointF o, double s) 
     QPainterPath path;
     auto polygon = [&](int n, double rot, double r) {
         for (int i = 0; i < n; ++i) {
-            const double a = rot + 2 * M_PI * i / n;
+            const double a = rot + 2 * std::numbers::pi * i / n;
             const QPointF q(o.x() + r * std::sin(a), o.y() - r * std::cos(a));
             i == 0 ? path.moveTo(q) : path.lineTo(q);
         }
@@ -33,11 +35,11 @@ void drawConstellationMarker(QPainter &p, Constellation c, QPointF o, double s) 
         break;
     case style::Marker::Diamond: polygon(4, 0, h * 1.2); break;
     case style::Marker::TriangleUp: polygon(3, 0, h * 1.2); break;
-    case style::Marker::TriangleDown: polygon(3, M_PI, h * 1.2); break;
+    case style::Marker::TriangleDown: polygon(3, std::numbers::pi, h * 1.2); break;
     case style::Marker::Pentagon: polygon(5, 0, h * 1.1); break;
     case style::Marker::Star: {
         for (int i = 0; i < 10; ++i) {
-            const double a = 2 * M_PI * i / 10;
+            const double a = 2 * std::numbers::pi * i / 10;
             const double r = i % 2 ? h * 0.5 : h * 1.2;
             const QPointF q(o.x() + r * std::sin(a), o.y() - r * std::cos(a));
             i == 0 ? path.moveTo(q) : path.lineTo(q);
@@ -55,7 +57,7 @@ SkyPlotView::SkyPlotView(SatelliteModel *model, QWidget *parent) : QWidget(paren
     auto markDirty = [this] { dirty_ = true; };
     connect(model_, &QAbstractItemModel::dataChanged, this, markDirty);
     connect(model_, &QAbstractItemModel::modelReset, this, markDirty);
-    repaintTimer_.setInterval(100); // 10 Hz, whatever the receiver's rate
+    repaintTimer_.setInterval(kLiveRefreshMs);
     connect(&repaintTimer_, &QTimer::timeout, this, [this] {
         if (dirty_ && isVisible()) update();
     });
@@ -252,7 +254,9 @@ void SkyPlotView::paintEvent(QPaintEvent *) {
 
     // Elevation mask.
     if (mask_ > 0) {
-        QPen pen(QColor(0xC6, 0x28, 0x28, 160), 1.5, Qt::DashLine);
+        QColor mask = style::errorColor();
+        mask.setAlpha(160);
+        QPen pen(mask, 1.5, Qt::DashLine);
         p.setPen(pen);
         const double rr = r * (90 - mask_) / 90.0;
         p.drawEllipse(c, rr, rr);
