@@ -229,7 +229,17 @@
         <translation>%1: %2 вне допустимого диапазона; допустимо: %3 %4</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+26"/>
+        <source>the command would be %1 characters long; the receiver takes at most %2</source>
+        <translation>команда получилась бы длиной %1 символов; приёмник принимает не более %2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: the value is %2 characters long; at most %3</source>
+        <translation>%1: значение длиной %2 символов; допустимо не более %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>%1: character not allowed in a value: &apos;%2&apos;</source>
         <translation>%1: недопустимый символ в значении: «%2»</translation>
     </message>
@@ -314,7 +324,7 @@
         <translation>неизвестная настройка «%1»</translation>
     </message>
     <message>
-        <location filename="../protocol/nvs/nvs_rtk.cpp" line="+99"/>
+        <location filename="../protocol/nvs/nvs_rtk.cpp" line="+100"/>
         <source>PNVGRTK: unknown parameter &apos;%1&apos; (Table 4: MODE, PVTRATE, ... INITGPSWEEK)</source>
         <translation>PNVGRTK: неизвестный параметр «%1» (таблица 4: MODE, PVTRATE, ... INITGPSWEEK)</translation>
     </message>
@@ -509,7 +519,7 @@
         <translation>в ответе RQUERY должно быть три шестнадцатеричных слова</translation>
     </message>
     <message>
-        <location filename="../protocol/geostar/geostar_sgg.cpp" line="+28"/>
+        <location filename="../protocol/geostar/geostar_sgg.cpp" line="+29"/>
         <source>JAMDET: unexpected field %1</source>
         <translation>JAMDET: лишнее поле %1</translation>
     </message>
@@ -530,7 +540,7 @@
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+79"/>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+80"/>
         <source>out of range 1..32</source>
         <translation>вне диапазона 1..32</translation>
     </message>
@@ -547,7 +557,7 @@
     <message>
         <location filename="../protocol/nemerix/nemerix_datum.cpp" line="+39"/>
         <location filename="../protocol/nemerix/nemerix_power.cpp" line="+2"/>
-        <location filename="../protocol/nemerix/nemerix_serial.cpp" line="+28"/>
+        <location filename="../protocol/nemerix/nemerix_serial.cpp" line="+29"/>
         <source>not 0 or 1</source>
         <translation>не 0 и не 1</translation>
     </message>
@@ -4130,13 +4140,13 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+53"/>
+        <location filename="../app/gui/main_window.cpp" line="+58"/>
         <location filename="../app/gui/main_window_log.cpp" line="+200"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+258"/>
+        <location line="+259"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
@@ -4343,7 +4353,7 @@ Serial number: %3</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-286"/>
+        <location filename="../app/gui/main_window.cpp" line="-287"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -4363,7 +4373,7 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+76"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
     </message>
@@ -4584,7 +4594,7 @@ Serial number: %3</source>
         <translation>Не удаётся записывать в %1: сначала подключитесь к приёмнику и проверьте, что папка доступна для записи.</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+61"/>
         <source>The new language is used from the next start of GNSS Workbench.</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
     </message>
@@ -4701,7 +4711,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::PreferencesDialog</name>
     <message>
-        <location filename="../app/gui/preferences_dialog.cpp" line="+28"/>
+        <location filename="../app/gui/preferences_dialog.cpp" line="+29"/>
         <source>Preferences</source>
         <translation>Параметры</translation>
     </message>
@@ -4875,7 +4885,7 @@ Serial number: %3</source>
         <translation>у диалекта %1 нет кодировщика настроек</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>nothing was sent: %1</source>
         <translation>ничего не отправлено: %1</translation>
     </message>
@@ -5514,7 +5524,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::ReplayTransport</name>
     <message>
-        <location filename="../protocol/link/replay_transport.cpp" line="+80"/>
+        <location filename="../protocol/link/replay_transport.cpp" line="+83"/>
         <source>Cannot read %1: %2</source>
         <translation>Не удаётся прочитать %1: %2</translation>
     </message>
@@ -5585,7 +5595,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::SimulatorTransport</name>
     <message>
-        <location filename="../app/common/simulator_transport.cpp" line="+23"/>
+        <location filename="../app/common/simulator_transport.cpp" line="+26"/>
         <source>The simulator has no receiver of dialect &apos;%1&apos;</source>
         <translation>В имитаторе нет приёмника с диалектом «%1»</translation>
     </message>
@@ -5657,7 +5667,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::AttitudeView</name>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="+38"/>
+        <location filename="../ui/views/attitude_view.cpp" line="+39"/>
         <source>Attitude</source>
         <translation>Ориентация</translation>
     </message>
@@ -5764,7 +5774,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ChartsView</name>
     <message>
-        <location filename="../ui/views/charts_view.cpp" line="+110"/>
+        <location filename="../ui/views/charts_view.cpp" line="+111"/>
         <source>Series</source>
         <translation>Ряды</translation>
     </message>
@@ -5792,7 +5802,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ConsoleView</name>
     <message>
-        <location filename="../ui/views/console_view.cpp" line="+32"/>
+        <location filename="../ui/views/console_view.cpp" line="+34"/>
         <source>Filter by address (e.g. GGA|PNVG)</source>
         <translation>Фильтр по адресу (например, GGA|PNVG)</translation>
     </message>
@@ -5850,7 +5860,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CoordinateEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="+273"/>
+        <location filename="../ui/settings/setting_editors.cpp" line="+281"/>
         <location line="+1"/>
         <location line="+1"/>
         <location line="+8"/>
@@ -6161,7 +6171,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::DeviationView</name>
     <message>
-        <location filename="../ui/views/deviation_view.cpp" line="+83"/>
+        <location filename="../ui/views/deviation_view.cpp" line="+84"/>
         <source>No position yet</source>
         <translation>Координат пока нет</translation>
     </message>
@@ -6263,7 +6273,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::FixView</name>
     <message>
-        <location filename="../ui/views/fix_view.cpp" line="+30"/>
+        <location filename="../ui/views/fix_view.cpp" line="+31"/>
         <source>Degrees</source>
         <translation>Градусы</translation>
     </message>
@@ -6464,7 +6474,7 @@ Serial number: %3</source>
         <translation>ошибок контрольной суммы: %1, в эпохах: %2</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>%1 sentences (after %2)</source>
         <translation>сообщения %1 (после %2)</translation>
     </message>
@@ -6794,7 +6804,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::MessageStatsModel</name>
     <message>
-        <location filename="../ui/models/message_stats_model.cpp" line="+59"/>
+        <location filename="../ui/models/message_stats_model.cpp" line="+60"/>
         <source>Address</source>
         <translation>Адрес</translation>
     </message>
@@ -6837,7 +6847,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ReceiverInfoView</name>
     <message>
-        <location filename="../ui/views/receiver_info_view.cpp" line="+67"/>
+        <location filename="../ui/views/receiver_info_view.cpp" line="+69"/>
         <source>Item</source>
         <translation>Параметр</translation>
     </message>
@@ -6880,7 +6890,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::RtkView</name>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="+46"/>
+        <location filename="../ui/views/rtk_view.cpp" line="+47"/>
         <source>This receiver has not reported RTK information.</source>
         <translation>Приёмник не сообщал сведений RTK.</translation>
     </message>
@@ -7155,7 +7165,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SettingsView</name>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="+66"/>
+        <location filename="../ui/settings/settings_view.cpp" line="+67"/>
         <source>Read</source>
         <translation>Прочитать</translation>
     </message>
@@ -7489,7 +7499,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SignalLevelsView</name>
     <message>
-        <location filename="../ui/views/signal_levels_view.cpp" line="+119"/>
+        <location filename="../ui/views/signal_levels_view.cpp" line="+120"/>
         <source>No satellites in view</source>
         <translation>Нет видимых спутников</translation>
     </message>
@@ -7497,7 +7507,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SkyPlotView</name>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="+110"/>
+        <location filename="../ui/views/sky_plot_view.cpp" line="+112"/>
         <source>%1: SNR %2 dB-Hz%3</source>
         <translation>%1: С/Ш %2 дБГц%3</translation>
     </message>
@@ -7534,7 +7544,7 @@ elevation %3°, azimuth %4°</source>
         <translation>З</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+105"/>
         <source>Show tracks</source>
         <translation>Показывать треки</translation>
     </message>
@@ -7552,7 +7562,7 @@ elevation %3°, azimuth %4°</source>
 <context>
     <name>gnss::ui::TextEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="-52"/>
+        <location filename="../ui/settings/setting_editors.cpp" line="-60"/>
         <source>items separated by &apos;;&apos;</source>
         <translation>элементы через «;»</translation>
     </message>

@@ -101,6 +101,7 @@ int cmdEncode(const CliContext &ctx) {
             values.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
         }
         result = d->encodeSettings(values);
+        refuseLongSentences(result, d->maxSentenceLength);
     }
     if (!result.ok()) {
         std::fprintf(stderr, "gnss-cli: %s\n", result.error.c_str());

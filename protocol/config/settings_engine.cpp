@@ -341,6 +341,7 @@ bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
     }
     applying_ = withCompanions(changes);
     EncodeResult enc = dialect_->encodeSettings(applying_);
+    refuseLongSentences(enc, dialect_->maxSentenceLength);
     if (!enc.ok()) {
         report_.error = tr("nothing was sent: %1").arg(refusalText(enc, dialect_->id));
         for (const auto &kv : changes)

@@ -85,8 +85,39 @@ Refusal checkRange(const SettingDef &d, double v) {
 
 } // namespace
 
+std::size_t maxValueLength(SettingType t) {
+    switch (t) {
+    case SettingType::Bool:
+    case SettingType::Integer:
+    case SettingType::Real:
+    case SettingType::Enum: return 32;
+    case SettingType::Text: return 64;
+    case SettingType::Coordinates: return 96;
+    case SettingType::List: return 256;
+    }
+    return 32;
+}
+
+void refuseLongSentences(EncodeResult &r, std::size_t maxLength) {
+    if (!r.ok()) return;
+    for (const std::string &s : r.sentences) {
+        const std::size_t n = s.size() + 2; // with "\r\n"
+        if (n > maxLength) {
+            r.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "the command would be %1 characters "
+                                                          "long; the receiver takes at most %2"),
+                             {std::to_string(n), std::to_string(maxLength)}));
+            r.sentences.clear();
+            return;
+        }
+    }
+}
+
 Refusal validateSetting(const SettingDef &d, std::string_view value) {
     const std::string key(d.key), given(value);
+    if (value.size() > maxValueLength(d.type))
+        return refusal(
+                QT_TRANSLATE_NOOP("Refusal", "%1: the value is %2 characters long; at most %3"),
+                {key, std::to_string(value.size()), std::to_string(maxValueLength(d.type))});
     for (char c : value) {
         if (c == '*' || c == '$' || c == '!' || static_cast<unsigned char>(c) < 0x20 ||
             static_cast<unsigned char>(c) >= 0x7F)

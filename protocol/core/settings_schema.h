@@ -95,4 +95,11 @@ const SettingDef *findSettingByRole(std::span<const SettingDef> schema, SettingR
 // valid, else one naming the parameter and what it accepts.
 Refusal validateSetting(const SettingDef &def, std::string_view value);
 
+// The longest value a setting of this type may be given (a number of 5000 digits is a mistake,
+// and would make a sentence no receiver reads).
+std::size_t maxValueLength(SettingType t);
+
+// Refuses `r` when one of its sentences is longer than `maxLength` with its line end.
+void refuseLongSentences(EncodeResult &r, std::size_t maxLength);
+
 } // namespace gnss

@@ -19,6 +19,8 @@ inline constexpr ActionDef kActions[] = {
 };
 
 // Table 1: 4,800 to 460,800 bit/s.
+// Table 1 / section 1.1: what the receiver runs at from the factory.
+inline constexpr int kDefaultBaud = 115200;
 inline constexpr int kSupportedBauds[] = {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800};
 
 inline constexpr PresetValue kRover[] = {

@@ -38,12 +38,15 @@ const Dialect &dialect() {
             .settings = settingsSchema(),
             .replyRules = replyRules(),
             .encodeSettings = encodeSettings,
+            // Revision 1.4 lifted NMEA's 82-character limit (docs/spec-notes.md): a PNVGRTK
+            // that sets many parameters at once is longer. Bounded all the same.
+            .maxSentenceLength = 512,
             .encodeQueries = encodeQueries,
             .extractSettings = extractSettings,
             .probeCommand = "$PNVGVER*4E",
             .commandNames = kCommands,
             .consoleExample = "$PNVGVER",
-            .defaultBaud = 115200, // Table 1 / section 1.1
+            .defaultBaud = kDefaultBaud,
             .supportedBauds = kSupportedBauds,
             .actions = kActions,
             .presets = kPresets,

@@ -55,6 +55,7 @@ private slots:
     void encodeSettingsBuildsOneSentencePerCommandInSafeOrder();
     void encodeSettingsRefusesBeforeBuilding_data();
     void encodeSettingsRefusesBeforeBuilding();
+    void sentencesLongerThanTheDialectAllowsAreRefused();
     void encodeQueriesReadsBack();
     void extractSettingsReadsReplies();
     void cliSchemaListsEveryTable4Parameter();
@@ -215,6 +216,9 @@ void TstNvsSchema::encodeSettingsRefusesBeforeBuilding_data() {
     QTest::newRow("PPS delay") << "pps.cable_delay"
                                << "10000"
                                << "0..9999";
+    // A number of 5,000 digits is a mistake, and would make a sentence no receiver reads.
+    QTest::newRow("5000 digits") << "rtk.ICBGLO"
+                                 << "0." + QString(5000, '3') << "at most 32";
 }
 
 void TstNvsSchema::encodeSettingsRefusesBeforeBuilding() {
@@ -227,6 +231,25 @@ void TstNvsSchema::encodeSettingsRefusesBeforeBuilding() {
     QVERIFY(!r.ok());
     QVERIFY(r.sentences.empty());
     QVERIFY2(QString::fromStdString(r.error).contains(mentions), r.error.c_str());
+}
+
+void TstNvsSchema::sentencesLongerThanTheDialectAllowsAreRefused() {
+    const std::size_t max = Dialect{}.maxSentenceLength;
+    QCOMPARE(max, std::size_t(82)); // NMEA 0183's limit, with the line end, unless a vendor says
+    // The NV08C-RTK takes longer lines (revision 1.4), as a PNVGRTK setting many parameters is.
+    QVERIFY(nvs::dialect().maxSentenceLength > max);
+    EncodeResult fits;
+    fits.sentences = {"$PNVGRTK", std::string(max - 2, 'x')};
+    refuseLongSentences(fits, max);
+    QVERIFY(fits.ok());
+    QCOMPARE(fits.sentences.size(), std::size_t(2));
+    EncodeResult over;
+    over.sentences = {"$PNVGRTK", std::string(max - 1, 'x')};
+    refuseLongSentences(over, max);
+    QVERIFY(!over.ok());
+    QVERIFY(over.sentences.empty()); // nothing is left to send
+    QVERIFY2(QString::fromStdString(over.error).contains("83 characters"), over.error.c_str());
+    QVERIFY(QString::fromStdString(over.error).contains("at most 82"));
 }
 
 void TstNvsSchema::encodeQueriesReadsBack() {
@@ -302,6 +325,12 @@ void TstNvsSchema::cliEncodeSetAndQuery() {
     QVERIFY(p.waitForFinished(30000));
     QVERIFY(p.exitCode() != 0);
     QVERIFY(QString::fromUtf8(p.readAllStandardError()).contains("rtk.PVTRATE"));
+    // Too long a value: a clear error and nothing printed to send.
+    p.start(cliPath(), {"encode", "nvs", "rtk.ICBGLO=0." + QString(5000, '3')});
+    QVERIFY(p.waitForFinished(30000));
+    QVERIFY(p.exitCode() != 0);
+    QVERIFY(p.readAllStandardOutput().isEmpty());
+    QVERIFY(QString::fromUtf8(p.readAllStandardError()).contains("5002 characters"));
 }
 
 QTEST_APPLESS_MAIN(TstNvsSchema)

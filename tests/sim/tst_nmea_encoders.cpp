@@ -20,8 +20,8 @@ bool decodeAs(const std::string &line, DecodeFn fn, const std::function<void(con
     Sentence s;
     if (!s.parse(line) || s.checksum() != ChecksumStatus::Ok) return false;
     bool got = false;
-    // Named: DecodeContext keeps only a reference to the callable (FunctionRef), so a temporary
-    // lambda would be gone by the time fn() calls it (ASan: stack-use-after-scope).
+    // Named, so that FunctionRef refers to it; a temporary would be copied into the reference
+    // (FunctionRef keeps small trivially copyable temporaries, and refuses others at compile time).
     auto onMessage = [&](const Message &m) {
         if (const T *t = message_cast<T>(m)) {
             use(*t);
