@@ -1,7 +1,7 @@
 #pragma once
 // Constellations and satellite numbering.
 //
-// NMEA numbers satellites by talker and version (ERRATA.md, NMEA 0183 4.11 table 20):
+// NMEA numbers satellites by talker and version (docs/spec-notes.md, NMEA 0183 4.11 table 20):
 //   talker GP/GN (2.x "extended" numbering): 1-32 GPS, 33-64 SBAS (PRN = id + 87),
 //   65-96 GLONASS (slot = id - 64), 120-158 SBAS PRN, 193-202 QZSS (PRN = id - 192),
 //   201-263 BeiDou (PRN = id - 200, SiRF "GB"), 301-336 Galileo, 401-463 BeiDou;

@@ -2,8 +2,8 @@
 // The 24 input commands of section 4 of the GeoS-5 NMEA protocol v4.0, as one table of every
 // concrete command text the receiver accepts ("BDR115", "GGA ON", "ELEV05", ...).
 //
-// Every command is `$GPSGG,<text>*hh` (ERRATA.md: the spec's `$GPGSGG,` / `$GPGSSG,` / `$GPGG,`
-// are misprints; the checksums prove `GPSGG`). Six-character texts keep their inner blank
+// Every command is `$GPSGG,<text>*hh` (docs/spec-notes.md: the spec's `$GPGSGG,` / `$GPGSSG,` /
+// `$GPGG,` are misprints; the checksums prove `GPSGG`). Six-character texts keep their inner blank
 // ("GGA ON", "PSM ON"); "NMEA V2" is really "NMEAV2".
 //
 // The table is the single source of truth: the GPSGG decoder names what a command does from it,

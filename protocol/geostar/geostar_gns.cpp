@@ -40,7 +40,7 @@ bool decodeGns(const Sentence &s, DecodeContext &ctx) {
     m.dgpsAge = r.real(age, "DGPS age");
     m.dgpsStation = r.integer(age + 1, "DGPS station");
     m.navStatus = r.letter(12, "navigational status");
-    return nmea::finishDecode(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 } // namespace gnss::geostar

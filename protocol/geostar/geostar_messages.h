@@ -29,7 +29,7 @@ struct Rquery : Message {
 };
 
 // $GPSGG,NQUERY,port,rate,version,<ten per-message rate codes> (section 3.12; the order of the
-// per-message codes is inferred in ERRATA.md from the single example).
+// per-message codes is inferred from the single example: docs/spec-notes.md, "NQUERY field order").
 struct Nquery : Message {
     static const MessageType kType;
     static constexpr std::size_t kMessages = 10;

@@ -5,7 +5,7 @@
 //                 3 NMEA version (2 v2.x, 4 v4.10),
 //                 4-13 per-message codes (0 off, 1 every s, 2 every 2 s, 3 every 20 s,
 //                      R at the output rate) for GGA, GLL, GSA, GSV, RMC, VTG, ?, ZDA, DTM, RLM
-// The field table of the spec was an image: the order is ERRATA.md's inference from the one
+// The field table of the spec was an image: the order is inferred (docs/spec-notes.md) from the one
 // example ("port 1, 1 Hz, NMEA v2, outputs GGA, GSA, GSV, ZDA, DTM"); the 7th code's message is
 // unknown and shown as such.
 //   $GPSGG,NQUERY,1,3,2,R,0,R,1,0,0,0,1,1,0*71
@@ -48,7 +48,7 @@ bool decodeNquery(const Sentence &s, DecodeContext &ctx) {
             r.failSentence(std::string(
                     QT_TRANSLATE_NOOP("Refusal", "NQUERY reply has more than 10 message codes")));
     }
-    return nmea::finishDecode(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Nquery::writeJson(JsonWriter &w) const {

@@ -41,7 +41,7 @@ bool decodeRlm(const Sentence &s, DecodeContext &ctx) {
         if ((m.parameters.size() != 4 && m.parameters.size() != 24) || !allHex(m.parameters))
             r.fail(3, "parameters", QT_TRANSLATE_NOOP("Refusal", "not 4 or 24 hex digits"));
     }
-    return nmea::finishDecode(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 std::string_view Rlm::serviceName() const {

@@ -5,7 +5,7 @@
 //                                          4 status word (table 7)
 //                                                   5 configuration register #1 (table 8)
 //                                                            6 configuration register #2 (table 9)
-// Example (ERRATA.md; the spec prints the address as $GPGSGG):
+// Example (docs/spec-notes.md, "RQUERY"; the spec prints the address as $GPGSGG):
 //   $GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C
 #include "geostar_messages.h"
 #include "nmea/nmea_messages.h"
@@ -51,7 +51,7 @@ bool decodeRquery(const Sentence &s, DecodeContext &ctx) {
             m.config2 = ConfigRegister2::decode(*cfg2);
         }
     }
-    return nmea::finishDecode(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Rquery::writeJson(JsonWriter &w) const {

@@ -1,5 +1,6 @@
-// $GPSGG: the GeoS-5 proprietary address (ERRATA.md: the spec misprints it as $GPGSGG, $GPGSSG
-// and $GPGG; the checksums prove GPSGG). The first field names the message or command:
+// $GPSGG: the GeoS-5 proprietary address (docs/spec-notes.md, "The GPSGG address": the
+// spec misprints it as $GPGSGG, $GPGSSG and $GPGG; the checksums prove GPSGG). The first field
+// names the message or command:
 //
 //   $GPSGG,RQUERY,<name>,...   reply (3.11)      $GPSGG,RQUERY   query (4.6)
 //   $GPSGG,NQUERY,<port>,...   reply (3.12)      $GPSGG,NQUERY   query (4.7)

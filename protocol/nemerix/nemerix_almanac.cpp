@@ -3,7 +3,7 @@
 //   $PNMRX300,sv,e,hh,ta,ii,od,sqa,om0,w,mean,m0,af0,af1*hh      fields in hex after sv
 //
 // Field widths, signs and scales follow IS-GPS-200 (20.3.3.5.1.2, table 20-VI), which is where
-// the spec's table comes from; where the table disagrees, IS-GPS-200 wins (ERRATA.md):
+// the spec's table comes from; where the table disagrees, IS-GPS-200 wins (docs/spec-notes.md):
 //   - e is a 16-bit UNSIGNED value (table: "signed"), scale 2^-21.
 //   - toa: the table's note says "Week Number"; the column is toa, 8 bits, scale 2^12 s.
 //   - i is delta-i relative to i0 = 0.30 semi-circles, 16-bit signed, 2^-19 semi-circles.

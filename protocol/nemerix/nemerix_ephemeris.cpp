@@ -5,7 +5,8 @@
 //   $PNMRX301,sv,3,cic,om0,cis,i0,crc,w,omd,iode,idot*hh
 //
 // Widths, signs and scales are those of IS-GPS-200 (20.3.3.3 and 20.3.3.4, tables 20-I and
-// 20-III). The spec's tables disagree with it in these places, and IS-GPS-200 wins (ERRATA.md):
+// 20-III). The spec's tables disagree with it in these places, and IS-GPS-200 wins
+// (docs/spec-notes.md):
 //   - Subframe 1: toc scale is 2^4 s (table: 2^-4); af2 scale is 2^-55 s/s^2 (table: 2^-31).
 //   - Subframe 2: the second "Cuc" is Cus; e is 32-bit UNSIGNED (table: signed); sqrt(A) is
 //     32-bit UNSIGNED in m^1/2 (table: signed, "Meters^1/4").

@@ -5,8 +5,8 @@
 // decoders, the encoders and the JSON output all read the same descriptor, so a scale factor
 // is written down in exactly one place.
 //
-// Hex text of any length is accepted (the spec's widths are wrong in places, ERRATA.md): the
-// value must fit the field's bit width, either as the plain N-bit pattern ("FF85" for a 16-bit
+// Hex text of any length is accepted (the spec's widths are wrong in places, docs/spec-notes.md):
+// the value must fit the field's bit width, either as the plain N-bit pattern ("FF85" for a 16-bit
 // field) or already sign-extended to a wider word ("FFFFFF85"). Signed fields are then
 // sign-extended from bit N-1.
 #include "core/field_reader.h"

@@ -6,6 +6,7 @@
 // can read what it receives. Text fields are views into the sentence: valid during emit() only.
 #include "core/dialect.h"
 #include "core/field_reader.h"
+#include "core/finish_decode.h"
 #include "core/message.h"
 #include "nemerix_hex.h"
 
@@ -15,9 +16,6 @@
 #include <string_view>
 
 namespace gnss::nemerix {
-
-// Reads every field, then emits `m` or reports the first error.
-bool finishDecode(FieldReader &r, DecodeContext &ctx, const Message &m);
 
 // ---- Commands -------------------------------------------------------------------------------
 

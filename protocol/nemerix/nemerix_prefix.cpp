@@ -4,15 +4,6 @@
 
 namespace gnss::nemerix {
 
-bool finishDecode(FieldReader &r, DecodeContext &ctx, const Message &m) {
-    if (!r.ok()) {
-        ctx.fail(r.problem());
-        return false;
-    }
-    ctx.deliver(m);
-    return true;
-}
-
 std::string checkPrefix(std::string_view prefix) {
     bool ok = prefix.size() >= 2 && prefix.size() <= 9 && prefix.front() == 'P';
     for (char c : prefix)

@@ -4,6 +4,7 @@
 #include "core/dialect.h"
 #include "core/field_reader.h"
 #include "core/field_types.h"
+#include "core/finish_decode.h"
 #include "core/message.h"
 #include "core/satellite.h"
 
@@ -179,8 +180,5 @@ bool decodeDtm(const Sentence &, DecodeContext &);
 bool decodeGst(const Sentence &, DecodeContext &);
 bool decodeTxt(const Sentence &, DecodeContext &);
 bool decodeQuery(const Sentence &, DecodeContext &);
-
-// Shared helper: finish a decode from a FieldReader (sets ctx.error or emits the message).
-bool finishDecode(FieldReader &r, DecodeContext &ctx, const Message &m);
 
 } // namespace gnss::nmea

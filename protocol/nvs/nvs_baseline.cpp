@@ -26,7 +26,7 @@ bool decodeBaseline(const Sentence &s, DecodeContext &ctx, Baseline &m, bool tim
         m.pitch = r.real(o + 5, "pitch");
         m.mode = r.letter(o + 6, "mode");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 } // namespace
 

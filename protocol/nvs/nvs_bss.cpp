@@ -20,7 +20,7 @@ bool decodeBss(const Sentence &s, DecodeContext &ctx) {
         m.baseDistance = r.real(3, "distance to base");
         m.rtcmAge = r.real(4, "RTCM age");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Bss::writeJson(JsonWriter &w) const {

@@ -18,7 +18,7 @@ bool decodeCfg(const Sentence &s, DecodeContext &ctx) {
         if (m.action.empty()) r.fail(0, "action", QT_TRANSLATE_NOOP("Refusal", "empty"));
         for (std::size_t i = 1; i < s.fieldCount(); ++i) m.extra.push_back(r.text(i));
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Cfg::writeJson(JsonWriter &w) const {

@@ -4,15 +4,6 @@
 
 namespace gnss::nvs {
 
-bool finish(FieldReader &r, DecodeContext &ctx, const Message &m) {
-    if (!r.ok()) {
-        ctx.fail(r.problem());
-        return false;
-    }
-    ctx.deliver(m);
-    return true;
-}
-
 void writeValue(JsonWriter &w, std::string_view text) {
     std::int64_t i;
     double d;

@@ -22,7 +22,7 @@ bool decodeSdp(const Sentence &s, DecodeContext &ctx) {
         m.sdHeight = r.real(3, "height deviation");
         m.mode = r.letter(4, "mode");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Sdp::writeJson(JsonWriter &w) const {
@@ -45,7 +45,7 @@ bool decodeSdv(const Sentence &s, DecodeContext &ctx) {
         m.sdVelUp = r.real(3, "vertical velocity deviation");
         m.mode = r.letter(4, "mode");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Sdv::writeJson(JsonWriter &w) const {
@@ -66,7 +66,7 @@ bool decodeSdh(const Sentence &s, DecodeContext &ctx) {
         m.sdHeading = r.real(1, "heading deviation");
         m.mode = r.letter(2, "mode");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Sdh::writeJson(JsonWriter &w) const {

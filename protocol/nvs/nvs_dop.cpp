@@ -1,5 +1,5 @@
 // 4.22 PNVGDOP: dilutions of precision of the calculated position. (The spec's field table
-// names the address PNVGSDH, a copy-paste typo: the example shows PNVGDOP. ERRATA.md.)
+// names the address PNVGSDH, a copy-paste typo: the example shows PNVGDOP. docs/spec-notes.md.)
 //
 //   $PNVGDOP,hhmmss.ss,x.x,x.x,x.x,x.x,x.x,x.x,x.x,a*hh
 //            0 time, 1 GDOP, 2 PDOP, 3 HDOP, 4 VDOP, 5 TDOP, 6 nDOP, 7 eDOP, 8 mode
@@ -23,7 +23,7 @@ bool decodeDop(const Sentence &s, DecodeContext &ctx) {
         m.edop = r.real(7, "eDOP");
         m.mode = r.letter(8, "mode");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Dop::writeJson(JsonWriter &w) const {

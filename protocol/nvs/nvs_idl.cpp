@@ -69,7 +69,7 @@ bool decodeIdl(const Sentence &s, DecodeContext &ctx) {
                                      "not MODE, ADD, REMOVE, CLEAR, SHOW or a list item"));
         }
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Idl::writeJson(JsonWriter &w) const {

@@ -22,7 +22,7 @@ bool decodeImu(const Sentence &s, DecodeContext &ctx) {
         m.accEast = r.real(o + 4, "east acceleration");
         m.accDown = r.real(o + 5, "down acceleration");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Imu::writeJson(JsonWriter &w) const {

@@ -6,6 +6,7 @@
 #include "core/dialect.h"
 #include "core/field_reader.h"
 #include "core/field_types.h"
+#include "core/finish_decode.h"
 #include "core/message.h"
 #include "nmea/nmea_messages.h"
 
@@ -234,7 +235,8 @@ struct Sdh : Message {
     void writeJson(JsonWriter &w) const override;
 };
 
-// 4.22 PNVGDOP (the spec's field table calls its address PNVGSDH: a copy-paste typo, ERRATA).
+// 4.22 PNVGDOP (the spec's field table calls its address PNVGSDH: a copy-paste typo,
+// docs/spec-notes.md).
 struct Dop : Message {
     static const MessageType kType;
     Dop() : Message(kType) {}
@@ -270,8 +272,6 @@ bool decodeDop(const Sentence &, DecodeContext &);
 // The NVS sentence table (every PNVG* address, whole-address rules).
 std::span<const SentenceRule> sentenceRules();
 
-// Shared: emit the message or report the reader's first error.
-bool finish(FieldReader &r, DecodeContext &ctx, const Message &m);
 // Writes a field value: integer or real as a JSON number when it is one, else as a string.
 void writeValue(JsonWriter &w, std::string_view text);
 

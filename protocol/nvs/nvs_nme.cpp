@@ -17,7 +17,7 @@ bool decodeNme(const Sentence &s, DecodeContext &ctx) {
         m.positionDecimals = r.integer(1, "position decimals");
         m.talkerMode = r.integer(2, "talker mode");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Nme::writeJson(JsonWriter &w) const {

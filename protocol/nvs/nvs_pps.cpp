@@ -23,7 +23,7 @@ bool decodePps(const Sentence &s, DecodeContext &ctx) {
         m.validity = r.letter(5, "validity control");
         m.cableDelay = r.integer(6, "cable delay");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Pps::writeJson(JsonWriter &w) const {

@@ -1,4 +1,4 @@
-// NVS reply rules, as data (ERRATA.md lists the request/response rules the spec keeps):
+// NVS reply rules, as data (docs/spec-notes.md, "Requests and replies"):
 // - PNVGVER is answered by PNVGVER with the identity fields.
 // - $ccGPQ,<address> is answered by the sentence named.
 // - PNVGNME and PNVGRZA answer with the new settings and then switch.

@@ -16,7 +16,7 @@ bool decodeRst(const Sentence &s, DecodeContext &ctx) {
         if (m.type && *m.type != 'F' && *m.type != 'W')
             r.fail(0, "reset type", QT_TRANSLATE_NOOP("Refusal", "not F or W"));
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Rst::writeJson(JsonWriter &w) const {

@@ -18,7 +18,7 @@ bool decodeRza(const Sentence &s, DecodeContext &ctx) {
         m.baud = r.integer(1, "baud rate");
         m.protocol = r.integer(2, "protocol");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Rza::writeJson(JsonWriter &w) const {

@@ -36,7 +36,7 @@ bool decodeRzb(const Sentence &s, DecodeContext &ctx) {
         else if (r.ok())
             r.fail(i + 1, "output rate", QT_TRANSLATE_NOOP("Refusal", "empty"));
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Rzb::writeJson(JsonWriter &w) const {

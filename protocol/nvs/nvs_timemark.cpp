@@ -21,7 +21,7 @@ bool decodeTme(const Sentence &s, DecodeContext &ctx) {
         m.counter = r.integer64(0, "event counter");
         m.tow = r.real(1, "time of week");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Tme::writeJson(JsonWriter &w) const {
@@ -35,7 +35,7 @@ bool decodeTmu(const Sentence &s, DecodeContext &ctx) {
         m.counter = r.integer64(0, "event counter");
         m.time = r.time(1, "time");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Tmu::writeJson(JsonWriter &w) const {
@@ -46,7 +46,7 @@ bool decodeTmc(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     Tmc m;
     if (r.require(6)) nmea::readGgaFields(r, m);
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 } // namespace gnss::nvs

@@ -22,7 +22,7 @@ bool decodeTst(const Sentence &s, DecodeContext &ctx) {
             if (name == "ANT") m.antenna = r.integer(i + 1, "antenna test");
         }
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Tst::writeJson(JsonWriter &w) const {

@@ -23,7 +23,7 @@ bool decodeVer(const Sentence &s, DecodeContext &ctx) {
         m.csmHw = r.str(3);
         m.csmFw = r.str(4);
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Ver::writeJson(JsonWriter &w) const {

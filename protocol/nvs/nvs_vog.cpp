@@ -18,7 +18,7 @@ bool decodeVog(const Sentence &s, DecodeContext &ctx) {
         m.velUp = r.real(3, "vertical velocity");
         m.mode = r.letter(4, "mode");
     }
-    return finish(r, ctx, m);
+    return finishDecode(r, ctx, m);
 }
 
 void Vog::writeJson(JsonWriter &w) const {

@@ -1,6 +1,6 @@
 // Each dialect record's receiver actions (save, defaults, cold/warm/hot start): the sentence
 // sent is the spec's own example where the spec prints one (GeoS-5 §4.2-4.5, checksums as
-// ERRATA.md corrects the typeset "$GPGSGG, ..."), and every action of every dialect is a
+// docs/spec-notes.md corrects the typeset "$GPGSGG, ..."), and every action of every dialect is a
 // well-formed sentence that its own dialect decodes.
 #include "config/dialect_actions.h"
 #include "decode_helper.h"

@@ -159,7 +159,8 @@ void TestGeostarExamples::rqueryExampleKeepsNameFirmwareAndDate() {
 }
 
 void TestGeostarExamples::nqueryExampleShowsTheUnknownPositionAsSuch() {
-    // "Port 1, 1 Hz, NMEA v2.x, outputs GGA, GSA, GSV, ZDA, DTM" (3.12, ERRATA.md order).
+    // "Port 1, 1 Hz, NMEA v2.x, outputs GGA, GSA, GSV, ZDA, DTM" (3.12, order from
+    // docs/spec-notes.md).
     const auto d = decodeOne("$GPSGG,NQUERY,1,3,2,R,0,R,1,0,0,0,1,1,0*71", geostar(false));
     QVERIFY2(d.ok, qPrintable(d.error));
     QCOMPARE(d.data["port"].toInt(), 1);

@@ -24,7 +24,7 @@ struct Field {
     int scale;
 };
 
-// IS-GPS-200 (not the Nemerix table, whose errors ERRATA.md lists).
+// IS-GPS-200 (not the Nemerix table, whose errors docs/spec-notes.md lists).
 const std::vector<Field> kSf1 = {
         {"week", 10, false, 0}, {"health", 6, false, 0}, {"ura", 4, false, 0},
         {"tgd", 8, true, -31},  {"iodc", 10, false, 0},  {"toc", 16, false, 4},
