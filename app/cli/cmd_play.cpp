@@ -4,6 +4,7 @@
 // exactly the file's.
 #include "log_open.h"
 #include "play_schedule.h"
+#include "termios_speed.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -54,20 +55,12 @@ public:
         termios t{};
         if (::tcgetattr(fd_, &t) != 0) return fail(path + " (not a terminal)");
         ::cfmakeraw(&t);
-        speed_t speed = B9600;
-        switch (baud) {
-        case 4800: speed = B4800; break;
-        case 9600: speed = B9600; break;
-        case 19200: speed = B19200; break;
-        case 38400: speed = B38400; break;
-        case 57600: speed = B57600; break;
-        case 115200: speed = B115200; break;
-        case 230400: speed = B230400; break;
-        case 460800: speed = B460800; break;
-        case 921600: speed = B921600; break;
-        default: error_ = "unsupported baud " + std::to_string(baud); return false;
+        const auto speed = posix::termiosSpeed(baud);
+        if (!speed) {
+            error_ = "unsupported baud " + std::to_string(baud);
+            return false;
         }
-        ::cfsetspeed(&t, speed);
+        ::cfsetspeed(&t, *speed);
         ::tcsetattr(fd_, TCSANOW, &t);
         return true;
     }

@@ -8,6 +8,7 @@
 // SIGHUP power-cycles the simulated receiver (settings come back from its flash).
 // With --rtcm-base the same loop carries an RTCM 3 base station's stream instead.
 #include "sim_args.h"
+#include "termios_speed.h"
 
 #include <arpa/inet.h>
 #include <cerrno>
@@ -49,40 +50,6 @@ double monotonicSeconds() {
     timespec ts{};
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return static_cast<double>(ts.tv_sec) + ts.tv_nsec / 1e9;
-}
-
-int baudOf(speed_t s) {
-    switch (s) {
-    case B300: return 300;
-    case B600: return 600;
-    case B1200: return 1200;
-    case B2400: return 2400;
-    case B4800: return 4800;
-    case B9600: return 9600;
-    case B19200: return 19200;
-    case B38400: return 38400;
-    case B57600: return 57600;
-    case B115200: return 115200;
-    case B230400: return 230400;
-    case B460800: return 460800;
-    case B921600: return 921600;
-    default: return 0;
-    }
-}
-
-speed_t speedOf(int baud) {
-    switch (baud) {
-    case 4800: return B4800;
-    case 9600: return B9600;
-    case 19200: return B19200;
-    case 38400: return B38400;
-    case 57600: return B57600;
-    case 115200: return B115200;
-    case 230400: return B230400;
-    case 460800: return B460800;
-    case 921600: return B921600;
-    default: return B9600;
-    }
 }
 
 void setNonBlocking(int fd) {
@@ -155,8 +122,9 @@ int main(int argc, char **argv) {
             termios t{};
             tcgetattr(slave, &t);
             cfmakeraw(&t);
-            cfsetispeed(&t, speedOf(deviceBaud));
-            cfsetospeed(&t, speedOf(deviceBaud));
+            const speed_t speed = posix::termiosSpeed(deviceBaud).value_or(B9600);
+            cfsetispeed(&t, speed);
+            cfsetospeed(&t, speed);
             tcsetattr(slave, TCSANOW, &t);
             ::close(slave);
         }
@@ -240,7 +208,8 @@ int main(int argc, char **argv) {
         if (ptyIdle) peerPresent = false;
         if (isPty && rx) {
             termios t{};
-            if (tcgetattr(ioFd, &t) == 0) rx->setLineBaud(baudOf(cfgetospeed(&t)));
+            if (tcgetattr(ioFd, &t) == 0)
+                rx->setLineBaud(posix::baudOfTermiosSpeed(cfgetospeed(&t)));
         }
 
         if (g_powerCycle) {

@@ -4,6 +4,8 @@
 // (receivers' usual defaults first). A receiver family's own list is in its dialect record.
 #include <algorithm>
 #include <array>
+#include <span>
+#include <string>
 
 namespace gnss {
 
@@ -19,6 +21,13 @@ inline constexpr int kDefaultSerialBaud = kDetectionBauds.front();
 
 inline bool isStandardBaud(int baud) {
     return std::find(kStandardBauds.begin(), kStandardBauds.end(), baud) != kStandardBauds.end();
+}
+
+// "1200, 2400, 4800" (for an error that says what is accepted).
+inline std::string baudList(std::span<const int> bauds) {
+    std::string s;
+    for (int b : bauds) s += (s.empty() ? "" : ", ") + std::to_string(b);
+    return s;
 }
 
 } // namespace gnss

@@ -17,6 +17,8 @@ inline constexpr ActionDef kActions[] = {
          "The receiver restarts with almanac and ephemeris."},
 };
 
+// The spec names no factory speed; 115200 bit/s (BDR115) is an assumption.
+inline constexpr int kDefaultBaud = 115200;
 inline constexpr int kSupportedBauds[] = {4800,   9600,   19200,  38400, 57600,
                                           115200, 230400, 460800, 921600};
 

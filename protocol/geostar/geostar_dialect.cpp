@@ -56,8 +56,7 @@ const Dialect &dialect() {
             .probeCommand = "$GPSGG,RQUERY*70",
             .commandNames = kCommandNames,
             .consoleExample = "$GPSGG,RQUERY",
-            // The spec names no factory speed; 115200 bit/s (BDR115) is an assumption.
-            .defaultBaud = 115200,
+            .defaultBaud = kDefaultBaud,
             .supportedBauds = kSupportedBauds,
             .actions = kActions,
             .presets = kPresets,

@@ -17,6 +17,7 @@ inline constexpr ActionDef kActions[] = {
          "The receiver restarts with almanac and ephemeris."},
 };
 
+inline constexpr int kDefaultBaud = 9600;
 inline constexpr int kSupportedBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600};
 
 inline constexpr PresetValue kTracker[] = {

@@ -33,7 +33,7 @@ const Dialect &dialect() {
             .commandNames = kCommandNames,
             .consoleExample = "$PNMRX600",
             // "9600 baud rate, 8 bits data, 1 start, 1 stop, no parity" (2.1.8).
-            .defaultBaud = 9600,
+            .defaultBaud = kDefaultBaud,
             // "The PNMRX part may be replaced by a configured alternative" (Extensions spec).
             .renamablePrefix = "PNMRX",
             .supportedBauds = kSupportedBauds,

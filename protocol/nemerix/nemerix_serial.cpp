@@ -3,6 +3,8 @@
 //   $PNMRX100,p,bbbbbb,y*hh
 //             0 protocol (0 NMEA, 1 Nemerix binary), 1 baud, 2 parity (0 none, 1 odd, 2 even)
 //   $PNMRX100,0,4800,0*48   4800 bps, no parity
+#include "core/baud_rates.h"
+#include "nemerix_actions.h"
 #include "nemerix_commands.h"
 
 namespace gnss::nemerix {
@@ -10,9 +12,8 @@ namespace gnss::nemerix {
 const MessageType SerialPort::kType{"PNMRX100"};
 
 namespace {
-constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600};
 bool knownBaud(int b) {
-    for (int k : kBauds)
+    for (int k : kSupportedBauds)
         if (k == b) return true;
     return false;
 }
@@ -56,7 +57,7 @@ EncodeResult encodeSerialPort(int protocol, int baud, int parity, std::string_vi
                   " is out of range; accepted: 0 (NMEA) or 1 (Nemerix binary)";
     else if (!knownBaud(baud))
         r.error = "baud: " + std::to_string(baud) +
-                  " is not supported; accepted: 1200, 2400, 4800, 9600, 19200, 38400, 57600";
+                  " is not supported; accepted: " + baudList(kSupportedBauds);
     else if (parity < 0 || parity > 2)
         r.error = "parity: " + std::to_string(parity) +
                   " is out of range; accepted: 0 (none), 1 (odd), 2 (even)";

@@ -20,6 +20,7 @@
 // NMEAV2 / NMEAV4 switch the numbering (3.4, 3.5): v2.x: GSV all under GP with three-digit ids
 // (Galileo 101-136), GSA per system (GP/GL/GA); v4.10: GN talkers, GSA with the system id,
 // GSV per system with the signal id (Galileo 7), GNS with per-system subsidiary sentences.
+#include "geostar/geostar_actions.h"
 #include "receiver.h"
 #include "standard_output.h"
 
@@ -32,7 +33,7 @@ namespace gnss::sim {
 class GeoStarReceiver : public Receiver {
 public:
     explicit GeoStarReceiver(const SimOptions &options = {});
-    static constexpr int kDefaultBaud = 115200;
+    static constexpr int kDefaultBaud = geostar::kDefaultBaud;
 
     // Output messages in NQUERY order (3.12; the 7th position is unknown and always 0).
     static constexpr std::array<std::string_view, 10> kOutputs = {

@@ -14,7 +14,6 @@ namespace gnss::sim {
 
 namespace {
 
-constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600};
 constexpr std::size_t kReportsPerEpoch = 6; // PNMRX30x lines interleaved per second
 constexpr int kMaxGsv = 12;                 // "allowing up to 12 satellites in view"
 
@@ -133,8 +132,8 @@ void NemerixReceiver::onCommand(const Sentence &s, const Message *decoded, std::
             for (int k : seq) current_.rates[k] = 1; // "output every second"
         }
     } else if (const auto *p = message_cast<SerialPort>(m)) {
-        const bool baudOk = p->baud && std::find(std::begin(kBauds), std::end(kBauds), *p->baud) !=
-                                               std::end(kBauds);
+        const bool baudOk = p->baud && std::ranges::find(nemerix::kSupportedBauds, *p->baud) !=
+                                               std::end(nemerix::kSupportedBauds);
         const bool protoOk = !p->protocol || *p->protocol == 0 || *p->protocol == 1;
         const bool parityOk = !p->parity || (*p->parity >= 0 && *p->parity <= 2);
         if (!baudOk || !protoOk || !parityOk) return; // declared invalid as a whole

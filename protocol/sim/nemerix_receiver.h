@@ -18,6 +18,7 @@
 //   PNMRX300 almanac upload; PNMRX600 version; PNMRX601 ISP mode (silent until power cycle);
 //   PNMRX603 five settings reports (messages 0..4) from the state.
 // The VT002 has no "save" command: a power cycle returns to the factory settings.
+#include "nemerix/nemerix_actions.h"
 #include "receiver.h"
 #include "standard_output.h"
 
@@ -31,7 +32,7 @@ namespace gnss::sim {
 class NemerixReceiver : public Receiver {
 public:
     explicit NemerixReceiver(const SimOptions &options = {});
-    static constexpr int kDefaultBaud = 9600;
+    static constexpr int kDefaultBaud = nemerix::kDefaultBaud;
     static constexpr std::array<std::string_view, 7> kMessages = {"GGA", "GLL", "GSA", "GSV",
                                                                   "RMC", "VTG", "ZDA"};
     static constexpr std::array<std::string_view, 5> kReports = {"300", "301", "302", "303", "304"};

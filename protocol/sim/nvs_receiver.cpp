@@ -1,6 +1,7 @@
 #include "nvs_receiver.h"
 
 #include "core/sentence_builder.h"
+#include "core/wgs84.h"
 #include "nmea/nmea_messages.h"
 #include "nvs/nvs_dialect.h"
 #include "nvs/nvs_encoders.h"
@@ -13,8 +14,6 @@ namespace gnss::sim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr int kBauds[] = {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800};
 constexpr int kBaseStation = 2;        // the simulated base's station id (PNVGRTK BASEID default)
 constexpr std::size_t kMaxOutput = 20; // spec 2.1: at most 20 output messages
 constexpr std::size_t kMaxStations = 32;
@@ -73,11 +72,10 @@ NvsReceiver::Settings NvsReceiver::defaults() const {
     const Observer &o = options().observer;
     double lat = o.latDeg, lon = o.lonDeg, h = o.altMsl + o.geoidSep;
     offsetGeodetic(lat, lon, h, -baseNorth_, -baseEast_, -baseUp_);
-    double xyz[3];
-    geodeticToEcef(lat, lon, h, xyz);
-    s.rtk["BASEXYZ"] = fixed(xyz[0], 4) + "," + fixed(xyz[1], 4) + "," + fixed(xyz[2], 4);
-    s.rtk["BASEBLH"] =
-            fixed(lat * kPi / 180, 10) + "," + fixed(lon * kPi / 180, 10) + "," + fixed(h, 4);
+    const wgs84::Ecef xyz = wgs84::toEcef({lat, lon, h});
+    s.rtk["BASEXYZ"] = fixed(xyz.x, 4) + "," + fixed(xyz.y, 4) + "," + fixed(xyz.z, 4);
+    s.rtk["BASEBLH"] = fixed(wgs84::radians(lat), 10) + "," + fixed(wgs84::radians(lon), 10) + "," +
+                       fixed(h, 4);
     if (s.rtk["INITGPSWEEK"].empty()) s.rtk["INITGPSWEEK"] = "2048";
     for (int p = 1; p <= 3; ++p) s.ports[p] = Port{};
     s.ports[kCurrentPort].output = {{"GGA", 1}, {"GSA", 1}, {"GSV", 5},    {"RMC", 1},
@@ -280,9 +278,9 @@ std::vector<std::string> NvsReceiver::sentencesOf(std::string_view address,
         const double n = baseNorth_ + snap.errNorth, e = baseEast_ + snap.errEast,
                      u = baseUp_ + snap.errUp;
         const double len = std::sqrt(n * n + e * e + u * u);
-        double course = std::atan2(e, n) * 180 / kPi;
+        double course = wgs84::degrees(std::atan2(e, n));
         if (course < 0) course += 360;
-        const double pitch = std::asin(u / len) * 180 / kPi;
+        const double pitch = wgs84::degrees(std::asin(u / len));
         return {proprietary("PNVGBRS," + timeField() + "," + fixed(n, 3) + "," + fixed(e, 3) + "," +
                             fixed(u, 3) + "," + fixed(len, 3) + "," + fixed(course, 2) + "," +
                             fixed(pitch, 2) + "," + std::string(1, mode))};
@@ -300,13 +298,13 @@ std::vector<std::string> NvsReceiver::sentencesOf(std::string_view address,
                                 (ok ? fixed(heading ? 0.2 / len : 3.0, 3) : std::string()) + "," +
                                 std::string(1, m))};
         if (!ok) return {proprietary("PNVGBLS," + timeField() + ",,,,,,,N")};
-        const double pitch = -4.0 * kPi / 180;
+        const double pitch = wgs84::radians(-4.0);
         const double h = len * std::cos(pitch);
-        return {proprietary("PNVGBLS," + timeField() + "," + fixed(h * std::cos(c * kPi / 180), 3) +
-                            "," + fixed(h * std::sin(c * kPi / 180), 3) + "," +
-                            fixed(len * std::sin(pitch), 3) + "," + fixed(len, 3) + "," +
-                            fixed(c, 2) + "," + fixed(pitch * 180 / kPi, 2) + "," +
-                            std::string(1, m))};
+        return {proprietary(
+                "PNVGBLS," + timeField() + "," + fixed(h * std::cos(wgs84::radians(c)), 3) + "," +
+                fixed(h * std::sin(wgs84::radians(c)), 3) + "," + fixed(len * std::sin(pitch), 3) +
+                "," + fixed(len, 3) + "," + fixed(c, 2) + "," + fixed(wgs84::degrees(pitch), 2) +
+                "," + std::string(1, m))};
     }
     if (a == "PNVGIMU") {
         std::normal_distribution<double> att(0, 0.3), acc(0, 0.05);
@@ -442,8 +440,8 @@ void NvsReceiver::handleRza(const Sentence &s, const nvs::Rza &m) {
     const int portNo = m.port.value_or(0) == 0 ? kCurrentPort : *m.port;
     if (portNo < 1 || portNo > 3) return;
     Port &port = current_.ports[portNo];
-    const bool baudOk =
-            m.baud && std::find(std::begin(kBauds), std::end(kBauds), *m.baud) != std::end(kBauds);
+    const bool baudOk = m.baud && std::ranges::find(nvs::kSupportedBauds, *m.baud) !=
+                                          std::end(nvs::kSupportedBauds);
     const bool protoOk = m.protocol && (*m.protocol == 0 || *m.protocol == 1 || *m.protocol == 7);
     if (baudOk && protoOk) {
         port.baud = *m.baud;

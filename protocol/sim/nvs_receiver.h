@@ -16,6 +16,7 @@
 #include "receiver.h"
 #include "standard_output.h"
 
+#include "nvs/nvs_actions.h"
 #include "nvs/nvs_messages.h"
 #include "rtcm/rtcm_framer.h"
 
@@ -26,7 +27,7 @@ namespace gnss::sim {
 class NvsReceiver : public Receiver {
 public:
     explicit NvsReceiver(const SimOptions &options = {});
-    static constexpr int kDefaultBaud = 115200;
+    static constexpr int kDefaultBaud = nvs::kDefaultBaud;
 
     struct Station {
         int id = 0;
