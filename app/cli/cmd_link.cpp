@@ -12,6 +12,7 @@
 #include "connection.h"
 #include "core/json_writer.h"
 #include "core/sentence_builder.h"
+#include "event_loop.h"
 #include "port_watcher.h"
 #include "replay_transport.h"
 #include "sentence_stream.h"
@@ -20,44 +21,11 @@
 #include <QCoreApplication>
 #include <QTimer>
 
-#include <csignal>
 #include <cstdio>
 #include <memory>
 
 namespace gnss::cli {
 namespace {
-
-volatile std::sig_atomic_t g_stop = 0; // the signal that asked to stop
-void onSignal(int signal) {
-    g_stop = signal;
-}
-
-// The QCoreApplication these commands need, plus Ctrl-C/SIGTERM ending the event loop (so
-// recordings are flushed and closed, not cut) with the status a shell gives a program the signal
-// killed: 128 + its number (130 for Ctrl-C), so scripts can tell an interruption from an end.
-struct EventLoop {
-    int argc = 1;
-    char name[9] = "gnss-cli";
-    char *argv[2] = {name, nullptr};
-    QCoreApplication app{argc, argv};
-    QTimer signalPoll;
-    EventLoop() {
-        g_stop = 0;
-        std::signal(SIGINT, onSignal);
-        std::signal(SIGTERM, onSignal);
-        QObject::connect(&signalPoll, &QTimer::timeout, [] {
-            if (g_stop) QCoreApplication::exit(128 + g_stop);
-        });
-        signalPoll.start(100);
-    }
-    // Ends the loop after `seconds` (none when <= 0).
-    void stopAfter(double seconds) {
-        if (seconds > 0)
-            QTimer::singleShot(static_cast<int>(seconds * 1000), &app,
-                               [] { QCoreApplication::exit(0); });
-    }
-    int exec() { return app.exec(); }
-};
 
 bool numberOption(const Args &args, const char *name, double &out) {
     const auto v = args.option(name);

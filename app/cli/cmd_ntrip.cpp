@@ -14,6 +14,7 @@
 #include "cli_source.h"
 #include "core/json_writer.h"
 #include "correction_forwarder.h"
+#include "event_loop.h"
 #include "ntrip/mountpoint_distance.h"
 #include "ntrip_source.h"
 #include "rover_position.h"
@@ -26,7 +27,6 @@
 #include <QTimer>
 
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -35,29 +35,6 @@
 
 namespace gnss::cli {
 namespace {
-
-volatile std::sig_atomic_t g_stop = 0;
-void onSignal(int) {
-    g_stop = 1;
-}
-
-// The event loop the command runs in; Ctrl-C or SIGTERM ends it (files flushed and closed).
-struct NtripEventLoop {
-    int argc = 1;
-    char name[9] = "gnss-cli";
-    char *argv[2] = {name, nullptr};
-    QCoreApplication app{argc, argv};
-    QTimer signalPoll;
-    NtripEventLoop() {
-        g_stop = 0;
-        std::signal(SIGINT, onSignal);
-        std::signal(SIGTERM, onSignal);
-        QObject::connect(&signalPoll, &QTimer::timeout, [] {
-            if (g_stop) QCoreApplication::exit(130);
-        });
-        signalPoll.start(100);
-    }
-};
 
 void say(const std::string &s) {
     std::fprintf(stderr, "gnss-cli: %s\n", s.c_str());
@@ -382,7 +359,7 @@ int cmdNtrip(const CliContext &ctx) {
     const Args &args = ctx.args;
     Options o;
     if (!readOptions(args, o)) return 2;
-    NtripEventLoop loop;
+    EventLoop loop;
 
     if (o.mount) return receive(ctx, o, QString::fromStdString(*o.mount), std::nullopt);
 
@@ -393,7 +370,7 @@ int cmdNtrip(const CliContext &ctx) {
     q.user = o.user;
     q.password = o.password;
     const auto table = fetchTable(q);
-    if (!table) return g_stop ? 130 : 1;
+    if (!table) return EventLoop::interruptedStatus() ? EventLoop::interruptedStatus() : 1;
     if (o.sourcetable) {
         printTable(*table, o.position);
         return 0;

@@ -4,10 +4,13 @@
 
 namespace gnss::link {
 
+// The simulated receiver's bytes come in slices of 20 ms, as a serial driver hands them over.
+constexpr int kSimulatorTickMs = 20;
+
 SimulatorTransport::SimulatorTransport(QString dialect, std::uint32_t seed, int lineBaud,
                                        QObject *parent)
     : Transport(parent), dialect_(std::move(dialect)), seed_(seed), lineBaud_(lineBaud) {
-    timer_.setInterval(20);
+    timer_.setInterval(kSimulatorTickMs);
     connect(&timer_, &QTimer::timeout, this, &SimulatorTransport::tick);
 }
 

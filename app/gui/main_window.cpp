@@ -14,6 +14,7 @@
 #include "models/satellite_model.h"
 #include "preferences_dialog.h"
 #include "settings/settings_view.h"
+#include "style/dark_palette.h"
 #include "style/gnss_style.h"
 #include "views/attitude_view.h"
 #include "views/charts_view.h"
@@ -46,6 +47,10 @@
 #include <QTimer>
 
 namespace gnss::app {
+
+// How long a command's outcome stays in the status bar, and how often the bar is refreshed.
+constexpr int kCommandMessageMs = 8000;
+constexpr int kStatusRefreshMs = 500;
 
 MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFactory &transports,
                        QSettings *settings, QWidget *parent)
@@ -90,10 +95,11 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
     connect(ports_, &link::PortWatcher::portsChanged, controller_, &ConnectionController::retryNow);
     connect(controller_, &ConnectionController::commandFinished, this,
             [this](const QString &summary, bool ok) {
-                statusBar()->showMessage(ok ? summary : tr("Command: %1").arg(summary), 8000);
+                statusBar()->showMessage(ok ? summary : tr("Command: %1").arg(summary),
+                                         kCommandMessageMs);
             });
     auto *statusTimer = new QTimer(this);
-    statusTimer->setInterval(500);
+    statusTimer->setInterval(kStatusRefreshMs);
     connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
     statusTimer->start();
     // 1400x900 where the screen has room; on a smaller screen (a 1280x800 laptop) the whole
@@ -464,23 +470,7 @@ void MainWindow::applyTheme(const QString &theme) {
     QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
     QPalette p;
     if (theme == QLatin1String("dark")) {
-        p.setColor(QPalette::Window, QColor(0x2b, 0x2d, 0x30));
-        p.setColor(QPalette::WindowText, QColor(0xe6, 0xe6, 0xe6));
-        p.setColor(QPalette::Base, QColor(0x1e, 0x1f, 0x22));
-        p.setColor(QPalette::AlternateBase, QColor(0x26, 0x28, 0x2b));
-        p.setColor(QPalette::Text, QColor(0xe6, 0xe6, 0xe6));
-        p.setColor(QPalette::Button, QColor(0x35, 0x37, 0x3b));
-        p.setColor(QPalette::ButtonText, QColor(0xe6, 0xe6, 0xe6));
-        p.setColor(QPalette::Highlight, QColor(0x00, 0x72, 0xB2));
-        p.setColor(QPalette::HighlightedText, Qt::white);
-        p.setColor(QPalette::Mid, QColor(0x6b, 0x6f, 0x75));
-        p.setColor(QPalette::Midlight, QColor(0x45, 0x48, 0x4d));
-        p.setColor(QPalette::PlaceholderText, QColor(0x9a, 0x9e, 0xa5));
-        // Disabled controls (the source box while connected) must look disabled in the dark too.
-        const QColor disabled(0x7a, 0x7e, 0x85);
-        for (auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
-            p.setColor(QPalette::Disabled, role, disabled);
-        p.setColor(QPalette::Disabled, QPalette::Button, QColor(0x2f, 0x31, 0x35));
+        p = style::darkPalette();
     } else {
         p = QApplication::style()->standardPalette();
     }

@@ -1,4 +1,5 @@
 #include "preferences_dialog.h"
+#include "style/gnss_style.h"
 
 #include <QComboBox>
 #include <QDateTime>
@@ -87,7 +88,7 @@ PreferencesDialog::PreferencesDialog(const Preferences &prefs, const QString &ru
     form->addRow(tr("&Baud rates to try:"), bauds_);
     baudError_ = new QLabel(this);
     baudError_->setObjectName("prefBaudError");
-    baudError_->setStyleSheet(QStringLiteral("color: #C62828;"));
+    baudError_->setStyleSheet(style::textColorCss(style::errorColor()));
     form->addRow(QString(), baudError_);
 
     buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel |

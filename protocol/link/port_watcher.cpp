@@ -4,6 +4,9 @@
 
 namespace gnss::link {
 
+// How often the list of serial ports is read again (a receiver plugged in shows within it).
+constexpr int kPortScanMs = 1000;
+
 QString PortInfo::usbId() const {
     if (vendorId < 0 || productId < 0) return {};
     return QStringLiteral("%1:%2")
@@ -36,7 +39,7 @@ QList<PortInfo> systemPorts() {
 
 PortWatcher::PortWatcher(PortEnumerator enumerate, QObject *parent)
     : QObject(parent), enumerate_(enumerate ? std::move(enumerate) : PortEnumerator(systemPorts)) {
-    timer_.setInterval(1000);
+    timer_.setInterval(kPortScanMs);
     connect(&timer_, &QTimer::timeout, this, &PortWatcher::refresh);
 }
 

@@ -10,6 +10,9 @@ namespace gnss::link {
 
 namespace {
 
+// The pace of a timed replay: slices of 10 ms keep the receiver's own timing within a tick.
+constexpr int kReplayTickMs = 10;
+
 // hhmmss[.sss] → seconds of the day; negative when not a time.
 double timeOfDay(std::string_view f) {
     if (f.size() < 6) return -1;
@@ -56,7 +59,7 @@ struct ReplayTransport::Loaded {
 
 ReplayTransport::ReplayTransport(QString path, Timing timing, QObject *parent)
     : Transport(parent), path_(std::move(path)), timing_(timing) {
-    timer_.setInterval(10);
+    timer_.setInterval(kReplayTickMs);
     timer_.setTimerType(Qt::PreciseTimer);
     connect(&timer_, &QTimer::timeout, this, &ReplayTransport::tick);
 }

@@ -1,4 +1,5 @@
 #include "console_model.h"
+#include "style/gnss_style.h"
 
 #include <QColor>
 
@@ -27,8 +28,8 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
         if (!l.error.isEmpty()) return l.error;
         return l.note.isEmpty() ? QVariant() : QVariant(l.note);
     case Qt::ForegroundRole:
-        if (l.checksumBad || !l.error.isEmpty()) return QColor(0xC6, 0x28, 0x28);
-        if (l.sent) return QColor(0x00, 0x72, 0xB2);
+        if (l.checksumBad || !l.error.isEmpty()) return style::errorColor();
+        if (l.sent) return style::sentColor();
         return {};
     case SentRole: return l.sent;
     case ChecksumBadRole: return l.checksumBad;

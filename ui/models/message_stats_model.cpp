@@ -1,4 +1,5 @@
 #include "message_stats_model.h"
+#include "style/gnss_style.h"
 
 #include <QColor>
 
@@ -22,7 +23,7 @@ QVariant MessageStatsModel::data(const QModelIndex &index, int role) const {
     if (role == Qt::TextAlignmentRole && index.column() != Address)
         return QVariant(Qt::AlignRight | Qt::AlignVCenter);
     if (role == Qt::ForegroundRole && index.column() == ChecksumErrors && r.checksumErrors > 0)
-        return QColor(0xC6, 0x28, 0x28);
+        return style::errorColor();
     if (role == Qt::UserRole) { // sort key
         switch (index.column()) {
         case Address: return r.address;

@@ -1,4 +1,5 @@
 #include "receiver_session.h"
+#include "refresh_intervals.h"
 
 #include "refusal_text.h"
 
@@ -10,7 +11,7 @@ ReceiverSession::ReceiverSession(const DialectRegistry &registry, SessionModels 
                                  QObject *parent)
     : QObject(parent), registry_(registry), models_(models) {
     reset();
-    refreshTimer_.setInterval(100);
+    refreshTimer_.setInterval(kLiveRefreshMs);
     connect(&refreshTimer_, &QTimer::timeout, this, &ReceiverSession::refresh);
     refreshTimer_.start();
 }

@@ -1,4 +1,5 @@
 #include "settings_view.h"
+#include "style/gnss_style.h"
 
 #include "presets.h"
 #include "setting_editors.h"
@@ -647,7 +648,7 @@ void SettingsView::showReport(const config::OperationReport &r) {
                  c.reported.empty()
                          ? QString()
                          : tr("receiver reports %1").arg(QString::fromStdString(c.reported))});
-        if (!good) item->setForeground(1, QColor(0xD5, 0x5E, 0x00));
+        if (!good) item->setForeground(1, style::cautionColor());
         // A value that took is no longer an edit; one that did not stays highlighted.
         if (good && editors_.count(c.key)) setEdited(c.key, false);
     }

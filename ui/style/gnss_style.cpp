@@ -70,4 +70,30 @@ QColor errorColor() {
     return QColor(0xc6, 0x28, 0x28);
 }
 
+QColor okColor() {
+    return QColor(0x2e, 0x7d, 0x32);
+}
+
+QColor cautionColor() {
+    return lineColor(LineTone::Vermillion);
+}
+
+QColor sentColor() {
+    return lineColor(LineTone::Blue);
+}
+
+QColor lineColor(LineTone t) {
+    switch (t) {
+    case LineTone::Blue: return constellationColor(Constellation::Gps);
+    case LineTone::Vermillion: return constellationColor(Constellation::Glonass);
+    case LineTone::BluishGreen: return constellationColor(Constellation::Galileo);
+    case LineTone::ReddishPurple: return constellationColor(Constellation::BeiDou);
+    }
+    return constellationColor(Constellation::Gps);
+}
+
+QString textColorCss(const QColor &c) {
+    return QStringLiteral("color: %1;").arg(c.name());
+}
+
 } // namespace gnss::style

@@ -20,5 +20,15 @@ QColor fixTypeColor(FixType f);
 
 // Errors and warnings in text, ticks and badges (checksum errors, REC, refused input).
 QColor errorColor();
+// A state that is as it should be (a check passed, no jamming).
+QColor okColor();
+// A value to look at twice (out of the receiver's range, not applied yet).
+QColor cautionColor();
+// What the user sent, and the lines of a chart that are not a constellation's (Okabe-Ito).
+QColor sentColor();
+enum class LineTone { Blue, Vermillion, BluishGreen, ReddishPurple };
+QColor lineColor(LineTone t);
+// For widgets coloured by a style sheet: "color: #rrggbb;".
+QString textColorCss(const QColor &c);
 
 } // namespace gnss::style

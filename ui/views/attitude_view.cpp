@@ -1,4 +1,5 @@
 #include "attitude_view.h"
+#include "models/refresh_intervals.h"
 
 #include "models/receiver_state_model.h"
 #include "value_format.h"
@@ -72,7 +73,7 @@ AttitudeView::AttitudeView(ReceiverStateModel *model, QWidget *parent)
     tl->addWidget(marks_);
     outer->addWidget(tm, 1);
 
-    timer_->setInterval(100); // 10 Hz
+    timer_->setInterval(kLiveRefreshMs);
     connect(timer_, &QTimer::timeout, this, &AttitudeView::poll);
     timer_->start();
     refresh();

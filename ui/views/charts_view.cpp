@@ -1,4 +1,5 @@
 #include "charts_view.h"
+#include "models/refresh_intervals.h"
 
 #include "style/chart_palette.h"
 
@@ -48,10 +49,10 @@ QColor lineColor(TS::Series s) {
     if (TS::group(s) == TS::Snr) return style::constellationColor(snrSystem(s));
     switch (s) {
     case TS::Pdop:
-    case TS::SdLon: return QColor(0xD5, 0x5E, 0x00);
-    case TS::SdHeight: return QColor(0x00, 0x9E, 0x73);
-    case TS::FixKind: return QColor(0xCC, 0x79, 0xA7);
-    default: return QColor(0x00, 0x72, 0xB2);
+    case TS::SdLon: return style::lineColor(style::LineTone::Vermillion);
+    case TS::SdHeight: return style::lineColor(style::LineTone::BluishGreen);
+    case TS::FixKind: return style::lineColor(style::LineTone::ReddishPurple);
+    default: return style::lineColor(style::LineTone::Blue);
     }
 }
 
@@ -158,7 +159,7 @@ ChartsView::ChartsView(ReceiverStateModel *model, QWidget *parent)
         selectionChanged_ = true;
         redraw();
     });
-    timer_->setInterval(500); // 2 Hz: charts are for trends
+    timer_->setInterval(kTrendRefreshMs);
     connect(timer_, &QTimer::timeout, this, &ChartsView::redraw);
     timer_->start();
     redraw();

@@ -1,4 +1,6 @@
 #include "console_view.h"
+#include "models/refresh_intervals.h"
+#include "style/gnss_style.h"
 
 #include "core/sentence_builder.h"
 #include "models/console_model.h"
@@ -79,7 +81,7 @@ ConsoleView::ConsoleView(ConsoleModel *model, QWidget *parent) : QWidget(parent)
     hex_->setVisible(false);
     layout->addWidget(hex_, 1);
     auto *hexTimer = new QTimer(this);
-    hexTimer->setInterval(500);
+    hexTimer->setInterval(kTrendRefreshMs);
     connect(hexTimer, &QTimer::timeout, this, [this] {
         if (hex_->isVisible()) refreshHex();
     });
@@ -105,7 +107,7 @@ ConsoleView::ConsoleView(ConsoleModel *model, QWidget *parent) : QWidget(parent)
     layout->addLayout(send);
     inputError_ = new QLabel(this);
     inputError_->setObjectName("consoleInputError");
-    inputError_->setStyleSheet(QStringLiteral("color: #c62828;"));
+    inputError_->setStyleSheet(style::textColorCss(style::errorColor()));
     inputError_->setVisible(false);
     layout->addWidget(inputError_);
     sendNote_ = new QLabel(this);

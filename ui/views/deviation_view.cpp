@@ -1,4 +1,5 @@
 #include "deviation_view.h"
+#include "models/refresh_intervals.h"
 
 #include "models/receiver_state_model.h"
 #include "style/gnss_style.h"
@@ -298,7 +299,7 @@ DeviationView::DeviationView(ReceiverStateModel *model, QWidget *parent)
     connect(refLat_, &QLineEdit::editingFinished, this, &DeviationView::applyReference);
     connect(refLon_, &QLineEdit::editingFinished, this, &DeviationView::applyReference);
     connect(model_, &ReceiverStateModel::updated, this, &DeviationView::takeEpoch);
-    timer_->setInterval(250); // 4 Hz: a statistics view, not a live one
+    timer_->setInterval(kStatisticsRefreshMs);
     connect(timer_, &QTimer::timeout, this, [this] {
         if (dirty_) refresh();
     });

@@ -1,4 +1,5 @@
 #include "fix_view.h"
+#include "models/refresh_intervals.h"
 
 #include "models/receiver_state_model.h"
 #include "style/gnss_style.h"
@@ -52,7 +53,7 @@ FixView::FixView(ReceiverStateModel *model, QWidget *parent) : QWidget(parent), 
     corrAge_ = addRow(tr("Age of corrections"), "fixCorrectionAge");
     base_ = addRow(tr("Base station"), "fixBaseStation");
     connect(model_, &ReceiverStateModel::updated, this, [this] { dirty_ = true; });
-    timer_.setInterval(100);
+    timer_.setInterval(kLiveRefreshMs);
     connect(&timer_, &QTimer::timeout, this, [this] {
         if (dirty_ && isVisible()) refresh();
     });

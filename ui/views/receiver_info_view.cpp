@@ -1,4 +1,6 @@
 #include "receiver_info_view.h"
+#include "models/refresh_intervals.h"
+#include "style/gnss_style.h"
 
 #include "models/receiver_state_model.h"
 #include "value_format.h"
@@ -68,7 +70,7 @@ ReceiverInfoView::ReceiverInfoView(ReceiverStateModel *model, QWidget *parent)
     tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     layout->addWidget(tree_, 1);
     connect(model_, &ReceiverStateModel::updated, this, [this] { dirty_ = true; });
-    timer_.setInterval(250);
+    timer_.setInterval(kStatisticsRefreshMs);
     connect(&timer_, &QTimer::timeout, this, [this] {
         if (dirty_ && isVisible()) refresh();
     });
@@ -94,9 +96,9 @@ void ReceiverInfoView::addJson(QTreeWidgetItem *parent, const QString &key, cons
         const bool bad = (b && badWhenTrue(key)) || (!b && badWhenFalse(key));
         const bool good = (b && badWhenFalse(key)) || (!b && badWhenTrue(key));
         if (bad)
-            item->setForeground(1, QColor(0xC6, 0x28, 0x28));
+            item->setForeground(1, style::errorColor());
         else if (good)
-            item->setForeground(1, QColor(0x2E, 0x7D, 0x32));
+            item->setForeground(1, style::okColor());
         return;
     }
     if (v.isNull()) {
@@ -106,7 +108,7 @@ void ReceiverInfoView::addJson(QTreeWidgetItem *parent, const QString &key, cons
     item->setText(1, v.isDouble() ? QString::number(v.toDouble(), 'g', 12) : v.toString());
     const QString s = v.toString();
     if (s == QLatin1String("ok") || s == QLatin1String("OK"))
-        item->setForeground(1, QColor(0x2E, 0x7D, 0x32));
+        item->setForeground(1, style::okColor());
 }
 
 void ReceiverInfoView::refresh() {
@@ -131,11 +133,11 @@ void ReceiverInfoView::refresh() {
         jamming_->setStyleSheet({});
     } else if (*st.jamming) {
         jamming_->setText(tr("Jamming: DETECTED"));
-        jamming_->setStyleSheet(
-                QStringLiteral("color: white; background: #c62828; padding: 2px 6px;"));
+        jamming_->setStyleSheet(QStringLiteral("color: white; background: %1; padding: 2px 6px;")
+                                        .arg(style::errorColor().name()));
     } else {
         jamming_->setText(tr("Jamming: none detected"));
-        jamming_->setStyleSheet(QStringLiteral("color: #2e7d32;"));
+        jamming_->setStyleSheet(style::textColorCss(style::okColor()));
     }
     QString key;
     for (const auto &[title, json] : st.reports) key += QString::fromStdString(title + json);

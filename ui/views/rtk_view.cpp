@@ -1,4 +1,5 @@
 #include "rtk_view.h"
+#include "models/refresh_intervals.h"
 
 #include "models/receiver_state_model.h"
 #include "style/gnss_style.h"
@@ -141,7 +142,7 @@ RtkView::RtkView(ReceiverStateModel *model, QWidget *parent)
     stack_->setCurrentIndex(0);
 
     connect(threshold_, &QDoubleSpinBox::valueChanged, this, [this] { updateWatchdog(age_); });
-    timer_->setInterval(100); // 10 Hz
+    timer_->setInterval(kLiveRefreshMs);
     connect(timer_, &QTimer::timeout, this, &RtkView::poll);
     timer_->start();
     refresh();
@@ -167,7 +168,7 @@ void RtkView::setCorrectionAgeThreshold(double seconds) {
 }
 
 QColor RtkView::alarmColor() {
-    return QColor(0xD3, 0x2F, 0x2F);
+    return style::errorColor();
 }
 
 void RtkView::setDisplayPrefs(const DisplayPrefs &prefs) {

@@ -1,4 +1,5 @@
 #include "signal_levels_view.h"
+#include "models/refresh_intervals.h"
 
 #include "models/satellite_model.h"
 #include "style/gnss_style.h"
@@ -16,7 +17,7 @@ SignalLevelsView::SignalLevelsView(SatelliteModel *model, QWidget *parent)
     auto markDirty = [this] { dirty_ = true; };
     connect(model_, &QAbstractItemModel::dataChanged, this, markDirty);
     connect(model_, &QAbstractItemModel::modelReset, this, markDirty);
-    repaintTimer_.setInterval(100);
+    repaintTimer_.setInterval(kLiveRefreshMs);
     connect(&repaintTimer_, &QTimer::timeout, this, [this] {
         if (dirty_ && isVisible()) update();
     });
