@@ -150,13 +150,39 @@ void EpochAssembler::flush(Callback onEpoch) {
     closeEpoch(onEpoch);
 }
 
+namespace {
+
+// The order of the sky's groups: GPS, GLONASS, Galileo, BeiDou, QZSS, NavIC, combined, others.
+int talkerRank(std::uint32_t key) {
+    constexpr std::uint16_t kOrder[] = {'G' << 8 | 'P', 'G' << 8 | 'L', 'G' << 8 | 'A',
+                                        'G' << 8 | 'B', 'B' << 8 | 'D', 'G' << 8 | 'Q',
+                                        'Q' << 8 | 'Z', 'G' << 8 | 'I', 'G' << 8 | 'N'};
+    const auto talker = static_cast<std::uint16_t>(key >> 16);
+    for (std::size_t i = 0; i < std::size(kOrder); ++i)
+        if (kOrder[i] == talker) return static_cast<int>(i);
+    return static_cast<int>(std::size(kOrder));
+}
+
+bool groupBefore(std::uint32_t a, std::uint32_t b) {
+    const int ra = talkerRank(a), rb = talkerRank(b);
+    return ra != rb ? ra < rb : a < b;
+}
+
+} // namespace
+
+// Groups are kept in one order, whatever order the receiver first sent them in: a decode started
+// anywhere in a log then holds the same sky as one started at its beginning (the log index's
+// pieces rely on it to agree with a front-to-back decode).
 EpochAssembler::GsvGroup &EpochAssembler::group(std::uint32_t key) {
-    for (auto &g : groups_)
-        if (g.key == key) return g;
-    groups_.emplace_back();
-    groups_.back().key = key;
-    groups_.back().refreshedEpoch = epochs_;
-    return groups_.back();
+    auto it = groups_.begin();
+    for (; it != groups_.end(); ++it) {
+        if (it->key == key) return *it;
+        if (groupBefore(key, it->key)) break;
+    }
+    it = groups_.emplace(it);
+    it->key = key;
+    it->refreshedEpoch = epochs_;
+    return *it;
 }
 
 void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) {
