@@ -4,6 +4,7 @@
 #include "geostar/geostar_dialect.h"
 #include "nemerix/nemerix_dialect.h"
 #include "nmea/nmea_rules.h"
+#include "nmea_sim_receiver.h"
 #include "nvs/nvs_dialect.h"
 
 namespace gnss {
@@ -15,7 +16,10 @@ const Dialect &nmeaDialect() {
             .rules = standardSentenceRules(),
             // A standard query (NMEA 0183 "Q"): the computer (CC) asks the GPS (GP) for a GGA.
             .consoleExample = "$CCGPQ,GGA",
+            // NMEA 0183 itself says 4800; receivers today (and the simulated one) start at 9600.
+            .defaultBaud = 9600,
             .summary = "any NMEA-0183 receiver (2.x to 4.11): standard sentences only",
+            .makeSimulator = sim::makeNmeaReceiver,
     };
     return d;
 }
@@ -39,5 +43,15 @@ DialectRegistry makeRegistry(const std::vector<const Dialect *> &more) {
     all.insert(all.end() - 1, more.begin(), more.end());
     return DialectRegistry(standardSentenceRules(), std::move(all));
 }
+
+namespace sim {
+
+std::unique_ptr<Receiver> makeReceiver(std::string_view dialect, const SimOptions &options) {
+    for (const Dialect *d : builtinDialects())
+        if (d->id == dialect && d->makeSimulator) return d->makeSimulator(options);
+    return nullptr;
+}
+
+} // namespace sim
 
 } // namespace gnss

@@ -35,7 +35,7 @@ class TestMainWindow : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     gnss::DialectRegistry registry_ = gnss::makeBuiltinRegistry();
-    gnss::link::TransportFactory transports_ = gnss::app::makeTransportFactory();
+    gnss::link::TransportFactory transports_ = gnss::app::makeTransportFactory(registry_);
 
     std::unique_ptr<QSettings> settings() {
         return std::make_unique<QSettings>(dir_.filePath("settings.ini"), QSettings::IniFormat);
@@ -189,24 +189,24 @@ private slots:
         QString err;
         auto o = parseStartupOptions({"gnss-workbench", "--sim", "nvs", "--screenshot",
                                       "/tmp/x.png", "--quit-after", "2.5"},
-                                     gnss::app::simulatedDialects(), err);
+                                     gnss::app::simulatedDialects(registry_), err);
         QVERIFY2(o, qPrintable(err));
         QCOMPARE(o->sim, QString("nvs"));
         QCOMPARE(o->quitAfter, 2.5);
         o = parseStartupOptions({"gnss-workbench", "--port", "/dev/ttyUSB0", "--baud", "115200"},
-                                gnss::app::simulatedDialects(), err);
+                                gnss::app::simulatedDialects(registry_), err);
         QVERIFY(o);
         QCOMPARE(o->baud, 115200);
         QCOMPARE(SourceSpec::fromString("serial:/dev/ttyUSB0@115200").baud, 115200);
         QCOMPARE(SourceSpec::fromString("tcp:localhost:5000").name, QString("localhost:5000"));
         // gpsd: the URL form or the bare HOST[:PORT][/DEVICE]; the name is kept without scheme.
         o = parseStartupOptions({"gnss-workbench", "--gpsd", "gpsd://localhost:2947/dev/ttyACM0"},
-                                gnss::app::simulatedDialects(), err);
+                                gnss::app::simulatedDialects(registry_), err);
         QVERIFY2(o, qPrintable(err));
         QCOMPARE(o->gpsd, QString("localhost:2947/dev/ttyACM0"));
         o = parseStartupOptions(
                 {"gnss-workbench", "--gpsd", "localhost", "--show-dock", "settings"},
-                gnss::app::simulatedDialects(), err);
+                gnss::app::simulatedDialects(registry_), err);
         QVERIFY2(o, qPrintable(err));
         QCOMPARE(o->gpsd, QString("localhost"));
         QCOMPARE(o->showDock, QString("settings"));
@@ -244,7 +244,7 @@ private slots:
     void badStartupOptionsAreRefused() {
         QFETCH(QStringList, args);
         QString err;
-        QVERIFY(!parseStartupOptions(args, gnss::app::simulatedDialects(), err));
+        QVERIFY(!parseStartupOptions(args, gnss::app::simulatedDialects(registry_), err));
         QVERIFY(!err.isEmpty());
     }
 };

@@ -85,6 +85,6 @@ int main(int argc, char **argv) {
     if (!args.error().empty())
         return usageError(std::string(command->name) + ": " + args.error(), command->name);
     const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
-    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory();
+    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory(registry);
     return command->run(gnss::cli::CliContext{registry, args, &transports});
 }

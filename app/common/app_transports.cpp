@@ -5,19 +5,19 @@
 
 namespace gnss::app {
 
-link::TransportFactory makeTransportFactory() {
+link::TransportFactory makeTransportFactory(const DialectRegistry &registry) {
     link::TransportFactory f;
-    f.add(link::SourceSpec::Kind::Simulator, [](const link::SourceSpec &s, QString *) {
-        auto t = std::make_unique<link::SimulatorTransport>(s.name, 1, s.baud);
+    f.add(link::SourceSpec::Kind::Simulator, [&registry](const link::SourceSpec &s, QString *) {
+        auto t = std::make_unique<link::SimulatorTransport>(registry, s.name, 1, s.baud);
         if (s.speed > 0) t->setSpeed(s.speed);
         return t;
     });
     return f;
 }
 
-QStringList simulatedDialects() {
+QStringList simulatedDialects(const DialectRegistry &registry) {
     QStringList out;
-    for (std::string_view id : sim::simulatedDialects())
+    for (std::string_view id : sim::simulatedDialects(registry))
         out << QString::fromUtf8(id.data(), qsizetype(id.size()));
     return out;
 }

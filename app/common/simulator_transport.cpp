@@ -7,9 +7,10 @@ namespace gnss::link {
 // The simulated receiver's bytes come in slices of 20 ms, as a serial driver hands them over.
 constexpr int kSimulatorTickMs = 20;
 
-SimulatorTransport::SimulatorTransport(QString dialect, std::uint32_t seed, int lineBaud,
-                                       QObject *parent)
-    : Transport(parent), dialect_(std::move(dialect)), seed_(seed), lineBaud_(lineBaud) {
+SimulatorTransport::SimulatorTransport(const DialectRegistry &registry, QString dialect,
+                                       std::uint32_t seed, int lineBaud, QObject *parent)
+    : Transport(parent), registry_(registry), dialect_(std::move(dialect)), seed_(seed),
+      lineBaud_(lineBaud) {
     timer_.setInterval(kSimulatorTickMs);
     connect(&timer_, &QTimer::timeout, this, &SimulatorTransport::tick);
 }
@@ -21,7 +22,7 @@ bool SimulatorTransport::open() {
     options.seed = seed_;
     // The built-in receiver is a demonstration: an RTK rover shows RTK without a caster.
     options.internalBase = true;
-    receiver_ = sim::makeReceiver(dialect_.toStdString(), options);
+    receiver_ = sim::makeReceiver(registry_, dialect_.toStdString(), options);
     if (!receiver_) {
         fail(tr("The simulator has no receiver of dialect '%1'").arg(dialect_), false);
         return false;

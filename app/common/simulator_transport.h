@@ -10,18 +10,22 @@
 
 #include <memory>
 
-namespace gnss::sim {
+namespace gnss {
+class DialectRegistry;
+namespace sim {
 class Receiver;
 }
+} // namespace gnss
 
 namespace gnss::link {
 
 class SimulatorTransport : public Transport {
     Q_OBJECT
 public:
-    // `dialect`: "nmea", "nvs", ... as gnss-sim knows them; `lineBaud` 0 = the receiver's own.
-    SimulatorTransport(QString dialect, std::uint32_t seed = 1, int lineBaud = 0,
-                       QObject *parent = nullptr);
+    // The simulated receiver of `dialect` ("nmea", "nvs", ...) that its record in `registry`
+    // makes (the registry outlives the transport); `lineBaud` 0 = the receiver's own.
+    SimulatorTransport(const DialectRegistry &registry, QString dialect, std::uint32_t seed = 1,
+                       int lineBaud = 0, QObject *parent = nullptr);
     ~SimulatorTransport() override;
 
     bool open() override;
@@ -40,6 +44,7 @@ protected:
 private:
     void tick();
 
+    const DialectRegistry &registry_;
     QString dialect_;
     std::uint32_t seed_;
     int lineBaud_;

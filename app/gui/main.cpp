@@ -42,17 +42,17 @@ int main(int argc, char **argv) {
             QApplication::installTranslator(&appTranslator);
     }
 
+    const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
     QString error;
-    const auto options = gnss::app::parseStartupOptions(QApplication::arguments(),
-                                                        gnss::app::simulatedDialects(), error);
+    const auto options = gnss::app::parseStartupOptions(
+            QApplication::arguments(), gnss::app::simulatedDialects(registry), error);
     if (!options) {
         std::fprintf(stderr, "gnss-workbench: %s\n", qPrintable(error));
         return 2;
     }
 
     QApplication::setWindowIcon(gnss::style::appIcon());
-    const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
-    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory();
+    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory(registry);
     gnss::app::MainWindow window(registry, transports, &settings);
     window.show();
     using gnss::app::SourceSpec;

@@ -64,7 +64,7 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
     createModels();
     ports_ = new link::PortWatcher({}, this);
     ports_->start();
-    bar_ = new ConnectionBar(ports_, registry_, simulatedDialects(), this);
+    bar_ = new ConnectionBar(ports_, registry_, simulatedDialects(registry_), this);
     addToolBar(Qt::TopToolBarArea, bar_);
     createDocks();
     createMenus();

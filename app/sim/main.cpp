@@ -7,6 +7,7 @@
 // baud the receiver sends garbage and ignores input, as a UART at the wrong speed would.
 // SIGHUP power-cycles the simulated receiver (settings come back from its flash).
 // With --rtcm-base the same loop carries an RTCM 3 base station's stream instead.
+#include "dialects.h"
 #include "sim_args.h"
 #include "termios_speed.h"
 
@@ -78,14 +79,15 @@ void flushTo(int fd, std::string &buffer) {
 } // namespace
 
 int main(int argc, char **argv) {
+    const DialectRegistry registry = makeBuiltinRegistry();
     simapp::SimArgs args;
     std::string error;
-    if (!simapp::parseSimArgs(argc, argv, args, error)) {
+    if (!simapp::parseSimArgs(registry, argc, argv, args, error)) {
         std::fprintf(stderr, "gnss-sim: %s\nTry 'gnss-sim --help'.\n", error.c_str());
         return 2;
     }
     if (args.help) {
-        std::fputs(simapp::kUsage, stdout);
+        std::fputs(simapp::usage(registry).c_str(), stdout);
         return 0;
     }
     if (args.version) {
@@ -98,7 +100,7 @@ int main(int argc, char **argv) {
     if (args.rtcmBase)
         base = std::make_unique<sim::RtcmBaseStation>(args.base);
     else
-        rx = sim::makeReceiver(args.dialect, args.options);
+        rx = sim::makeReceiver(registry, args.dialect, args.options);
     // A base has no UART of its own: its line runs at --baud, 115200 by default.
     const int deviceBaud = rx ? rx->baud() : (args.options.baud > 0 ? args.options.baud : 115200);
     std::signal(SIGINT, onSignal);

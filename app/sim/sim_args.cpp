@@ -1,5 +1,6 @@
 #include "sim_args.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -7,8 +8,11 @@
 
 namespace gnss::simapp {
 
-const char *const kUsage =
-        "usage: gnss-sim --dialect nvs|geostar|nemerix|nmea [--pty | --tcp PORT | --stdout]\n"
+namespace {
+
+// The usage text around the dialect list, which comes from the records.
+const char *const kUsageHead =
+        "usage: gnss-sim --dialect D [--pty | --tcp PORT | --stdout]\n"
         "                [--seed N] [--speed X] [--baud B] [--faults SPEC] [--internal-base]\n"
         "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
         "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--baud B]\n"
@@ -16,8 +20,8 @@ const char *const kUsage =
         "\n"
         "A simulated GNSS receiver that answers its dialect's commands.\n"
         "\n"
-        "  --dialect D    the receiver: nvs (NV08C-RTK), geostar (GeoS-5), nemerix (VT002),\n"
-        "                 nmea (a plain NMEA 4.11 receiver)\n"
+        "  --dialect D    the receiver, one of:\n";
+const char *const kUsageTail =
         "  --pty          create a pseudo-terminal (default); its device path is the first\n"
         "                 line of standard output\n"
         "  --tcp PORT     listen on 127.0.0.1:PORT (one client at a time)\n"
@@ -45,8 +49,6 @@ const char *const kUsage =
         "Exit status: 0 standard input closed or the hangup fault, 1 the pseudo-terminal or\n"
         "port could not be opened, 2 usage error, 128 + N stopped by signal N (130 Ctrl-C).\n";
 
-namespace {
-
 template <class T> bool number(std::string_view s, T &out) {
     const char *end = s.data() + s.size();
     auto [p, ec] = std::from_chars(s.data(), end, out);
@@ -71,7 +73,19 @@ bool position(std::string_view s, sim::BaseStationConfig &base) {
 
 } // namespace
 
-bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error) {
+std::string usage(const DialectRegistry &registry) {
+    std::string text = kUsageHead;
+    for (std::string_view id : sim::simulatedDialects(registry)) {
+        const Dialect *d = registry.find(id);
+        std::string line = "                   " + std::string(id);
+        line.resize(std::max<std::size_t>(line.size() + 1, 28), ' ');
+        text += line + std::string(d->summary.empty() ? d->displayName : d->summary) + "\n";
+    }
+    return text + kUsageTail;
+}
+
+bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArgs &out,
+                  std::string &error) {
     // The first problem is kept and parsing goes on, so a --help or --version further on still
     // wins: they are how one finds out what is wrong.
     auto fail = [&](std::string message) {
@@ -169,10 +183,10 @@ bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error) {
         return false;
     }
     bool known = false;
-    for (auto d : sim::simulatedDialects()) known = known || d == out.dialect;
+    for (auto d : sim::simulatedDialects(registry)) known = known || d == out.dialect;
     if (!known) {
         error = "unknown dialect '" + out.dialect + "' (known:";
-        for (auto d : sim::simulatedDialects()) error += " " + std::string(d);
+        for (auto d : sim::simulatedDialects(registry)) error += " " + std::string(d);
         error += ")";
         return false;
     }

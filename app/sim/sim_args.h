@@ -1,5 +1,6 @@
 #pragma once
 // gnss-sim's command line, parsed apart from main() so it stays small and readable.
+#include "core/dialect_registry.h"
 #include "receiver.h"
 #include "rtcm_base_station.h"
 
@@ -22,10 +23,12 @@ struct SimArgs {
     bool version = false; // --version
 };
 
-extern const char *const kUsage;
+// The --help text; the receivers it offers are the registry's simulated ones.
+std::string usage(const DialectRegistry &registry);
 
 // Returns false with `error` set on a bad command line; true with `help` or `version` set when
-// either was asked, whatever else is on the line.
-bool parseSimArgs(int argc, char **argv, SimArgs &out, std::string &error);
+// either was asked, whatever else is on the line. --dialect takes the registry's simulated ones.
+bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArgs &out,
+                  std::string &error);
 
 } // namespace gnss::simapp

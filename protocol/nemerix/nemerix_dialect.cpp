@@ -1,6 +1,7 @@
 // The Nemerix VT002 dialect record.
 #include "nemerix_dialect.h"
 #include "nemerix_actions.h"
+#include "nemerix_sim_receiver.h"
 #include "nemerix_state.h"
 
 #include "nemerix_dialect_parts.h"
@@ -41,6 +42,7 @@ const Dialect &dialect() {
             .presets = kPresets,
             .linkSpeed = {"PNMRX100,"},
             .summary = "Nemerix VT002 (PNMRX...): GPS module, prefix renamable",
+            .makeSimulator = makeSimulatedReceiver,
     };
     return d;
 }

@@ -1,22 +1,19 @@
-// The simulator's receivers by dialect id: one line per receiver family.
-#include "geostar_receiver.h"
-#include "nemerix_receiver.h"
-#include "nmea_receiver.h"
-#include "nvs_receiver.h"
+// The simulator's receivers come from the dialect records: each family's record makes its own.
 #include "receiver.h"
 
 namespace gnss::sim {
 
-std::vector<std::string_view> simulatedDialects() {
-    return {"nvs", "geostar", "nemerix", "nmea"};
+std::vector<std::string_view> simulatedDialects(const DialectRegistry &registry) {
+    std::vector<std::string_view> ids;
+    for (const Dialect *d : registry.dialects())
+        if (d->makeSimulator) ids.push_back(d->id);
+    return ids;
 }
 
-std::unique_ptr<Receiver> makeReceiver(std::string_view dialect, const SimOptions &options) {
-    if (dialect == "nvs") return std::make_unique<NvsReceiver>(options);
-    if (dialect == "geostar") return std::make_unique<GeoStarReceiver>(options);
-    if (dialect == "nemerix") return std::make_unique<NemerixReceiver>(options);
-    if (dialect == "nmea") return std::make_unique<NmeaReceiver>(options);
-    return nullptr;
+std::unique_ptr<Receiver> makeReceiver(const DialectRegistry &registry, std::string_view dialect,
+                                       const SimOptions &options) {
+    const Dialect *d = registry.find(dialect);
+    return d && d->makeSimulator ? d->makeSimulator(options) : nullptr;
 }
 
 } // namespace gnss::sim

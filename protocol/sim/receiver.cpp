@@ -1,6 +1,6 @@
 #include "receiver.h"
 
-#include "dialects.h"
+#include "nmea/nmea_rules.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,8 +28,11 @@ DecoderOptions decoderOptionsFor(const Dialect &d) {
 
 } // namespace
 
+Receiver::Receiver(const Dialect &dialect, const SimOptions &options)
+    : Receiver(dialect, dialect.defaultBaud, options) {}
+
 Receiver::Receiver(const Dialect &dialect, int defaultBaud, const SimOptions &options)
-    : dialect_(dialect), options_(options), registry_(makeBuiltinRegistry()),
+    : dialect_(dialect), options_(options), registry_(standardSentenceRules(), {&dialect}),
       decoder_(registry_, decoderOptionsFor(dialect)), sky_(options.seed, options.observer),
       faultRng_(options.seed ^ 0x5EED5EEDu), defaultBaud_(defaultBaud),
       baud_(options.baud > 0 ? options.baud : defaultBaud), ttff_(ttffOf(ResetKind::PowerCycle)) {

@@ -3,12 +3,13 @@
 // whoever runs it (gnss-sim over a pseudo-terminal/TCP/stdout, a QIODevice in the link layer, a
 // test) feeds the host's bytes in, advances simulated time and takes the receiver's bytes out:
 //
-//     auto rx = sim::makeReceiver("nvs", options);
+//     auto rx = sim::makeReceiver(registry, "nvs", options);
 //     rx->receive("$PNVGRTK,PVTRATE,10*..\r\n");
 //     rx->advance(0.25);
 //     std::string bytes = rx->takeOutput();
 //
-// Each dialect's subclass (nmea_receiver.cpp, nvs_receiver.cpp, ...) holds the spec's behaviour:
+// Each family's subclass, in its own folder (nvs/nvs_sim_receiver.cpp, ...) and made by its
+// dialect record (Dialect::makeSimulator), holds the spec's behaviour:
 // default output list, rates and baud; how each command is answered; what is saved to flash.
 // Commands are read with the dialect's own decoders (gnss::StreamDecoder) and replies built with
 // its encoders, so the simulator and the rest of the program cannot disagree on syntax.
@@ -93,6 +94,9 @@ public:
     static constexpr int kLeapSeconds = 18;
 
 protected:
+    // A receiver of `dialect` (commands are read with its decoders and the standard ones only),
+    // starting at the record's default speed.
+    Receiver(const Dialect &dialect, const SimOptions &options);
     Receiver(const Dialect &dialect, int defaultBaud, const SimOptions &options);
 
     // One sentence received from the host (checksum accepted by the dialect's policy).
@@ -170,9 +174,13 @@ private:
     std::string out_;
 };
 
-// The receiver for a dialect id ("nvs", "geostar", "nemerix", "nmea"); nullptr when unknown.
+// The simulated receiver of a dialect in `registry` (its record's makeSimulator); nullptr when
+// the id is unknown or the family has no simulator.
+std::unique_ptr<Receiver> makeReceiver(const DialectRegistry &registry, std::string_view dialect,
+                                       const SimOptions &options = {});
+// The same over the built-in dialects (protocol/dialects.h; defined in gnss_dialects).
 std::unique_ptr<Receiver> makeReceiver(std::string_view dialect, const SimOptions &options = {});
-// Dialect ids the simulator knows.
-std::vector<std::string_view> simulatedDialects();
+// The ids of the dialects in `registry` that have a simulated receiver, in registry order.
+std::vector<std::string_view> simulatedDialects(const DialectRegistry &registry);
 
 } // namespace gnss::sim

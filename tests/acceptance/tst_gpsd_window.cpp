@@ -36,7 +36,7 @@ class TstGpsdWindow : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     DialectRegistry registry_ = makeBuiltinRegistry();
-    link::TransportFactory transports_ = app::makeTransportFactory();
+    link::TransportFactory transports_ = app::makeTransportFactory(registry_);
 
 private slots:
     void aGpsdSourceFillsTheViewsAndSaysWhyNothingIsSent() {

@@ -110,7 +110,7 @@ struct LoopWatch {
 class TstWindowAcceptance : public QObject {
     Q_OBJECT
     DialectRegistry registry_ = makeBuiltinRegistry();
-    link::TransportFactory transports_ = app::makeTransportFactory();
+    link::TransportFactory transports_ = app::makeTransportFactory(registry_);
     QTemporaryDir dir_;
     std::unique_ptr<link::test::SimProcess> sim_;
     std::unique_ptr<QSettings> settings_;

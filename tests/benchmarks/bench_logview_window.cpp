@@ -82,7 +82,7 @@ int main(int argc, char **argv) {
     QTemporaryDir dir;
     QSettings settings(dir.filePath("settings.ini"), QSettings::IniFormat);
     const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
-    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory();
+    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory(registry);
     gnss::app::MainWindow w(registry, transports, &settings);
     w.resize(1280, 800);
     w.show();

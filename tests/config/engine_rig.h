@@ -22,7 +22,7 @@ inline const DialectRegistry &registry() {
 
 struct EngineRig {
     explicit EngineRig(const QString &dialectId)
-        : dialect(registry().find(dialectId.toStdString())), sim(dialectId, 7),
+        : dialect(registry().find(dialectId.toStdString())), sim(registry(), dialectId, 7),
           stream(&sim, registry()), queue(&sim, &stream) {
         sim.setSpeed(2.0);
         opened = sim.open();

@@ -20,7 +20,7 @@ private slots:
         QTemporaryDir dir;
         QSettings settings(dir.filePath("settings.ini"), QSettings::IniFormat);
         const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
-        const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory();
+        const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory(registry);
         gnss::app::MainWindow w(registry, transports, &settings);
         QDockWidget *dock = w.dock("settingsDock");
         QVERIFY(dock);

@@ -4,9 +4,9 @@
 // restore defaults, cancel.
 #include "engine_rig.h"
 
-#include "geostar_receiver.h"
-#include "nemerix_receiver.h"
-#include "nvs_receiver.h"
+#include "geostar/geostar_sim_receiver.h"
+#include "nemerix/nemerix_sim_receiver.h"
+#include "nvs/nvs_sim_receiver.h"
 #include "presets.h"
 #include "setting_values.h"
 

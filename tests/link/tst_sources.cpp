@@ -94,7 +94,7 @@ class TstSources : public QObject {
     Q_OBJECT
 private slots:
     void inProcessSimulatorIsDetectedAndCommanded() {
-        SimulatorTransport sim(QStringLiteral("nvs"), 3, 9600); // receiver at 115200
+        SimulatorTransport sim(registry(), QStringLiteral("nvs"), 3, 9600); // receiver at 115200
         QVERIFY2(sim.open(), qPrintable(sim.errorString()));
         SentenceStream stream(&sim, registry());
         BaudDetector baud(&stream);

@@ -51,7 +51,7 @@ class TestLogviewWindow : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     DialectRegistry registry_ = makeBuiltinRegistry();
-    link::TransportFactory transports_ = app::makeTransportFactory();
+    link::TransportFactory transports_ = app::makeTransportFactory(registry_);
     std::string scenario_;
 
     std::unique_ptr<QSettings> settings() {

@@ -4,6 +4,7 @@
 #include "sim_output.h"
 
 #include "core/sentence_builder.h"
+#include "dialects.h"
 
 #include <QTest>
 
@@ -25,6 +26,11 @@ std::string run(std::string_view dialect, std::uint32_t seed, int baud = 0) {
     return out;
 }
 
+const DialectRegistry &registry() {
+    static const DialectRegistry r = makeBuiltinRegistry();
+    return r;
+}
+
 } // namespace
 
 class TstSimDeterminism : public QObject {
@@ -32,7 +38,7 @@ class TstSimDeterminism : public QObject {
 private slots:
     void sameSeedSameBytes_data() {
         QTest::addColumn<QString>("dialect");
-        for (std::string_view d : simulatedDialects())
+        for (std::string_view d : simulatedDialects(registry()))
             QTest::newRow(std::string(d).c_str()) << QString::fromUtf8(d.data(), d.size());
     }
     void sameSeedSameBytes() {
@@ -48,7 +54,7 @@ private slots:
     }
     void outputIsLimitedByTheLineSpeed_data() {
         QTest::addColumn<QString>("dialect");
-        for (std::string_view d : simulatedDialects())
+        for (std::string_view d : simulatedDialects(registry()))
             QTest::newRow(std::string(d).c_str()) << QString::fromUtf8(d.data(), d.size());
     }
     void outputIsLimitedByTheLineSpeed() {

@@ -1,7 +1,7 @@
 // The simulated GeoS-5M, in simulated time: default output (the spec's NQUERY example), every
 // section 4 command's reply or effect, RQUERY words read back with the geostar decoder, flash
 // persistence across a power cycle, v2.x / v4.10 numbering, baud switch.
-#include "geostar_receiver.h"
+#include "geostar/geostar_sim_receiver.h"
 #include "receiver.h"
 #include "sim_output.h"
 

@@ -66,8 +66,8 @@ std::vector<std::string> schemaTexts(const Dialect &d) {
 
 std::vector<std::string> reportTexts(const Dialect &d, const DialectRegistry &registry) {
     std::vector<std::string> out;
-    std::unique_ptr<sim::Receiver> rx = d.makeSimulator ? d.makeSimulator(sim::SimOptions{})
-                                                        : sim::makeReceiver(d.id);
+    std::unique_ptr<sim::Receiver> rx =
+            d.makeSimulator ? d.makeSimulator(sim::SimOptions{}) : nullptr;
     if (!rx) return out;
     // Everything the application asks: the identity, then every readable setting.
     std::string asked = std::string(d.probeCommand) + "\r\n";

@@ -1,4 +1,4 @@
-#include "geostar_receiver.h"
+#include "geostar_sim_receiver.h"
 
 #include "core/sentence_builder.h"
 #include "geostar/geostar_dialect.h"
@@ -69,7 +69,7 @@ char modeOf(FixKind k) {
 } // namespace
 
 GeoStarReceiver::GeoStarReceiver(const SimOptions &options)
-    : Receiver(geostar::dialect(), kDefaultBaud, options) {
+    : Receiver(geostar::dialect(), options) {
     current_ = flash_ = defaults();
     if (options.baud > 0) current_.baud = flash_.baud = options.baud;
     almanacSince_ = kAlmanacAfter;
@@ -537,3 +537,11 @@ std::string GeoStarReceiver::rlm() const {
 }
 
 } // namespace gnss::sim
+
+namespace gnss::geostar {
+
+std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options) {
+    return std::make_unique<sim::GeoStarReceiver>(options);
+}
+
+} // namespace gnss::geostar

@@ -13,8 +13,8 @@
 //   the reply carries the value in force), PNVGIDL MODE/ADD/REMOVE/CLEAR/SHOW.
 // PNVGCFG,W saves to the simulated flash; a power cycle (Receiver::powerCycle(), SIGHUP to
 // gnss-sim) and PNVGCFG,R restore from it; PNVGRST keeps the settings in force (spec table 4.3).
-#include "receiver.h"
-#include "standard_output.h"
+#include "sim/receiver.h"
+#include "sim/standard_output.h"
 
 #include "nvs/nvs_actions.h"
 #include "nvs/nvs_messages.h"
@@ -100,3 +100,8 @@ private:
 };
 
 } // namespace gnss::sim
+
+namespace gnss::nvs {
+// The record's simulator (Dialect::makeSimulator).
+std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
+} // namespace gnss::nvs

@@ -2,15 +2,14 @@
 // NmeaReceiver: a plain NMEA-0183 4.11 receiver (GPS, GLONASS, Galileo, BeiDou, SBAS) with the
 // usual default output (GGA, GSA, RMC, VTG, ZDA at 1 Hz and GSV every 2 s, 9600 baud) that answers
 // standard queries ($--GPQ,GGA) with the sentence asked for.
-#include "receiver.h"
-#include "standard_output.h"
+#include "sim/receiver.h"
+#include "sim/standard_output.h"
 
 namespace gnss::sim {
 
 class NmeaReceiver : public Receiver {
 public:
     explicit NmeaReceiver(const SimOptions &options = {});
-    static constexpr int kDefaultBaud = 9600;
 
 protected:
     void onCommand(const Sentence &s, const Message *decoded, std::string_view error) override;
@@ -23,5 +22,8 @@ private:
     StandardStyle style_;
     unsigned epochs_ = 0;
 };
+
+// The plain NMEA record's simulator (Dialect::makeSimulator).
+std::unique_ptr<Receiver> makeNmeaReceiver(const SimOptions &options);
 
 } // namespace gnss::sim

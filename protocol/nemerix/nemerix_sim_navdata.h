@@ -4,7 +4,7 @@
 // encoders (protocol/nemerix), so the values decode back to the orbits the sky model flies:
 // circular orbits give e = 0, omega = 0, delta-n = 0; sqrt(A), i0, Omega0 (referred to the GPS
 // week as IS-GPS-200 20.3.3.4.3 does) and M0 come from each orbit's radius, plane and phase.
-#include "sky_model.h"
+#include "sim/sky_model.h"
 
 #include <string>
 #include <vector>

@@ -19,8 +19,8 @@
 //   PNMRX603 five settings reports (messages 0..4) from the state.
 // The VT002 has no "save" command: a power cycle returns to the factory settings.
 #include "nemerix/nemerix_actions.h"
-#include "receiver.h"
-#include "standard_output.h"
+#include "sim/receiver.h"
+#include "sim/standard_output.h"
 
 #include <array>
 #include <deque>
@@ -84,3 +84,8 @@ private:
 };
 
 } // namespace gnss::sim
+
+namespace gnss::nemerix {
+// The record's simulator (Dialect::makeSimulator).
+std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
+} // namespace gnss::nemerix

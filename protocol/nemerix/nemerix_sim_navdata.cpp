@@ -1,4 +1,4 @@
-#include "nemerix_navdata.h"
+#include "nemerix_sim_navdata.h"
 
 #include "core/sentence_builder.h"
 #include "nemerix/nemerix_commands.h"

@@ -1,9 +1,9 @@
-#include "nemerix_receiver.h"
+#include "nemerix_sim_receiver.h"
 
 #include "core/sentence_builder.h"
 #include "nemerix/nemerix_commands.h"
 #include "nemerix/nemerix_dialect.h"
-#include "nemerix_navdata.h"
+#include "nemerix_sim_navdata.h"
 #include "nmea/nmea_messages.h"
 
 #include <algorithm>
@@ -42,7 +42,7 @@ std::string decimal1(double v) {
 } // namespace
 
 NemerixReceiver::NemerixReceiver(const SimOptions &options)
-    : Receiver(nemerix::dialect(), kDefaultBaud, options) {
+    : Receiver(nemerix::dialect(), options) {
     current_ = defaults();
     if (options.baud > 0) current_.baud = options.baud;
 }
@@ -400,3 +400,11 @@ std::vector<std::string> NemerixReceiver::sentencesOf(int message, const SkySnap
 }
 
 } // namespace gnss::sim
+
+namespace gnss::nemerix {
+
+std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options) {
+    return std::make_unique<sim::NemerixReceiver>(options);
+}
+
+} // namespace gnss::nemerix

@@ -21,8 +21,8 @@
 // (Galileo 101-136), GSA per system (GP/GL/GA); v4.10: GN talkers, GSA with the system id,
 // GSV per system with the signal id (Galileo 7), GNS with per-system subsidiary sentences.
 #include "geostar/geostar_actions.h"
-#include "receiver.h"
-#include "standard_output.h"
+#include "sim/receiver.h"
+#include "sim/standard_output.h"
 
 #include <array>
 #include <cstdint>
@@ -103,3 +103,8 @@ private:
 };
 
 } // namespace gnss::sim
+
+namespace gnss::geostar {
+// The record's simulator (Dialect::makeSimulator).
+std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
+} // namespace gnss::geostar

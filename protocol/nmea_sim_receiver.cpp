@@ -1,12 +1,11 @@
-#include "nmea_receiver.h"
+#include "nmea_sim_receiver.h"
 
 #include "dialects.h"
 #include "nmea/nmea_messages.h"
 
 namespace gnss::sim {
 
-NmeaReceiver::NmeaReceiver(const SimOptions &options)
-    : Receiver(nmeaDialect(), kDefaultBaud, options) {
+NmeaReceiver::NmeaReceiver(const SimOptions &options) : Receiver(nmeaDialect(), options) {
     style_.numbering = Numbering::Nmea41;
 }
 
@@ -39,6 +38,10 @@ void NmeaReceiver::onEpoch(const SkySnapshot &snap) {
         if (type == "GSV" && !withGsv) continue;
         for (const std::string &line : sentencesOf(type, snap)) send(line);
     }
+}
+
+std::unique_ptr<Receiver> makeNmeaReceiver(const SimOptions &options) {
+    return std::make_unique<NmeaReceiver>(options);
 }
 
 } // namespace gnss::sim

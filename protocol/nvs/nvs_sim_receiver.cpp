@@ -1,4 +1,4 @@
-#include "nvs_receiver.h"
+#include "nvs_sim_receiver.h"
 
 #include "core/sentence_builder.h"
 #include "core/wgs84.h"
@@ -54,8 +54,7 @@ std::string joined(const std::vector<std::string_view> &values) {
 
 } // namespace
 
-NvsReceiver::NvsReceiver(const SimOptions &options)
-    : Receiver(nvs::dialect(), kDefaultBaud, options) {
+NvsReceiver::NvsReceiver(const SimOptions &options) : Receiver(nvs::dialect(), options) {
     current_ = saved_ = defaults();
     if (options.baud > 0)
         current_.ports[kCurrentPort].baud = saved_.ports[kCurrentPort].baud = options.baud;
@@ -545,3 +544,11 @@ void NvsReceiver::handleIdl(const Sentence &s, const nvs::Idl &m) {
 }
 
 } // namespace gnss::sim
+
+namespace gnss::nvs {
+
+std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options) {
+    return std::make_unique<sim::NvsReceiver>(options);
+}
+
+} // namespace gnss::nvs
