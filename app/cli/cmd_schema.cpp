@@ -4,6 +4,7 @@
 #include "cli_commands.h"
 #include "core/json_writer.h"
 #include "core/sentence_builder.h"
+#include "core/settings_plan.h"
 
 #include <cstdio>
 #include <string>
@@ -78,19 +79,14 @@ int cmdEncode(const CliContext &ctx) {
         return 2;
     }
     EncodeResult result;
+    if (d->settings.empty()) {
+        std::fprintf(stderr, "gnss-cli: the %s dialect has no settings\n",
+                     std::string(d->id).c_str());
+        return 2;
+    }
     if (args.flag("query")) {
-        if (!d->encodeQueries) {
-            std::fprintf(stderr, "gnss-cli: the %s dialect has no settings to read back\n",
-                         std::string(d->id).c_str());
-            return 2;
-        }
-        result = d->encodeQueries(rest);
+        result = encodeQueries(*d, rest);
     } else {
-        if (!d->encodeSettings) {
-            std::fprintf(stderr, "gnss-cli: the %s dialect has no settings to write\n",
-                         std::string(d->id).c_str());
-            return 2;
-        }
         std::vector<KeyValue> values;
         for (const auto &kv : rest) {
             const auto eq = kv.find('=');
@@ -100,7 +96,7 @@ int cmdEncode(const CliContext &ctx) {
             }
             values.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
         }
-        result = d->encodeSettings(values);
+        result = encodeSettings(*d, values);
         refuseLongSentences(result, d->maxSentenceLength);
     }
     if (!result.ok()) {

@@ -1,5 +1,7 @@
 #include "setting_values.h"
 
+#include "core/setting_command.h"
+
 #include "core/field_parse.h"
 
 #include <algorithm>
@@ -85,11 +87,13 @@ bool isAction(const SettingDef &def) {
 }
 
 bool isReadable(const SettingDef &def) {
-    return !isAction(def) && def.access != SettingAccess::WriteOnly;
+    return !isAction(def) && def.access != SettingAccess::WriteOnly && def.command &&
+           def.command->read;
 }
 
 bool isWritable(const SettingDef &def) {
-    return !isAction(def) && def.access != SettingAccess::ReadOnly;
+    return !isAction(def) && def.access != SettingAccess::ReadOnly && def.command &&
+           def.command->write;
 }
 
 } // namespace gnss::config

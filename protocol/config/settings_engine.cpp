@@ -1,5 +1,6 @@
 // Before any Qt header: core headers have members named emit, which Qt defines as a macro.
 #include "core/dialect_registry.h"
+#include "core/settings_plan.h"
 #include "core/stream_decoder.h"
 
 #include "settings_engine.h"
@@ -260,8 +261,8 @@ bool SettingsEngine::read(const std::vector<std::string> &keys) {
         }
     }
     std::vector<std::string> sentences;
-    if (!wanted.empty() && dialect_->encodeQueries) {
-        const EncodeResult q = dialect_->encodeQueries(wanted);
+    if (!wanted.empty()) {
+        const EncodeResult q = encodeQueries(*dialect_, wanted);
         if (!q.ok()) {
             report_.error = refusalText(q, dialect_->id);
             end();
@@ -309,7 +310,7 @@ std::vector<KeyValue> SettingsEngine::withCompanions(std::vector<KeyValue> chang
     // name their command, and the others' values in force complete the change.
     for (const auto &kv : original) {
         const SettingDef *def = findSetting(dialect_->settings, kv.key);
-        if (!def || def->command.empty()) continue;
+        if (!def || !def->command || !def->command->together) continue;
         for (const auto &other : dialect_->settings)
             if (other.command == def->command) add(other);
     }
@@ -334,13 +335,8 @@ bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
         end();
         return true;
     }
-    if (!dialect_->encodeSettings) {
-        report_.error = tr("the %1 dialect has no settings encoder").arg(qs(dialect_->id));
-        end();
-        return false;
-    }
     applying_ = withCompanions(changes);
-    EncodeResult enc = dialect_->encodeSettings(applying_);
+    EncodeResult enc = encodeSettings(*dialect_, applying_);
     refuseLongSentences(enc, dialect_->maxSentenceLength);
     if (!enc.ok()) {
         report_.error = tr("nothing was sent: %1").arg(refusalText(enc, dialect_->id));
@@ -466,12 +462,12 @@ void SettingsEngine::startVerify() {
         const SettingDef *def = findSetting(dialect_->settings, kv.key);
         if (def && isReadable(*def)) keys.push_back(kv.key);
     }
-    if (linkLost || keys.empty() || !dialect_->encodeQueries || !queue_) {
+    if (linkLost || keys.empty() || !queue_) {
         finishVerify();
         end();
         return;
     }
-    const EncodeResult q = dialect_->encodeQueries(keys);
+    const EncodeResult q = encodeQueries(*dialect_, keys);
     for (const auto &k : keys) reported_.erase(k);
     if (!q.ok() || q.sentences.empty() || !enqueue(q.sentences)) {
         if (!q.ok())

@@ -180,13 +180,10 @@ struct Dialect {
     // Settings and commands.
     std::span<const SettingDef> settings;
     std::span<const ReplyRule> replyRules;
-    // Sentences that set the given settings (validated first: nothing is built on error).
-    EncodeResult (*encodeSettings)(std::span<const KeyValue> values) = nullptr;
+    // (Sentences that write and read settings come from the rows' commands: settings_plan.h.)
     // The longest sentence the receiver takes, with its "\r\n" (NMEA 0183: 82). A longer command
     // is refused before anything is sent (refuseLongSentences).
     std::size_t maxSentenceLength = 82;
-    // Sentences that read the given settings back.
-    EncodeResult (*encodeQueries)(std::span<const std::string> keys) = nullptr;
     // Setting values carried by a decoded reply (read-back), appended to `out`.
     void (*extractSettings)(const Message &reply, std::vector<KeyValue> &out) = nullptr;
 

@@ -42,6 +42,8 @@ enum class SettingRole : std::uint8_t {
     PortSpeed,     // the speed of the port the host is on, bit/s
 };
 
+struct SettingCommand; // setting_command.h
+
 struct SettingOption {
     std::string_view value; // what is sent ("1", "GPS", "ON")
     std::string_view label; // what the user reads
@@ -61,10 +63,9 @@ struct SettingDef {
     SettingAccess access = SettingAccess::ReadWrite;
     std::string_view readBack; // how it is read back: the query and where the value is (help)
     std::string_view write;    // how it is written: the command template (help)
-    // The command that writes it ("PNVGRZA,1"): the settings of one command always go together
-    // (the settings engine completes a change with the others' values in force). Empty: the
-    // setting has a command of its own. The engine plans from this, never from the texts above.
-    std::string_view command;
+    // The command that writes it and reads it back (setting_command.h). Plans are made from
+    // this, never from the texts above. nullptr: neither written nor read (not a setting).
+    const SettingCommand *command = nullptr;
     SettingRole role = SettingRole::None;
 };
 

@@ -2,6 +2,8 @@
 #include "geostar_commands.h"
 
 #include "core/sentence_builder.h"
+#include "core/settings_plan.h"
+#include "geostar_dialect.h"
 #include "geostar_schema.h"
 
 namespace gnss::geostar {
@@ -86,10 +88,16 @@ EncodeResult fixed(std::string_view text) {
     return r;
 }
 
-// One setting, without the read-back query that encodeSettings() appends.
+// One setting's set command, without the read-back query a plan adds to confirm it.
 EncodeResult setting(std::string_view key, std::string value) {
     const KeyValue kv{std::string(key), std::move(value)};
-    return encodeSettingCommands(std::span<const KeyValue>(&kv, 1));
+    std::vector<PlannedCommand> plan;
+    EncodeResult r;
+    if (Refusal why = planWrites(dialect(), std::span<const KeyValue>(&kv, 1), plan); !why.empty())
+        r.refuse(std::move(why));
+    else
+        r = plan.front().command->write(plan.front().values);
+    return r;
 }
 
 } // namespace

@@ -51,8 +51,6 @@ const Dialect &dialect() {
             .updateState = updateState,
             .settings = settingsSchema(),
             .replyRules = replyRules(),
-            .encodeSettings = encodeSettings,
-            .encodeQueries = encodeQueries,
             .extractSettings = extractSettings,
             .probeCommand = "$GPSGG,RQUERY*70",
             .commandNames = kCommandNames,

@@ -3,6 +3,7 @@
 #include "geostar_schema.h"
 
 #include "core/field_parse.h"
+#include "core/setting_command.h"
 #include "geostar_commands.h"
 #include "geostar_messages.h"
 
@@ -32,133 +33,6 @@ constexpr SettingOption kStart[] = {
 constexpr SettingOption kSave[] = {{"1", "save almanacs to flash"}};
 constexpr SettingOption kSwprot[] = {{"binary", "switch the port to the binary protocol"}};
 
-#define GEOSTAR_OUTPUT(MSG, LABEL, HELP, FIELD)                                                    \
-    SettingDef {                                                                                   \
-        .key = "output." MSG, .label = LABEL, .group = "Output messages", .type = T::Bool,         \
-        .help = HELP, .access = A::ReadWrite,                                                      \
-        .readBack = "NQUERY reply, field " FIELD " (" MSG " rate code; 0 = off, 1/2/3/R = on)",    \
-        .write = "$GPSGG," MSG " ON / $GPSGG," MSG "OFF"                                           \
-    }
-
-constexpr SettingDef kSchema[] = {
-        GEOSTAR_OUTPUT("GGA", "GGA/GNS output", "GGA, and GNS in v4.10 (4.10)", "4"),
-        GEOSTAR_OUTPUT("GLL", "GLL output", "Geographic position (4.11)", "5"),
-        GEOSTAR_OUTPUT("GSA", "GSA output", "DOP and active satellites (4.12)", "6"),
-        GEOSTAR_OUTPUT("GSV", "GSV output", "Satellites in view (4.13)", "7"),
-        GEOSTAR_OUTPUT("RMC", "RMC output", "Recommended minimum data (4.14)", "8"),
-        GEOSTAR_OUTPUT("VTG", "VTG output", "Course and speed (4.15)", "9"),
-        GEOSTAR_OUTPUT("ZDA", "ZDA output", "Time and date (4.16)", "11"),
-        GEOSTAR_OUTPUT("DTM", "DTM output", "Datum (4.17)", "12"),
-        GEOSTAR_OUTPUT("RLM", "RLM output", "Galileo return link message (4.18)", "13"),
-        {.key = "output.NMEAV",
-         .label = "NMEA version",
-         .group = "Output messages",
-         .type = T::Enum,
-         .options = kNmea,
-         .help = "NMEA 0183 standard of the output: v2.x or v4.10 (4.19)",
-         .readBack = "NQUERY reply, field 3 (2 = v2.x, 4 = v4.10)",
-         .write = "$GPSGG,NMEAV2 / $GPSGG,NMEAV4"},
-        {.key = "output.RATE",
-         .label = "Output rate",
-         .group = "Output messages",
-         .type = T::Enum,
-         .unit = "Hz",
-         .options = kRate,
-         .help = "Navigation output rate (4.20)",
-         .readBack = "NQUERY reply, field 2 (0 = 10 Hz, 1 = 5 Hz, 2 = 2 Hz, 3 = 1 Hz); also "
-                     "RQUERY configuration register 1 bits 19:18",
-         .write = "$GPSGG,RATE01 / RATE02 / RATE05 / RATE10",
-         .role = SettingRole::OutputRate},
-        {.key = "power.PSM",
-         .label = "Power saving",
-         .group = "Power",
-         .type = T::Bool,
-         .help = "Power saving modes on/off; in FIX-BY-REQUEST sleep, PSM ON wakes the receiver "
-                 "(4.21). Read back inferred from table 8 bit 24 (power saving modes enabled).",
-         .readBack = "RQUERY reply, configuration register 1 bit 24",
-         .write = "$GPSGG,PSM ON / $GPSGG,PSMOFF"},
-        {.key = "nav.ELEV",
-         .label = "Elevation mask",
-         .group = "Navigation",
-         .type = T::Integer,
-         .unit = "deg",
-         .min = 5,
-         .max = 15,
-         .help = "Satellites below the mask are not used in the solution (4.22)",
-         .access = A::WriteOnly,
-         .readBack = "not reported by RQUERY or NQUERY",
-         .write = "$GPSGG,ELEVnn (nn = 05..15)",
-         .role = SettingRole::ElevationMask},
-        {.key = "nav.DAT",
-         .label = "Datum",
-         .group = "Navigation",
-         .type = T::Enum,
-         .options = kDatum,
-         .help = "Coordinate system of the navigation output (4.23)",
-         .readBack = "RQUERY reply, configuration register 2 bits 15:14 (0 = WGS-84, "
-                     "1 = PZ-90.11, 2 = user-defined)",
-         .write = "$GPSGG,DATW84 / $GPSGG,DATP90"},
-        {.key = "nav.NVS",
-         .label = "Constellations",
-         .group = "Navigation",
-         .type = T::Enum,
-         .options = kGnss,
-         .help = "GNSS used: GPS only, GLONASS only or GLONASS+GPS+Galileo (4.24)",
-         .readBack = "RQUERY reply, configuration register 1 bits 2:0 (Galileo, GPS, GLONASS in "
-                     "use)",
-         .write = "$GPSGG,NVSGPS / NVSGLN / NVSMIX"},
-        {.key = "port.BDR",
-         .label = "Baud rate",
-         .group = "Port",
-         .type = T::Enum,
-         .unit = "bit/s",
-         .options = kBaud,
-         .help = "Serial port speed; takes effect after the command (4.8)",
-         .access = A::WriteOnly,
-         .readBack = "not reported (NQUERY gives the port number only)",
-         .write = "$GPSGG,BDR004 / 009 / 019 / 038 / 057 / 115 / 230 / 460 / 921",
-         .role = SettingRole::PortSpeed},
-        {.key = "port.STOP",
-         .label = "Stop bits",
-         .group = "Port",
-         .type = T::Enum,
-         .options = kStop,
-         .help = "Serial port stop bits (4.9)",
-         .access = A::WriteOnly,
-         .readBack = "not reported by RQUERY or NQUERY",
-         .write = "$GPSGG,STOP01 / $GPSGG,STOP02"},
-        {.key = "action.START",
-         .label = "Restart",
-         .group = "Actions",
-         .type = T::Enum,
-         .options = kStart,
-         .help = "Cold, warm or hot start (4.3-4.5)",
-         .access = A::WriteOnly,
-         .readBack = "an action: nothing to read back",
-         .write = "$GPSGG,CSTART / WSTART / HSTART"},
-        {.key = "action.SAVEFL",
-         .label = "Save almanacs",
-         .group = "Actions",
-         .type = T::Enum,
-         .options = kSave,
-         .help = "Save almanacs to flash (4.2)",
-         .access = A::WriteOnly,
-         .readBack = "an action: nothing to read back (RQUERY status bit 30 shows a write in "
-                     "progress)",
-         .write = "$GPSGG,SAVEFL"},
-        {.key = "action.SWPROT",
-         .label = "Binary protocol",
-         .group = "Actions",
-         .type = T::Enum,
-         .options = kSwprot,
-         .help = "Switch the port from NMEA to the binary protocol (4.1)",
-         .access = A::WriteOnly,
-         .readBack = "an action: nothing to read back",
-         .write = "$GPSGG,SWPROT"},
-};
-
-#undef GEOSTAR_OUTPUT
-
 std::string lower(std::string_view s) {
     std::string r(s);
     for (char &c : r)
@@ -180,129 +54,216 @@ std::string normalise(const SettingDef &d, std::string_view value) {
     return std::string(value);
 }
 
-Refusal unknownKey(std::string_view key) {
-    std::string known;
-    for (const auto &d : kSchema) known += (known.empty() ? "" : ", ") + std::string(d.key);
-    return refusal(QT_TRANSLATE_NOOP("Refusal", "unknown setting '%1' (geostar settings: %2)"),
-                   {std::string(key), known});
-}
+// ---- The commands the rows name: each value is one command text of the table (4.x) ----------
 
-int effectOrder(CommandEffect e) {
-    switch (e) {
-    case CommandEffect::None:
-    case CommandEffect::ChangesOutput: return 0;
-    case CommandEffect::ResetsReceiver: return 2;
-    case CommandEffect::ChangesBaud: return 3;
-    case CommandEffect::ChangesProtocol: return 4;
-    }
-    return 0;
-}
-
-bool plan(std::span<const KeyValue> values, std::vector<const CommandDef *> &out,
-          EncodeResult &error) {
-    for (const auto &kv : values) {
-        const SettingDef *d = findSetting(kSchema, kv.key);
-        if (!d) {
-            error.refuse(unknownKey(kv.key));
-            return false;
-        }
-        const std::string v = normalise(*d, kv.value);
-        if (Refusal e = validateSetting(*d, v); !e.empty()) {
-            error.refuse(std::move(e));
-            return false;
-        }
-        const CommandDef *c = findCommandFor(d->key, v);
-        if (!c) {
-            error.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: '%2' is reported by the "
-                                                              "receiver but cannot be set with "
-                                                              "an NMEA command"),
-                                 {std::string(d->key), v}));
-            return false;
-        }
-        out.push_back(c);
-    }
-    std::stable_sort(out.begin(), out.end(), [](const CommandDef *a, const CommandDef *b) {
-        return effectOrder(a->effect) < effectOrder(b->effect);
-    });
-    return true;
-}
-
-void addUnique(std::vector<std::string> &v, std::string s) {
-    if (std::find(v.begin(), v.end(), s) == v.end()) v.push_back(std::move(s));
-}
-
-// The query a setting is read back with: the readBack text starts with its name.
-std::string_view queryOf(const SettingDef &d) {
-    if (d.access == A::WriteOnly) return {};
-    if (d.readBack.starts_with("NQUERY")) return "NQUERY";
-    if (d.readBack.starts_with("RQUERY")) return "RQUERY";
+Refusal validateByTable(const SettingDef &d, std::string_view value) {
+    const std::string v = normalise(d, value);
+    if (Refusal e = validateSetting(d, v); !e.empty()) return e;
+    if (!findCommandFor(d.key, v))
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: '%2' is reported by the receiver but "
+                                                    "cannot be set with an NMEA command"),
+                       {std::string(d.key), v});
     return {};
+}
+
+const SettingDef &rowOf(std::string_view key);
+
+EncodeResult writeByTable(std::span<const KeyValue> values) {
+    EncodeResult r;
+    for (const auto &kv : values)
+        r.sentences.push_back(
+                encodeCommand(*findCommandFor(kv.key, normalise(rowOf(kv.key), kv.value))));
+    return r;
+}
+
+EncodeResult query(std::string_view text) {
+    EncodeResult r;
+    r.sentences.push_back(encodeCommand(*findCommand(text)));
+    return r;
+}
+EncodeResult readNquery(std::span<const std::string>) {
+    return query("NQUERY");
+}
+EncodeResult readRquery(std::span<const std::string>) {
+    return query("RQUERY");
+}
+
+// Set commands are answered with nothing: the query that reports them is the confirmation.
+constexpr SettingCommand kOutputCommand{.name = "GPSGG (output, NQUERY)",
+                                        .confirmedByRead = true,
+                                        .validate = validateByTable,
+                                        .write = writeByTable,
+                                        .read = readNquery};
+constexpr SettingCommand kConfigCommand{.name = "GPSGG (configuration, RQUERY)",
+                                        .confirmedByRead = true,
+                                        .validate = validateByTable,
+                                        .write = writeByTable,
+                                        .read = readRquery};
+constexpr SettingCommand kUnreportedCommand{
+        .name = "GPSGG (not reported)", .validate = validateByTable, .write = writeByTable};
+// What changes the link: a restart, then the port's framing, then leaving NMEA.
+constexpr SettingCommand kRestartCommand{.name = "GPSGG,xSTART",
+                                         .changesLink = true,
+                                         .order = 0,
+                                         .validate = validateByTable,
+                                         .write = writeByTable};
+constexpr SettingCommand kPortCommand{.name = "GPSGG,BDR/STOP",
+                                      .changesLink = true,
+                                      .order = 1,
+                                      .validate = validateByTable,
+                                      .write = writeByTable};
+constexpr SettingCommand kProtocolCommand{.name = "GPSGG,SWPROT",
+                                          .changesLink = true,
+                                          .order = 2,
+                                          .validate = validateByTable,
+                                          .write = writeByTable};
+
+#define GEOSTAR_OUTPUT(MSG, LABEL, HELP, FIELD)                                                    \
+    SettingDef {                                                                                   \
+        .key = "output." MSG, .label = LABEL, .group = "Output messages", .type = T::Bool,         \
+        .help = HELP, .access = A::ReadWrite,                                                      \
+        .readBack = "NQUERY reply, field " FIELD " (" MSG " rate code; 0 = off, 1/2/3/R = on)",    \
+        .write = "$GPSGG," MSG " ON / $GPSGG," MSG "OFF", .command = &kOutputCommand               \
+    }
+
+constexpr SettingDef kSchema[] = {
+        GEOSTAR_OUTPUT("GGA", "GGA/GNS output", "GGA, and GNS in v4.10 (4.10)", "4"),
+        GEOSTAR_OUTPUT("GLL", "GLL output", "Geographic position (4.11)", "5"),
+        GEOSTAR_OUTPUT("GSA", "GSA output", "DOP and active satellites (4.12)", "6"),
+        GEOSTAR_OUTPUT("GSV", "GSV output", "Satellites in view (4.13)", "7"),
+        GEOSTAR_OUTPUT("RMC", "RMC output", "Recommended minimum data (4.14)", "8"),
+        GEOSTAR_OUTPUT("VTG", "VTG output", "Course and speed (4.15)", "9"),
+        GEOSTAR_OUTPUT("ZDA", "ZDA output", "Time and date (4.16)", "11"),
+        GEOSTAR_OUTPUT("DTM", "DTM output", "Datum (4.17)", "12"),
+        GEOSTAR_OUTPUT("RLM", "RLM output", "Galileo return link message (4.18)", "13"),
+        {.key = "output.NMEAV",
+         .label = "NMEA version",
+         .group = "Output messages",
+         .type = T::Enum,
+         .options = kNmea,
+         .help = "NMEA 0183 standard of the output: v2.x or v4.10 (4.19)",
+         .readBack = "NQUERY reply, field 3 (2 = v2.x, 4 = v4.10)",
+         .write = "$GPSGG,NMEAV2 / $GPSGG,NMEAV4",
+         .command = &kOutputCommand},
+        {.key = "output.RATE",
+         .label = "Output rate",
+         .group = "Output messages",
+         .type = T::Enum,
+         .unit = "Hz",
+         .options = kRate,
+         .help = "Navigation output rate (4.20)",
+         .readBack = "NQUERY reply, field 2 (0 = 10 Hz, 1 = 5 Hz, 2 = 2 Hz, 3 = 1 Hz); also "
+                     "RQUERY configuration register 1 bits 19:18",
+         .write = "$GPSGG,RATE01 / RATE02 / RATE05 / RATE10",
+         .command = &kOutputCommand,
+         .role = SettingRole::OutputRate},
+        {.key = "power.PSM",
+         .label = "Power saving",
+         .group = "Power",
+         .type = T::Bool,
+         .help = "Power saving modes on/off; in FIX-BY-REQUEST sleep, PSM ON wakes the receiver "
+                 "(4.21). Read back inferred from table 8 bit 24 (power saving modes enabled).",
+         .readBack = "RQUERY reply, configuration register 1 bit 24",
+         .write = "$GPSGG,PSM ON / $GPSGG,PSMOFF",
+         .command = &kConfigCommand},
+        {.key = "nav.ELEV",
+         .label = "Elevation mask",
+         .group = "Navigation",
+         .type = T::Integer,
+         .unit = "deg",
+         .min = 5,
+         .max = 15,
+         .help = "Satellites below the mask are not used in the solution (4.22)",
+         .access = A::WriteOnly,
+         .readBack = "not reported by RQUERY or NQUERY",
+         .write = "$GPSGG,ELEVnn (nn = 05..15)",
+         .command = &kUnreportedCommand,
+         .role = SettingRole::ElevationMask},
+        {.key = "nav.DAT",
+         .label = "Datum",
+         .group = "Navigation",
+         .type = T::Enum,
+         .options = kDatum,
+         .help = "Coordinate system of the navigation output (4.23)",
+         .readBack = "RQUERY reply, configuration register 2 bits 15:14 (0 = WGS-84, "
+                     "1 = PZ-90.11, 2 = user-defined)",
+         .write = "$GPSGG,DATW84 / $GPSGG,DATP90",
+         .command = &kConfigCommand},
+        {.key = "nav.NVS",
+         .label = "Constellations",
+         .group = "Navigation",
+         .type = T::Enum,
+         .options = kGnss,
+         .help = "GNSS used: GPS only, GLONASS only or GLONASS+GPS+Galileo (4.24)",
+         .readBack = "RQUERY reply, configuration register 1 bits 2:0 (Galileo, GPS, GLONASS in "
+                     "use)",
+         .write = "$GPSGG,NVSGPS / NVSGLN / NVSMIX",
+         .command = &kConfigCommand},
+        {.key = "port.BDR",
+         .label = "Baud rate",
+         .group = "Port",
+         .type = T::Enum,
+         .unit = "bit/s",
+         .options = kBaud,
+         .help = "Serial port speed; takes effect after the command (4.8)",
+         .access = A::WriteOnly,
+         .readBack = "not reported (NQUERY gives the port number only)",
+         .write = "$GPSGG,BDR004 / 009 / 019 / 038 / 057 / 115 / 230 / 460 / 921",
+         .command = &kPortCommand,
+         .role = SettingRole::PortSpeed},
+        {.key = "port.STOP",
+         .label = "Stop bits",
+         .group = "Port",
+         .type = T::Enum,
+         .options = kStop,
+         .help = "Serial port stop bits (4.9)",
+         .access = A::WriteOnly,
+         .readBack = "not reported by RQUERY or NQUERY",
+         .write = "$GPSGG,STOP01 / $GPSGG,STOP02",
+         .command = &kPortCommand},
+        {.key = "action.START",
+         .label = "Restart",
+         .group = "Actions",
+         .type = T::Enum,
+         .options = kStart,
+         .help = "Cold, warm or hot start (4.3-4.5)",
+         .access = A::WriteOnly,
+         .readBack = "an action: nothing to read back",
+         .write = "$GPSGG,CSTART / WSTART / HSTART",
+         .command = &kRestartCommand},
+        {.key = "action.SAVEFL",
+         .label = "Save almanacs",
+         .group = "Actions",
+         .type = T::Enum,
+         .options = kSave,
+         .help = "Save almanacs to flash (4.2)",
+         .access = A::WriteOnly,
+         .readBack = "an action: nothing to read back (RQUERY status bit 30 shows a write in "
+                     "progress)",
+         .write = "$GPSGG,SAVEFL",
+         .command = &kUnreportedCommand},
+        {.key = "action.SWPROT",
+         .label = "Binary protocol",
+         .group = "Actions",
+         .type = T::Enum,
+         .options = kSwprot,
+         .help = "Switch the port from NMEA to the binary protocol (4.1)",
+         .access = A::WriteOnly,
+         .readBack = "an action: nothing to read back",
+         .write = "$GPSGG,SWPROT",
+         .command = &kProtocolCommand},
+};
+
+#undef GEOSTAR_OUTPUT
+
+const SettingDef &rowOf(std::string_view key) {
+    return *findSetting(kSchema, key);
 }
 
 } // namespace
 
 std::span<const SettingDef> settingsSchema() {
     return kSchema;
-}
-
-EncodeResult encodeSettingCommands(std::span<const KeyValue> values) {
-    EncodeResult r;
-    std::vector<const CommandDef *> planned;
-    if (!plan(values, planned, r)) return r;
-    for (const CommandDef *c : planned) r.sentences.push_back(encodeCommand(*c));
-    return r;
-}
-
-EncodeResult encodeSettings(std::span<const KeyValue> values) {
-    EncodeResult r;
-    std::vector<const CommandDef *> planned;
-    if (!plan(values, planned, r)) return r;
-    // Commands, then the confirming queries, then whatever resets / re-speeds / leaves NMEA
-    // (after those a query would not be answered on the same terms).
-    std::vector<std::string> confirm;
-    for (const CommandDef *c : planned)
-        if (!c->confirmedBy.empty()) addUnique(confirm, std::string(c->confirmedBy));
-    bool confirmed = false;
-    for (const CommandDef *c : planned) {
-        if (!confirmed && effectOrder(c->effect) > 0) {
-            for (const auto &q : confirm) r.sentences.push_back(encodeCommand(*findCommand(q)));
-            confirmed = true;
-        }
-        r.sentences.push_back(encodeCommand(*c));
-    }
-    if (!confirmed)
-        for (const auto &q : confirm) r.sentences.push_back(encodeCommand(*findCommand(q)));
-    return r;
-}
-
-EncodeResult encodeQueries(std::span<const std::string> keys) {
-    EncodeResult r;
-    std::vector<std::string> queries;
-    for (const auto &k : keys) {
-        if (k == "all") {
-            addUnique(queries, "RQUERY");
-            addUnique(queries, "NQUERY");
-            continue;
-        }
-        if (k == "RQUERY" || k == "NQUERY") {
-            addUnique(queries, k);
-            continue;
-        }
-        const SettingDef *d = findSetting(kSchema, k);
-        if (!d) {
-            r.error = unknownKey(k);
-            return r;
-        }
-        const std::string_view q = queryOf(*d);
-        if (q.empty()) {
-            r.error = std::string(d->key) + " is write-only: the GeoS-5 does not report it (" +
-                      std::string(d->readBack) + ")";
-            return r;
-        }
-        addUnique(queries, std::string(q));
-    }
-    for (const auto &q : queries) r.sentences.push_back(encodeCommand(*findCommand(q)));
-    return r;
 }
 
 void extractSettings(const Message &reply, std::vector<KeyValue> &out) {

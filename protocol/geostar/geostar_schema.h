@@ -12,16 +12,9 @@ namespace gnss::geostar {
 
 std::span<const SettingDef> settingsSchema();
 
-// The commands that set `values` (validated first: nothing is built on error), then the queries
-// whose replies confirm them (the receiver answers set commands with nothing; an RQUERY/NQUERY
-// reading afterwards is the confirmation). Commands that reset the receiver, change the port
-// speed or leave NMEA come last.
-EncodeResult encodeSettings(std::span<const KeyValue> values);
-// Only the set commands, without the confirming queries.
-EncodeResult encodeSettingCommands(std::span<const KeyValue> values);
-// The queries that read the given settings back ("RQUERY", "NQUERY" and "all" are accepted
-// too). Write-only settings are refused with a message.
-EncodeResult encodeQueries(std::span<const std::string> keys);
+// Each row names its command (core/setting_command.h): the set command of the section 4 table
+// for its value, and the query that reports it (NQUERY, RQUERY, or none: write-only). The set
+// commands are answered with nothing: a plan reads them back as their confirmation.
 // Setting values carried by a decoded $GPSGG,RQUERY or $GPSGG,NQUERY reply.
 void extractSettings(const Message &reply, std::vector<KeyValue> &out);
 

@@ -26,8 +26,6 @@ const Dialect &dialect() {
             .updateState = updateState,
             .settings = settingsSchema(),
             .replyRules = replyRules(),
-            .encodeSettings = encodeSettings,
-            .encodeQueries = encodeQueries,
             .extractSettings = extractSettings,
             // PNMRX600 with its real checksum (the spec prints *00).
             .probeCommand = "$PNMRX600*6F",

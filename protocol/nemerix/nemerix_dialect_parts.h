@@ -1,6 +1,7 @@
 #pragma once
 // The pieces the dialect record (nemerix_dialect.cpp) is assembled from, one file each.
 #include "core/dialect.h"
+#include "core/setting_command.h"
 
 #include <span>
 #include <string>
@@ -11,8 +12,16 @@ namespace gnss::nemerix {
 std::span<const SentenceRule> sentenceRules();                          // nemerix_rules.cpp
 std::span<const SettingDef> settingsSchema();                           // nemerix_schema.cpp
 std::span<const ReplyRule> replyRules();                                // nemerix_reply_rules.cpp
-EncodeResult encodeSettings(std::span<const KeyValue> values);          // nemerix_settings.cpp
-EncodeResult encodeQueries(std::span<const std::string> keys);          // nemerix_settings.cpp
 void extractSettings(const Message &reply, std::vector<KeyValue> &out); // nemerix_settings.cpp
+
+// The commands the schema's rows name (nemerix_settings.cpp).
+extern const SettingCommand kDatumCommand;        // PNMRX106
+extern const SettingCommand kFixMaskCommand;      // PNMRX110
+extern const SettingCommand kNavInitCommand;      // PNMRX101
+extern const SettingCommand kPowerCommand;        // PNMRX112
+extern const SettingCommand kSequenceCommand;     // PNMRX108
+extern const SettingCommand kRatesCommand;        // PNMRX103
+extern const SettingCommand kNemerixRatesCommand; // PNMRX107
+extern const SettingCommand kSerialCommand;       // PNMRX100
 
 } // namespace gnss::nemerix

@@ -1,10 +1,8 @@
-// Settings as commands: schema values → PNMRX commands, and PNMRX603 reports → values.
-//
-// Values are validated against the schema first (nothing is built when one is refused), then
-// grouped so that each command is sent once: PNMRX106 (datum), PNMRX110 (every fix mask in one
-// sentence), PNMRX101 (channel count), PNMRX112 (power), PNMRX108 (sequence) before PNMRX103
-// (rates, which override the sequence's defaults), PNMRX107, and PNMRX100 last, since the port
-// speed changes right after it.
+// Settings as commands: the commands the schema's rows name (core/settings_plan.h plans from
+// them: each is sent once, in their order), and PNMRX603 reports → values. The order: PNMRX106
+// (datum), PNMRX110 (every fix mask in one sentence), PNMRX101 (channel count), PNMRX112
+// (power), PNMRX108 (sequence) before PNMRX103 (rates, which override the sequence's defaults),
+// PNMRX107, and PNMRX100 last, since the port speed changes right after it.
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"
 #include "nemerix_commands.h"
@@ -68,173 +66,177 @@ constexpr MaskKey kMaskKeys[] = {
         {"fix.altitude2d", 8}, {"nav.dynamics", 9},     {"fix.maxAltitude", 10},
 };
 
-} // namespace
-
-namespace {
-EncodeResult encodeSettingsUnchecked(std::span<const KeyValue> values) {
-    EncodeResult out;
-    const auto schema = settingsSchema();
+Values valuesOf(std::span<const KeyValue> values) {
     Values v;
-    for (const auto &kv : values) {
-        const SettingDef *def = findSetting(schema, kv.key);
-        if (!def) {
-            out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: unknown setting of the nemerix "
-                                                            "dialect"),
-                               {kv.key}));
-            return out;
-        }
-        out.refuse(validateSetting(*def, kv.value));
-        if (!out.ok()) return out;
-        v.byKey[std::string(def->key)] = kv.value;
-    }
-    // Checks the generic validation cannot make.
-    if (v.has("fix.timeZone") && !parseTimeZone(v.get("fix.timeZone"))) {
-        out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "fix.timeZone: '%1' is not accepted; "
-                                                        "accepted: h:m with hours -13..13 and "
-                                                        "minutes 0..59"),
-                           {v.get("fix.timeZone")}));
-        return out;
-    }
+    for (const auto &kv : values) v.byKey[kv.key] = kv.value;
+    return v;
+}
+
+// Writes only what `part` built; false when it refused (the refusal is in `out`).
+EncodeResult withoutSentences(EncodeResult r) {
+    if (!r.ok()) r.sentences.clear();
+    return r;
+}
+
+// ---- The commands the schema's rows name ------------------------------------------------------
+
+Refusal validateFix(const SettingDef &def, std::string_view value) {
+    if (Refusal r = validateSetting(def, value); !r.empty()) return r;
+    if (def.key != "fix.timeZone") return {};
+    const std::string v(value);
+    if (!parseTimeZone(v))
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "fix.timeZone: '%1' is not accepted; "
+                                                    "accepted: h:m with hours -13..13 and "
+                                                    "minutes 0..59"),
+                       {v});
     // "-0:0" is UTC and reads back as "0:0": one way of writing it, so that what is applied is
     // what the receiver reports (the settings engine compares them).
-    if (v.has("fix.timeZone") && v.get("fix.timeZone").front() == '-' &&
-        *parseTimeZone(v.get("fix.timeZone")) == 0) {
-        out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "fix.timeZone: '%1' is UTC itself: write "
-                                                        "0:0"),
-                           {v.get("fix.timeZone")}));
+    if (v.front() == '-' && *parseTimeZone(v) == 0)
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "fix.timeZone: '%1' is UTC itself: write "
+                                                    "0:0"),
+                       {v});
+    return {};
+}
+
+Refusal validateDatum(const SettingDef &def, std::string_view value) {
+    if (Refusal r = validateSetting(def, value); !r.empty()) return r;
+    std::int64_t d = 0;
+    if (def.key == "datum.mapDatum" && parseInt(value, d) && d > 218 && d != 500)
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "datum.mapDatum: %1 is out of range; "
+                                                    "accepted: 0..218 (internal table) or 500 "
+                                                    "(user defined)"),
+                       {std::to_string(d)});
+    return {};
+}
+
+// PNMRX106
+EncodeResult writeDatum(std::span<const KeyValue> values) {
+    const Values v = valuesOf(values);
+    if (!v.has("datum.mapDatum")) {
+        EncodeResult out;
+        out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "datum.mapDatum: required with any datum.* "
+                                                        "setting; accepted: 0..218 or 500"),
+                           {}));
         return out;
     }
-    if (auto d = v.integer("datum.mapDatum"); d && *d > 218 && *d != 500) {
-        out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "datum.mapDatum: %1 is out of range; "
-                                                        "accepted: 0..218 (internal table) or 500 "
-                                                        "(user defined)"),
-                           {std::to_string(*d)}));
-        return out;
-    }
+    DatumParams p;
+    p.correction = v.integer("datum.correction").value_or(0);
+    p.datum = *v.integer("datum.mapDatum");
+    p.dx = v.integer("datum.dx");
+    p.dy = v.integer("datum.dy");
+    p.dz = v.integer("datum.dz");
+    p.inverseFlattening = v.real("datum.inverseFlattening");
+    p.semiMajorAxis = v.real("datum.semiMajorAxis");
+    return withoutSentences(encodeDatum(p));
+}
 
-    // PNMRX106
-    const bool anyDatum = v.has("datum.correction") || v.has("datum.mapDatum") ||
-                          v.has("datum.dx") || v.has("datum.dy") || v.has("datum.dz") ||
-                          v.has("datum.inverseFlattening") || v.has("datum.semiMajorAxis");
-    if (anyDatum) {
-        if (!v.has("datum.mapDatum")) {
-            out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal",
-                                                 "datum.mapDatum: required with any datum.* "
-                                                 "setting; accepted: 0..218 or 500"),
-                               {}));
-            return out;
-        }
-        DatumParams p;
-        p.correction = v.integer("datum.correction").value_or(0);
-        p.datum = *v.integer("datum.mapDatum");
-        p.dx = v.integer("datum.dx");
-        p.dy = v.integer("datum.dy");
-        p.dz = v.integer("datum.dz");
-        p.inverseFlattening = v.real("datum.inverseFlattening");
-        p.semiMajorAxis = v.real("datum.semiMajorAxis");
-        if (!append(out, encodeDatum(p))) return out;
-    }
-
-    // PNMRX110
+// PNMRX110: every fix mask in one sentence.
+EncodeResult writeFixMasks(std::span<const KeyValue> values) {
+    const Values v = valuesOf(values);
     std::vector<FixMaskItem> masks;
     for (const auto &m : kMaskKeys)
         if (v.has(m.key)) masks.push_back({m.id, v.get(m.key)});
-    if (!masks.empty() && !append(out, encodeFixSettings(masks))) return out;
+    return withoutSentences(encodeFixSettings(masks));
+}
 
-    // PNMRX101
-    if (v.has("nav.channels")) {
-        NavInitParams p;
-        p.channels = v.integer("nav.channels");
-        if (!append(out, encodeNavInit(p))) return out;
-    }
+// PNMRX101
+EncodeResult writeNavInit(std::span<const KeyValue> values) {
+    NavInitParams p;
+    p.channels = valuesOf(values).integer("nav.channels");
+    return withoutSentences(encodeNavInit(p));
+}
 
-    // PNMRX112
-    if (v.has("power.mode") || v.has("power.offPeriod")) {
-        const int mode = v.integer("power.mode").value_or(1);
-        const auto off = v.integer("power.offPeriod");
-        if (mode == 0 && off) {
-            out.refuse(refusal(
-                    QT_TRANSLATE_NOOP("Refusal",
-                                      "power.offPeriod: only used with power.mode=1 (LDCM1)"),
-                    {}));
-            return out;
-        }
-        if (!append(out, encodePowerMode(mode, off))) return out;
+// PNMRX112
+EncodeResult writePower(std::span<const KeyValue> values) {
+    const Values v = valuesOf(values);
+    const int mode = v.integer("power.mode").value_or(1);
+    const auto off = v.integer("power.offPeriod");
+    if (mode == 0 && off) {
+        EncodeResult out;
+        out.refuse(
+                refusal(QT_TRANSLATE_NOOP("Refusal",
+                                          "power.offPeriod: only used with power.mode=1 (LDCM1)"),
+                        {}));
+        return out;
     }
+    return withoutSentences(encodePowerMode(mode, off));
+}
 
-    // PNMRX108, then PNMRX103
-    if (v.has("output.sequence")) {
-        const auto ids = splitList(v.get("output.sequence"));
-        if (!append(out, encodeNmeaSequence(ids))) {
-            out.error = "output." + out.error;
-            return out;
-        }
-    }
+// PNMRX108
+EncodeResult writeSequence(std::span<const KeyValue> values) {
+    EncodeResult r = withoutSentences(encodeNmeaSequence(splitList(values.front().value)));
+    if (!r.ok()) r.error = "output." + r.error;
+    return r;
+}
+
+// PNMRX103, after the sequence (its rates override the sequence's defaults).
+EncodeResult writeRates(std::span<const KeyValue> values) {
+    const Values v = valuesOf(values);
     std::vector<RateItem> rates;
     for (const char *id : {"GGA", "GLL", "GSA", "GSV", "RMC", "VTG", "ZDA"}) {
         const std::string key = std::string("rate.") + id;
         if (v.has(key.c_str())) rates.push_back({id, *v.integer(key.c_str())});
     }
-    if (!rates.empty() && !append(out, encodeNmeaRates(rates))) return out;
+    return withoutSentences(encodeNmeaRates(rates));
+}
 
-    // PNMRX107
+// PNMRX107
+EncodeResult writeNemerixRates(std::span<const KeyValue> values) {
+    const Values v = valuesOf(values);
     std::vector<RateItem> modes;
     for (const char *id : {"300", "301", "302", "303", "304"}) {
         const std::string key = std::string("nmrx.") + id;
         if (v.has(key.c_str())) modes.push_back({id, *v.integer(key.c_str())});
     }
-    if (!modes.empty() && !append(out, encodeNemerixRates(modes))) return out;
-
-    // PNMRX100, last
-    if (v.has("serial.protocol") || v.has("serial.baud") || v.has("serial.parity")) {
-        if (!v.has("serial.baud")) {
-            out.refuse(
-                    refusal(QT_TRANSLATE_NOOP("Refusal",
-                                              "serial.baud: required with serial.protocol / "
-                                              "serial.parity (PNMRX100 sends all three); accepted: "
-                                              "1200, 2400, 4800, 9600, 19200, 38400, 57600"),
-                            {}));
-            return out;
-        }
-        if (!append(out, encodeSerialPort(v.integer("serial.protocol").value_or(0),
-                                          *v.integer("serial.baud"),
-                                          v.integer("serial.parity").value_or(0))))
-            return out;
-    }
-    if (out.sentences.empty() && out.ok()) out.error = "no setting given";
-    return out;
-}
-} // namespace
-
-EncodeResult encodeSettings(std::span<const KeyValue> values) {
-    EncodeResult out = encodeSettingsUnchecked(values);
-    if (!out.ok()) out.sentences.clear(); // a refused value: nothing at all is sent
-    return out;
+    return withoutSentences(encodeNemerixRates(modes));
 }
 
-EncodeResult encodeQueries(std::span<const std::string> keys) {
-    EncodeResult out;
-    const auto schema = settingsSchema();
-    for (const auto &k : keys) {
-        const SettingDef *def = findSetting(schema, k);
-        if (!def) {
-            out.error = k + ": unknown setting of the nemerix dialect";
-            return out;
-        }
-        if (def->access == SettingAccess::WriteOnly) {
-            out.error = std::string(def->key) +
-                        ": write-only, the receiver cannot report it (not in PNMRX603)";
-            return out;
-        }
-    }
-    if (keys.empty()) {
-        out.error = "no setting given";
+// PNMRX100, last: the port's speed changes right after it.
+EncodeResult writeSerial(std::span<const KeyValue> values) {
+    const Values v = valuesOf(values);
+    if (!v.has("serial.baud")) {
+        EncodeResult out;
+        out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal",
+                                             "serial.baud: required with serial.protocol / "
+                                             "serial.parity (PNMRX100 sends all three); accepted: "
+                                             "1200, 2400, 4800, 9600, 19200, 38400, 57600"),
+                           {}));
         return out;
     }
-    // One PNMRX603 request reports every readable setting (messages 0 to 4).
+    return withoutSentences(encodeSerialPort(v.integer("serial.protocol").value_or(0),
+                                             *v.integer("serial.baud"),
+                                             v.integer("serial.parity").value_or(0)));
+}
+
+// One PNMRX603 request reports every readable setting (messages 0 to 4).
+EncodeResult readSettingsReport(std::span<const std::string>) {
+    EncodeResult out;
     out.sentences.push_back(buildSentence("PNMRX603"));
     return out;
 }
+
+} // namespace
+
+const SettingCommand kDatumCommand{.name = "PNMRX106",
+                                   .order = 0,
+                                   .validate = validateDatum,
+                                   .write = writeDatum,
+                                   .read = readSettingsReport};
+const SettingCommand kFixMaskCommand{.name = "PNMRX110",
+                                     .order = 1,
+                                     .validate = validateFix,
+                                     .write = writeFixMasks,
+                                     .read = readSettingsReport};
+const SettingCommand kNavInitCommand{
+        .name = "PNMRX101", .order = 2, .write = writeNavInit, .read = readSettingsReport};
+const SettingCommand kPowerCommand{.name = "PNMRX112", .order = 3, .write = writePower};
+const SettingCommand kSequenceCommand{.name = "PNMRX108", .order = 4, .write = writeSequence};
+const SettingCommand kRatesCommand{
+        .name = "PNMRX103", .order = 5, .write = writeRates, .read = readSettingsReport};
+const SettingCommand kNemerixRatesCommand{
+        .name = "PNMRX107", .order = 6, .write = writeNemerixRates};
+const SettingCommand kSerialCommand{
+        .name = "PNMRX100", .together = true, .changesLink = true, .write = writeSerial};
 
 namespace {
 std::string shortNumber(double d) {

@@ -38,11 +38,9 @@ const Dialect &dialect() {
             .updateState = updateState,
             .settings = settingsSchema(),
             .replyRules = replyRules(),
-            .encodeSettings = encodeSettings,
             // Revision 1.4 lifted NMEA's 82-character limit (docs/spec-notes.md): a PNVGRTK
             // that sets many parameters at once is longer. Bounded all the same.
             .maxSentenceLength = 512,
-            .encodeQueries = encodeQueries,
             .extractSettings = extractSettings,
             .probeCommand = "$PNVGVER*4E",
             .commandNames = kCommands,

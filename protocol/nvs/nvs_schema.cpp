@@ -47,7 +47,7 @@ constexpr std::string_view kRtk = "RTK engine";
         .key = "rtk." NAME, .label = LABEL, .group = kRtk, .type = TYPE, .unit = UNIT, .min = MIN, \
         .max = MAX, .options = OPTS, .defaultValue = DEF, .help = HELP,                            \
         .readBack = "$PNVGRTK," NAME " -> $PNVGRTK," NAME ",<value>",                              \
-        .write = "$PNVGRTK," NAME ",<value>", .role = ROLE                                         \
+        .write = "$PNVGRTK," NAME ",<value>", .command = &kRtkCommand, .role = ROLE                \
     }
 #define RTK(NAME, LABEL, TYPE, UNIT, MIN, MAX, OPTS, DEF, HELP)                                    \
     RTK_ROLE(NAME, LABEL, TYPE, UNIT, MIN, MAX, OPTS, DEF, HELP, SettingRole::None)
@@ -67,7 +67,7 @@ constexpr std::string_view kRtk = "RTK engine";
                .access = SettingAccess::WriteOnly,                                                 \
                .readBack = "none documented (PNVGRZA answers only when set)",                      \
                .write = "$PNVGRZA," N ",<baud>,<protocol>",                                        \
-               .command = "PNVGRZA," N,                                                            \
+               .command = &kPortCommands[N[0] - '1'],                                              \
                .role = SPEED_ROLE},                                                                \
             SettingDef {                                                                           \
         .key = "port." NAME ".protocol", .label = NAME " protocol", .group = "Ports",              \
@@ -76,7 +76,7 @@ constexpr std::string_view kRtk = "RTK engine";
                 "rate.",                                                                           \
         .access = SettingAccess::WriteOnly,                                                        \
         .readBack = "none documented (PNVGRZA answers only when set)",                             \
-        .write = "$PNVGRZA," N ",<baud>,<protocol>", .command = "PNVGRZA," N                       \
+        .write = "$PNVGRZA," N ",<baud>,<protocol>", .command = &kPortCommands[N[0] - '1']         \
     }
 
 #define OUTPUT(N, NAME)                                                                            \
@@ -88,7 +88,8 @@ constexpr std::string_view kRtk = "RTK engine";
                 "(\"RMC:1;GSV:5;PNVGTST:10\"); at most 20 messages. Written as "                   \
                 "a clear followed by one add.",                                                    \
         .access = SettingAccess::WriteOnly, .readBack = "none documented",                         \
-        .write = "$PNVGRZB,PORT," N " then $PNVGRZB,PORT," N ",<address>,<rate>,..."               \
+        .write = "$PNVGRZB,PORT," N " then $PNVGRZB,PORT," N ",<address>,<rate>,...",              \
+        .command = &kOutputCommands[N[0] - '1']                                                    \
     }
 
 const SettingDef kSchema[] = {
@@ -199,7 +200,7 @@ const SettingDef kSchema[] = {
          .access = SettingAccess::WriteOnly,
          .readBack = "none documented (PNVGNME answers only when set)",
          .write = "$PNVGNME,<time decimals>,<position decimals>[,<talker mode>]",
-         .command = "PNVGNME"},
+         .command = &kNmeCommand},
         {.key = "nmea.position_decimals",
          .label = "Position decimals",
          .group = "NMEA output",
@@ -212,7 +213,7 @@ const SettingDef kSchema[] = {
          .access = SettingAccess::WriteOnly,
          .readBack = "none documented (PNVGNME answers only when set)",
          .write = "$PNVGNME,<time decimals>,<position decimals>[,<talker mode>]",
-         .command = "PNVGNME"},
+         .command = &kNmeCommand},
         {.key = "nmea.talker_mode",
          .label = "Talker ID compatibility",
          .group = "NMEA output",
@@ -224,7 +225,7 @@ const SettingDef kSchema[] = {
          .access = SettingAccess::WriteOnly,
          .readBack = "none documented (PNVGNME answers only when set)",
          .write = "$PNVGNME,<time decimals>,<position decimals>,<talker mode>",
-         .command = "PNVGNME"},
+         .command = &kNmeCommand},
 
         // ---- 4.4 PNVGRZA per port ----
         // The simulated and usual host is on COM1: its speed is the link's.
@@ -247,7 +248,8 @@ const SettingDef kSchema[] = {
          .help = "P (by default) - software-synchronised time pulse; A - hardware-synchronised "
                  "(aligned to internal timescale).",
          .readBack = "$PNVGPPS,,,,,,, -> $PNVGPPS,<type>,...",
-         .write = "$PNVGPPS,<type>,,,,,,"},
+         .write = "$PNVGPPS,<type>,,,,,,",
+         .command = &kPpsCommand},
         {.key = "pps.mode",
          .label = "Software time pulse",
          .group = "Time pulse",
@@ -257,7 +259,8 @@ const SettingDef kSchema[] = {
          .help = "I - interval time pulse at PVT update rate; S (by default) - 1PPS, one pulse "
                  "per second.",
          .readBack = "$PNVGPPS,,,,,,, -> field 2",
-         .write = "$PNVGPPS,,<mode>,,,,,"},
+         .write = "$PNVGPPS,,<mode>,,,,,",
+         .command = &kPpsCommand},
         {.key = "pps.reference",
          .label = "1PPS reference",
          .group = "Time pulse",
@@ -267,7 +270,8 @@ const SettingDef kSchema[] = {
          .help = "1PPS time pulse reference: U - UTC (by default), S - UTC(SU), G - GLONASS "
                  "time, N - GPS time. Applies to 1PPS only.",
          .readBack = "$PNVGPPS,,,,,,, -> field 3",
-         .write = "$PNVGPPS,,,<reference>,,,,"},
+         .write = "$PNVGPPS,,,<reference>,,,,",
+         .command = &kPpsCommand},
         {.key = "pps.adjust",
          .label = "Timescale adjustment",
          .group = "Time pulse",
@@ -277,7 +281,8 @@ const SettingDef kSchema[] = {
          .help = "Internal receiver timescale adjustment: 1 - On (by default), adjusted once the "
                  "offset to UTC exceeds 1 ms; 0 - Off (not recommended).",
          .readBack = "$PNVGPPS,,,,,,, -> field 4",
-         .write = "$PNVGPPS,,,,<adjust>,,,"},
+         .write = "$PNVGPPS,,,,<adjust>,,,",
+         .command = &kPpsCommand},
         {.key = "pps.duration",
          .label = "Pulse duration",
          .group = "Time pulse",
@@ -289,7 +294,8 @@ const SettingDef kSchema[] = {
          .help = "Software-defined time pulse duration in microseconds, 1 to 1000 (1000 by "
                  "default).",
          .readBack = "$PNVGPPS,,,,,,, -> field 5",
-         .write = "$PNVGPPS,,,,,<duration>,,"},
+         .write = "$PNVGPPS,,,,,<duration>,,",
+         .command = &kPpsCommand},
         {.key = "pps.validity",
          .label = "PPS validity control",
          .group = "Time pulse",
@@ -299,7 +305,8 @@ const SettingDef kSchema[] = {
          .help = "Output PPS only with a valid navigation solution and UTC parameters: E - "
                  "enabled, D - disabled (by default).",
          .readBack = "$PNVGPPS,,,,,,, -> field 6",
-         .write = "$PNVGPPS,,,,,,<validity>,"},
+         .write = "$PNVGPPS,,,,,,<validity>,",
+         .command = &kPpsCommand},
         {.key = "pps.cable_delay",
          .label = "Antenna cable delay",
          .group = "Time pulse",
@@ -311,7 +318,8 @@ const SettingDef kSchema[] = {
          .help = "Delay in antenna cable in nanoseconds (0 by default). Range from the field's "
                  "four digits (xxxx).",
          .readBack = "$PNVGPPS,,,,,,, -> field 7",
-         .write = "$PNVGPPS,,,,,,,<delay>"},
+         .write = "$PNVGPPS,,,,,,,<delay>",
+         .command = &kPpsCommand},
 
         // ---- 4.15 PNVGIDL ----
         {.key = "idl.mode",
@@ -324,7 +332,8 @@ const SettingDef kSchema[] = {
                  "stations from the list are allowed.",
          .access = SettingAccess::WriteOnly,
          .readBack = "none documented ($PNVGIDL,MODE,<x> is echoed when set)",
-         .write = "$PNVGIDL,MODE,<mode>"},
+         .write = "$PNVGIDL,MODE,<mode>",
+         .command = &kIdlModeCommand},
         {.key = "idl.stations",
          .label = "Known base stations",
          .group = "Base stations",
@@ -333,7 +342,8 @@ const SettingDef kSchema[] = {
                  "(\"3:0.072;43:0\"); ID 0-4095, ICB = GLONASS inter-channel bias in parts of "
                  "phase cycle. Written as CLEAR then one ADD per station.",
          .readBack = "$PNVGIDL,SHOW -> $PNVGIDL,<count>,<index>,<id>,<icb> per station",
-         .write = "$PNVGIDL,CLEAR then $PNVGIDL,ADD,<id>,<icb> per station"},
+         .write = "$PNVGIDL,CLEAR then $PNVGIDL,ADD,<id>,<icb> per station",
+         .command = &kStationsCommand},
 };
 
 #undef RTK

@@ -2,6 +2,7 @@
 // The NVS settings schema (one table, nvs_schema.cpp) and the dialect's generic settings
 // functions built on it (nvs_settings.cpp).
 #include "core/message.h"
+#include "core/setting_command.h"
 #include "core/settings_schema.h"
 
 #include <span>
@@ -21,9 +22,16 @@ std::span<const SettingDef> settingsSchema();
 std::string_view portName(int port);
 int portNumber(std::string_view name); // -1 when unknown
 
-// Dialect hooks.
-EncodeResult encodeSettings(std::span<const KeyValue> values);
-EncodeResult encodeQueries(std::span<const std::string> keys);
+// The commands the rows name (nvs_settings.cpp).
+extern const SettingCommand kRtkCommand;        // PNVGRTK: every Table 4 parameter
+extern const SettingCommand kIdlModeCommand;    // PNVGIDL,MODE
+extern const SettingCommand kStationsCommand;   // PNVGIDL,CLEAR + ADD..., read with SHOW
+extern const SettingCommand kPpsCommand;        // PNVGPPS
+extern const SettingCommand kNmeCommand;        // PNVGNME
+extern const SettingCommand kOutputCommands[3]; // PNVGRZB per port (COM1, COM2, USB)
+extern const SettingCommand kPortCommands[3];   // PNVGRZA per port
+
+// Dialect hook: setting values carried by a decoded reply.
 void extractSettings(const Message &reply, std::vector<KeyValue> &out);
 
 } // namespace gnss::nvs

@@ -1,9 +1,6 @@
-// The dialect's generic settings functions over the schema (nvs_schema.cpp): KEY=VALUE pairs to
-// sentences, keys to read-back queries, and decoded replies back to KEY=VALUE pairs.
-//
-// encodeSettings validates everything first and builds nothing on error. Sentences come in a
-// safe order: RTK engine, base station list, time pulse, NMEA format, output lists, and port
-// settings last (they switch the link the rest travels on).
+// The commands the NVS schema's rows name (nvs_schema.cpp): how each group of settings is
+// written and read back (core/settings_plan.h plans from them), and decoded replies back to
+// KEY=VALUE pairs.
 #include "nvs_encode_util.h"
 
 #include "core/field_parse.h"
@@ -75,138 +72,161 @@ Refusal parseStations(std::string_view v, std::vector<Station> &out) {
 
 } // namespace
 
-EncodeResult encodeSettings(std::span<const KeyValue> values) {
-    std::vector<RtkSet> rtk;
-    std::optional<int> idlMode;
-    std::optional<std::vector<Station>> stations;
-    PpsSettings pps;
-    bool anyPps = false;
-    std::optional<int> nme[3];
-    std::map<int, std::vector<RzbEntry>> outputs;
-    std::map<int, std::pair<std::optional<int>, std::optional<int>>> ports; // baud, protocol
+namespace {
 
-    for (const auto &kv : values) {
-        const SettingDef *def = findSetting(settingsSchema(), kv.key);
-        if (!def)
-            return refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "unknown setting '%1' (gnss-cli "
-                                                               "schema nvs lists them)"),
-                                  {kv.key}));
-        const std::string_view key = def->key;
-        const std::string &v = kv.value;
-        Refusal err;
-        if (auto name = after(key, "rtk."); !name.empty()) {
-            err = validateRtkValue(name, v);
-            rtk.push_back({std::string(name), v});
-        } else if (auto out = after(key, "output."); !out.empty()) {
-            std::vector<RzbEntry> list;
-            err = parseOutputList(key, v, list);
-            outputs[portNumber(out)] = std::move(list);
-        } else if (key == "idl.stations") {
-            stations.emplace();
-            err = parseStations(v, *stations);
-        } else {
-            err = validateSetting(*def, v);
-            if (err.empty()) {
-                std::int64_t n = 0;
-                parseInt(v, n);
-                const char c = v.empty() ? '\0' : v.front();
-                if (key == "idl.mode")
-                    idlMode = static_cast<int>(n);
-                else if (key == "nmea.time_decimals")
-                    nme[0] = static_cast<int>(n);
-                else if (key == "nmea.position_decimals")
-                    nme[1] = static_cast<int>(n);
-                else if (key == "nmea.talker_mode")
-                    nme[2] = static_cast<int>(n);
-                else if (auto port = after(key, "port."); !port.empty()) {
-                    const auto dot = port.find('.');
-                    auto &slot = ports[portNumber(port.substr(0, dot))];
-                    (port.substr(dot + 1) == "baud" ? slot.first : slot.second) =
-                            static_cast<int>(n);
-                } else if (after(key, "pps.").size()) {
-                    anyPps = true;
-                    if (key == "pps.type")
-                        pps.type = c;
-                    else if (key == "pps.mode")
-                        pps.mode = c;
-                    else if (key == "pps.reference")
-                        pps.reference = c;
-                    else if (key == "pps.adjust")
-                        pps.adjust = static_cast<int>(n);
-                    else if (key == "pps.duration")
-                        pps.duration = static_cast<int>(n);
-                    else if (key == "pps.validity")
-                        pps.validity = c;
-                    else if (key == "pps.cable_delay")
-                        pps.cableDelay = static_cast<int>(n);
-                }
-            }
-        }
-        if (!err.empty()) return refuse(err);
+// ---- The commands the schema's rows name (nvs_schema.h) ----------------------------------------
+
+// The port a key names: "port.COM2.baud" → 2, "output.USB" → 3.
+int portOfKey(std::string_view key) {
+    key = key.substr(key.find('.') + 1);
+    return portNumber(key.substr(0, key.find('.')));
+}
+
+std::int64_t integer(std::string_view v) {
+    std::int64_t n = 0;
+    parseInt(v, n);
+    return n;
+}
+
+Refusal validateRtkRow(const SettingDef &def, std::string_view value) {
+    return validateRtkValue(after(def.key, "rtk."), value);
+}
+
+EncodeResult writeRtk(std::span<const KeyValue> values) {
+    std::vector<RtkSet> set;
+    for (const auto &kv : values) set.push_back({std::string(after(kv.key, "rtk.")), kv.value});
+    return encodeRtk(set);
+}
+
+EncodeResult readRtk(std::span<const std::string> keys) {
+    std::vector<std::string> names;
+    for (const auto &k : keys) names.emplace_back(after(k, "rtk."));
+    return encodeRtk({}, names);
+}
+
+EncodeResult writeIdlMode(std::span<const KeyValue> values) {
+    return encodeIdlMode(static_cast<int>(integer(values.front().value)));
+}
+
+Refusal validateStations(const SettingDef &, std::string_view value) {
+    std::vector<Station> stations;
+    return parseStations(value, stations);
+}
+
+// The list replaces the receiver's: CLEAR, then one ADD per station.
+EncodeResult writeStations(std::span<const KeyValue> values) {
+    std::vector<Station> stations;
+    parseStations(values.front().value, stations);
+    EncodeResult r = encodeIdlClear();
+    for (const auto &st : stations) {
+        EncodeResult add = encodeIdlAdd(st.id, st.icb);
+        if (!add.ok()) return add;
+        r.sentences.push_back(std::move(add.sentences.front()));
     }
-    if ((nme[0] || nme[1] || nme[2]) && !(nme[0] && nme[1]))
+    return r;
+}
+
+EncodeResult readStations(std::span<const std::string>) {
+    return encodeIdlShow();
+}
+
+// Fields not given stay as they are (empty fields of PNVGPPS).
+EncodeResult writePps(std::span<const KeyValue> values) {
+    PpsSettings pps;
+    for (const auto &kv : values) {
+        const char c = kv.value.empty() ? '\0' : kv.value.front();
+        const int n = static_cast<int>(integer(kv.value));
+        const std::string_view f = after(kv.key, "pps.");
+        if (f == "type") pps.type = c;
+        if (f == "mode") pps.mode = c;
+        if (f == "reference") pps.reference = c;
+        if (f == "adjust") pps.adjust = n;
+        if (f == "duration") pps.duration = n;
+        if (f == "validity") pps.validity = c;
+        if (f == "cable_delay") pps.cableDelay = n;
+    }
+    return encodePps(pps);
+}
+
+EncodeResult readPps(std::span<const std::string>) {
+    return encodePps({});
+}
+
+EncodeResult writeNme(std::span<const KeyValue> values) {
+    std::optional<int> f[3];
+    constexpr std::string_view kKeys[] = {"nmea.time_decimals", "nmea.position_decimals",
+                                          "nmea.talker_mode"};
+    for (const auto &kv : values)
+        for (int i = 0; i < 3; ++i)
+            if (kv.key == kKeys[i]) f[i] = static_cast<int>(integer(kv.value));
+    if (!f[0] || !f[1])
         return refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "PNVGNME sets time and position "
                                                            "decimals together: give %1 too"),
-                              {nme[0] ? "nmea.position_decimals" : "nmea.time_decimals"}));
-    for (const auto &[port, slot] : ports)
-        if (!slot.first || !slot.second)
-            return refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "PNVGRZA sets baud rate and "
-                                                               "protocol together: give %1 too"),
-                                  {"port." + std::string(portName(port)) +
-                                   (slot.first ? ".protocol" : ".baud")}));
-
-    // Everything is valid: build, in the safe order.
-    EncodeResult result;
-    auto add = [&](EncodeResult r) {
-        if (!r.ok() && result.error.empty())
-            result.refuse(r.refusal.text == r.error ? r.refusal : Refusal(r.error));
-        for (auto &s : r.sentences) result.sentences.push_back(std::move(s));
-    };
-    if (!rtk.empty()) add(encodeRtk(rtk));
-    if (idlMode) add(encodeIdlMode(*idlMode));
-    if (stations) {
-        add(encodeIdlClear());
-        for (const auto &s : *stations) add(encodeIdlAdd(s.id, s.icb));
-    }
-    if (anyPps) add(encodePps(pps));
-    if (nme[0]) add(encodeNme(*nme[0], *nme[1], nme[2]));
-    for (const auto &[port, list] : outputs) {
-        add(encodeRzb(port, {}));
-        if (!list.empty()) add(encodeRzb(port, list));
-    }
-    for (const auto &[port, slot] : ports) add(encodeRza(port, *slot.first, *slot.second));
-    if (!result.error.empty()) result.sentences.clear();
-    return result;
+                              {std::string(f[0] ? kKeys[1] : kKeys[0])}));
+    return encodeNme(*f[0], *f[1], f[2]);
 }
 
-EncodeResult encodeQueries(std::span<const std::string> keys) {
-    std::vector<std::string> rtk;
-    bool pps = false, stations = false;
-    for (const auto &k : keys) {
-        const SettingDef *def = findSetting(settingsSchema(), k);
-        if (!def) return refuse("unknown setting '" + k + "' (gnss-cli schema nvs lists them)");
-        if (def->access == SettingAccess::WriteOnly)
-            return refuse(std::string(def->key) +
-                          " is write-only: the spec documents no way to read it back");
-        if (auto name = after(def->key, "rtk."); !name.empty()) {
-            bool dup = false;
-            for (const auto &n : rtk) dup = dup || n == name;
-            if (!dup) rtk.emplace_back(name);
-        } else if (!after(def->key, "pps.").empty()) {
-            pps = true;
-        } else if (def->key == "idl.stations") {
-            stations = true;
-        }
-    }
-    EncodeResult result;
-    auto add = [&](EncodeResult r) {
-        for (auto &s : r.sentences) result.sentences.push_back(std::move(s));
-    };
-    if (!rtk.empty()) add(encodeRtk({}, rtk));
-    if (pps) add(encodePps({}));
-    if (stations) add(encodeIdlShow());
-    return result;
+Refusal validateOutput(const SettingDef &def, std::string_view value) {
+    std::vector<RzbEntry> list;
+    return parseOutputList(def.key, value, list);
 }
+
+// The list replaces the port's: a clear, then one add of every entry.
+EncodeResult writeOutput(std::span<const KeyValue> values) {
+    const KeyValue &kv = values.front();
+    std::vector<RzbEntry> list;
+    parseOutputList(kv.key, kv.value, list);
+    const int port = portOfKey(kv.key);
+    EncodeResult r = encodeRzb(port, {});
+    if (!list.empty()) {
+        EncodeResult add = encodeRzb(port, list);
+        if (!add.ok()) return add;
+        r.sentences.push_back(std::move(add.sentences.front()));
+    }
+    return r;
+}
+
+EncodeResult writePort(std::span<const KeyValue> values) {
+    std::optional<int> baud, protocol;
+    const int port = portOfKey(values.front().key);
+    for (const auto &kv : values)
+        (kv.key.ends_with(".baud") ? baud : protocol) = static_cast<int>(integer(kv.value));
+    if (!baud || !protocol)
+        return refuse(
+                refusal(QT_TRANSLATE_NOOP("Refusal", "PNVGRZA sets baud rate and "
+                                                     "protocol together: give %1 too"),
+                        {"port." + std::string(portName(port)) + (baud ? ".protocol" : ".baud")}));
+    return encodeRza(port, *baud, *protocol);
+}
+
+} // namespace
+
+// In the safe order: RTK engine, base stations, time pulse, NMEA format, output lists, and the
+// ports last (they switch the link the rest travels on).
+const SettingCommand kRtkCommand{.name = "PNVGRTK",
+                                 .order = 0,
+                                 .validate = validateRtkRow,
+                                 .write = writeRtk,
+                                 .read = readRtk};
+const SettingCommand kIdlModeCommand{.name = "PNVGIDL,MODE", .order = 1, .write = writeIdlMode};
+const SettingCommand kStationsCommand{.name = "PNVGIDL,ADD",
+                                      .order = 2,
+                                      .validate = validateStations,
+                                      .write = writeStations,
+                                      .read = readStations};
+const SettingCommand kPpsCommand{.name = "PNVGPPS", .order = 3, .write = writePps, .read = readPps};
+const SettingCommand kNmeCommand{
+        .name = "PNVGNME", .together = true, .order = 4, .write = writeNme};
+const SettingCommand kOutputCommands[3] = {
+        {.name = "PNVGRZB,1", .order = 5, .validate = validateOutput, .write = writeOutput},
+        {.name = "PNVGRZB,2", .order = 5, .validate = validateOutput, .write = writeOutput},
+        {.name = "PNVGRZB,3", .order = 5, .validate = validateOutput, .write = writeOutput},
+};
+const SettingCommand kPortCommands[3] = {
+        {.name = "PNVGRZA,1", .together = true, .changesLink = true, .write = writePort},
+        {.name = "PNVGRZA,2", .together = true, .changesLink = true, .write = writePort},
+        {.name = "PNVGRZA,3", .together = true, .changesLink = true, .write = writePort},
+};
 
 void extractSettings(const Message &reply, std::vector<KeyValue> &out) {
     if (const auto *rtk = message_cast<Rtk>(reply)) {

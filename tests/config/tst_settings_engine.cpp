@@ -2,6 +2,7 @@
 // change every writable setting and verify it in the simulator and by read-back, a refused value
 // reported, profiles carried back onto a changed receiver, save to flash across a power cycle,
 // restore defaults, cancel.
+#include "core/settings_plan.h"
 #include "engine_rig.h"
 
 #include "geostar/geostar_sim_receiver.h"
@@ -434,7 +435,7 @@ private slots:
                     const SettingDef *def = findSetting(d->settings, kv.key);
                     QVERIFY2(def && isWritable(*def), kv.key.c_str());
                 }
-                const EncodeResult r = d->encodeSettings(values);
+                const EncodeResult r = encodeSettings(*d, values);
                 QVERIFY2(r.ok(), r.error.c_str());
             }
         }

@@ -10,6 +10,7 @@
 //                  ("MODE" for "rtk.MODE", as users type it)
 #include "core/dialect.h"
 #include "core/sentence_builder.h"
+#include "core/settings_plan.h"
 #include "dialects.h"
 
 #include <cmath>
@@ -24,7 +25,7 @@ inline const std::vector<const Dialect *> &dialectsWithSettings() {
         static const DialectRegistry reg = makeBuiltinRegistry();
         std::vector<const Dialect *> out;
         for (const Dialect *d : reg.dialects())
-            if (!d->settings.empty() && d->encodeSettings && d->extractSettings) out.push_back(d);
+            if (!d->settings.empty() && d->extractSettings) out.push_back(d);
         return out;
     }();
     return list;

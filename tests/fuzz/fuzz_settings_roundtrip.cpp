@@ -12,6 +12,7 @@
 // (extractSettings), else read back from the simulated receiver (protocol/sim) — compared as
 // the schema's type: integers and booleans exactly, reals within the precision printed,
 // coordinates component by component, enums and text exactly, lists item by item.
+#include "core/settings_plan.h"
 #include "fuzz_nmea.h"
 #include "fuzz_settings_input.h"
 #include "receiver.h"
@@ -167,7 +168,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     if (!c.dialect || c.values.empty()) return 0;
     const Dialect &d = *c.dialect;
 
-    const EncodeResult r = d.encodeSettings(c.values);
+    const EncodeResult r = encodeSettings(d, c.values);
     if (!r.ok()) {
         check(r.sentences.empty(), "a refused value still built sentences",
               describe(c.values, r.sentences));
@@ -242,10 +243,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     std::vector<std::string> readable;
     for (const auto &[def, value] : pending) {
         const std::vector<std::string> one{std::string(def->key)};
-        if (d.encodeQueries && d.encodeQueries(one).ok()) readable.push_back(one.front());
+        if (encodeQueries(d, one).ok()) readable.push_back(one.front());
     }
     if (readable.empty()) return 0;
-    const EncodeResult queries = d.encodeQueries(readable);
+    const EncodeResult queries = encodeQueries(d, readable);
     check(queries.ok(), "readable settings cannot be queried together", queries.error);
     auto rx = sim::makeReceiver(d.id);
     if (!rx) return 0;

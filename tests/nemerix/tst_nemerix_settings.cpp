@@ -1,6 +1,7 @@
 // The Nemerix dialect record, its settings schema as data, settings → commands
 // (encodeSettings / encodeQueries), PNMRX603 reports → settings (extractSettings), and the
 // reply rules the command queue uses.
+#include "core/settings_plan.h"
 #include "decode_helper.h"
 #include "nemerix/nemerix_dialect.h"
 
@@ -18,7 +19,7 @@ const gnss::Dialect &D() {
 gnss::EncodeResult encode(std::initializer_list<std::pair<const char *, const char *>> kv) {
     std::vector<gnss::KeyValue> v;
     for (const auto &[k, val] : kv) v.push_back({k, val});
-    return D().encodeSettings(v);
+    return encodeSettings(D(), v);
 }
 
 // Decodes a line and collects what extractSettings reads from it.
@@ -87,7 +88,7 @@ void TestNemerixSettings::dialectRecordIsComplete() {
     QVERIFY(D().checksumOptional);
     QCOMPARE(D().defaultBaud, 9600);
     QCOMPARE(D().rules.size(), std::size_t(20));
-    QVERIFY(D().encodeSettings && D().encodeQueries && D().extractSettings);
+    QVERIFY(D().extractSettings);
     QVERIFY(!D().settings.empty());
     QVERIFY(!D().replyRules.empty());
     const auto registry = gnss::makeBuiltinRegistry();
@@ -183,7 +184,7 @@ void TestNemerixSettings::settingsEncodeToCommands() {
         const auto eq = v.indexOf('=');
         kv.push_back({v.left(eq).toStdString(), v.mid(eq + 1).toStdString()});
     }
-    const auto r = D().encodeSettings(kv);
+    const auto r = encodeSettings(D(), kv);
     QVERIFY2(r.ok(), r.error.c_str());
     QCOMPARE(joined(r.sentences), sentences);
 }
@@ -244,7 +245,7 @@ void TestNemerixSettings::refusedSettingsBuildNothing() {
     std::vector<gnss::KeyValue> kv = {{"fix.minSnr", "30"},
                                       {key.toStdString(), value.toStdString()}};
     if (key == "fix.minSnr") kv.erase(kv.begin());
-    const auto r = D().encodeSettings(kv);
+    const auto r = encodeSettings(D(), kv);
     QVERIFY(!r.ok());
     QVERIFY(r.sentences.empty());
     QVERIFY2(QString::fromStdString(r.error).contains(message), r.error.c_str());
@@ -253,7 +254,7 @@ void TestNemerixSettings::refusedSettingsBuildNothing() {
 void TestNemerixSettings::readableSettingsAreQueriedWithOneSettingsRequest() {
     const std::vector<std::string> keys = {"fix.minSnr", "datum.mapDatum", "rate.GSV",
                                            "fix.timeZone", "nav.channels"};
-    const auto r = D().encodeQueries(keys);
+    const auto r = encodeQueries(D(), keys);
     QVERIFY2(r.ok(), r.error.c_str());
     QCOMPARE(joined(r.sentences), QString("$PNMRX603*6C"));
 }
@@ -261,13 +262,13 @@ void TestNemerixSettings::readableSettingsAreQueriedWithOneSettingsRequest() {
 void TestNemerixSettings::writeOnlySettingsCannotBeQueried() {
     for (const char *k : {"serial.baud", "power.mode", "output.sequence", "fix.maxVdop"}) {
         const std::vector<std::string> keys = {k};
-        const auto r = D().encodeQueries(keys);
+        const auto r = encodeQueries(D(), keys);
         QVERIFY(!r.ok());
         QVERIFY(r.sentences.empty());
         QVERIFY2(r.error.find("write-only") != std::string::npos, r.error.c_str());
     }
     const std::vector<std::string> unknown = {"nope"};
-    QVERIFY(!D().encodeQueries(unknown).ok());
+    QVERIFY(!encodeQueries(D(), unknown).ok());
 }
 
 void TestNemerixSettings::settingsReportMessagesGiveSettingsBack_data() {
@@ -319,7 +320,7 @@ void TestNemerixSettings::readBackValuesEncodeAgain() {
           "$PNMRX603,4,0,500,-2000,-2000,-2000,8257224,8137000"}) {
         const auto kv = extract(line);
         QVERIFY(!kv.empty());
-        const auto r = D().encodeSettings(kv);
+        const auto r = encodeSettings(D(), kv);
         QVERIFY2(r.ok(), (std::string(line) + ": " + r.error).c_str());
     }
 }

@@ -1,6 +1,7 @@
 // The NVS settings schema and dialect record: every Table 4 parameter with its default, every
 // group of the issue, generic encodeSettings / encodeQueries / extractSettings, and
 // `gnss-cli schema nvs` / `gnss-cli encode nvs` end to end.
+#include "core/settings_plan.h"
 #include "core/stream_decoder.h"
 #include "dialects.h"
 #include "nvs/nvs_dialect.h"
@@ -69,7 +70,8 @@ void TstNvsSchema::dialectRecordIsComplete() {
     QCOMPARE(d.defaultBaud, 115200);
     QCOMPARE(d.probeCommand, std::string_view("$PNVGVER*4E"));
     QCOMPARE(nvs::encodeVersionRequest().sentences.at(0), std::string(d.probeCommand));
-    QVERIFY(d.encodeSettings && d.encodeQueries && d.extractSettings && d.ggaQuality);
+    QVERIFY(d.extractSettings && d.ggaQuality);
+    for (const SettingDef &def : d.settings) QVERIFY2(def.command, def.key.data());
     QVERIFY(!d.checksumOptional);
     QVERIFY(!d.commandNames.empty());
     QVERIFY(!d.replyRules.empty());
@@ -176,7 +178,7 @@ void TstNvsSchema::encodeSettingsBuildsOneSentencePerCommandInSafeOrder() {
             {"idl.stations", "3:0.072;43"},
             {"idl.mode", "1"},
     };
-    const auto r = nvs::dialect().encodeSettings(std::span<const KeyValue>(values));
+    const auto r = encodeSettings(nvs::dialect(), std::span<const KeyValue>(values));
     QVERIFY2(r.ok(), r.error.c_str());
     QCOMPARE(lines(r),
              QStringList({"$PNVGRTK,MODE,1,PVTRATE,10", "$PNVGIDL,MODE,1", "$PNVGIDL,CLEAR",
@@ -227,7 +229,7 @@ void TstNvsSchema::encodeSettingsRefusesBeforeBuilding() {
     QFETCH(QString, mentions);
     // A valid setting first: nothing at all may be built when a later one is refused.
     const KeyValue values[] = {{"rtk.MODE", "2"}, {key.toStdString(), value.toStdString()}};
-    const auto r = nvs::dialect().encodeSettings(std::span<const KeyValue>(values));
+    const auto r = encodeSettings(nvs::dialect(), std::span<const KeyValue>(values));
     QVERIFY(!r.ok());
     QVERIFY(r.sentences.empty());
     QVERIFY2(QString::fromStdString(r.error).contains(mentions), r.error.c_str());
@@ -254,11 +256,11 @@ void TstNvsSchema::sentencesLongerThanTheDialectAllowsAreRefused() {
 
 void TstNvsSchema::encodeQueriesReadsBack() {
     const std::string keys[] = {"rtk.MODE", "BASEXYZ", "pps.type", "pps.duration", "idl.stations"};
-    const auto r = nvs::dialect().encodeQueries(std::span<const std::string>(keys));
+    const auto r = encodeQueries(nvs::dialect(), std::span<const std::string>(keys));
     QVERIFY2(r.ok(), r.error.c_str());
     QCOMPARE(lines(r), QStringList({"$PNVGRTK,MODE,BASEXYZ", "$PNVGPPS,,,,,,,", "$PNVGIDL,SHOW"}));
     const std::string writeOnly[] = {"port.COM1.baud"};
-    const auto w = nvs::dialect().encodeQueries(std::span<const std::string>(writeOnly));
+    const auto w = encodeQueries(nvs::dialect(), std::span<const std::string>(writeOnly));
     QVERIFY(!w.ok());
     QVERIFY(QString::fromStdString(w.error).contains("write-only"));
 }

@@ -2,6 +2,7 @@
 
 #include "core/dialect.h"
 #include "core/dialect_registry.h"
+#include "core/settings_plan.h"
 #include "core/stream_decoder.h"
 #include "sim/receiver.h"
 #include "state/state_tracker.h"
@@ -71,11 +72,9 @@ std::vector<std::string> reportTexts(const Dialect &d, const DialectRegistry &re
     if (!rx) return out;
     // Everything the application asks: the identity, then every readable setting.
     std::string asked = std::string(d.probeCommand) + "\r\n";
-    std::vector<std::string> keys;
-    for (const SettingDef &def : d.settings)
-        if (def.access != SettingAccess::WriteOnly) keys.emplace_back(def.key);
-    if (d.encodeQueries)
-        for (const std::string &q : d.encodeQueries(keys).sentences)
+    const std::vector<std::string> keys = readableKeys(d);
+    if (!keys.empty())
+        for (const std::string &q : encodeQueries(d, keys).sentences)
             asked += q.ends_with("\n") ? q : q + "\r\n";
     StreamDecoder decoder(registry);
     StateTracker tracker(&d);

@@ -1,0 +1,38 @@
+#pragma once
+// Settings plans from the schema's rows: a change or a read-back becomes the sentences of the
+// commands the rows name (setting_command.h), in the commands' order. The one implementation
+// behind every dialect's settings: the engine, `gnss-cli encode`, profiles and the simulator.
+#include "setting_command.h"
+#include "settings_schema.h"
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gnss {
+
+struct Dialect;
+
+// One command of a plan and the settings it carries (keys as the schema spells them).
+struct PlannedCommand {
+    const SettingCommand *command = nullptr;
+    std::vector<KeyValue> values;
+};
+
+// Groups `values` by command, in plan order. Refuses an unknown key, a setting that cannot be
+// set, a value its command does not take, or a setting given twice; plans nothing then.
+Refusal planWrites(const Dialect &d, std::span<const KeyValue> values,
+                   std::vector<PlannedCommand> &out);
+
+// The sentences that write `values`, in order; nothing is built when anything is refused.
+// Identical sentences are sent once (commands confirmed by one query).
+EncodeResult encodeSettings(const Dialect &d, std::span<const KeyValue> values);
+
+// The sentences that read `keys` back, each query once. Refuses an unknown or write-only key.
+EncodeResult encodeQueries(const Dialect &d, std::span<const std::string> keys);
+
+// Every readable setting's key, in schema order.
+std::vector<std::string> readableKeys(const Dialect &d);
+
+} // namespace gnss
