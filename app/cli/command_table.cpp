@@ -8,13 +8,14 @@ namespace {
 // Options shared by several commands, so their words agree everywhere.
 constexpr OptionSpec kDialect{"dialect", "D",
                               "the receiver's dialect: auto (the default: recognised from the "
-                              "stream), nvs, geostar, nemerix, nmea"};
+                              "stream) or one of the dialects below"};
 constexpr OptionSpec kLenient{"lenient", "",
                               "decode sentences whose checksum is wrong or missing, and mark them"};
 constexpr OptionSpec kAlias{"alias", "NEW=CANONICAL",
                             "read a renamed proprietary prefix, e.g. PXYZW=PNMRX (repeatable)"};
 constexpr OptionSpec kPrefix{"prefix", "NEW",
-                             "with --dialect nemerix: the module's PNMRX prefix was renamed NEW"};
+                             "with --dialect D: the dialect's renamable prefix (below) was renamed "
+                             "NEW on the receiver"};
 constexpr OptionSpec kPort{"port", "P", "serial port: ttyUSB0, /dev/ttyACM0 or any path to a tty"};
 constexpr OptionSpec kBaud{"baud", "B", "line speed (default 9600)"};
 constexpr OptionSpec kTcp{"tcp", "HOST:PORT",
@@ -35,10 +36,10 @@ constexpr OptionSpec kStatsOptions[] = {
 };
 constexpr OptionSpec kEncodeOptions[] = {
         {"query", "", "the sentences that read the KEYs back instead"},
-        {"prefix", "NEW", "write the dialect's renamable prefix (nemerix: PNMRX) as NEW"},
+        {"prefix", "NEW", "write the dialect's renamable prefix (below) as NEW"},
 };
 // The sources every link command takes (cli_source.h), in the same words everywhere.
-constexpr OptionSpec kSim{"sim", "D", "a built-in simulated receiver: nvs, geostar, nemerix, nmea"};
+constexpr OptionSpec kSim{"sim", "D", "a built-in simulated receiver of one of the dialects below"};
 constexpr OptionSpec kReplay{"replay", "FILE", "a recorded log, at its recorded pace"};
 constexpr OptionSpec kLinkBaud{"baud", "B", "line speed (default: detected)"};
 constexpr OptionSpec kSpeed{"speed", "X", "replay X times faster (below 1: slower)"};
@@ -71,7 +72,7 @@ constexpr OptionSpec kSendOptions[] = {
         kSim,
         kLinkBaud,
         {"dialect", "D",
-         "whose reply rules to wait by: auto (default), nvs, geostar, nemerix, nmea"},
+         "whose reply rules to wait by: auto (default) or one of the dialects below"},
         {"timeout", "S", "seconds to wait for each reply (default: the dialect's rule)"},
 };
 constexpr OptionSpec kConfigOptions[] = {
@@ -177,7 +178,7 @@ constexpr CommandSpec kCommands[] = {
          "schema DIALECT",
          "a dialect's settings schema as JSON",
          {},
-         "Prints the settings schema of DIALECT (nvs, geostar, nemerix, nmea) as one JSON array: "
+         "Prints the settings schema of DIALECT (one of those below) as one JSON array: "
          "key, label, group, type, default, unit, min/max or options, access, read_back, write, "
          "help.\n"
          "Exit status: 0 printed, 2 unknown dialect.\n"},
@@ -271,7 +272,8 @@ constexpr CommandSpec kCommands[] = {
          "prints one JSON object per mountpoint (with its distance when a position is known); "
          "--mount (or --nearest) receives the mountpoint's RTCM 3 and prints one JSON object per "
          "message, as rtcm does, and/or writes the raw bytes to --out. A GGA is sent at the start "
-         "and every 10 s to mountpoints that ask for one (with --gga auto, from the receiver's fix). "
+         "and every 10 s to mountpoints that ask for one (with --gga auto, from the receiver's "
+         "fix). "
          "With a receiver (--port, --tcp or --sim) the corrections are forwarded to it through its "
          "link, whole frames only and never inside a command, and its epochs are printed as JSON "
          "lines instead. The password is read from the "
@@ -367,7 +369,35 @@ const CommandSpec *findCommand(std::string_view name) {
     return nullptr;
 }
 
-std::string overviewHelp() {
+namespace {
+
+// "dialects:" and one line per dialect of the registry: its id and what it is.
+void appendDialects(std::string &out, const DialectRegistry &registry) {
+    std::size_t width = 0;
+    for (const Dialect *d : registry.dialects()) width = std::max(width, d->id.size());
+    out += "\ndialects:\n";
+    for (const Dialect *d : registry.dialects()) {
+        std::string line = "  " + std::string(d->id);
+        line.append(width + 4 - d->id.size(), ' ');
+        out += line;
+        std::string text(d->summary.empty() ? d->displayName : d->summary);
+        if (!d->renamablePrefix.empty())
+            text += " (renamable prefix " + std::string(d->renamablePrefix) + ")";
+        appendWrapped(out, text, line.size(), line.size());
+    }
+}
+
+// Whether a command's help names dialects (an option or an argument that takes one).
+bool takesDialect(const CommandSpec &c) {
+    if (c.synopsis.find("DIALECT") != std::string_view::npos) return true;
+    for (const OptionSpec &o : c.options)
+        if (o.name == "dialect" || o.name == "sim") return true;
+    return false;
+}
+
+} // namespace
+
+std::string overviewHelp(const DialectRegistry &registry) {
     std::string out = "usage: gnss-cli COMMAND [OPTIONS] [ARGUMENTS]\n"
                       "       gnss-cli help [COMMAND]\n"
                       "       gnss-cli --help | --version\n"
@@ -383,9 +413,11 @@ std::string overviewHelp() {
         out += c.summary;
         out += '\n';
     }
+    appendDialects(out, registry);
     out += '\n';
     for (std::string_view paragraph :
-         {"D: auto (default), nvs, geostar, nemerix, nmea.",
+         {"D and DIALECT are one of the dialects above (D may also be auto, the default: "
+          "recognised from the stream).",
           "Every command takes --help and --version; options take their value as --opt VALUE or "
           "--opt=VALUE, and -- ends them. Data goes to standard output (JSON Lines where it is a "
           "stream), messages to standard error.",
@@ -396,7 +428,7 @@ std::string overviewHelp() {
     return out;
 }
 
-std::string commandHelp(const CommandSpec &command) {
+std::string commandHelp(const CommandSpec &command, const DialectRegistry &registry) {
     std::string out;
     bool first = true;
     forEachLine(command.synopsis, [&](std::string_view form) {
@@ -409,6 +441,7 @@ std::string commandHelp(const CommandSpec &command) {
     forEachLine(command.details,
                 [&](std::string_view paragraph) { appendParagraph(out, paragraph); });
     appendOptions(out, command.options);
+    if (takesDialect(command)) appendDialects(out, registry);
     return out;
 }
 

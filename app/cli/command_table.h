@@ -22,9 +22,14 @@ struct CommandSpec {
 std::span<const CommandSpec> commandTable();
 const CommandSpec *findCommand(std::string_view name);
 
-// `gnss-cli --help`: every command's synopsis and summary, and the conventions they share.
-std::string overviewHelp();
-// `gnss-cli help COMMAND`, `gnss-cli COMMAND --help`.
-std::string commandHelp(const CommandSpec &command);
+// `gnss-cli --help`: every command's synopsis and summary, the registry's dialects, and the
+// conventions they share.
+std::string overviewHelp(const DialectRegistry &registry);
+// `gnss-cli help COMMAND`, `gnss-cli COMMAND --help` (with the dialects where it takes one).
+std::string commandHelp(const CommandSpec &command, const DialectRegistry &registry);
+
+// gnss-cli itself, over `registry` (the built-in dialects, or more: a program that adds a family
+// calls this with its registry); --version prints `programVersion`. Returns the exit status.
+int runCli(const DialectRegistry &registry, const char *programVersion, int argc, char **argv);
 
 } // namespace gnss::cli

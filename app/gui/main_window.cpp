@@ -367,11 +367,14 @@ void MainWindow::createMenus() {
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About GNSS Workbench"), this, [this] {
-        QMessageBox::about(
-                this, tr("About GNSS Workbench"),
-                tr("<b>GNSS Workbench</b> %1<br>Configure and monitor NVS NV08C-RTK, GeoStar "
-                   "GeoS-5, Nemerix and NMEA-0183 receivers.")
-                        .arg(QApplication::applicationVersion()));
+        QStringList families;
+        for (const Dialect *d : registry_.dialects())
+            families << QString::fromUtf8(d->displayName.data(), qsizetype(d->displayName.size()));
+        QMessageBox::about(this, tr("About GNSS Workbench"),
+                           tr("<b>GNSS Workbench</b> %1<br>Configure and monitor these receivers: "
+                              "%2.")
+                                   .arg(QApplication::applicationVersion(),
+                                        families.join(QStringLiteral(", "))));
     });
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 }
@@ -529,7 +532,10 @@ void MainWindow::connectAtStart(const SourceSpec &spec) {
     SourceSpec s = spec;
     if (!s.valid() && settings_)
         s = SourceSpec::fromString(settings_->value("connection/last").toString());
-    if (!s.valid()) s = SourceSpec{SourceSpec::Kind::Simulator, QStringLiteral("nvs")};
+    // A first start: the first family the simulator plays.
+    const QStringList simulated = simulatedDialects(registry_);
+    if (!s.valid() && !simulated.isEmpty())
+        s = SourceSpec{SourceSpec::Kind::Simulator, simulated.front()};
     bar_->select(s);
     controller_->connectTo(s);
 }

@@ -39,7 +39,7 @@ const Dialect &dialect() {
             .actions = kActions,
             .presets = kPresets,
             .linkSpeed = {"PNMRX100,"},
-            .summary = "Nemerix VT002 (PNMRX...): GPS module, prefix renamable",
+            .summary = "Nemerix VT002 (PNMRX...): GPS module",
             .makeSimulator = makeSimulatedReceiver,
     };
     return d;
