@@ -87,7 +87,8 @@ void closeIndex(const char *base, std::string_view unfinished, const DialectRegi
     last.finish();
     out.openFramer = last.framerStats();
     out.openEnd = out.indexedEnd + unfinished.size();
-    out.lastIsOpen = out.records.size() > before;
+    out.openRecords = out.records.size() - before;
+    out.lastIsOpen = out.openRecords > 0;
 }
 
 // Splits off what follows the last '\n'.
@@ -206,7 +207,11 @@ bool buildIndex(const char *base, std::string_view whole, const Checkpoint &from
 std::size_t extendIndex(const char *base, std::string_view whole, const DialectRegistry &registry,
                         const IndexOptions &options, LogIndex &out) {
     const auto [data, unfinished] = atLastLineEnd(whole);
-    if (out.lastIsOpen && !out.records.empty()) out.records.pop_back();
+    // Every record the unfinished line made goes: its bytes are decoded again from the tail. (A
+    // line ended by a bare CR, the file cut before its LF, closes an epoch and opens another;
+    // dropping the open one alone kept the first twice.)
+    out.records.resize(out.records.size() - std::min(out.openRecords, out.records.size()));
+    out.openRecords = 0;
     out.lastIsOpen = false;
     const std::size_t changedFrom = out.records.size();
     EpochRunner::Sinks sinks;

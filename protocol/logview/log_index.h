@@ -32,6 +32,10 @@ struct LogIndex {
     std::vector<Checkpoint> checkpoints;     // by carry.emitted, at most N epochs apart
     Checkpoint tail;                         // the state at indexedEnd (to go on when it grows)
     bool lastIsOpen = false;                 // records.back() is the epoch in progress at the end
+    std::size_t openRecords = 0;             // records made from the unfinished last line, the
+                                             // open one included (more than one when it closes
+                                             // an epoch itself: a CR, the file cut before its LF);
+                                             // redone when the file grows
     std::uint64_t start = 0, indexedEnd = 0; // file offsets indexed (to a line end)
     std::uint64_t openEnd = 0;               // ... and with the unfinished last line, if any
     FramerStats framer;                      // bytes, sentences, junk, cut lines (exact)

@@ -157,11 +157,11 @@ void LogView::run(std::string path) {
     finish(Phase::Ready);
 }
 
-// Timeline flags and events of records[changedFrom, ...), the open last one on copies of the
-// state (it is redone when the file grows). Called with the lock held.
+// Timeline flags and events of records[changedFrom, ...), those of the unfinished last line on
+// copies of the state (they are redone when the file grows). Called with the lock held.
 void LogView::finishTimeline(std::size_t changedFrom) {
     auto &recs = index_.records;
-    const std::size_t closed = recs.size() - (index_.lastIsOpen ? 1 : 0);
+    const std::size_t closed = recs.size() - std::min(index_.openRecords, recs.size());
     events_.resize(std::min(events_.size(), closedEvents_));
     const HostTimes *host = host_.empty() ? nullptr : &host_;
     if (changedFrom < closed) {
@@ -169,7 +169,7 @@ void LogView::finishTimeline(std::size_t changedFrom) {
         collectEvents(recs, changedFrom, closed, registry_, host, eventState_, events_);
     }
     closedEvents_ = events_.size();
-    if (index_.lastIsOpen) {
+    if (closed < recs.size()) {
         TimelineState t = timeline_;
         EventState e = eventState_;
         applyTimeline(recs, closed, recs.size(), t, host, options_.gapFactor);
