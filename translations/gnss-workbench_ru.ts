@@ -5222,6 +5222,21 @@ Serial number: %3</source>
         <translation>это не строка индекса</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>bad host time</source>
+        <translation>неверное время хоста</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>offset %1 is before the previous record&apos;s %2</source>
+        <translation>смещение %1 меньше смещения предыдущей записи (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>offset past the end of the data file</source>
+        <translation>смещение за концом файла данных</translation>
+    </message>
+    <message>
         <location line="+5"/>
         <source>bad length</source>
         <translation>неверная длина</translation>

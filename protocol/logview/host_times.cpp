@@ -32,7 +32,7 @@ bool HostTimes::load(const std::string &indexPath, std::uint64_t dataSize) {
     std::ifstream in(indexPath, std::ios::binary);
     if (!in) return false;
     std::string line;
-    std::uint64_t expected = 0;
+    std::uint64_t expected = 0, lastOffset = 0;
     std::int64_t lastMs = 0;
     int lineNo = 0;
     auto bad = [&](const std::string &why) {
@@ -53,13 +53,23 @@ bool HostTimes::load(const std::string &indexPath, std::uint64_t dataSize) {
         if (kind.size() != 1 || !number(word(line, pos), ms) || !number(word(line, pos), offset) ||
             offset < 0)
             return bad("not an index line");
+        // Before 1970 is no clock reading (and differences of host times must not overflow).
+        if (ms < 0) return bad("bad host time");
+        // Records are written as the bytes arrive: their offsets never go back, nor past the data.
+        const auto at = static_cast<std::uint64_t>(offset);
+        if (at < lastOffset)
+            return bad("offset " + std::to_string(at) + " is before the previous record's " +
+                       std::to_string(lastOffset));
+        if (at > dataSize) return bad("offset past the end of the data file");
+        lastOffset = at;
         if (kind[0] == 'R') {
             std::int64_t length = 0;
             if (!number(word(line, pos), length) || length < 0) return bad("bad length");
             if (static_cast<std::uint64_t>(offset) != expected)
                 return bad("chunk starts at " + std::to_string(offset) + ", expected " +
                            std::to_string(expected));
-            if (static_cast<std::uint64_t>(offset + length) > dataSize)
+            // offset == expected <= dataSize here: the difference cannot wrap.
+            if (static_cast<std::uint64_t>(length) > dataSize - expected)
                 return bad("chunk ends past the end of the data file");
             if (length > 0) chunks_.push_back({static_cast<std::uint64_t>(offset), ms});
             expected = static_cast<std::uint64_t>(offset + length);

@@ -135,6 +135,65 @@ private slots:
         QVERIFY2(error.contains("line 1"), qPrintable(error));
     }
 
+    // A line that is no record the recorder writes is refused by name (tests/fuzz
+    // fuzz_recording_index found the first two taken: Qt's toLongLong reads "7\0junk" as 7 and
+    // takes '+' and spaces; the same rules as the log viewer's reader, logview/host_times.cpp).
+    void indexLinesThatAreNoRecordsAreRefused_data() {
+        QTest::addColumn<QByteArray>("index");
+        QTest::addColumn<QString>("why");
+        QTest::newRow("a NUL inside a number")
+                << QByteArray("R 5000 0 7\0junk\n", 16) << "line 1: bad length";
+        QTest::newRow("a sign") << QByteArray("R +5000 0 7\n") << "line 1: not an index line";
+        QTest::newRow("a space inside") << QByteArray("R 5000 0 \t7\n") << "line 1: bad length";
+        QTest::newRow("a negative offset")
+                << QByteArray("R 5000 0 7\nS 5000 -1 $PNVGVER*4E\n") << "line 2: not an index line";
+        QTest::newRow("a host time before 1970")
+                << QByteArray("R -1 0 7\n") << "line 1: bad host time";
+        QTest::newRow("a length that overflows")
+                << QByteArray("R 5000 0 7\nR 5001 7 9223372036854775807\n")
+                << "line 2: chunk ends past the end of the data file";
+        QTest::newRow("a gap past the data") << QByteArray("R 5000 0 7\nG 5000 99 link lost: x\n")
+                                             << "line 2: offset past the end of the data file";
+        QTest::newRow("an offset going back")
+                << QByteArray("R 5000 0 7\nR 5000 7 7\nG 5000 3 link lost: x\n")
+                << "line 3: offset 3 is before the previous record's 7";
+    }
+    void indexLinesThatAreNoRecordsAreRefused() {
+        QFETCH(QByteArray, index);
+        QFETCH(QString, why);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("bad.nmea");
+        QFile d(path), i(path + ".idx");
+        QVERIFY(d.open(QIODevice::WriteOnly) && i.open(QIODevice::WriteOnly));
+        d.write("$A*41\r\n$B*42\r\n");
+        i.write(index);
+        d.close();
+        i.close();
+        Recording r;
+        QString error;
+        QVERIFY(!loadRecording(path, r, error));
+        QVERIFY2(error.endsWith(why), qPrintable(error));
+    }
+
+    void anIndexWithCrLfLineEndsLoads() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("crlf.nmea");
+        QFile d(path), i(path + ".idx");
+        QVERIFY(d.open(QIODevice::WriteOnly) && i.open(QIODevice::WriteOnly));
+        d.write("$A*41\r\n$B*42\r\n");
+        i.write("# gnss-workbench recording index 1\r\nR 5000 0 7\r\n\r\nG 5500 7 link lost: x\r\n"
+                "R 6000 7 7\r\n");
+        d.close();
+        i.close();
+        Recording r;
+        QString error;
+        QVERIFY2(loadRecording(path, r, error), qPrintable(error));
+        QCOMPARE(r.chunks.size(), std::size_t(2));
+        QCOMPARE(r.chunks[1].hostMs, 6000);
+        QCOMPARE(r.events.size(), std::size_t(1));
+        QCOMPARE(r.events[0].text, QStringLiteral("link lost: x"));
+    }
+
     void plainLogWithoutIndexLoads() {
         QTemporaryDir dir;
         const QString path = dir.filePath("plain.nmea");
