@@ -207,7 +207,9 @@ void ResponseHeadParser::parseHeaderLine(std::string_view line) {
     if (head_.headers.size() < kMaxHeaders)
         head_.headers.emplace_back(printableCopy(name, kMaxLine), printableCopy(value, kMaxLine));
     if (equalsNoCase(name, "Content-Type")) {
-        head_.contentType = toLower(trim(value.substr(0, value.find(';'))));
+        // Printable, as every text of the head: it is shown in messages ("answered with %1").
+        head_.contentType =
+                toLower(printableCopy(trim(value.substr(0, value.find(';'))), kMaxLine));
     } else if (equalsNoCase(name, "Transfer-Encoding")) {
         // "gzip, chunked": chunked is always the last coding when present.
         const auto comma = value.rfind(',');

@@ -48,7 +48,7 @@ struct ResponseHead {
     int statusCode = 0;       // 200, 401 ... (0 for ERROR lines and when unknown)
     std::string statusLine;   // as received, without CR LF; non-printable bytes as '?'
     std::string httpVersion;  // "1.0", "1.1" (Http style only)
-    std::string contentType;  // lower case, parameters dropped: "gnss/data"
+    std::string contentType;  // lower case, no parameters, control bytes '?': "gnss/data"
     std::string ntripVersion; // the Ntrip-Version header ("Ntrip/2.0"), empty when none
     bool chunked = false;     // Transfer-Encoding ends in "chunked"
     std::optional<std::uint64_t> contentLength;

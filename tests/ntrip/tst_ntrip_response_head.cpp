@@ -178,6 +178,15 @@ private slots:
         QCOMPARE(r.head.headers[2].second, std::string("NTRIP Caster"));
     }
 
+    // The content type is shown in messages ("answered with %1"): a caster's control bytes in
+    // it (a terminal escape) are '?', as in every other text of the head (found by tests/fuzz
+    // fuzz_ntrip_response).
+    void theContentTypeIsPrintable() {
+        const Parsed r = parse("HTTP/1.1 200 OK\r\nContent-Type: Text/\x1b[31mHTML\xff\r\n\r\n");
+        QCOMPARE(r.head.kind, ReplyKind::UnexpectedContent);
+        QCOMPARE(r.head.contentType, std::string("text/?[31mhtml?"));
+    }
+
     void aHeadThatNeverEndsIsNotNtrip() {
         QByteArray reply = "HTTP/1.1 200 OK\r\n";
         while (reply.size() < 20000) reply += "X-Filler: aaaaaaaaaaaaaaaaaaaaaaaaaaaaaa\r\n";
