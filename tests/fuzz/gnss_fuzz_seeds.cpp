@@ -8,10 +8,24 @@
 //                                    its first option), in fuzz_settings_input.h's format
 //   OUT_DIR/fuzz_profile_import/     a profile per dialect (schema defaults, write-only list),
 //                                    as profileToJson writes it
+//   OUT_DIR/fuzz_ntrip_response/     caster replies in the NTRIP 1 and 2 forms of tests/ntrip
+//                                    and tests/corrections/test_caster.h (ICY, SOURCETABLE,
+//                                    HTTP with chunked gnss/data and tables, 401, 404, 503,
+//                                    ERROR lines, not a caster), RTCM from the encoder, chunked
+//                                    bodies, source tables
+//   OUT_DIR/fuzz_recording_index/    recordings written by link::Recorder (chunks, a command, a
+//                                    lost and restored link, an appended session), and what
+//                                    becomes of one: a torn last index line, a cut data file, a
+//                                    hole, CR LF, another program's file as index, no index
 #include "config/setting_values.h"
 #include "config/settings_profile.h"
+#include "core/sentence_builder.h"
 #include "fuzz_settings_input.h"
+#include "recorder.h"
 #include "rtcm/rtcm_encoder.h"
+
+#include <QFile>
+#include <QTemporaryDir>
 
 #include <bit>
 #include <cstdio>
@@ -183,6 +197,219 @@ void profileSeeds() {
                                  R"("dialect":"nmea","values":{},"write_only":[]})");
 }
 
+// ---- NTRIP replies: byte 0 the mode (0 a whole reply, 1 a chunked body, 2 a source table;
+// + 4: repeated past the longest head), byte 1 the chunking it arrives in, byte 2 the rest
+// (fuzz_ntrip_response.cpp).
+
+void writeNtrip(const std::string &name, std::uint8_t mode, std::uint8_t chunking,
+                std::string_view payload) {
+    std::string bytes{char(mode), char(chunking), char(0x5A)};
+    bytes.append(payload);
+    write("fuzz_ntrip_response", name, bytes);
+}
+
+// As an NTRIP 2 caster sends a stream: HTTP chunks of the given sizes, cycled.
+std::string httpChunks(std::string_view data, std::initializer_list<std::size_t> sizes,
+                       std::string_view extension = {}) {
+    std::string out;
+    auto size = sizes.begin();
+    for (std::size_t pos = 0; pos < data.size();) {
+        const std::size_t n = std::min(*size, data.size() - pos);
+        if (++size == sizes.end()) size = sizes.begin();
+        char head[32];
+        std::snprintf(head, sizeof head, "%zx", n);
+        out += head;
+        out += extension;
+        out += "\r\n";
+        out.append(data.substr(pos, n));
+        out += "\r\n";
+        pos += n;
+    }
+    return out + "0\r\n\r\n";
+}
+
+void ntripSeeds() {
+    StationArp arp;
+    arp.station = 7;
+    arp.gps = arp.glonass = true;
+    arp.x = 2845455.0;
+    arp.y = 2160465.0;
+    arp.z = 5265313.0;
+    std::string rtcm = encodeStationArp(arp);
+    rtcm += encodeMsm(msm(System::Gps, 4));
+    rtcm += encodeMsm(msm(System::Glonass, 4));
+
+    // The tables of tests/ntrip/tst_source_table.cpp and tests/corrections/test_caster.h.
+    const std::string table =
+            "STR;MOSC00RUS0;Moscow;RTCM 3.2;1005(10),1074(1),1084(1),1230(10);2;GPS+GLO;IGS;RUS;"
+            "55.75;37.62;0;0;NV08C-RTK;none;B;N;9600;misc;with;semicolons\r\n"
+            "STR;VRS_RTCM3;Network VRS;RTCM 3;1004(1),1012(1);2;GPS+GLO;NET1;RUS;55.00;37.00;1;1;"
+            "sNTRIP;none;B;Y;5000;\r\n"
+            "STR;CMR;Old;CMR+;;2;GPS;NET1;RUS;56.00;38.00;0;0;gen;none;N;N;2400\r\n"
+            "CAS;caster.example.org;2101;Example;Operator;0;RUS;55.7;37.6;fallback.example.org;"
+            "2102;http://example.org\r\n"
+            "NET;NET1;Operator;B;N;http://net;http://str;http://reg;none\r\n"
+            "ENDSOURCETABLE\r\n";
+    const std::string casterTable =
+            "STR;MOUNT;Test base;RTCM 3.2;1005(1),1074(1),1084(1);1;GPS+GLO;TEST;RUS;55.75;37.62;1;"
+            "0;gnss-sim;none;B;N;9600;\r\n"
+            "STR;FAR;Far base;RTCM 3.3;1005(10);2;GPS;TEST;RUS;59.93;30.34;0;0;x;none;B;N;9600;\r\n"
+            "STR;OLD;Old base;RTCM 2.3;1;2;GPS;TEST;RUS;55.76;37.63;0;0;x;none;B;N;2400;\r\n"
+            "CAS;127.0.0.1;2101;Test;Tests;0;RUS;55.75;37.62;;0;\r\n"
+            "NET;TEST;Tests;B;N;none;none;none;\r\n"
+            "ENDSOURCETABLE\r\n";
+    const std::string rtklib = "STR;MOUNT;MOUNT;RTCM 3.2;1005(10);2;GPS;LOCAL;XXX;0.00;0.00;0;0;"
+                               "sim;none;B;N;9600;\r\nENDSOURCETABLE\r\n";
+    const std::string v2 = "HTTP/1.1 200 OK\r\nNtrip-Version: Ntrip/2.0\r\n";
+
+    writeNtrip("icy_rtcm", 0, 0x23, "ICY 200 OK\r\n" + rtcm);
+    writeNtrip("icy_headers_rtcm", 0, 0x11,
+               "ICY 200 OK\r\nServer: Caster/1.0\r\nDate: today\r\n\r\n" + rtcm);
+    writeNtrip("icy_nmea_text", 0, 0x00, "ICY 200 OK\r\n$GPGGA,1,2*00\r\nhello world\r\n");
+    writeNtrip("v2_chunked_rtcm", 0, 0x2B,
+               v2 + "Content-Type: gnss/data\r\nTransfer-Encoding: chunked\r\n\r\n" +
+                       httpChunks(rtcm, {7, 13, 1, 64}));
+    writeNtrip("v2_chunked_extensions", 0, 0x1C,
+               v2 + "Content-Type: gnss/data\r\nTransfer-Encoding: gzip, chunked\r\n\r\n" +
+                       httpChunks(rtcm, {25}, ";x=1"));
+    writeNtrip("v2_data_any_case", 0, 0x09,
+               "HTTP/1.1 200 OK\r\nntrip-version: Ntrip/2.0\r\ncontent-type: GNSS/Data; x=1\r\n"
+               "Content-Length: " +
+                       std::to_string(rtcm.size()) + "\r\n\r\n" + rtcm);
+    writeNtrip("http10_no_type", 0, 0x05, "HTTP/1.0 200 OK\r\n\r\n" + rtcm);
+    writeNtrip("v1_sourcetable", 0, 0x23,
+               "SOURCETABLE 200 OK\r\nServer: RTKLIB 2.4.3 b34\r\nContent-Type: text/plain\r\n"
+               "Content-Length: " +
+                       std::to_string(rtklib.size()) + "\r\n\r\n" + rtklib);
+    writeNtrip("v2_sourcetable", 0, 0x14,
+               v2 + "Content-Type: gnss/sourcetable\r\n\r\n" + casterTable);
+    writeNtrip("v2_sourcetable_chunked", 0, 0x32,
+               v2 + "Content-Type: gnss/sourcetable\r\nTransfer-Encoding: chunked\r\n\r\n" +
+                       httpChunks(table, {100, 3}));
+    writeNtrip("v2_table_text_plain", 0, 0x06,
+               "HTTP/1.1 200 OK\r\nContent-Type: text/plain\r\n\r\n" + rtklib);
+    writeNtrip("401_rtklib", 0, 0x00, "HTTP/1.0 401 Unauthorized\r\n");
+    writeNtrip("401_v2_page", 0, 0x13,
+               "HTTP/1.1 401 Unauthorized\r\nNtrip-Version: Ntrip/2.0\r\n"
+               "WWW-Authenticate: Basic realm=\"/MOUNT\"\r\n\r\n<html/>");
+    writeNtrip("404", 0, 0x02, "HTTP/1.1 404 Not Found\r\n\r\n");
+    writeNtrip("503", 0, 0x02, "HTTP/1.1 503 Service Unavailable\r\nRetry-After: 5\r\n\r\n");
+    writeNtrip("error_line", 0, 0x01, "ERROR - Bad Password\r\n");
+    writeNtrip("web_page", 0, 0x07,
+               "HTTP/1.1 200 OK\r\nContent-Type: text/html\r\n\r\n<html><body>hi</body></html>");
+    writeNtrip("ssh_banner", 0, 0x03, "SSH-2.0-OpenSSH_9.2\r\n");
+    writeNtrip("rtcm_no_head", 0, 0x03, rtcm);
+    writeNtrip("long_head", 4, 0x37, "HTTP/1.1 200 OK\r\nX-Filler: aaaaaaaaaaaaaaaaaaaaaaaa\r\n");
+
+    writeNtrip("chunked_body_rtcm", 1, 0x23, httpChunks(rtcm, {7, 13, 1, 64}));
+    writeNtrip("chunked_body_trailers", 1, 0x00,
+               "3;name=value;x\r\nabc\r\n000A\r\n0123456789\r\n0\r\nX-Checksum: 1\r\n\r\nafter");
+    writeNtrip("chunked_body_bare_lf", 1, 0x11, "3\nabc\n0\n\n");
+    writeNtrip("chunked_body_broken", 1, 0x02, "3\r\nabcd\r\n0\r\n\r\n");
+
+    writeNtrip("table", 2, 0x2F, table);
+    writeNtrip("table_caster", 2, 0x13, casterTable);
+    writeNtrip("table_garbage", 2, 0x05,
+               "<html>\r\nhello\r\nSTR;M;x\r\n\xff\xfe\r\n\r\n  \r\nSTR;;x;RTCM 3\r\n"
+               "STR;M;x;RTCM 3;;two;GPS;N;RUS;north;east;x;y;g;none;B;N;fast;\r\nSTR;A;x\nENDSOURCE"
+               "TABLE\n");
+}
+
+// ---- Recordings: byte 0 which files exist (0 both, 1 the data only, 2 the index only; + 4: the
+// log viewer opens it), bytes 1-2 the index's length, the index, the data
+// (fuzz_recording_index.cpp).
+
+void writeRecording(const std::string &name, std::uint8_t control, const std::string &index,
+                    const std::string &data) {
+    std::string bytes{char(control), char(index.size() & 0xFF), char((index.size() >> 8) & 0xFF)};
+    bytes += index;
+    bytes += data;
+    write("fuzz_recording_index", name, bytes);
+}
+
+std::string readFile(const QString &path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll().toStdString() : std::string();
+}
+
+// Five seconds of a receiver at 1 Hz, with valid checksums.
+std::string receiverOutput(int fromSecond, int seconds) {
+    std::string out;
+    for (int t = fromSecond; t < fromSecond + seconds; ++t) {
+        char time[16];
+        std::snprintf(time, sizeof time, "1000%02d.00", t);
+        const std::string ts(time);
+        out += buildSentence("GPGGA," + ts +
+                             ",5540.0000,N,03730.0000,E,1,08,0.9,150.0,M,14.0,M,,") +
+               "\r\n";
+        out += buildSentence("GPGSA,A,3,02,05,13,24,,,,,,,,,1.8,0.9,1.5") + "\r\n";
+        out += buildSentence("GPRMC," + ts + ",A,5540.0000,N,03730.0000,E,0.0,0.0,150324,,,A") +
+               "\r\n";
+    }
+    return out;
+}
+
+void recordingSeeds() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("run.nmea");
+    qint64 now = 1710496800000; // 2024-03-15T10:00:00Z
+    const std::string first = receiverOutput(0, 3), second = receiverOutput(5, 2);
+    {
+        link::Recorder rec(nullptr, [&] { return now; });
+        rec.open(path, QStringLiteral("/dev/ttyUSB0 at 115200 baud"));
+        // Chunks as a serial port delivers them: anywhere, mid-sentence and between CR and LF.
+        for (std::size_t pos = 0, k = 0; pos < first.size(); ++k) {
+            const std::size_t n = std::min<std::size_t>(first.size() - pos, 17 + (k * 37) % 120);
+            rec.received(QByteArray::fromStdString(first.substr(pos, n)));
+            pos += n;
+            now += 100;
+        }
+        rec.sent("$PNVGVER*4E\r\n");
+        now += 1000;
+        rec.gap(QStringLiteral("link lost: /dev/ttyUSB0: No such device"));
+        now += 2000;
+        rec.gap(QStringLiteral("link back: /dev/ttyUSB0 at 115200 baud"));
+        rec.received(QByteArray::fromStdString(second.substr(0, 200)));
+    }
+    {
+        now += 500;
+        link::Recorder rec(nullptr, [&] { return now; });
+        rec.open(path, QStringLiteral("/dev/ttyUSB0"), true); // recording again, appended
+        rec.received(QByteArray::fromStdString(second.substr(200)));
+    }
+    const std::string index = readFile(path + ".idx"), data = readFile(path);
+
+    writeRecording("recorder", 0, index, data);
+    writeRecording("recorder_viewer", 4, index, data);
+    // The recorder died mid-line, or before the index line of its last chunk.
+    const std::size_t lastLine = index.rfind('\n', index.size() - 2) + 1;
+    writeRecording("torn_last_line", 4, index.substr(0, lastLine + 9), data);
+    writeRecording("last_chunk_unindexed", 0, index.substr(0, lastLine), data);
+    // The data file cut short: the index goes past its end.
+    writeRecording("data_cut", 4, index, data.substr(0, data.size() / 2));
+    // A hole: an R line gone.
+    const std::size_t r3 = index.find("\nR ", index.find("\nR ", index.find("\nR ") + 1) + 1);
+    std::string holed = index;
+    holed.erase(r3 + 1, index.find('\n', r3 + 1) - r3);
+    writeRecording("hole", 0, holed, data);
+    // An index copied through Windows (CR LF).
+    std::string crlf;
+    for (char c : index) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    writeRecording("crlf", 4, crlf, data);
+    // Another program's file beside the log, or the log itself.
+    writeRecording("foreign_csv", 4, "time,lat,lon\n10:00:00,55.6667,37.5\n", data);
+    writeRecording("foreign_json", 0,
+                   R"({"format":"gnss-workbench-settings","version":1})"
+                   "\n",
+                   data);
+    writeRecording("foreign_nmea", 0, data.substr(0, 600), data);
+    writeRecording("comments_only", 4, "# gnss-workbench recording index 1 (docs/recording.md)\n",
+                   data);
+    writeRecording("empty_index", 0, "", data);
+    writeRecording("no_index", 5, "", data);
+    writeRecording("no_data", 2, index, "");
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -194,6 +421,8 @@ int main(int argc, char **argv) {
     rtcmSeeds();
     settingsSeeds();
     profileSeeds();
+    ntripSeeds();
+    recordingSeeds();
     std::printf("%d seeds written under %s\n", g_written, argv[1]);
     return 0;
 }

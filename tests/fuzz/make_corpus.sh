@@ -2,10 +2,12 @@
 # Regenerates the seed corpus of tests/fuzz/corpus/<harness>/ from a normal build, with the
 # project's own code only:
 #   - gnss_fuzz_seeds: RTCM frames from protocol/rtcm's encoder, every setting of every schema,
-#     a settings profile per dialect;
+#     a settings profile per dialect, NTRIP 1 and 2 caster replies, recordings written by the
+#     recorder (and torn, cut, holed, foreign indexes);
 #   - gnss-sim --stdout: a few seconds of each simulated receiver (answering its probe and
 #     settings queries), clean and with line faults, cut at line ends into pieces under 1 KB
-#     (run.sh fuzzes the NMEA streams with -max_len=1024);
+#     (run.sh fuzzes the NMEA streams with -max_len=1024), and under 4 KB for the log index;
+#   - gnss-cli record --sim: two seconds of two simulated receivers as recordings;
 #   - the sentences typed in the tests (tests/**/*.cpp), one file per vendor.
 # The seeds are the files named seed_*: this script replaces those and leaves the others alone —
 # inputs fuzzing found (tests/fuzz/run.sh --merge: hash names) and the inputs of past findings
@@ -32,7 +34,7 @@ trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$corpus"
 find "$corpus" -type f -name 'seed_*' -delete
 "$seeds" "$corpus"
-for h in "${stream_harnesses[@]}"; do mkdir -p "$corpus/$h"; done
+for h in "${stream_harnesses[@]}" fuzz_log_index fuzz_recording_index; do mkdir -p "$corpus/$h"; done
 
 # Control bytes (fuzz_nmea.h): byte 0 = dialect (0 auto, 1 nvs, 2 geostar, 3 nemerix, 4 nmea)
 # + 8 when lenient; byte 1 = a chunking for the decoder harnesses (0x23: chunks of 1-8 bytes),
@@ -72,7 +74,27 @@ for d in nvs geostar nemerix nmea; do
       [ "$n" = 01 ] && [ "$variant" = clean ] && b0=$(printf '%02x' $((0x$b0 | 0x20)))
       write_stream "sim_${d}_${variant}_$n" "$b0" "$piece"
     done
+    # The log index (fuzz_log_index.cpp): byte 0 as above, byte 1 the layout (0x0d: 2 threads,
+    # 128-byte pieces), byte 2 N and the modes (clean 0x37: N = 8, grown and opened in a
+    # LogView; faults 0x13: N = 4, grown), byte 3 a seed; the first two pieces under 4 KB.
+    split -C 4000 -d -a 2 "$tmp/$d-$variant.log" "$tmp/$d-$variant.index."
+    for n in 00 01; do
+      piece=$tmp/$d-$variant.index.$n
+      [ -f "$piece" ] || continue
+      b0=${dialect_byte[$d]} b2=37
+      [ "$variant" = faults ] && b0=08 b2=13
+      { printf "\\x$b0\\x0d\\x$b2\\x07"; cat "$piece"; } > "$corpus/fuzz_log_index/seed_sim_${d}_${variant}_$n"
+    done
   done
+done
+
+# Recordings by the project's recorder (fuzz_recording_index.cpp): byte 0 = 4 (both files, the
+# log viewer opens it too), bytes 1-2 the index's length (little endian), the index, the data.
+for d in nvs geostar; do
+  "$cli" record --sim "$d" --out "$tmp/rec-$d.nmea" --duration 2 > /dev/null 2>&1
+  n=$(stat -c %s "$tmp/rec-$d.nmea.idx")
+  { printf "$(printf '\\x04\\x%02x\\x%02x' $((n & 255)) $((n >> 8)))"
+    cat "$tmp/rec-$d.nmea.idx" "$tmp/rec-$d.nmea"; } > "$corpus/fuzz_recording_index/seed_record_$d"
 done
 
 # Sentences typed in the tests (spec examples, test rows): one file per vendor, CR LF ended.

@@ -24,7 +24,8 @@ seconds=${1:?usage: tests/fuzz/run.sh [--merge] SECONDS [HARNESS...]}
 shift
 harnesses=("$@")
 [ ${#harnesses[@]} -eq 0 ] && harnesses=(fuzz_stream_decoder fuzz_epochs_state
-  fuzz_settings_roundtrip fuzz_profile_import fuzz_rtcm fuzz_log_scan)
+  fuzz_settings_roundtrip fuzz_profile_import fuzz_rtcm fuzz_log_scan fuzz_log_index
+  fuzz_ntrip_response fuzz_recording_index)
 
 build=build/fuzz
 missing=0
@@ -46,10 +47,14 @@ for h in "${harnesses[@]}"; do
   [ -f "tests/fuzz/$h.dict" ] && dict=(-dict="tests/fuzz/$h.dict")
   # Longest input: 1 KB for the NMEA streams (a control bit repeats the payload into a stream
   # longer than a line may be, so long lines and logs are still reached), one whole RTCM frame
-  # and more for RTCM, a profile file for profiles.
+  # and more for RTCM, a profile file for profiles; 4 KB for caster replies (a control bit
+  # repeats them past the longest head) and recordings, 8 KB for the log index (logs of a few
+  # dozen epochs; the harness cuts anything over 64 KB).
   case $h in
     fuzz_rtcm) max_len=2100 ;;
-    fuzz_profile_import | fuzz_settings_roundtrip) max_len=4096 ;;
+    fuzz_profile_import | fuzz_settings_roundtrip | fuzz_ntrip_response) max_len=4096 ;;
+    fuzz_recording_index) max_len=4096 ;;
+    fuzz_log_index) max_len=8192 ;;
     *) max_len=1024 ;;
   esac
   set +e
