@@ -5,7 +5,8 @@
 //            0 time, 1 north, 2 east, 3 vertical projection (m), 4 length (m),
 //            5 course (deg from north), 6 pitch (deg from horizon), 7 mode (A D F R E N)
 //   PNVGBLS before rev 1.5: no time tag (fields 1-7 only).
-#include "nvs_messages.h"
+#include "nvs_encoders.h"
+#include "nvs_output_fields.h"
 
 namespace gnss::nvs {
 
@@ -51,6 +52,31 @@ void Baseline::writeJson(JsonWriter &w) const {
             .field("pitch", pitch)
             .field("mode", mode)
             .endObject();
+}
+
+namespace {
+// Metres in millimetres, angles in hundredths of a degree ($PNVGBRS,091244.60,4604.566,...,344.90,
+// -0.33,R). Without a time, PNVGBLS takes the form of firmware before 1.5 (no time field).
+EncodeResult encodeBaseline(const Baseline &m, bool timeOptional) {
+    OutputFields f(m.type->name);
+    if (m.time || !timeOptional) f.time("time", m.time);
+    f.real("north", m.north, 3, -kMaxMetres, kMaxMetres)
+            .real("east", m.east, 3, -kMaxMetres, kMaxMetres)
+            .real("vertical", m.vertical, 3, -kMaxMetres, kMaxMetres)
+            .real("length", m.length, 3, 0, kMaxMetres)
+            .real("course", m.course, 2, 0, 360)
+            .real("pitch", m.pitch, 2, -90, 90)
+            .mode("mode", m.mode);
+    return f.build();
+}
+} // namespace
+
+EncodeResult encodeBrs(const Brs &m) {
+    return encodeBaseline(m, false);
+}
+
+EncodeResult encodeBls(const Bls &m) {
+    return encodeBaseline(m, true);
 }
 
 } // namespace gnss::nvs

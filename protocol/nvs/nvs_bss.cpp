@@ -4,7 +4,8 @@
 //            0 RTCM messages received, 1 received with errors, 2 received without errors,
 //            3 distance to base station (m), 4 RTCM data age (s, 0-999.9; blank before the
 //            first RTCM message)
-#include "nvs_messages.h"
+#include "nvs_encoders.h"
+#include "nvs_output_fields.h"
 
 namespace gnss::nvs {
 
@@ -31,6 +32,17 @@ void Bss::writeJson(JsonWriter &w) const {
             .field("base_distance", baseDistance)
             .field("rtcm_age", rtcmAge)
             .endObject();
+}
+
+// The receiver's layout: distance in millimetres, age in tenths of a second.
+EncodeResult encodeBss(const Bss &m) {
+    OutputFields f(Bss::kType.name);
+    f.integer("RTCM messages received", m.rtcmTotal, 0, kMaxCount)
+            .integer("RTCM messages with errors", m.rtcmErrors, 0, kMaxCount)
+            .integer("RTCM messages without errors", m.rtcmOk, 0, kMaxCount)
+            .real("distance to base", m.baseDistance, 3, 0, kMaxMetres)
+            .real("RTCM age", m.rtcmAge, 1, 0, kMaxRtcmAge);
+    return f.build();
 }
 
 } // namespace gnss::nvs

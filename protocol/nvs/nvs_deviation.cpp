@@ -4,7 +4,8 @@
 //   $PNVGSDP,hhmmss.ss,x.x,x.x,x.x,a*hh   0 time, 1 latitude, 2 longitude, 3 height (m), 4 mode
 //   $PNVGSDV,hhmmss.ss,x.x,x.x,x.x,a*hh   0 time, 1 north, 2 east, 3 vertical (m/s), 4 mode
 //   $PNVGSDH,hhmmss.ss,x.x,a*hh           0 time, 1 heading (deg), 2 mode
-#include "nvs_messages.h"
+#include "nvs_encoders.h"
+#include "nvs_output_fields.h"
 
 namespace gnss::nvs {
 
@@ -75,6 +76,33 @@ void Sdh::writeJson(JsonWriter &w) const {
             .field("sd_heading", sdHeading)
             .field("mode", mode)
             .endObject();
+}
+
+// Deviations in millimetres, mm/s and thousandths of a degree.
+EncodeResult encodeSdp(const Sdp &m) {
+    OutputFields f(Sdp::kType.name);
+    f.time("time", m.time)
+            .real("latitude deviation", m.sdLat, 3, 0, kMaxMetres)
+            .real("longitude deviation", m.sdLon, 3, 0, kMaxMetres)
+            .real("height deviation", m.sdHeight, 3, 0, kMaxMetres)
+            .mode("mode", m.mode);
+    return f.build();
+}
+
+EncodeResult encodeSdv(const Sdv &m) {
+    OutputFields f(Sdv::kType.name);
+    f.time("time", m.time)
+            .real("north velocity deviation", m.sdVelNorth, 3, 0, kMaxSpeed)
+            .real("east velocity deviation", m.sdVelEast, 3, 0, kMaxSpeed)
+            .real("vertical velocity deviation", m.sdVelUp, 3, 0, kMaxSpeed)
+            .mode("mode", m.mode);
+    return f.build();
+}
+
+EncodeResult encodeSdh(const Sdh &m) {
+    OutputFields f(Sdh::kType.name);
+    f.time("time", m.time).real("heading deviation", m.sdHeading, 3, 0, 360).mode("mode", m.mode);
+    return f.build();
 }
 
 } // namespace gnss::nvs

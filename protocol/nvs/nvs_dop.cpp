@@ -3,7 +3,8 @@
 //
 //   $PNVGDOP,hhmmss.ss,x.x,x.x,x.x,x.x,x.x,x.x,x.x,a*hh
 //            0 time, 1 GDOP, 2 PDOP, 3 HDOP, 4 VDOP, 5 TDOP, 6 nDOP, 7 eDOP, 8 mode
-#include "nvs_messages.h"
+#include "nvs_encoders.h"
+#include "nvs_output_fields.h"
 
 namespace gnss::nvs {
 
@@ -38,6 +39,21 @@ void Dop::writeJson(JsonWriter &w) const {
             .field("edop", edop)
             .field("mode", mode)
             .endObject();
+}
+
+// Each DOP with two decimals.
+EncodeResult encodeDop(const Dop &m) {
+    OutputFields f(Dop::kType.name);
+    f.time("time", m.time)
+            .real("GDOP", m.gdop, 2, 0, kMaxDop)
+            .real("PDOP", m.pdop, 2, 0, kMaxDop)
+            .real("HDOP", m.hdop, 2, 0, kMaxDop)
+            .real("VDOP", m.vdop, 2, 0, kMaxDop)
+            .real("TDOP", m.tdop, 2, 0, kMaxDop)
+            .real("nDOP", m.ndop, 2, 0, kMaxDop)
+            .real("eDOP", m.edop, 2, 0, kMaxDop)
+            .mode("mode", m.mode);
+    return f.build();
 }
 
 } // namespace gnss::nvs

@@ -8,6 +8,7 @@
 //   $PNVGIDL,SHOW*hh            reply: one item per station:
 //   $PNVGIDL,x,x,xxxx,x.xxxx*hh 0 list length, 1 index (1-based), 2 station id, 3 ICB
 #include "nvs_encode_util.h"
+#include "nvs_output_fields.h"
 
 #include "core/field_parse.h"
 
@@ -92,7 +93,15 @@ std::string stationText(int id) {
     return buf;
 }
 std::string checkStation(int id) {
-    return checkRange("PNVGIDL station ID", id, 0, 4095);
+    return checkRange("PNVGIDL station ID", id, 0, kMaxStationId);
+}
+
+// A REMOVE/CLEAR reply word: a word, never a number (which would read as a station id).
+bool isReplyWord(std::string_view w) {
+    if (w.empty()) return false;
+    for (char c : w)
+        if (c < 'A' || c > 'Z') return false;
+    return true;
 }
 } // namespace
 
@@ -121,6 +130,44 @@ EncodeResult encodeIdlAdd(std::optional<int> stationId, std::optional<double> ic
 EncodeResult encodeIdlRemove(int stationId) {
     if (auto err = checkStation(stationId); !err.empty()) return refuse(err);
     return built("PNVGIDL,REMOVE," + stationText(stationId));
+}
+
+EncodeResult encodeIdl(const Idl &m) {
+    const std::string_view word = !m.status.empty() ? m.status : m.ok ? "OK" : "";
+    OutputFields f(Idl::kType.name);
+    switch (m.kind) {
+    case IdlKind::Mode:
+        if (m.mode) return encodeIdlMode(*m.mode);
+        f.text("subcommand", "MODE");
+        break;
+    case IdlKind::Add: return encodeIdlAdd(m.stationId, m.icb);
+    case IdlKind::Remove:
+    case IdlKind::Clear:
+        f.text("subcommand", m.kind == IdlKind::Remove ? "REMOVE" : "CLEAR");
+        if (!word.empty()) { // the reply
+            if (!isReplyWord(word))
+                f.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: '%2' is not one of: %3"),
+                                 {"PNVGIDL reply", std::string(word), "OK, ERROR"}));
+            f.text("reply", word);
+        } else if (m.kind == IdlKind::Remove && m.stationId) {
+            return encodeIdlRemove(*m.stationId);
+        }
+        break;
+    case IdlKind::Show: return encodeIdlShow();
+    case IdlKind::Item:
+        // "$PNVGIDL,0": SHOW's answer for an empty list; otherwise one item per station.
+        if (m.count && *m.count == 0 && !m.index && !m.stationId && !m.icb)
+            return built("PNVGIDL,0");
+        if (!m.count)
+            f.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: expected an integer, got '%2'"),
+                             {"PNVGIDL list length", ""}));
+        f.integer("list length", m.count, 1, kMaxStations)
+                .integer("index", m.index, 1, m.count.value_or(kMaxStations))
+                .integer("station ID", m.stationId, 0, kMaxStationId, 4)
+                .real("GLONASS ICB", m.icb, 4, -1, 1);
+        break;
+    }
+    return f.build();
 }
 
 EncodeResult encodeIdlClear() {

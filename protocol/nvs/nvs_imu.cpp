@@ -3,7 +3,8 @@
 //   rev 1.5+  $PNVGIMU,hhmmss.ss,x,x,x,x,x,x*hh
 //             0 time, 1 roll, 2 pitch, 3 yaw (deg), 4 an, 5 ae, 6 ad (m/s^2, north/east/down)
 //   pre-1.5   $PNVGIMU,x,x,x,x,x,x*hh   (no time tag: the same fields shifted by one)
-#include "nvs_messages.h"
+#include "nvs_encoders.h"
+#include "nvs_output_fields.h"
 
 namespace gnss::nvs {
 
@@ -35,6 +36,20 @@ void Imu::writeJson(JsonWriter &w) const {
             .field("acc_east", accEast)
             .field("acc_down", accDown)
             .endObject();
+}
+
+// Angles in hundredths of a degree, accelerations in mm/s^2. Without a time, the form of
+// firmware before 1.5 (no time field).
+EncodeResult encodeImu(const Imu &m) {
+    OutputFields f(Imu::kType.name);
+    if (m.time) f.time("time", m.time);
+    f.real("roll", m.roll, 2, -360, 360)
+            .real("pitch", m.pitch, 2, -90, 90)
+            .real("yaw", m.yaw, 2, -360, 360)
+            .real("north acceleration", m.accNorth, 3, -kMaxAcceleration, kMaxAcceleration)
+            .real("east acceleration", m.accEast, 3, -kMaxAcceleration, kMaxAcceleration)
+            .real("down acceleration", m.accDown, 3, -kMaxAcceleration, kMaxAcceleration);
+    return f.build();
 }
 
 } // namespace gnss::nvs

@@ -50,9 +50,10 @@ void Rzb::writeJson(JsonWriter &w) const {
 EncodeResult encodeRzb(std::optional<int> port, std::span<const RzbEntry> entries) {
     if (port)
         if (auto err = checkRange("PNVGRZB port", *port, 0, 3); !err.empty()) return refuse(err);
-    if (entries.size() > 20)
+    if (entries.size() > kMaxOutputMessages)
         return refuse("PNVGRZB messages: " + std::to_string(entries.size()) +
-                      " is out of range; accepted: 0..20 messages");
+                      " is out of range; accepted: 0.." + std::to_string(kMaxOutputMessages) +
+                      " messages");
     std::string body = "PNVGRZB";
     if (port) body += ",PORT," + std::to_string(*port);
     for (const auto &e : entries) {

@@ -4,6 +4,9 @@
 #include "core/message.h"
 #include "core/setting_command.h"
 #include "core/settings_schema.h"
+#include "nvs_messages.h"
+
+#include <optional>
 
 #include <span>
 #include <string>
@@ -30,6 +33,18 @@ extern const SettingCommand kPpsCommand;        // PNVGPPS
 extern const SettingCommand kNmeCommand;        // PNVGNME
 extern const SettingCommand kOutputCommands[3]; // PNVGRZB per port (COM1, COM2, USB)
 extern const SettingCommand kPortCommands[3];   // PNVGRZA per port
+
+// The values of the list settings, as their rows' help describes them (nvs_settings.cpp).
+// output.<port>: "RMC:1;GSV:5;PNVGTST:10" (a bare address means rate 1).
+Refusal parseOutputList(std::string_view key, std::string_view value, std::vector<RzbEntry> &out);
+std::string formatOutputList(std::span<const RzbEntry> entries);
+// idl.stations: "3:0.0720;43" (a bare id: the ICB in force when it is added), at most 32.
+struct Station {
+    int id = 0;
+    std::optional<double> icb;
+};
+Refusal parseStations(std::string_view value, std::vector<Station> &out);
+std::string formatStations(std::span<const Station> stations); // ICBs with 4 decimals
 
 // Dialect hook: setting values carried by a decoded reply.
 void extractSettings(const Message &reply, std::vector<KeyValue> &out);

@@ -31,6 +31,8 @@ std::vector<std::string_view> splitList(std::string_view v) {
     return out;
 }
 
+} // namespace
+
 // "RMC:1;GSV:5" (a bare address means rate 1).
 Refusal parseOutputList(std::string_view key, std::string_view v, std::vector<RzbEntry> &out) {
     for (auto item : splitList(v)) {
@@ -45,11 +47,14 @@ Refusal parseOutputList(std::string_view key, std::string_view v, std::vector<Rz
     return {};
 }
 
+std::string formatOutputList(std::span<const RzbEntry> entries) {
+    std::string v;
+    for (const RzbEntry &e : entries)
+        v += (v.empty() ? "" : ";") + e.address + ":" + std::to_string(e.rate);
+    return v;
+}
+
 // "3:0.072;43" (a bare id adds the station with the current ICB).
-struct Station {
-    int id;
-    std::optional<double> icb;
-};
 Refusal parseStations(std::string_view v, std::vector<Station> &out) {
     for (auto item : splitList(v)) {
         const auto colon = item.find(':');
@@ -63,14 +68,21 @@ Refusal parseStations(std::string_view v, std::vector<Station> &out) {
         if (colon != std::string_view::npos) s.icb = icb;
         out.push_back(s);
     }
-    if (out.size() > 32)
+    if (out.size() > kMaxStations)
         return refusal(QT_TRANSLATE_NOOP("Refusal", "idl.stations: %1 stations is out of range; "
                                                     "accepted: 0..32 stations"),
                        {std::to_string(out.size())});
     return {};
 }
 
-} // namespace
+std::string formatStations(std::span<const Station> stations) {
+    std::string v;
+    for (const Station &s : stations) {
+        v += (v.empty() ? "" : ";") + std::to_string(s.id);
+        if (s.icb) v += ":" + formatFixed(*s.icb, 4);
+    }
+    return v;
+}
 
 namespace {
 
@@ -269,9 +281,10 @@ void extractSettings(const Message &reply, std::vector<KeyValue> &out) {
         if (idl->kind == IdlKind::Mode && idl->mode)
             out.push_back({"idl.mode", std::to_string(*idl->mode)});
         // One station per SHOW item: a reader joins the items of one reply with ';'.
-        if (idl->kind == IdlKind::Item && idl->stationId && idl->icb)
-            out.push_back({"idl.stations",
-                           std::to_string(*idl->stationId) + ":" + formatFixed(*idl->icb, 4)});
+        if (idl->kind == IdlKind::Item && idl->stationId && idl->icb) {
+            const Station one[] = {{*idl->stationId, idl->icb}};
+            out.push_back({"idl.stations", formatStations(one)});
+        }
     }
 }
 

@@ -6,7 +6,10 @@
 //            as GGA: 0 time, 1-2 latitude, 3-4 longitude, 5 quality (NVS: 4 RTK, 5 float,
 //            6 estimated), 6 satellites, 7 HDOP, 8 altitude MSL, 10 geoid separation,
 //            12 differential age, 13 station id
-#include "nvs_messages.h"
+#include "nvs_encode_util.h"
+#include "nvs_output_fields.h"
+
+#include "nmea/nmea_encoders.h"
 
 namespace gnss::nvs {
 
@@ -47,6 +50,52 @@ bool decodeTmc(const Sentence &s, DecodeContext &ctx) {
     Tmc m;
     if (r.require(6)) nmea::readGgaFields(r, m);
     return finishDecode(r, ctx, m);
+}
+
+// Time of week to the nanosecond ($PNVGTME,128,40327.564756284).
+EncodeResult encodeTme(const Tme &m) {
+    OutputFields f(Tme::kType.name);
+    f.integer("event counter", m.counter, 0, kMaxCount)
+            .real("time of week", m.tow, 9, 0, 604799.999999999);
+    return f.build();
+}
+
+// The time with the decimals it carries ($PNVGTMU,128,081248.547824228).
+EncodeResult encodeTmu(const Tmu &m) {
+    OutputFields f(Tmu::kType.name);
+    f.integer("event counter", m.counter, 0, kMaxCount).time("time", m.time);
+    return f.build();
+}
+
+// The GGA layout, written by the GGA encoder (one layout for both); the time with the decimals it
+// carries, the position with those PNVGNME sets.
+EncodeResult encodeTmc(const Tmc &m, int positionDecimals) {
+    if (Refusal why = checkSetting("nmea.position_decimals", std::to_string(positionDecimals));
+        !why.empty())
+        return refuse(std::move(why));
+    // Checked here, field by field, for what the GGA encoder takes as given.
+    OutputFields check(Tmc::kType.name);
+    check.time("time", m.time)
+            .real("latitude", m.lat, 9, -90, 90)
+            .real("longitude", m.lon, 9, -180, 180)
+            .integer("quality", m.quality, 0, 6)
+            .integer("satellites used", m.satsUsed, 0, 99)
+            .real("HDOP", m.hdop, 1, 0, kMaxDop)
+            .real("altitude", m.altMsl, 3, -kMaxMetres, kMaxMetres)
+            .real("geoid separation", m.geoidSep, 3, -kMaxMetres, kMaxMetres)
+            .real("DGPS age", m.dgpsAge, 1, 0, kMaxRtcmAge)
+            .integer("DGPS station", m.dgpsStation, 0, 1023); // 4.18: 0000-1023
+    if (m.quality && *m.quality == 3)                         // 4.18: 0, 1, 2, 4, 5, 6
+        check.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: '%2' is not one of: %3"),
+                             {"PNVGTMC quality", "3", "0, 1, 2, 4, 5, 6"}));
+    if (!check.ok()) return check.build();
+    nmea::Gga gga;
+    static_cast<nmea::GgaFields &>(gga) = m;
+    nmea::EncodeFormat format;
+    format.timeDecimals = m.time ? m.time->decimals : format.timeDecimals;
+    format.positionDecimals = positionDecimals;
+    const std::string line = nmea::encodeGga("GP", gga, format); // "$GPGGA,...*hh"
+    return built(std::string(Tmc::kType.name) + line.substr(6, line.size() - 6 - 3));
 }
 
 } // namespace gnss::nvs

@@ -5,6 +5,7 @@
 //                     0 manufacturer (NVS), 1 device (RTK / RTA), 2 RTK FW version,
 //                     3 CSM HW (CSM24), 4 CSM FW version
 #include "nvs_encoders.h"
+#include "nvs_output_fields.h"
 
 #include "core/sentence_builder.h"
 
@@ -38,6 +39,18 @@ void Ver::writeJson(JsonWriter &w) const {
 
 EncodeResult encodeVersionRequest() {
     return {{buildSentence("PNVGVER")}, {}};
+}
+
+// The texts as the receiver prints them (firmware versions keep their leading zeros).
+EncodeResult encodeVer(const Ver &m) {
+    if (m.request) return encodeVersionRequest();
+    OutputFields f(Ver::kType.name);
+    f.text("manufacturer", m.manufacturer)
+            .text("device", m.device)
+            .text("RTK firmware", m.rtkFw)
+            .text("CSM hardware", m.csmHw)
+            .text("CSM firmware", m.csmFw);
+    return f.build();
 }
 
 } // namespace gnss::nvs

@@ -2,7 +2,8 @@
 //
 //   $PNVGVOG,hhmmss.ss,x.x,x.x,x.x,a*hh
 //            0 time, 1 north, 2 east, 3 vertical velocity (m/s), 4 mode (A D F R E N)
-#include "nvs_messages.h"
+#include "nvs_encoders.h"
+#include "nvs_output_fields.h"
 
 namespace gnss::nvs {
 
@@ -29,6 +30,17 @@ void Vog::writeJson(JsonWriter &w) const {
             .field("vel_up", velUp)
             .field("mode", mode)
             .endObject();
+}
+
+// Velocities in mm/s.
+EncodeResult encodeVog(const Vog &m) {
+    OutputFields f(Vog::kType.name);
+    f.time("time", m.time)
+            .real("north velocity", m.velNorth, 3, -kMaxSpeed, kMaxSpeed)
+            .real("east velocity", m.velEast, 3, -kMaxSpeed, kMaxSpeed)
+            .real("vertical velocity", m.velUp, 3, -kMaxSpeed, kMaxSpeed)
+            .mode("mode", m.mode);
+    return f.build();
 }
 
 } // namespace gnss::nvs
