@@ -29,6 +29,9 @@ std::string applyPrefix(std::string_view sentence, std::string_view prefix);
 // "$" + prefix + number + body + checksum, e.g. build("110", ",4,35").
 EncodeResult buildCommand(std::string_view number, std::string_view fields,
                           std::string_view prefix);
+// Empty when `text` can stand as one field (no ',', '*', '$', '!' or control character), else
+// the refusal naming `name`.
+Refusal checkFieldText(std::string_view name, std::string_view text);
 
 // PNMRX100: protocol 0 NMEA / 1 binary; baud 1200..57600 from the table; parity 0/1/2.
 EncodeResult encodeSerialPort(int protocol, int baud, int parity,
@@ -93,7 +96,8 @@ EncodeResult encodeSoftwareReset(std::string_view action = {}, std::string_view 
 EncodeResult encodePowerMode(int mode, std::optional<int> offPeriod = std::nullopt,
                              std::string_view prefix = kPrefix);
 
-// PNMRX300 upload: one satellite's almanac from raw (already scaled) field values.
+// PNMRX300 (upload, and the receiver's output): one satellite's almanac from raw (already
+// scaled) field values; Almanac::setValue makes them from engineering units.
 EncodeResult encodeAlmanac(const Almanac &a, std::string_view prefix = kPrefix);
 
 // Field-less commands.
@@ -101,5 +105,48 @@ EncodeResult encodeStopCore(std::string_view prefix = kPrefix);      // PNMRX113
 EncodeResult encodeVersionQuery(std::string_view prefix = kPrefix);  // PNMRX600
 EncodeResult encodeIspMode(std::string_view prefix = kPrefix);       // PNMRX601
 EncodeResult encodeSettingsQuery(std::string_view prefix = kPrefix); // PNMRX603
+
+// ---- Receiver output ------------------------------------------------------------------------
+// What a VT002 sends, from the message its decoder makes: encode(decode(line)) == line for a line
+// in the receiver's form (hex words in their fields' widths). A value its field cannot carry is
+// refused, building nothing. The simulated receiver sends only what these build.
+
+// PNMRX301: one ephemeris subframe message (nemerix_ephemeris.cpp).
+EncodeResult encodeEphemerisSubframe(const EphemerisSubframe &m, std::string_view prefix = kPrefix);
+// PNMRX302, PNMRX303, PNMRX304 (nemerix_iono_utc.cpp). The SV id may be absent (302: the 8-field
+// form; 303: an empty field); 303's last two words may be absent.
+EncodeResult encodeIonosphere(const Ionosphere &m, std::string_view prefix = kPrefix);
+EncodeResult encodeUtc(const UtcParameters &m, std::string_view prefix = kPrefix);
+EncodeResult encodeHealth(const ConstellationHealth &m, std::string_view prefix = kPrefix);
+// PNMRX600 / PNMRX602 (by the message's type): the report's fields as given (nemerix_version.cpp).
+EncodeResult encodeVersionReport(const VersionReport &m, std::string_view prefix = kPrefix);
+// PNMRX603: one settings report message, 0..4 (nemerix_settings_report.cpp).
+EncodeResult encodeSettingsReport(const SettingsReport &m, std::string_view prefix = kPrefix);
+
+// The two words of PNMRX603 message 0. The spec names them but gives no bits; the layout here is
+// this program's (so nothing reads them back as settings):
+//   NMRX Message Enabled: the PNMRX107 mode (0..3) of 300..304 in bits 0-1, 2-3, ... 8-9;
+//   Uart Settings: the baud in bits 0-19, parity in bits 20-23, protocol in bits 24-31
+//   (9600 baud, no parity, NMEA: 00002580).
+std::uint64_t nmrxEnabledWord(std::span<const int, 5> modes);
+std::uint64_t uartSettingsWord(int baud, int parity, int protocol);
+
+// What PNMRX603 reports besides the settings of the schema: the receiver's own state.
+struct SettingsReportState {
+    std::array<std::optional<std::int64_t>, 8> iono{}; // message 1: PNMRX302's raw coefficients
+    bool ionoValid = false;                            // message 1: collected from the sky
+    std::uint64_t numBlocks = 0;                       // message 1: 20-year blocks since 1980
+    std::uint64_t invalidSv = 0;                       // message 2: bit n-1 = SV n excluded
+    int maxSvForFix = 0;                               // message 2
+    std::int64_t acqThreshold1 = 0, acqThreshold2 = 0; // message 3
+    std::uint64_t kalmanMode = 0;                      // message 3
+};
+// The five PNMRX603 messages (0..4) that report `values` (schema key → value, every readable
+// setting and the rates, modes, sequence and port that message 0 carries) with `state`: what
+// extractSettings reads back from them is `values` (nemerix_settings_values.cpp). Refused when
+// a value the report needs is missing or not a number.
+EncodeResult encodeSettingsReports(std::span<const KeyValue> values,
+                                   const SettingsReportState &state,
+                                   std::string_view prefix = kPrefix);
 
 } // namespace gnss::nemerix

@@ -5,14 +5,21 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gnss::nemerix {
 
-std::span<const SentenceRule> sentenceRules();                          // nemerix_rules.cpp
-std::span<const SettingDef> settingsSchema();                           // nemerix_schema.cpp
-std::span<const ReplyRule> replyRules();                                // nemerix_reply_rules.cpp
-void extractSettings(const Message &reply, std::vector<KeyValue> &out); // nemerix_settings.cpp
+std::span<const SentenceRule> sentenceRules(); // nemerix_rules.cpp
+std::span<const SettingDef> settingsSchema();  // nemerix_schema.cpp
+std::span<const ReplyRule> replyRules();       // nemerix_reply_rules.cpp
+// Settings a decoded PNMRX603 report or a command carries (nemerix_settings_values.cpp).
+void extractSettings(const Message &reply, std::vector<KeyValue> &out);
+
+// The ids of an output.sequence value ("GGA;GSA", ',' accepted too), and the schema key of a
+// PNMRX110 mask id (nullptr past the table) (nemerix_settings.cpp).
+std::vector<std::string> sequenceIds(std::string_view list);
+const char *fixMaskKey(int id);
 
 // The commands the schema's rows name (nemerix_settings.cpp).
 extern const SettingCommand kDatumCommand;        // PNMRX106

@@ -12,6 +12,8 @@
 //     32-bit UNSIGNED in m^1/2 (table: signed, "Meters^1/4").
 //   - Subframe 3: i0 is a 32-bit value (table prints width 4).
 // Every message stands alone here; EphemerisAssembler (nemerix_ephemeris.h) joins the three.
+// encodeEphemerisSubframe writes one message as the receiver sends it (each word in its
+// field's width: "$PNMRX301,5,1,3FC,00,0,00,0A4,0E10,00,0000,000000*hh").
 #include "nemerix_ephemeris.h"
 #include "nemerix_commands.h"
 
@@ -70,6 +72,19 @@ std::optional<double> EphemerisSubframe::value(int field) const {
     return scaled(*raw[field], defs[field]);
 }
 
+Refusal EphemerisSubframe::setValue(int field, double v) {
+    const auto defs = fields(subframe);
+    if (field < 0 || static_cast<std::size_t>(field) >= defs.size())
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
+                       {"field", std::to_string(field),
+                        defs.empty() ? std::string("none (subframe 1..3 first)")
+                                     : "0.." + std::to_string(defs.size() - 1)});
+    std::optional<std::int64_t> r;
+    Refusal why = toRaw(v, defs[field], r);
+    if (why.empty()) raw[field] = r;
+    return why;
+}
+
 bool decodeEphemeris(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     EphemerisSubframe m;
@@ -119,6 +134,30 @@ void EphemerisSubframe::writeJson(JsonWriter &w) const {
     writeHexFields(w, fields(subframe), raw);
     if (subframe == 1) writeUra(w, raw[Ura]);
     w.endObject();
+}
+
+EncodeResult encodeEphemerisSubframe(const EphemerisSubframe &m, std::string_view prefix) {
+    EncodeResult r;
+    if (m.sv < 1 || m.sv > 32) {
+        r.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
+                         {"sv", std::to_string(m.sv), "1..32"}));
+        return r;
+    }
+    const auto defs = EphemerisSubframe::fields(m.subframe);
+    if (defs.empty()) {
+        r.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
+                         {"subframe", std::to_string(m.subframe), "1..3"}));
+        return r;
+    }
+    for (std::size_t f = 0; f < defs.size(); ++f)
+        if (Refusal why = checkRaw(m.raw[f], defs[f]); !why.empty()) {
+            r.refuse(std::move(why));
+            return r;
+        }
+    return buildCommand("301",
+                        "," + std::to_string(m.sv) + "," + std::to_string(m.subframe) +
+                                hexFields(defs, std::span(m.raw).first(defs.size())),
+                        prefix);
 }
 
 // ---- Assembly -------------------------------------------------------------------------------

@@ -69,20 +69,47 @@ bool fitsHex(std::int64_t raw, const HexFieldDef &def) {
     return raw >= minRaw(def) && raw <= maxRaw(def);
 }
 
-std::optional<std::int64_t> toRaw(double value, const HexFieldDef &def, std::string &error) {
-    if (!std::isfinite(value)) {
-        error = std::string(def.key) + ": not a finite number";
-        return std::nullopt;
-    }
+Refusal toRaw(double value, const HexFieldDef &def, std::optional<std::int64_t> &raw) {
+    raw.reset();
+    if (!std::isfinite(value))
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: expected a number, got '%2'"),
+                       {std::string(def.key), number(value)});
     const double r = std::nearbyint(std::ldexp(value, -def.scale));
     if (r < static_cast<double>(minRaw(def)) || r > static_cast<double>(maxRaw(def))) {
-        error = std::string(def.key) + ": " + number(value) +
-                " is out of range; accepted: " + number(scaled(minRaw(def), def)) + ".." +
-                number(scaled(maxRaw(def), def));
-        if (!def.unit.empty()) error += " " + std::string(def.unit);
-        return std::nullopt;
+        std::vector<std::string> args{std::string(def.key), number(value),
+                                      number(scaled(minRaw(def), def)) + ".." +
+                                              number(scaled(maxRaw(def), def))};
+        if (def.unit.empty())
+            return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
+                           std::move(args));
+        args.emplace_back(def.unit);
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3 %4"),
+                       std::move(args));
     }
-    return static_cast<std::int64_t>(r);
+    raw = static_cast<std::int64_t>(r);
+    return {};
+}
+
+std::optional<std::int64_t> toRaw(double value, const HexFieldDef &def, std::string &error) {
+    std::optional<std::int64_t> raw;
+    if (Refusal why = toRaw(value, def, raw); !why.empty()) error = why.text;
+    return raw;
+}
+
+Refusal checkRaw(const std::optional<std::int64_t> &raw, const HexFieldDef &def) {
+    if (!raw) return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: missing"), {std::string(def.key)});
+    if (fitsHex(*raw, def)) return {};
+    return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
+                   {std::string(def.key), std::to_string(*raw),
+                    std::to_string(minRaw(def)) + ".." + std::to_string(maxRaw(def))});
+}
+
+std::string hexFields(std::span<const HexFieldDef> defs,
+                      std::span<const std::optional<std::int64_t>> raws) {
+    std::string s;
+    for (std::size_t i = 0; i < defs.size() && i < raws.size(); ++i)
+        s += "," + (raws[i] ? formatHex(*raws[i], defs[i].bits) : std::string());
+    return s;
 }
 
 void writeHexField(JsonWriter &w, const HexFieldDef &def, const std::optional<std::int64_t> &raw) {

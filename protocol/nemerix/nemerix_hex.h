@@ -11,6 +11,7 @@
 // sign-extended from bit N-1.
 #include "core/field_reader.h"
 #include "core/json_writer.h"
+#include "core/refusal.h"
 
 #include <cstdint>
 #include <optional>
@@ -39,6 +40,14 @@ bool fitsHex(std::int64_t raw, const HexFieldDef &def);
 // Engineering value → raw (rounded); nullopt with `error` naming the field and the accepted
 // range when it does not fit.
 std::optional<std::int64_t> toRaw(double value, const HexFieldDef &def, std::string &error);
+// The same as a refusal (translatable); `raw` is set only when it fits.
+Refusal toRaw(double value, const HexFieldDef &def, std::optional<std::int64_t> &raw);
+// Why a raw word cannot be written in the def's field (missing, or wider than its bits); empty
+// when it can. Encoders check every field with it before building anything.
+Refusal checkRaw(const std::optional<std::int64_t> &raw, const HexFieldDef &def);
+// "," + each raw word in its field's width ("...,F3B5,FF5B"); every word already checked.
+std::string hexFields(std::span<const HexFieldDef> defs,
+                      std::span<const std::optional<std::int64_t>> raws);
 
 // Writes "<key>": engineering value (an integer when scale is 0) and "<key>_raw": hex text.
 void writeHexField(JsonWriter &w, const HexFieldDef &def, const std::optional<std::int64_t> &raw);

@@ -13,6 +13,9 @@
 //     satellite id is printed with width 8 in the table: read as a decimal number.
 //
 //   $PNMRX304,code,code,...*hh   the fields are "TBD" in the spec: kept as sent.
+//
+// The encoders write what the receiver sends: each hex word in its field's width (IS-GPS-200),
+// the SV id in decimal, the health codes as given.
 #include "nemerix_commands.h"
 
 namespace gnss::nemerix {
@@ -53,6 +56,38 @@ std::span<const HexFieldDef> Ionosphere::fields() {
 }
 std::span<const HexFieldDef> UtcParameters::fields() {
     return kUtc;
+}
+
+namespace {
+template <class Raws>
+std::optional<double> valueOf(const Raws &raw, std::span<const HexFieldDef> defs, std::size_t f) {
+    if (f >= defs.size() || !raw[f]) return std::nullopt;
+    return scaled(*raw[f], defs[f]);
+}
+template <class Raws>
+Refusal setValueOf(Raws &raw, std::span<const HexFieldDef> defs, std::size_t f, double v) {
+    std::optional<std::int64_t> r;
+    Refusal why = toRaw(v, defs[f], r);
+    if (why.empty()) raw[f] = r;
+    return why;
+}
+Refusal badSv(int sv) {
+    return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
+                   {"sv", std::to_string(sv), "1..32"});
+}
+} // namespace
+
+std::optional<double> Ionosphere::value(int field) const {
+    return valueOf(raw, kIono, static_cast<std::size_t>(field));
+}
+Refusal Ionosphere::setValue(int field, double v) {
+    return setValueOf(raw, kIono, static_cast<std::size_t>(field), v);
+}
+std::optional<double> UtcParameters::value(Field f) const {
+    return valueOf(raw, kUtc, f);
+}
+Refusal UtcParameters::setValue(Field f, double v) {
+    return setValueOf(raw, kUtc, f, v);
 }
 
 bool decodeIonosphere(const Sentence &s, DecodeContext &ctx) {
@@ -108,6 +143,54 @@ bool decodeHealth(const Sentence &s, DecodeContext &ctx) {
         m.codes[m.count++] = r.text(i);
     }
     return finishDecode(r, ctx, m);
+}
+
+EncodeResult encodeIonosphere(const Ionosphere &m, std::string_view prefix) {
+    EncodeResult r;
+    if (m.sv && (*m.sv < 1 || *m.sv > 32)) r.refuse(badSv(*m.sv));
+    for (std::size_t f = 0; f < std::size(kIono) && r.ok(); ++f)
+        if (Refusal why = checkRaw(m.raw[f], kIono[f]); !why.empty()) r.refuse(std::move(why));
+    if (!r.ok()) return r;
+    // Without an SV id: the 8-field form the decoder also reads.
+    return buildCommand("302", (m.sv ? "," + std::to_string(*m.sv) : "") + hexFields(kIono, m.raw),
+                        prefix);
+}
+
+EncodeResult encodeUtc(const UtcParameters &m, std::string_view prefix) {
+    EncodeResult r;
+    if (m.sv && (*m.sv < 1 || *m.sv > 32)) r.refuse(badSv(*m.sv));
+    // A0 to dtLSF are the GPS data and required; the two words after them are optional.
+    std::size_t used = UtcParameters::kFieldCount;
+    while (used > UtcParameters::NumBlocks && !m.raw[used - 1]) --used;
+    for (std::size_t f = 0; f < used && r.ok(); ++f) {
+        if (f >= UtcParameters::NumBlocks && !m.raw[f]) continue; // an empty field
+        if (Refusal why = checkRaw(m.raw[f], kUtc[f]); !why.empty()) r.refuse(std::move(why));
+    }
+    if (!r.ok()) return r;
+    return buildCommand("303",
+                        "," + (m.sv ? std::to_string(*m.sv) : std::string()) +
+                                hexFields(std::span(kUtc).first(used), m.raw),
+                        prefix);
+}
+
+EncodeResult encodeHealth(const ConstellationHealth &m, std::string_view prefix) {
+    EncodeResult r;
+    if (m.count > ConstellationHealth::kMax) {
+        r.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
+                         {"health codes", std::to_string(m.count),
+                          "0.." + std::to_string(ConstellationHealth::kMax)}));
+        return r;
+    }
+    std::string fields;
+    for (std::size_t i = 0; i < m.count; ++i) {
+        if (Refusal why = checkFieldText("health code", m.codes[i]); !why.empty()) {
+            r.refuse(std::move(why));
+            return r;
+        }
+        fields += ",";
+        fields += m.codes[i];
+    }
+    return buildCommand("304", fields, prefix);
 }
 
 void ConstellationHealth::writeJson(JsonWriter &w) const {

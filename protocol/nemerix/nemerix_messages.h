@@ -17,6 +17,13 @@
 
 namespace gnss::nemerix {
 
+// The NMEA messages the VT002 outputs, in the order of PNMRX103's table (and of the delays in
+// PNMRX603 message 0), and the Nemerix messages PNMRX107 controls.
+inline constexpr std::array<std::string_view, 7> kNmeaMessageIds = {"GGA", "GLL", "GSA", "GSV",
+                                                                    "RMC", "VTG", "ZDA"};
+inline constexpr std::array<std::string_view, 5> kNavDataMessageIds = {"300", "301", "302", "303",
+                                                                       "304"};
+
 // ---- Commands -------------------------------------------------------------------------------
 
 // PNMRX100: serial port (protocol, baud, parity).
@@ -166,6 +173,9 @@ struct Almanac : Message {
     int sv = 0;
     std::array<std::optional<std::int64_t>, kFieldCount> raw{};
     std::optional<double> value(Field f) const;
+    // The inverse of value(): engineering units → the raw word (IS-GPS-200 scale, rounded);
+    // refused (nothing set) when it does not fit the field.
+    Refusal setValue(Field f, double v);
     void writeJson(JsonWriter &w) const override;
 };
 
@@ -183,6 +193,7 @@ struct EphemerisSubframe : Message {
     int subframe = 0;
     std::array<std::optional<std::int64_t>, kMaxFields> raw{};
     std::optional<double> value(int field) const;
+    Refusal setValue(int field, double v); // the inverse of value(), as Almanac::setValue
     void writeJson(JsonWriter &w) const override;
 };
 
@@ -193,6 +204,8 @@ struct Ionosphere : Message {
     Ionosphere() : Message(kType) {}
     std::optional<int> sv;
     std::array<std::optional<std::int64_t>, 8> raw{};
+    std::optional<double> value(int field) const;
+    Refusal setValue(int field, double v); // the inverse of value(), as Almanac::setValue
     void writeJson(JsonWriter &w) const override;
 };
 
@@ -204,6 +217,8 @@ struct UtcParameters : Message {
     UtcParameters() : Message(kType) {}
     std::optional<int> sv;
     std::array<std::optional<std::int64_t>, kFieldCount> raw{};
+    std::optional<double> value(Field f) const;
+    Refusal setValue(Field f, double v); // the inverse of value(), as Almanac::setValue
     void writeJson(JsonWriter &w) const override;
 };
 

@@ -18,9 +18,8 @@ const MessageType NmeaSequence::kType{"PNMRX108"};
 
 namespace {
 
-constexpr std::array<std::string_view, 7> kNmeaIds = {"GGA", "GLL", "GSA", "GSV",
-                                                      "RMC", "VTG", "ZDA"};
-constexpr std::array<std::string_view, 5> kNemerixIds = {"300", "301", "302", "303", "304"};
+constexpr const auto &kNmeaIds = kNmeaMessageIds;
+constexpr const auto &kNemerixIds = kNavDataMessageIds;
 
 template <std::size_t N>
 bool oneOf(std::string_view id, const std::array<std::string_view, N> &ids, bool allowAll) {

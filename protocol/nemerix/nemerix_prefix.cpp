@@ -37,6 +37,16 @@ EncodeResult buildCommand(std::string_view number, std::string_view fields,
     return r;
 }
 
+Refusal checkFieldText(std::string_view name, std::string_view text) {
+    for (char c : text)
+        if (c == ',' || c == '*' || c == '$' || c == '!' || static_cast<unsigned char>(c) < 0x20 ||
+            static_cast<unsigned char>(c) >= 0x7F)
+            return refusal(
+                    QT_TRANSLATE_NOOP("Refusal", "%1: character not allowed in a value: '%2'"),
+                    {std::string(name), std::string(1, c)});
+    return {};
+}
+
 EncodeResult encodeStopCore(std::string_view prefix) {
     return buildCommand("113", {}, prefix);
 }

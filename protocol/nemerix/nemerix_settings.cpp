@@ -1,15 +1,14 @@
 // Settings as commands: the commands the schema's rows name (core/settings_plan.h plans from
-// them: each is sent once, in their order), and PNMRX603 reports → values. The order: PNMRX106
-// (datum), PNMRX110 (every fix mask in one sentence), PNMRX101 (channel count), PNMRX112
-// (power), PNMRX108 (sequence) before PNMRX103 (rates, which override the sequence's defaults),
-// PNMRX107, and PNMRX100 last, since the port speed changes right after it.
+// them: each is sent once, in their order); nemerix_settings_values.cpp reads settings back from
+// reports and commands. The order: PNMRX106 (datum), PNMRX110 (every fix mask in one sentence),
+// PNMRX101 (channel count), PNMRX112 (power), PNMRX108 (sequence) before PNMRX103 (rates, which
+// override the sequence's defaults), PNMRX107, and PNMRX100 last, since the port speed changes
+// right after it.
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"
 #include "nemerix_commands.h"
 #include "nemerix_dialect_parts.h"
 
-#include <cmath>
-#include <cstdio>
 #include <map>
 
 namespace gnss::nemerix {
@@ -32,19 +31,22 @@ struct Values {
     }
 };
 
-bool append(EncodeResult &out, EncodeResult part) {
-    if (!part.ok()) {
-        out.error = part.error;
-        return false;
-    }
-    for (auto &s : part.sentences) out.sentences.push_back(std::move(s));
-    return true;
-}
+struct MaskKey {
+    const char *key;
+    int id;
+};
+constexpr MaskKey kMaskKeys[] = {
+        {"fix.timeZone", 0},   {"fix.maxPdop", 1},      {"fix.maxHdop", 2},      {"fix.maxVdop", 3},
+        {"fix.minSnr", 4},     {"fix.minElevation", 5}, {"fix.noiseFloor", 6},   {"nav.mode", 7},
+        {"fix.altitude2d", 8}, {"nav.dynamics", 9},     {"fix.maxAltitude", 10},
+};
 
-std::vector<std::string> splitList(const std::string &v) {
+} // namespace
+
+std::vector<std::string> sequenceIds(std::string_view list) {
     std::vector<std::string> out;
     std::string cur;
-    for (char c : v) {
+    for (char c : list) {
         if (c == ';' || c == ',') {
             if (!cur.empty()) out.push_back(cur);
             cur.clear();
@@ -56,15 +58,13 @@ std::vector<std::string> splitList(const std::string &v) {
     return out;
 }
 
-struct MaskKey {
-    const char *key;
-    int id;
-};
-constexpr MaskKey kMaskKeys[] = {
-        {"fix.timeZone", 0},   {"fix.maxPdop", 1},      {"fix.maxHdop", 2},      {"fix.maxVdop", 3},
-        {"fix.minSnr", 4},     {"fix.minElevation", 5}, {"fix.noiseFloor", 6},   {"nav.mode", 7},
-        {"fix.altitude2d", 8}, {"nav.dynamics", 9},     {"fix.maxAltitude", 10},
-};
+const char *fixMaskKey(int id) {
+    for (const auto &m : kMaskKeys)
+        if (m.id == id) return m.key;
+    return nullptr;
+}
+
+namespace {
 
 Values valuesOf(std::span<const KeyValue> values) {
     Values v;
@@ -164,7 +164,7 @@ EncodeResult writePower(std::span<const KeyValue> values) {
 
 // PNMRX108
 EncodeResult writeSequence(std::span<const KeyValue> values) {
-    EncodeResult r = withoutSentences(encodeNmeaSequence(splitList(values.front().value)));
+    EncodeResult r = withoutSentences(encodeNmeaSequence(sequenceIds(values.front().value)));
     if (!r.ok()) r.error = "output." + r.error;
     return r;
 }
@@ -173,9 +173,9 @@ EncodeResult writeSequence(std::span<const KeyValue> values) {
 EncodeResult writeRates(std::span<const KeyValue> values) {
     const Values v = valuesOf(values);
     std::vector<RateItem> rates;
-    for (const char *id : {"GGA", "GLL", "GSA", "GSV", "RMC", "VTG", "ZDA"}) {
-        const std::string key = std::string("rate.") + id;
-        if (v.has(key.c_str())) rates.push_back({id, *v.integer(key.c_str())});
+    for (std::string_view id : kNmeaMessageIds) {
+        const std::string key = "rate." + std::string(id);
+        if (v.has(key.c_str())) rates.push_back({std::string(id), *v.integer(key.c_str())});
     }
     return withoutSentences(encodeNmeaRates(rates));
 }
@@ -184,9 +184,9 @@ EncodeResult writeRates(std::span<const KeyValue> values) {
 EncodeResult writeNemerixRates(std::span<const KeyValue> values) {
     const Values v = valuesOf(values);
     std::vector<RateItem> modes;
-    for (const char *id : {"300", "301", "302", "303", "304"}) {
-        const std::string key = std::string("nmrx.") + id;
-        if (v.has(key.c_str())) modes.push_back({id, *v.integer(key.c_str())});
+    for (std::string_view id : kNavDataMessageIds) {
+        const std::string key = "nmrx." + std::string(id);
+        if (v.has(key.c_str())) modes.push_back({std::string(id), *v.integer(key.c_str())});
     }
     return withoutSentences(encodeNemerixRates(modes));
 }
@@ -237,60 +237,5 @@ const SettingCommand kNemerixRatesCommand{
         .name = "PNMRX107", .order = 6, .write = writeNemerixRates};
 const SettingCommand kSerialCommand{
         .name = "PNMRX100", .together = true, .changesLink = true, .write = writeSerial};
-
-namespace {
-std::string shortNumber(double d) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", d);
-    return buf;
-}
-} // namespace
-
-void extractSettings(const Message &reply, std::vector<KeyValue> &out) {
-    const auto *m = message_cast<SettingsReport>(reply);
-    if (!m) return;
-    auto put = [&](const char *key, std::string value) { out.push_back({key, std::move(value)}); };
-    switch (m->number) {
-    case 0: {
-        static const char *keys[] = {"rate.GGA", "rate.GLL", "rate.GSA", "rate.GSV",
-                                     "rate.RMC", "rate.VTG", "rate.ZDA"};
-        for (std::size_t i = 0; i < 7; ++i)
-            if (m->delay[i]) put(keys[i], std::to_string(*m->delay[i]));
-        break;
-    }
-    case 1:
-        if (m->tzHours && m->tzMinutes) {
-            const bool neg = *m->tzHours < 0 || *m->tzMinutes < 0;
-            put("fix.timeZone", std::string(neg ? "-" : "") +
-                                        std::to_string(std::abs(*m->tzHours)) + ":" +
-                                        std::to_string(std::abs(*m->tzMinutes)));
-        }
-        break;
-    case 2:
-        if (m->maxPdop) put("fix.maxPdop", shortNumber(*m->maxPdop));
-        if (m->maxHdop) put("fix.maxHdop", shortNumber(*m->maxHdop));
-        if (m->minCno) put("fix.minSnr", shortNumber(std::round(*m->minCno)));
-        if (m->minElevation) put("fix.minElevation", shortNumber(std::round(*m->minElevation)));
-        if (m->maxTm) put("nav.channels", std::to_string(*m->maxTm));
-        break;
-    case 3:
-        if (m->noiseFloor) put("fix.noiseFloor", std::to_string(*m->noiseFloor));
-        if (m->defaultAltitude) put("fix.altitude2d", std::to_string(*m->defaultAltitude));
-        break;
-    case 4:
-        if (m->correction) put("datum.correction", std::to_string(*m->correction));
-        if (m->datum) put("datum.mapDatum", std::to_string(*m->datum));
-        if (m->dx) put("datum.dx", std::to_string(*m->dx));
-        if (m->dy) put("datum.dy", std::to_string(*m->dy));
-        if (m->dz) put("datum.dz", std::to_string(*m->dz));
-        if (m->iflatRaw)
-            put("datum.inverseFlattening",
-                shortNumber(290.0 + static_cast<double>(*m->iflatRaw) / 1e6));
-        if (m->majorARaw)
-            put("datum.semiMajorAxis",
-                formatFixed(6370000.0 + static_cast<double>(*m->majorARaw) / 1000.0, 3));
-        break;
-    }
-}
 
 } // namespace gnss::nemerix

@@ -4,6 +4,8 @@
 //   $PNMRX600,...*hh    the receiver's report; the spec gives no field layout: kept as sent
 //   $PNMRX601*6E        enter ISP (in-system programming) mode: the receiver leaves NMEA
 //   $PNMRX602,...*hh    flash content version report, fields as sent
+//
+// encodeVersionReport writes a report's fields back as they were given.
 #include "nemerix_commands.h"
 
 namespace gnss::nemerix {
@@ -53,6 +55,28 @@ bool decodeIsp(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     PlainCommand m(PlainCommand::kIspType);
     return finishDecode(r, ctx, m);
+}
+
+EncodeResult encodeVersionReport(const VersionReport &m, std::string_view prefix) {
+    EncodeResult r;
+    const bool flash = m.type == &VersionReport::kFlashType;
+    bool any = false;
+    std::string fields;
+    for (std::size_t i = 0; i < m.count && i < VersionReport::kMax; ++i) {
+        if (Refusal why = checkFieldText("version", m.fieldsText[i]); !why.empty()) {
+            r.refuse(std::move(why));
+            return r;
+        }
+        any = any || !m.fieldsText[i].empty();
+        fields += ",";
+        fields += m.fieldsText[i];
+    }
+    // A PNMRX600 without fields is the request, not a report.
+    if (!any) {
+        r.refuse(refusal(QT_TRANSLATE_NOOP("Refusal", "%1: missing"), {"version"}));
+        return r;
+    }
+    return buildCommand(flash ? "602" : "600", fields, prefix);
 }
 
 void PlainCommand::writeJson(JsonWriter &w) const {

@@ -76,6 +76,9 @@ private slots:
     void settingsReportMessagesGiveSettingsBack_data();
     void settingsReportMessagesGiveSettingsBack();
     void readBackValuesEncodeAgain();
+    void commandsCarryTheSettingsTheyWrite_data();
+    void commandsCarryTheSettingsTheyWrite();
+    void everyEncodedSettingComesBackFromItsCommand();
     void versionRequestIsAnsweredByVersionReport();
     void settingsRequestIsAnsweredByFiveMessages();
     void silentCommandsDeclareTheirEffect();
@@ -322,6 +325,116 @@ void TestNemerixSettings::readBackValuesEncodeAgain() {
         QVERIFY(!kv.empty());
         const auto r = encodeSettings(D(), kv);
         QVERIFY2(r.ok(), (std::string(line) + ": " + r.error).c_str());
+    }
+}
+
+void TestNemerixSettings::commandsCarryTheSettingsTheyWrite_data() {
+    // What a receiver applying the command holds afterwards (a simulated VT002 applies commands
+    // through extractSettings).
+    QTest::addColumn<QString>("line");
+    QTest::addColumn<QString>("settings");
+    QTest::newRow("100 port") << "$PNMRX100,0,4800,0*48"
+                              << "serial.protocol=0 serial.baud=4800 serial.parity=0";
+    QTest::newRow("100 without baud") << "$PNMRX100,1,,2"
+                                      << "";
+    QTest::newRow("101 channels") << "$PNMRX101,,,,,,,14,"
+                                  << "nav.channels=14";
+    QTest::newRow("101 position") << "$PNMRX101,-742507,-5462738, 3196706,*4F"
+                                  << "";
+    QTest::newRow("104 channels") << "$PNMRX104,,,,,,,,,16"
+                                  << "nav.channels=16";
+    QTest::newRow("103 rates") << "$PNMRX103, GSV, 2,GGA, 1,ZDA, 0*04"
+                               << "rate.GSV=2 rate.GGA=1 rate.ZDA=0";
+    QTest::newRow("103 ALL") << "$PNMRX103, ALL, 2*18"
+                             << "rate.GGA=2 rate.GLL=2 rate.GSA=2 rate.GSV=2 rate.RMC=2 "
+                                "rate.VTG=2 rate.ZDA=2";
+    QTest::newRow("107 one") << "$PNMRX107, 301, 2*6F"
+                             << "nmrx.301=2";
+    QTest::newRow("107 ALL") << "$PNMRX107, ALL, 2*1C"
+                             << "nmrx.300=2 nmrx.301=2 nmrx.302=2 nmrx.303=2 nmrx.304=2";
+    QTest::newRow("108 sequence") << "$PNMRX108,RMC,GGA,RMC"
+                                  << "output.sequence=RMC;GGA rate.GGA=1 rate.GLL=0 rate.GSA=0 "
+                                     "rate.GSV=0 rate.RMC=1 rate.VTG=0 rate.ZDA=0";
+    QTest::newRow("106 user datum")
+            << "$PNMRX106, 0,500, -2000,-2000,-2000, 8257224, 8137000*69"
+            << "datum.correction=0 datum.mapDatum=500 datum.dx=-2000 datum.dy=-2000 "
+               "datum.dz=-2000 datum.inverseFlattening=298.257224 "
+               "datum.semiMajorAxis=6378137.000";
+    QTest::newRow("106 WGS 84") << "$PNMRX106, 1, 216,*46"
+                                << "datum.correction=1 datum.mapDatum=216";
+    QTest::newRow("110 time zone") << "$PNMRX110, 0,-2:0*6C"
+                                   << "fix.timeZone=-2:0";
+    QTest::newRow("110 masks") << "$PNMRX110,0,-0:30,1,65,3,100,4,35,5,10,6,700,7,4,8,250,9,1,10,"
+                                  "20000"
+                               << "fix.timeZone=-0:30 fix.maxPdop=6.5 fix.maxVdop=10 "
+                                  "fix.minSnr=35 fix.minElevation=10 fix.noiseFloor=700 "
+                                  "nav.mode=4 fix.altitude2d=250 nav.dynamics=1 "
+                                  "fix.maxAltitude=20000";
+    QTest::newRow("112 low power") << "$PNMRX112, 1, 5*6F"
+                                   << "power.mode=1 power.offPeriod=5";
+    QTest::newRow("111 reset") << "$PNMRX111,COLD"
+                               << "";
+    QTest::newRow("603 request") << "$PNMRX603*6C"
+                                 << "";
+}
+
+void TestNemerixSettings::commandsCarryTheSettingsTheyWrite() {
+    QFETCH(QString, line);
+    QFETCH(QString, settings);
+    QCOMPARE(joined(extract(line.toStdString())), settings);
+}
+
+void TestNemerixSettings::everyEncodedSettingComesBackFromItsCommand() {
+    // encodeSettings → the receiver's decoders → extractSettings gives each value back (a user
+    // datum's fields with datum 500 only: PNMRX106 carries them for it alone).
+    const std::vector<gnss::KeyValue> values = {
+            {"serial.protocol", "0"},
+            {"serial.baud", "19200"},
+            {"serial.parity", "1"},
+            {"rate.GGA", "2"},
+            {"rate.GSV", "5"},
+            {"rate.ZDA", "0"},
+            {"output.sequence", "RMC;GGA;GSV"},
+            {"nmrx.303", "2"},
+            {"datum.correction", "0"},
+            {"datum.mapDatum", "500"},
+            {"datum.dx", "10"},
+            {"datum.dy", "-20"},
+            {"datum.dz", "30"},
+            {"datum.inverseFlattening", "298.257223"},
+            {"datum.semiMajorAxis", "6378137"},
+            {"fix.timeZone", "5:30"},
+            {"fix.maxPdop", "8.5"},
+            {"fix.maxHdop", "4.5"},
+            {"fix.maxVdop", "6.5"},
+            {"fix.minSnr", "30"},
+            {"fix.minElevation", "10"},
+            {"fix.noiseFloor", "700"},
+            {"fix.altitude2d", "120"},
+            {"fix.maxAltitude", "20000"},
+            {"nav.mode", "4"},
+            {"nav.dynamics", "1"},
+            {"nav.channels", "14"},
+            {"power.mode", "1"},
+            {"power.offPeriod", "7"},
+    };
+    const auto r = encodeSettings(D(), values);
+    QVERIFY2(r.ok(), r.error.c_str());
+    std::vector<gnss::KeyValue> back;
+    for (const std::string &s : r.sentences) {
+        const auto one = extract(s);
+        back.insert(back.end(), one.begin(), one.end());
+    }
+    for (const auto &kv : values) {
+        std::optional<std::string> got; // the last value carried back wins
+        for (const auto &b : back)
+            if (b.key == kv.key) got = b.value;
+        QVERIFY2(got, kv.key.c_str());
+        const gnss::SettingDef *def = gnss::findSetting(D().settings, kv.key);
+        if (def->type == gnss::SettingType::Real || def->type == gnss::SettingType::Integer)
+            QVERIFY2(std::stod(*got) == std::stod(kv.value), (kv.key + " = " + *got).c_str());
+        else
+            QCOMPARE(*got, kv.value);
     }
 }
 
