@@ -9,6 +9,8 @@
 // example ("port 1, 1 Hz, NMEA v2, outputs GGA, GSA, GSV, ZDA, DTM"); the 7th code's message is
 // unknown and shown as such.
 //   $GPSGG,NQUERY,1,3,2,R,0,R,1,0,0,0,1,1,0*71
+#include "geostar_encode_util.h"
+#include "geostar_encoders.h"
 #include "geostar_messages.h"
 #include "nmea/nmea_messages.h"
 
@@ -49,6 +51,35 @@ bool decodeNquery(const Sentence &s, DecodeContext &ctx) {
                     QT_TRANSLATE_NOOP("Refusal", "NQUERY reply has more than 10 message codes")));
     }
     return finishDecode(r, ctx, m);
+}
+
+EncodeResult encodeNquery(const Nquery &m) {
+    using namespace detail;
+    std::string body = std::string(kAddress) + ",NQUERY";
+    auto number = [&body](const std::optional<int> &v) {
+        body += ',';
+        if (v) body += std::to_string(*v);
+    };
+    if (m.port && *m.port != 0 && *m.port != 1)
+        return refused(notOneOf("port", std::to_string(*m.port), "0, 1"));
+    if (m.rateCode && rateCodeToHz(*m.rateCode) == 0)
+        return refused(outOfRange("rate code", std::to_string(*m.rateCode), "0..3"));
+    if (m.nmeaVersion && *m.nmeaVersion != 2 && *m.nmeaVersion != 4)
+        return refused(notOneOf("NMEA version", std::to_string(*m.nmeaVersion), "2, 4"));
+    if (m.codeCount > Nquery::kMessages)
+        return refused(outOfRange("message rate codes", std::to_string(m.codeCount),
+                                  "0.." + std::to_string(Nquery::kMessages)));
+    number(m.port);
+    number(m.rateCode);
+    number(m.nmeaVersion);
+    for (std::size_t i = 0; i < m.codeCount; ++i) {
+        const char c = m.codes[i];
+        if (c && nqueryCodeMeaning(c) == "unknown")
+            return refused(notOneOf("message rate code", std::string(1, c), "0, 1, 2, 3, R"));
+        body += ',';
+        if (c) body += c;
+    }
+    return sentence(body);
 }
 
 void Nquery::writeJson(JsonWriter &w) const {

@@ -7,8 +7,12 @@
 //                                                            6 configuration register #2 (table 9)
 // Example (docs/spec-notes.md, "RQUERY"; the spec prints the address as $GPGSGG):
 //   $GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C
+#include "geostar_encode_util.h"
+#include "geostar_encoders.h"
 #include "geostar_messages.h"
 #include "nmea/nmea_messages.h"
+
+#include <cstdio>
 
 namespace gnss::geostar {
 
@@ -24,6 +28,19 @@ std::optional<std::uint32_t> word(FieldReader &r, std::size_t i, const char *nam
     auto v = r.hex(i, name);
     if (!v) return std::nullopt;
     return static_cast<std::uint32_t>(*v);
+}
+
+// Longest receiver name and firmware printed: "GEOS-5" and "V.x.xxx" leave room, and with these
+// the reply stays within NMEA's 82 characters.
+constexpr std::size_t kMaxName = 10;
+constexpr std::size_t kMaxFirmware = 16;
+
+bool appendWord(std::string &body, const EncodedWord &w) {
+    if (!w.ok()) return false;
+    char hex[12];
+    std::snprintf(hex, sizeof hex, ",%08X", static_cast<unsigned>(w.word));
+    body += hex;
+    return true;
 }
 
 } // namespace
@@ -52,6 +69,22 @@ bool decodeRquery(const Sentence &s, DecodeContext &ctx) {
         }
     }
     return finishDecode(r, ctx, m);
+}
+
+EncodeResult encodeRquery(const Rquery &m) {
+    using namespace detail;
+    std::string date;
+    if (Refusal why = checkText("receiver name", m.receiverName, kMaxName); !why.empty())
+        return refused(std::move(why));
+    if (Refusal why = checkText("firmware", m.firmware, kMaxFirmware); !why.empty())
+        return refused(std::move(why));
+    if (Refusal why = formatDate(m.firmwareDate, "firmware date", date); !why.empty())
+        return refused(std::move(why));
+    std::string body = std::string(kAddress) + ",RQUERY,";
+    body.append(m.receiverName).append(",").append(m.firmware).append(",").append(date);
+    for (const EncodedWord &w : {m.status.encode(), m.config1.encode(), m.config2.encode()})
+        if (!appendWord(body, w)) return refused(w.refusal);
+    return sentence(body);
 }
 
 void Rquery::writeJson(JsonWriter &w) const {

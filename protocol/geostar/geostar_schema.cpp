@@ -5,7 +5,6 @@
 #include "core/field_parse.h"
 #include "core/setting_command.h"
 #include "geostar_commands.h"
-#include "geostar_messages.h"
 
 #include <algorithm>
 
@@ -264,38 +263,6 @@ const SettingDef &rowOf(std::string_view key) {
 
 std::span<const SettingDef> settingsSchema() {
     return kSchema;
-}
-
-void extractSettings(const Message &reply, std::vector<KeyValue> &out) {
-    if (const auto *n = message_cast<Nquery>(reply)) {
-        if (n->rateCode && rateCodeToHz(*n->rateCode))
-            out.push_back({"output.RATE", std::to_string(rateCodeToHz(*n->rateCode))});
-        if (n->nmeaVersion == 2 || n->nmeaVersion == 4)
-            out.push_back({"output.NMEAV", std::to_string(*n->nmeaVersion)});
-        for (std::size_t i = 0; i < n->codeCount; ++i) {
-            if (Nquery::kNames[i].empty() || !n->codes[i]) continue;
-            out.push_back(
-                    {"output." + std::string(Nquery::kNames[i]), n->codes[i] == '0' ? "0" : "1"});
-        }
-        return;
-    }
-    if (const auto *q = message_cast<Rquery>(reply)) {
-        const ConfigRegister1 &c1 = q->config1;
-        if (c1.rateHz) out.push_back({"output.RATE", std::to_string(c1.rateHz)});
-        out.push_back({"power.PSM", c1.powerSavingEnabled ? "1" : "0"});
-        switch (q->config2.datumCode) {
-        case 0: out.push_back({"nav.DAT", "W84"}); break;
-        case 1: out.push_back({"nav.DAT", "P90"}); break;
-        case 2: out.push_back({"nav.DAT", "999"}); break;
-        default: break;
-        }
-        if (c1.glonass && c1.gps && c1.galileo)
-            out.push_back({"nav.NVS", "MIX"});
-        else if (c1.gps && !c1.glonass && !c1.galileo)
-            out.push_back({"nav.NVS", "GPS"});
-        else if (c1.glonass && !c1.gps && !c1.galileo)
-            out.push_back({"nav.NVS", "GLN"});
-    }
 }
 
 } // namespace gnss::geostar

@@ -2,6 +2,7 @@
 #include "geostar_status_words.h"
 
 #include <cstdio>
+#include <string>
 
 namespace gnss::geostar {
 namespace {
@@ -12,6 +13,36 @@ constexpr bool bit(std::uint32_t w, int n) {
 constexpr int bits(std::uint32_t w, int hi, int lo) {
     return static_cast<int>((w >> lo) & ((1u << (hi - lo + 1)) - 1u));
 }
+
+// Sets the bits of one word as decode reads them; the first field that does not fit is refused.
+class WordBuilder {
+public:
+    WordBuilder &bit(int n, bool on) {
+        if (on) w_ |= 1u << n;
+        return *this;
+    }
+    WordBuilder &bits(int hi, int lo, int v, const char *name) {
+        const int max = (1 << (hi - lo + 1)) - 1;
+        if (v >= 0 && v <= max)
+            w_ |= static_cast<std::uint32_t>(v) << lo;
+        else if (why_.empty())
+            why_ = refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
+                           {name, std::to_string(v), "0.." + std::to_string(max)});
+        return *this;
+    }
+    EncodedWord done(std::uint32_t raw, std::uint32_t reservedMask) const {
+        EncodedWord e;
+        if (!why_.empty())
+            e.refusal = why_;
+        else
+            e.word = w_ | (raw & reservedMask);
+        return e;
+    }
+
+private:
+    std::uint32_t w_ = 0;
+    Refusal why_;
+};
 
 void writeHex(JsonWriter &w, std::string_view key, std::uint32_t v) {
     char buf[12];
@@ -39,6 +70,12 @@ int rateCodeToHz(int code) {
     case 3: return 1;
     default: return 0;
     }
+}
+
+int rateHzToCode(int hz) {
+    for (int code = 0; code <= 3; ++code)
+        if (rateCodeToHz(code) == hz) return code;
+    return -1;
 }
 
 // ---- Table 7 ----------------------------------------------------------------------------------
@@ -76,6 +113,40 @@ StatusWord StatusWord::decode(std::uint32_t w) {
     s.rtcOk = bit(w, 1);
     s.backupRamOk = bit(w, 0);
     return s;
+}
+
+EncodedWord StatusWord::encode() const {
+    WordBuilder b;
+    b.bit(31, jammingDetected)
+            .bit(30, flashWriteInProgress)
+            .bit(28, geoPathActive)
+            .bit(27, referenceWithinThreshold)
+            .bit(26, averagingInProgress)
+            .bit(25, rtcmCorrectionsUsed)
+            .bit(24, sbasCorrectionsUsed)
+            .bit(23, active)
+            .bit(22, differential)
+            .bit(21, extrapolated)
+            .bit(20, stationary)
+            .bit(19, solutionAvailable)
+            .bit(18, validSinceStart)
+            .bit(16, solution2D)
+            .bit(15, clockRestoredHotStart)
+            .bit(14, gpsIonoUtcAvailable)
+            .bit(13, dateFromNavMessage)
+            .bit(12, timeFromNavMessage)
+            .bit(11, qzssAlmanac)
+            .bit(10, galileoAlmanac)
+            .bit(9, glonassAlmanac)
+            .bit(8, gpsAlmanac)
+            .bits(7, 6, static_cast<int>(antenna), "status word bits 7:6 (antenna)")
+            .bit(5, glonassAgcOk)
+            .bit(4, gpsAgcOk)
+            .bit(3, settingsLoadedFromFlash)
+            .bit(2, pllOk)
+            .bit(1, rtcOk)
+            .bit(0, backupRamOk);
+    return b.done(raw, kReservedMask);
 }
 
 void StatusWord::writeJson(JsonWriter &w) const {
@@ -142,6 +213,32 @@ ConfigRegister1 ConfigRegister1::decode(std::uint32_t w) {
     c.gps = bit(w, 1);
     c.glonass = bit(w, 0);
     return c;
+}
+
+EncodedWord ConfigRegister1::encode() const {
+    WordBuilder b;
+    b.bit(30, antennaPower)
+            .bit(28, fixedCoordinatesMode)
+            .bit(27, raim)
+            .bit(26, smoothedPseudoranges)
+            .bit(25, fixByRequest)
+            .bit(24, powerSavingEnabled)
+            .bits(23, 21, dynamicsCode, "configuration register 1 bits 23:21 (dynamics)")
+            .bits(19, 18, rateCode, "configuration register 1 bits 19:18 (rate code)")
+            .bit(15, kalmanFilter)
+            .bit(14, firstFix2DAllowed)
+            .bit(13, mode2DAllowed)
+            .bit(12, geoPath)
+            .bits(11, 9, ppsTimeScaleCode, "configuration register 1 bits 11:9 (1PPS time scale)")
+            .bit(8, ppsNegative)
+            .bit(7, ppsEnabled)
+            .bit(6, searchUnusedSystems)
+            .bit(4, sbas)
+            .bit(3, qzss)
+            .bit(2, galileo)
+            .bit(1, gps)
+            .bit(0, glonass);
+    return b.done(raw, kReservedMask);
 }
 
 std::string_view ConfigRegister1::dynamicsName() const {
@@ -211,6 +308,17 @@ ConfigRegister2 ConfigRegister2::decode(std::uint32_t w) {
     c.useAllSatellites = bit(w, 3);
     c.sbasPrnAuto = bit(w, 2);
     return c;
+}
+
+EncodedWord ConfigRegister2::encode() const {
+    WordBuilder b;
+    b.bits(31, 16, receiverTypeCode, "configuration register 2 bits 31:16 (receiver type)")
+            .bits(15, 14, datumCode, "configuration register 2 bits 15:14 (datum)")
+            .bit(8, differentialAllowed)
+            .bit(4, sbasTestModeAllowed)
+            .bit(3, useAllSatellites)
+            .bit(2, sbasPrnAuto);
+    return b.done(raw, kReservedMask);
 }
 
 std::string_view ConfigRegister2::receiverType() const {

@@ -3,13 +3,23 @@
 // bit by bit into named, typed fields:
 //   table 7: receiver status word, table 8: configuration register #1,
 //   table 9: configuration register #2.
-// Plain functions of the word, so the decoder, the status view and the simulator share them.
+// Plain functions of the word, so the decoder, the status view and the simulator share them;
+// each word is also built back from its fields (encode, the inverse of decode, bit by bit), so a
+// receiver that reports its state (the simulator) never places a bit itself.
 #include "core/json_writer.h"
+#include "core/refusal.h"
 
 #include <cstdint>
 #include <string_view>
 
 namespace gnss::geostar {
+
+// A word built from its fields, or why it cannot be (a field wider than its bits).
+struct EncodedWord {
+    std::uint32_t word = 0;
+    Refusal refusal; // empty when built
+    bool ok() const { return refusal.empty(); }
+};
 
 // Table 7, bits 7:6.
 enum class AntennaState : std::uint8_t {
@@ -56,6 +66,9 @@ struct StatusWord {
     static constexpr std::uint32_t kReservedMask = (1u << 29) | (1u << 17);
 
     static StatusWord decode(std::uint32_t word);
+    // The word from the fields above; the reserved bits are taken from `raw` (a decoded word
+    // keeps them, so encode(decode(w)) == w; a word filled in field by field has none).
+    EncodedWord encode() const;
     void writeJson(JsonWriter &w) const;
 };
 
@@ -76,7 +89,7 @@ struct ConfigRegister1 {
     int dynamicsCode = 0;              // 23:21 (0 auto, 1 pedestrian/car, 2 marine, 3 airborne,
                                        //        4 high dynamics (GeoS-5MH); 5-7 undefined)
     int rateCode = 0;                  // 19:18 (0 10 Hz, 1 5 Hz, 2 2 Hz, 3 1 Hz)
-    int rateHz = 0;                    // from rateCode
+    int rateHz = 0;                    // from rateCode (decode); encode reads rateCode only
     bool kalmanFilter = false;         // 15
     bool firstFix2DAllowed = false;    // 14
     bool mode2DAllowed = false;        // 13
@@ -94,6 +107,9 @@ struct ConfigRegister1 {
             (1u << 31) | (1u << 29) | (1u << 20) | (3u << 16) | (1u << 5);
 
     static ConfigRegister1 decode(std::uint32_t word);
+    // The word from the fields above; the reserved bits are taken from `raw` (a decoded word
+    // keeps them, so encode(decode(w)) == w; a word filled in field by field has none).
+    EncodedWord encode() const;
     std::string_view dynamicsName() const;     // "auto", "pedestrian_car", ... or "undefined"
     std::string_view ppsTimeScaleName() const; // "GPS", "UTC", "GLONASS", "UTC(SU)", "reserved"
     void writeJson(JsonWriter &w) const;
@@ -111,6 +127,9 @@ struct ConfigRegister2 {
     static constexpr std::uint32_t kReservedMask = (0x1Fu << 9) | (7u << 5) | 3u;
 
     static ConfigRegister2 decode(std::uint32_t word);
+    // The word from the fields above; the reserved bits are taken from `raw` (a decoded word
+    // keeps them, so encode(decode(w)) == w; a word filled in field by field has none).
+    EncodedWord encode() const;
     // "GeoS-5M", "GeoS-5MR", "GeoS-5MH", "GeoS-5MP"; empty for a code not in table 9.
     std::string_view receiverType() const;
     std::string_view datumName() const; // "WGS-84", "PZ-90.11", "user", "undefined"
@@ -119,5 +138,7 @@ struct ConfigRegister2 {
 
 // Rate code of table 8 / NQUERY (0 10 Hz, 1 5 Hz, 2 2 Hz, 3 1 Hz) → Hz; 0 for others.
 int rateCodeToHz(int code);
+// The inverse: Hz (10, 5, 2, 1) → rate code; -1 for others.
+int rateHzToCode(int hz);
 
 } // namespace gnss::geostar

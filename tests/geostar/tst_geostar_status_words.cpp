@@ -1,5 +1,6 @@
 // RQUERY's three words (tables 7-9 of section 3.11): the spec example decodes to the bits the
-// tables give, and every single bit of every table lands in its own named field.
+// tables give, every single bit of every table lands in its own named field, and each word is
+// built back from its fields bit by bit (encode: the inverse of decode).
 #include "decode_helper.h"
 #include "geostar/geostar_status_words.h"
 
@@ -30,6 +31,30 @@ QJsonObject wordJson(const char *word, std::uint32_t v) {
     return QJsonDocument::fromJson(QByteArray::fromStdString(json)).object();
 }
 
+// decode(v).encode(), with the raw word kept (reserved bits come back) or cleared (the fields
+// alone: what a receiver filling the struct field by field gets).
+EncodedWord reencoded(const QString &word, std::uint32_t v, bool keepRaw) {
+    if (word == "status") {
+        StatusWord w = StatusWord::decode(v);
+        if (!keepRaw) w.raw = 0;
+        return w.encode();
+    }
+    if (word == "config1") {
+        ConfigRegister1 w = ConfigRegister1::decode(v);
+        if (!keepRaw) w.raw = 0;
+        return w.encode();
+    }
+    ConfigRegister2 w = ConfigRegister2::decode(v);
+    if (!keepRaw) w.raw = 0;
+    return w.encode();
+}
+
+std::uint32_t reservedMask(const QString &word) {
+    if (word == "status") return StatusWord::kReservedMask;
+    if (word == "config1") return ConfigRegister1::kReservedMask;
+    return ConfigRegister2::kReservedMask;
+}
+
 } // namespace
 
 class TestGeostarStatusWords : public QObject {
@@ -41,6 +66,13 @@ private slots:
     void eachSingleBitSetsItsNamedField();
     void receiverTypesOfTable9();
     void multiBitFieldsDecodeEveryValue();
+    void encodeIsTheInverseOfDecode_data();
+    void encodeIsTheInverseOfDecode();
+    void theFieldsAloneGiveEveryBitButTheReservedOnes_data();
+    void theFieldsAloneGiveEveryBitButTheReservedOnes();
+    void everyValueOfAMultiBitFieldIsEncoded();
+    void aFieldWiderThanItsBitsIsRefused_data();
+    void aFieldWiderThanItsBitsIsRefused();
 };
 
 // Status 00083037, config 1 802DC097, config 2 F7FF8064, worked out from tables 7-9 by hand.
@@ -241,6 +273,118 @@ void TestGeostarStatusWords::multiBitFieldsDecodeEveryValue() {
     const char *datum[] = {"WGS-84", "PZ-90.11", "user", "undefined"};
     for (std::uint32_t v = 0; v < 4; ++v)
         QCOMPARE(wordJson("config2", v << 14)["datum"].toString(), QString(datum[v]));
+}
+
+// The spec example's words, every single bit of each table (reserved ones too), none and all.
+void TestGeostarStatusWords::encodeIsTheInverseOfDecode_data() {
+    QTest::addColumn<QString>("word");
+    QTest::addColumn<uint>("value");
+    QTest::addRow("status example") << "status" << 0x00083037u;
+    QTest::addRow("config1 example") << "config1" << 0x802DC097u;
+    QTest::addRow("config2 example") << "config2" << 0xF7FF8064u;
+    for (const char *w : {"status", "config1", "config2"}) {
+        QTest::addRow("%s none", w) << QString(w) << 0u;
+        QTest::addRow("%s all", w) << QString(w) << 0xFFFFFFFFu;
+        for (int b = 0; b < 32; ++b) QTest::addRow("%s bit %d", w, b) << QString(w) << (1u << b);
+    }
+}
+
+void TestGeostarStatusWords::encodeIsTheInverseOfDecode() {
+    QFETCH(QString, word);
+    QFETCH(uint, value);
+    const EncodedWord e = reencoded(word, value, true);
+    QVERIFY2(e.ok(), e.refusal.text.c_str());
+    QCOMPARE(uint(e.word), value);
+}
+
+void TestGeostarStatusWords::theFieldsAloneGiveEveryBitButTheReservedOnes_data() {
+    encodeIsTheInverseOfDecode_data();
+}
+
+void TestGeostarStatusWords::theFieldsAloneGiveEveryBitButTheReservedOnes() {
+    QFETCH(QString, word);
+    QFETCH(uint, value);
+    const EncodedWord e = reencoded(word, value, false);
+    QVERIFY2(e.ok(), e.refusal.text.c_str());
+    QCOMPARE(uint(e.word), value & ~reservedMask(word));
+}
+
+void TestGeostarStatusWords::everyValueOfAMultiBitFieldIsEncoded() {
+    for (int v = 0; v < 4; ++v) {
+        StatusWord s;
+        s.antenna = static_cast<AntennaState>(v);
+        QCOMPARE(s.encode().word, std::uint32_t(v) << 6);
+    }
+    for (int v = 0; v < 8; ++v) {
+        ConfigRegister1 c;
+        c.dynamicsCode = v;
+        c.ppsTimeScaleCode = 7 - v;
+        QCOMPARE(c.encode().word, (std::uint32_t(v) << 21) | (std::uint32_t(7 - v) << 9));
+    }
+    for (int hz : {10, 5, 2, 1}) {
+        ConfigRegister1 c;
+        c.rateCode = rateHzToCode(hz);
+        QCOMPARE(ConfigRegister1::decode(c.encode().word).rateHz, hz);
+    }
+    QCOMPARE(rateHzToCode(3), -1);
+    for (int v = 0; v < 4; ++v) {
+        ConfigRegister2 c;
+        c.receiverTypeCode = 0xD7FE;
+        c.datumCode = v;
+        QCOMPARE(c.encode().word, 0xD7FE0000u | (std::uint32_t(v) << 14));
+    }
+}
+
+// A code that does not fit its bits would spill into the next field: refused, naming the field.
+void TestGeostarStatusWords::aFieldWiderThanItsBitsIsRefused_data() {
+    QTest::addColumn<QString>("word");
+    QTest::addColumn<QString>("field");
+    QTest::addColumn<int>("value");
+    QTest::addColumn<QString>("accepted");
+    QTest::addRow("antenna 4") << "status"
+                               << "antenna" << 4 << "0..3";
+    QTest::addRow("dynamics 8") << "config1"
+                                << "dynamics" << 8 << "0..7";
+    QTest::addRow("dynamics -1") << "config1"
+                                 << "dynamics" << -1 << "0..7";
+    QTest::addRow("rate code 4") << "config1"
+                                 << "rate" << 4 << "0..3";
+    QTest::addRow("rate code -1 (no such rate)") << "config1"
+                                                 << "rate" << -1 << "0..3";
+    QTest::addRow("1PPS time scale 8") << "config1"
+                                       << "1PPS" << 8 << "0..7";
+    QTest::addRow("datum 4") << "config2"
+                             << "datum" << 4 << "0..3";
+}
+
+void TestGeostarStatusWords::aFieldWiderThanItsBitsIsRefused() {
+    QFETCH(QString, word);
+    QFETCH(QString, field);
+    QFETCH(int, value);
+    QFETCH(QString, accepted);
+    EncodedWord e;
+    if (word == "status") {
+        StatusWord s;
+        s.antenna = static_cast<AntennaState>(value);
+        e = s.encode();
+    } else if (word == "config1") {
+        ConfigRegister1 c;
+        if (field == "dynamics") c.dynamicsCode = value;
+        if (field == "rate") c.rateCode = value;
+        if (field == "1PPS") c.ppsTimeScaleCode = value;
+        e = c.encode();
+    } else {
+        ConfigRegister2 c;
+        c.datumCode = value;
+        e = c.encode();
+    }
+    QVERIFY(!e.ok());
+    QCOMPARE(e.word, 0u);
+    const QString text = QString::fromStdString(e.refusal.text);
+    QVERIFY2(text.contains(field) && text.contains(QString::number(value)) &&
+                     text.endsWith("accepted: " + accepted),
+             qPrintable(text));
+    QVERIFY(e.refusal.form); // a translatable template
 }
 
 QTEST_APPLESS_MAIN(TestGeostarStatusWords)
