@@ -1,9 +1,5 @@
 #include "nemerix_sim_navdata.h"
 
-#include "core/sentence_builder.h"
-#include "nemerix/nemerix_commands.h"
-#include "nemerix/nemerix_ephemeris.h"
-
 #include <cmath>
 #include <numbers>
 
@@ -28,12 +24,6 @@ double semicircles(double rad) {
     return s;
 }
 
-std::int64_t raw(double value, const nemerix::HexFieldDef &def) {
-    std::string error;
-    const auto r = nemerix::toRaw(value, def, error);
-    return r ? *r : 0;
-}
-
 // Orbit elements at the reference time `ref` (GPS time of week) for an orbit seen at sky time
 // `refSim` (the sky model's time at that instant).
 struct Elements {
@@ -49,14 +39,6 @@ Elements elementsOf(const SkyModel::Orbit &o, double refSim, double ref) {
     return e;
 }
 
-std::string hexFields(std::span<const nemerix::HexFieldDef> defs,
-                      std::span<const std::int64_t> values) {
-    std::string s;
-    for (std::size_t i = 0; i < defs.size() && i < values.size(); ++i)
-        s += "," + nemerix::formatHex(values[i], defs[i].bits);
-    return s;
-}
-
 } // namespace
 
 double almanacToa(double tow) {
@@ -67,88 +49,89 @@ double ephemerisToe(double tow) {
     return std::floor(tow / 7200.0) * 7200.0;
 }
 
-std::string almanac(const SkyModel &sky, int prn, double simTime, double tow, int) {
+std::optional<nemerix::Almanac> almanac(const SkyModel &sky, int prn, double simTime, double tow,
+                                        int) {
     const SkyModel::Orbit *o = gpsOrbit(sky, prn);
-    if (!o) return {};
+    if (!o) return std::nullopt;
     const double toa = almanacToa(tow);
     const Elements el = elementsOf(*o, simTime - (tow - toa), toa);
-    const auto f = nemerix::Almanac::fields();
-    nemerix::Almanac a;
-    a.sv = prn;
     using A = nemerix::Almanac;
-    a.raw[A::E] = 0;
-    a.raw[A::Health] = 0;
-    a.raw[A::Toa] = raw(toa, f[A::Toa]);
-    a.raw[A::DeltaI] = raw(el.i0 - 0.30, f[A::DeltaI]);
-    a.raw[A::OmegaDot] = 0;
-    a.raw[A::SqrtA] = raw(el.sqrtA, f[A::SqrtA]);
-    a.raw[A::Omega0] = raw(el.omega0, f[A::Omega0]);
-    a.raw[A::Perigee] = 0;
-    a.raw[A::Mean] = raw(el.m0, f[A::Mean]);
-    a.raw[A::M0] = raw(el.m0, f[A::M0]);
-    a.raw[A::Af0] = 0;
-    a.raw[A::Af1] = 0;
-    const auto r = nemerix::encodeAlmanac(a);
-    return r.ok() ? r.sentences.front() : std::string();
+    A a;
+    a.sv = prn;
+    const std::pair<A::Field, double> values[] = {
+            {A::E, 0},
+            {A::Health, 0},
+            {A::Toa, toa},
+            {A::DeltaI, el.i0 - 0.30}, // relative to i0 = 0.30 semicircles
+            {A::OmegaDot, 0},
+            {A::SqrtA, el.sqrtA},
+            {A::Omega0, el.omega0},
+            {A::Perigee, 0},
+            {A::Mean, el.m0},
+            {A::M0, el.m0},
+            {A::Af0, 0},
+            {A::Af1, 0},
+    };
+    for (const auto &[field, value] : values) a.setValue(field, value);
+    return a;
 }
 
-std::vector<std::string> ephemeris(const SkyModel &sky, int prn, double simTime, double tow,
-                                   int week) {
+std::vector<nemerix::EphemerisSubframe> ephemeris(const SkyModel &sky, int prn, double simTime,
+                                                  double tow, int week) {
     const SkyModel::Orbit *o = gpsOrbit(sky, prn);
     if (!o) return {};
     const double toe = ephemerisToe(tow);
     const Elements el = elementsOf(*o, simTime - (tow - toe), toe);
-    const int iodc = static_cast<int>(toe / 7200.0) & 0xFF; // issue of data: one per 2 hours
-    using E = nemerix::EphemerisSubframe;
-    const auto f1 = E::fields(1), f2 = E::fields(2), f3 = E::fields(3);
-    const std::int64_t sf1[] = {week % 1024, 0, 0, 0, iodc, raw(toe, f1[E::Toc]), 0, 0, 0};
-    const std::int64_t sf2[] = {iodc,
-                                0,
-                                0,
-                                raw(el.m0, f2[E::M0]),
-                                0,
-                                0,
-                                0,
-                                raw(el.sqrtA, f2[E::SqrtA]),
-                                raw(toe, f2[E::Toe])};
-    const std::int64_t sf3[] = {
-            0, raw(el.omega0, f3[E::Omega0]), 0, raw(el.i0, f3[E::I0]), 0, 0, 0, iodc, 0};
-    const std::string head = "PNMRX301," + std::to_string(prn) + ",";
-    return {buildSentence(head + "1" + hexFields(f1, sf1)),
-            buildSentence(head + "2" + hexFields(f2, sf2)),
-            buildSentence(head + "3" + hexFields(f3, sf3))};
+    const double iodc = static_cast<int>(toe / 7200.0) & 0xFF; // issue of data: one per 2 hours
+    // Field values of each subframe in its field order (EphemerisSubframe::Sf1/Sf2/Sf3).
+    const double sf1[] = {static_cast<double>(week % 1024), 0, 0, 0, iodc, toe, 0, 0, 0};
+    const double sf2[] = {iodc, 0, 0, el.m0, 0, 0, 0, el.sqrtA, toe};
+    const double sf3[] = {0, el.omega0, 0, el.i0, 0, 0, 0, iodc, 0};
+    std::vector<nemerix::EphemerisSubframe> out(3);
+    for (int k = 0; k < 3; ++k) {
+        nemerix::EphemerisSubframe &e = out[static_cast<std::size_t>(k)];
+        e.sv = prn;
+        e.subframe = k + 1;
+        const double *v = k == 0 ? sf1 : k == 1 ? sf2 : sf3;
+        for (int f = 0; f < static_cast<int>(nemerix::EphemerisSubframe::kMaxFields); ++f)
+            e.setValue(f, v[f]);
+    }
+    return out;
 }
 
-std::string ionosphere(int sv) {
+nemerix::Ionosphere ionosphere(int sv) {
     // Typical broadcast Klobuchar coefficients.
     const double v[] = {1.1176e-8, 7.4506e-9, -5.9605e-8, -5.9605e-8, 90112, 0, -196608, -65536};
-    const auto f = nemerix::Ionosphere::fields();
-    std::int64_t r[8];
-    for (int i = 0; i < 8; ++i) r[i] = raw(v[i], f[i]);
-    return buildSentence("PNMRX302," + std::to_string(sv) + hexFields(f, r));
+    nemerix::Ionosphere m;
+    m.sv = sv;
+    for (int i = 0; i < 8; ++i) m.setValue(i, v[i]);
+    return m;
 }
 
-std::string utc(int sv, int week, int leapSeconds) {
+nemerix::UtcParameters utc(int sv, int week, int leapSeconds) {
     using U = nemerix::UtcParameters;
-    const auto f = U::fields();
-    std::int64_t r[U::kFieldCount] = {};
-    r[U::A0] = raw(-9.3e-10, f[U::A0]);
-    r[U::A1] = raw(-8.9e-15, f[U::A1]);
-    r[U::DtLs] = leapSeconds;
-    r[U::Tot] = raw(405504, f[U::Tot]);
-    r[U::WnT] = week % 256;
-    r[U::WnLsf] = 1929 % 256; // the last leap second: end of 2016 (week 1929, day 7)
-    r[U::Dn] = 7;
-    r[U::DtLsf] = leapSeconds;
-    r[U::NumBlocks] = 2; // 20-year blocks since 1980
-    r[U::TimeOffset] = 0;
-    return buildSentence("PNMRX303," + std::to_string(sv) + hexFields(f, r));
+    U m;
+    m.sv = sv;
+    const std::pair<U::Field, double> values[] = {
+            {U::A0, -9.3e-10},
+            {U::A1, -8.9e-15},
+            {U::DtLs, static_cast<double>(leapSeconds)},
+            {U::Tot, 405504},
+            {U::WnT, static_cast<double>(week % 256)},
+            {U::WnLsf, 1929 % 256}, // the last leap second: end of 2016 (week 1929, day 7)
+            {U::Dn, 7},
+            {U::DtLsf, static_cast<double>(leapSeconds)},
+            {U::NumBlocks, 2}, // 20-year blocks since 1980
+            {U::TimeOffset, 0},
+    };
+    for (const auto &[field, value] : values) m.setValue(field, value);
+    return m;
 }
 
-std::string health(const SkyModel &sky) {
-    std::string s = "PNMRX304";
-    for (int prn = 1; prn <= 32; ++prn) s += gpsOrbit(sky, prn) ? ",00" : ",3F";
-    return buildSentence(s);
+nemerix::ConstellationHealth health(const SkyModel &sky) {
+    nemerix::ConstellationHealth m;
+    for (int prn = 1; prn <= 32; ++prn) m.codes[m.count++] = gpsOrbit(sky, prn) ? "00" : "3F";
+    return m;
 }
 
 } // namespace gnss::sim::nemerixdata

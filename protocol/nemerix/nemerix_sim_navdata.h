@@ -1,12 +1,14 @@
 #pragma once
-// PNMRX300-304 reports (almanac, ephemeris, ionosphere, UTC, health) of the simulated GPS
-// constellation, built from the sky model's orbits with the nemerix field descriptors and
-// encoders (protocol/nemerix), so the values decode back to the orbits the sky model flies:
-// circular orbits give e = 0, omega = 0, delta-n = 0; sqrt(A), i0, Omega0 (referred to the GPS
-// week as IS-GPS-200 20.3.3.4.3 does) and M0 come from each orbit's radius, plane and phase.
+// PNMRX300-304 data (almanac, ephemeris, ionosphere, UTC, health) of the simulated GPS
+// constellation, as the nemerix decoders' messages, made from the sky model's orbits in
+// engineering units (the messages' setValue scales them as IS-GPS-200 does), so that they decode
+// back to the orbits the sky model flies: circular orbits give e = 0, omega = 0, delta-n = 0;
+// sqrt(A), i0, Omega0 (referred to the GPS week as IS-GPS-200 20.3.3.4.3 does) and M0 come from
+// each orbit's radius, plane and phase. The receiver sends them with the nemerix encoders.
+#include "nemerix/nemerix_messages.h"
 #include "sim/sky_model.h"
 
-#include <string>
+#include <optional>
 #include <vector>
 
 namespace gnss::sim::nemerixdata {
@@ -16,15 +18,16 @@ namespace gnss::sim::nemerixdata {
 double almanacToa(double tow);
 double ephemerisToe(double tow);
 
-// $PNMRX300 for one GPS PRN (empty if the sky has no such satellite). `simTime` is the sky
+// The almanac of one GPS PRN (nullopt if the sky has no such satellite). `simTime` is the sky
 // model's time matching GPS time of week `tow`, `week` the GPS week.
-std::string almanac(const SkyModel &sky, int prn, double simTime, double tow, int week);
-// The three $PNMRX301 messages (subframes 1, 2, 3) of one GPS PRN.
-std::vector<std::string> ephemeris(const SkyModel &sky, int prn, double simTime, double tow,
-                                   int week);
-std::string ionosphere(int sv);
-std::string utc(int sv, int week, int leapSeconds);
+std::optional<nemerix::Almanac> almanac(const SkyModel &sky, int prn, double simTime, double tow,
+                                        int week);
+// The three ephemeris messages (subframes 1, 2, 3) of one GPS PRN (none if no such satellite).
+std::vector<nemerix::EphemerisSubframe> ephemeris(const SkyModel &sky, int prn, double simTime,
+                                                  double tow, int week);
+nemerix::Ionosphere ionosphere(int sv);
+nemerix::UtcParameters utc(int sv, int week, int leapSeconds);
 // One health code per GPS PRN 1..32 ("00" healthy, "3F" no satellite).
-std::string health(const SkyModel &sky);
+nemerix::ConstellationHealth health(const SkyModel &sky);
 
 } // namespace gnss::sim::nemerixdata

@@ -121,7 +121,7 @@ private slots:
         QCOMPARE(s.lines[0].address, std::string("GPGGA"));
         QCOMPARE(s.lines[1].address, std::string("GPGLL"));
         command(*rx, "PNMRX103,GGA,12"); // out of range 0..9: not taken
-        QCOMPARE(rx->settings().rates[0], 1);
+        QCOMPARE(rx->settings().value("rate.GGA"), std::string("1"));
     }
     void settingsReportReflectsEveryMaskAndDatum() {
         auto rx = makeNemerix();
@@ -149,7 +149,7 @@ private slots:
         QVERIFY(zda.back().find(",-2,00*") != std::string::npos);
         // Out of range: not taken.
         command(*rx, "PNMRX110,4,50");
-        QCOMPARE(rx->settings().minSnr, 35);
+        QCOMPARE(rx->settings().value("fix.minSnr"), std::string("35"));
     }
     void versionQueryIsAnswered() {
         auto rx = makeNemerix();
@@ -185,7 +185,7 @@ private slots:
         QCOMPARE(rx->currentFix(), FixKind::None);
         rx->advance(20.0);
         QVERIFY(rx->currentFix() != FixKind::None);
-        QCOMPARE(rx->settings().rates[6] == 1, keepsSettings);
+        QCOMPARE(rx->settings().value("rate.ZDA") == "1", keepsSettings);
     }
     void stopCoreHoldsTheFixUntilAReset() {
         auto rx = makeNemerix();
