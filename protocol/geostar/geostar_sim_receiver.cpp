@@ -2,7 +2,8 @@
 
 #include "core/sentence_builder.h"
 #include "geostar/geostar_dialect.h"
-#include "geostar/geostar_messages.h"
+#include "geostar/geostar_encoders.h"
+#include "geostar/geostar_schema.h"
 #include "nmea/nmea_messages.h"
 
 #include <algorithm>
@@ -17,25 +18,43 @@ constexpr double kAlmanacAfter = 30.0; // seconds of tracking until the almanacs
 constexpr double kSbasAfter = 20.0;    // seconds after the first fix until SBAS corrections
 constexpr int kPositionDecimals = 6;   // GeoS-5 rev. 1.1: ddmm.mmmmmm
 
+// Power-on outputs and rate: the spec's NQUERY example (3.12), read with the dialect's decoder.
+constexpr std::string_view kPowerOnOutputs = "$GPSGG,NQUERY,1,3,2,R,0,R,1,0,0,0,1,1,0*71";
+// The port the simulated receiver is on (the example's port 1).
+constexpr int kPort = 1;
+// Who the simulated module is: the spec's RQUERY example, a GeoS-5M with firmware 5.102 of
+// 10.05.2018 (table 9 type F7FF).
+constexpr std::string_view kReceiverName = "GEOS-5";
+constexpr std::string_view kFirmware = "V.5.102";
+constexpr Date kFirmwareDate{2018, 5, 10};
+constexpr std::uint16_t kReceiverType = 0xF7FF;
+
 // The code a message gets when switched on: the spec's NQUERY example shows GGA/GSA at the
 // output rate and GSV/ZDA/DTM once a second; the other messages follow the same split.
 char onCode(std::string_view name) {
     return (name == "GSV" || name == "ZDA" || name == "DTM" || name == "RLM") ? '1' : 'R';
 }
 
-int rateCode(int hz) {
-    switch (hz) {
-    case 10: return 0;
-    case 5: return 1;
-    case 2: return 2;
-    default: return 3;
-    }
+// Every setting at its power-on value (the schema has no defaults to seed from).
+void seedPowerOn(SettingsStore &store, int baud) {
+    std::vector<KeyValue> outputs;
+    auto read = [&outputs](const Message &m) { geostar::extractSettings(m, outputs); };
+    DecodeContext ctx(&geostar::dialect(), read);
+    Sentence s;
+    if (s.parse(kPowerOnOutputs)) geostar::decodeSgg(s, ctx);
+    for (KeyValue &kv : outputs) store.seed(kv.key, std::move(kv.value));
+    store.seed("power.PSM", "0");
+    store.seed("nav.ELEV", "5");
+    store.seed("nav.DAT", "W84");
+    store.seed("nav.NVS", "MIX");
+    store.seed("port.BDR", std::to_string(baud));
+    store.seed("port.STOP", "1");
 }
 
-int outputIndex(std::string_view name) {
-    for (std::size_t i = 0; i < GeoStarReceiver::kOutputs.size(); ++i)
-        if (!name.empty() && GeoStarReceiver::kOutputs[i] == name) return static_cast<int>(i);
-    return -1;
+// The one sentence an encoder built; empty (nothing is sent) if it refused, which the values the
+// simulator gives never make it do.
+std::string only(const EncodeResult &r) {
+    return r.ok() && !r.sentences.empty() ? r.sentences.front() : std::string();
 }
 
 Constellation groupOf(Constellation c) {
@@ -69,39 +88,20 @@ char modeOf(FixKind k) {
 } // namespace
 
 GeoStarReceiver::GeoStarReceiver(const SimOptions &options)
-    : Receiver(geostar::dialect(), options) {
-    current_ = flash_ = defaults();
-    if (options.baud > 0) current_.baud = flash_.baud = options.baud;
+    : Receiver(geostar::dialect(), options), store_(geostar::dialect()) {
+    seedPowerOn(store_, baud());
     almanacSince_ = kAlmanacAfter;
-}
-
-GeoStarReceiver::Settings GeoStarReceiver::defaults() {
-    Settings s;
-    s.codes.fill('0');
-    // NQUERY example of 3.12: $GPSGG,NQUERY,1,3,2,R,0,R,1,0,0,0,1,1,0
-    s.codes[outputIndex("GGA")] = 'R';
-    s.codes[outputIndex("GSA")] = 'R';
-    s.codes[outputIndex("GSV")] = '1';
-    s.codes[outputIndex("ZDA")] = '1';
-    s.codes[outputIndex("DTM")] = '1';
-    return s;
-}
-
-bool GeoStarReceiver::allStandardOff() const {
-    for (std::size_t i = 0; i < kOutputs.size(); ++i)
-        if (!kOutputs[i].empty() && kOutputs[i] != "RLM" && current_.codes[i] != '0') return false;
-    return true;
 }
 
 UseMask GeoStarReceiver::useMask() const {
     UseMask m;
-    m.gps = current_.gnss != "GLN";
-    m.glonass = current_.gnss != "GPS";
-    m.galileo = current_.gnss == "MIX";
+    m.gps = gnssMode() != "GLN";
+    m.glonass = gnssMode() != "GPS";
+    m.galileo = gnssMode() == "MIX";
     m.beidou = false;
     m.beidouHardware = false; // GeoS-5: GPS, GLONASS, Galileo, QZSS, SBAS
     m.sbas = m.gps;
-    m.elevationMask = current_.elevationMask;
+    m.elevationMask = static_cast<int>(store_.integer("nav.ELEV"));
     return m;
 }
 
@@ -109,16 +109,16 @@ FixKind GeoStarReceiver::fixAfter(double seconds) const {
     const FixKind base = Receiver::fixAfter(seconds);
     if (base == FixKind::None) return base;
     // SBAS corrections (GeoS-5M) once the SBAS message has been received, GPS in use.
-    if (current_.gnss != "GLN" && seconds - ttff() >= kSbasAfter) return FixKind::Differential;
+    if (gnssMode() != "GLN" && seconds - ttff() >= kSbasAfter) return FixKind::Differential;
     return base;
 }
 
 void GeoStarReceiver::onReset(ResetKind kind) {
     almanacValid_ = almanacValid_ || time() >= almanacSince_; // collected before the reset
     if (kind == ResetKind::PowerCycle) {
-        current_ = flash_;
+        store_.restore();
         loadedFromFlash_ = flashWritten_;
-        setBaudNow(current_.baud);
+        setBaudNow(static_cast<int>(store_.integer("port.BDR", baud())));
         binary_ = false;
         announce_ = true;
         almanacValid_ = almanacInFlash_;
@@ -127,7 +127,6 @@ void GeoStarReceiver::onReset(ResetKind kind) {
     hotStart_ = kind == ResetKind::Hot;
     validSinceStart_ = false;
     almanacSince_ = time() + (almanacValid_ ? 0.0 : kAlmanacAfter);
-    epochIndex_ = 0;
 }
 
 // ---- Commands -----------------------------------------------------------------------------
@@ -137,12 +136,13 @@ void GeoStarReceiver::onCommand(const Sentence &s, const Message *decoded, std::
     const auto *c = message_cast<geostar::Command>(*decoded);
     if (!c || !c->def) return;
     const geostar::CommandDef &d = *c->def;
+    store_.apply(*decoded); // a set command's setting; queries and actions carry none
     if (d.text == "RQUERY") {
-        reply(s, rqueryReply());
+        reply(s, only(geostar::encodeRquery(rquery())));
     } else if (d.text == "NQUERY") {
-        reply(s, nqueryReply());
+        reply(s, only(geostar::encodeNquery(nquery())));
     } else if (d.text == "SAVEFL") {
-        flash_ = current_;
+        store_.save();
         flashWritten_ = true;
         almanacInFlash_ = almanacValid_ || time() >= almanacSince_;
         flashWriteUntil_ = time() + 1.0;
@@ -155,117 +155,75 @@ void GeoStarReceiver::onCommand(const Sentence &s, const Message *decoded, std::
     } else if (d.text == "HSTART") {
         reset(ResetKind::Hot);
     } else if (d.settingKey == "port.BDR") {
-        current_.baud = std::atoi(std::string(d.value).c_str());
-        reply(s, std::string(), current_.baud); // no answer; the port switches at once
-    } else {
-        apply(d.settingKey, d.value);
-    }
-}
-
-void GeoStarReceiver::apply(std::string_view key, std::string_view value) {
-    const int n = std::atoi(std::string(value).c_str());
-    if (key.substr(0, 7) == "output." && outputIndex(key.substr(7)) >= 0) {
-        const std::string_view name = key.substr(7);
-        current_.codes[outputIndex(name)] = n ? onCode(name) : '0';
-    } else if (key == "output.NMEAV") {
-        current_.nmeaVersion = n;
-    } else if (key == "output.RATE") {
-        current_.rateHz = n;
+        // No answer; the port switches at once.
+        reply(s, std::string(), static_cast<int>(store_.integer("port.BDR", baud())));
+    } else if (d.settingKey == "output.RATE") {
         rescheduleEpochs();
-    } else if (key == "power.PSM") {
-        current_.powerSaving = n != 0;
-    } else if (key == "nav.ELEV") {
-        current_.elevationMask = n;
-    } else if (key == "nav.DAT") {
-        current_.datum = std::string(value);
-    } else if (key == "nav.NVS") {
-        current_.gnss = std::string(value);
-    } else if (key == "port.STOP") {
-        current_.stopBits = n;
     }
 }
 
-// ---- Status words -------------------------------------------------------------------------
+// ---- RQUERY and NQUERY --------------------------------------------------------------------
 
-std::uint32_t GeoStarReceiver::statusWord() const {
+geostar::Rquery GeoStarReceiver::rquery() const {
     const SkySnapshot &snap = lastSnapshot();
-    const bool fix = currentFix() != FixKind::None;
     const bool tracking =
             snap.used > 0 || std::any_of(snap.satellites.begin(), snap.satellites.end(),
                                          [](const SimSatellite &x) { return x.tracked; });
     const bool almanac = almanacValid_ || time() >= almanacSince_;
+    const bool navData = tracking && sinceTracking() >= ttff();
     const UseMask m = useMask();
-    std::uint32_t w = 0;
-    auto bit = [&](int b, bool on) {
-        if (on) w |= 1u << b;
-    };
-    bit(30, time() < flashWriteUntil_);
-    bit(24, currentFix() == FixKind::Differential);
-    bit(23, true); // ACTIVE (sleep is not simulated)
-    bit(22, currentFix() == FixKind::Differential);
-    bit(19, fix);
-    bit(18, validSinceStart_);
-    bit(15, hotStart_);
-    bit(14, tracking && sinceTracking() >= ttff() + 12.5); // iono/UTC from page 18
-    bit(13, tracking && sinceTracking() >= ttff());
-    bit(12, tracking && sinceTracking() >= ttff());
-    bit(10, almanac && m.galileo);
-    bit(9, almanac && m.glonass);
-    bit(8, almanac && m.gps);
-    w |= 3u << 6; // antenna: normal
-    bit(5, true); // GLONASS AGC
-    bit(4, true); // GPS AGC
-    bit(3, loadedFromFlash_);
-    bit(2, true); // PLL
-    bit(1, true); // RTC
-    bit(0, true); // backup RAM
-    return w;
+    geostar::Rquery q;
+    q.receiverName = kReceiverName;
+    q.firmware = kFirmware;
+    q.firmwareDate = kFirmwareDate;
+    geostar::StatusWord &w = q.status; // table 7
+    w.flashWriteInProgress = time() < flashWriteUntil_;
+    w.sbasCorrectionsUsed = w.differential = currentFix() == FixKind::Differential;
+    w.active = true; // sleep is not simulated
+    w.solutionAvailable = currentFix() != FixKind::None;
+    w.validSinceStart = validSinceStart_;
+    w.clockRestoredHotStart = hotStart_;
+    w.gpsIonoUtcAvailable = tracking && sinceTracking() >= ttff() + 12.5; // from page 18
+    w.dateFromNavMessage = w.timeFromNavMessage = navData;
+    w.galileoAlmanac = almanac && m.galileo;
+    w.glonassAlmanac = almanac && m.glonass;
+    w.gpsAlmanac = almanac && m.gps;
+    w.antenna = geostar::AntennaState::Ok;
+    w.glonassAgcOk = w.gpsAgcOk = true;
+    w.settingsLoadedFromFlash = loadedFromFlash_;
+    w.pllOk = w.rtcOk = w.backupRamOk = true;
+    geostar::ConfigRegister1 &c1 = q.config1; // table 8; rate, power saving, systems: the store
+    c1.antennaPower = true;
+    c1.fixByRequest = false; // power saving type RELAXED FIX
+    c1.dynamicsCode = 1;     // pedestrian/car
+    c1.kalmanFilter = true;
+    c1.firstFix2DAllowed = true;
+    c1.ppsEnabled = true; // GPS time scale, positive
+    c1.sbas = true;
+    geostar::ConfigRegister2 &c2 = q.config2; // table 9; datum: the store
+    c2.receiverTypeCode = kReceiverType;
+    c2.differentialAllowed = true;
+    c2.useAllSatellites = true; // with or without corrections
+    c2.sbasPrnAuto = true;
+    geostar::reportSettings(store_.values(), q);
+    return q;
 }
 
-std::uint32_t GeoStarReceiver::configRegister1() const {
-    const UseMask m = useMask();
-    std::uint32_t w = 0;
-    auto bit = [&](int b, bool on) {
-        if (on) w |= 1u << b;
-    };
-    bit(30, true);                 // antenna power
-    bit(24, current_.powerSaving); // power saving modes allowed (RELAXED FIX, bit 25 = 0)
-    w |= 1u << 21;                 // dynamics: pedestrian/car
-    w |= static_cast<std::uint32_t>(rateCode(current_.rateHz)) << 18;
-    bit(15, true); // Kalman filter
-    bit(14, true); // 2D first fix allowed
-    bit(7, true);  // 1PPS on, GPS time scale, positive
-    bit(4, true);  // SBAS
-    bit(2, m.galileo);
-    bit(1, m.gps);
-    bit(0, m.glonass);
-    return w;
+geostar::Nquery GeoStarReceiver::nquery() const {
+    geostar::Nquery n;
+    n.port = kPort;
+    for (std::size_t i = 0; i < n.kMessages; ++i)
+        n.codes[i] = n.kNames[i].empty() ? '0' : onCode(n.kNames[i]);
+    n.codeCount = n.kMessages;
+    geostar::reportSettings(store_.values(), n);
+    return n;
 }
 
-std::uint32_t GeoStarReceiver::configRegister2() const {
-    std::uint32_t w = 0xF7FFu << 16; // GeoS-5M
-    if (current_.datum == "P90") w |= 1u << 14;
-    w |= 1u << 8; // differential allowed
-    w |= 1u << 3; // all satellites used, with or without corrections
-    w |= 1u << 2; // SBAS PRN automatic
-    return w;
-}
-
-std::string GeoStarReceiver::rqueryReply() const {
-    char b[96];
-    std::snprintf(b, sizeof b, "GPSGG,RQUERY,GEOS-5,V.5.102,100518,%08X,%08X,%08X", statusWord(),
-                  configRegister1(), configRegister2());
-    return buildSentence(b);
-}
-
-std::string GeoStarReceiver::nqueryReply() const {
-    std::string b = "GPSGG,NQUERY,1," + std::to_string(rateCode(current_.rateHz)) + "," +
-                    std::to_string(current_.nmeaVersion);
-    for (char c : current_.codes) {
-        b += ',';
-        b += c;
-    }
-    return buildSentence(b);
+// RQUERY and NQUERY of the receiver's own accord (after power-on, every second with all off).
+void GeoStarReceiver::sendReports() {
+    for (const std::string &line :
+         {only(geostar::encodeRquery(rquery())), only(geostar::encodeNquery(nquery()))})
+        if (!line.empty()) send(line);
 }
 
 // ---- Output -------------------------------------------------------------------------------
@@ -275,14 +233,17 @@ void GeoStarReceiver::onEpoch(const SkySnapshot &snap) {
     if (binary_) return;
     const double t = time();
     if (announce_) { // once after power-on (3.11, 3.12)
-        send(rqueryReply());
-        send(nqueryReply());
+        sendReports();
         announce_ = false;
         lastAllOffReport_ = t;
     }
-    for (std::string_view name : kOutputs) {
+    const geostar::Nquery outputs = nquery();
+    bool allStandardOff = true;
+    for (std::size_t i = 0; i < outputs.kMessages; ++i) {
+        const std::string_view name = outputs.kNames[i];
         if (name.empty()) continue;
-        const char code = current_.codes[outputIndex(name)];
+        const char code = outputs.codes[i];
+        if (name != "RLM" && code != '0') allStandardOff = false;
         const double sec = std::round(t);
         const bool wholeSecond = std::fabs(t - sec) < 1e-6;
         const long s = static_cast<long>(sec);
@@ -296,21 +257,20 @@ void GeoStarReceiver::onEpoch(const SkySnapshot &snap) {
         }
         if (name == "RLM") due = due && wholeSecond && s % 60 == 30; // a test message a minute
         if (due)
-            for (const std::string &line : sentencesOf(name, snap)) send(line);
+            for (const std::string &line : sentencesOf(name, snap))
+                if (!line.empty()) send(line);
     }
     // Every standard message off: RQUERY and NQUERY once a second instead (3.11, 3.12).
-    if (allStandardOff() && t - lastAllOffReport_ >= 1.0 - 1e-6) {
-        send(rqueryReply());
-        send(nqueryReply());
+    if (allStandardOff && t - lastAllOffReport_ >= 1.0 - 1e-6) {
+        sendReports();
         lastAllOffReport_ = t;
     }
-    ++epochIndex_;
 }
 
 std::string GeoStarReceiver::talker() const {
-    if (current_.nmeaVersion == 2) return "GP";
-    if (current_.gnss == "GPS") return "GP";
-    if (current_.gnss == "GLN") return "GL";
+    if (nmeaVersion() == 2) return "GP";
+    if (gnssMode() == "GPS") return "GP";
+    if (gnssMode() == "GLN") return "GL";
     return "GN";
 }
 
@@ -322,7 +282,7 @@ std::vector<std::string> GeoStarReceiver::sentencesOf(std::string_view name,
     f.positionDecimals = kPositionDecimals;
     if (name == "GGA") {
         std::vector<std::string> out{gga(snap)};
-        if (current_.nmeaVersion == 4)
+        if (nmeaVersion() == 4)
             for (std::string &s : gns(snap)) out.push_back(std::move(s));
         return out;
     }
@@ -353,7 +313,7 @@ std::vector<std::string> GeoStarReceiver::sentencesOf(std::string_view name,
         }
         m.date = t.date;
         m.mode = modeOf(snap.fix);
-        if (current_.nmeaVersion == 4) m.navStatus = 'V'; // "not formed by the receiver"
+        if (nmeaVersion() == 4) m.navStatus = 'V'; // "not formed by the receiver"
         return {nmea::encodeRmc(talker(), m, f)};
     }
     if (name == "VTG") {
@@ -426,13 +386,14 @@ std::vector<std::string> GeoStarReceiver::gns(const SkySnapshot &snap) const {
     nmea::EncodeFormat f;
     f.positionDecimals = kPositionDecimals;
     std::vector<std::string> out{nmea::encodeGns(talker(), g, f)};
-    if (current_.gnss != "MIX") return out;
+    if (gnssMode() != "MIX") return out;
     const bool enabled[3] = {m.gps, m.glonass, m.galileo};
     for (int i = 0; i < 3; ++i) {
         if (!enabled[i]) continue;
-        out.push_back(buildSentence(std::string(systems[i].second) + "GNS," +
-                                    nmea::formatTime(*g.time, 2) + ",,,,," + pad(counts[i], 2) +
-                                    ",,,,,,,"));
+        nmea::Gns sub; // the system's satellites; no corrections per system (not simulated)
+        sub.time = g.time;
+        sub.satsUsed = counts[i];
+        out.push_back(only(geostar::encodeSubsidiaryGns(systems[i].second, sub)));
     }
     return out;
 }
@@ -440,7 +401,7 @@ std::vector<std::string> GeoStarReceiver::gns(const SkySnapshot &snap) const {
 std::vector<std::string> GeoStarReceiver::gsa(const SkySnapshot &snap) const {
     const bool valid = snap.fix != FixKind::None;
     const UseMask m = useMask();
-    const int v = current_.nmeaVersion;
+    const int v = nmeaVersion();
     struct Group {
         Constellation system;
         std::string_view talker;
@@ -471,7 +432,7 @@ std::vector<std::string> GeoStarReceiver::gsa(const SkySnapshot &snap) const {
 }
 
 std::vector<std::string> GeoStarReceiver::gsv(const SkySnapshot &snap) const {
-    const int v = current_.nmeaVersion;
+    const int v = nmeaVersion();
     const UseMask m = useMask();
     struct Group {
         std::string_view talker;
@@ -526,14 +487,19 @@ std::vector<std::string> GeoStarReceiver::gsv(const SkySnapshot &snap) const {
 
 std::string GeoStarReceiver::dtm() const {
     // Local datum the output is in, offsets from WGS-84 (PZ-90.11 differs by centimetres).
-    if (current_.datum == "P90") return buildSentence("GPDTM,P90,,0.000,N,0.000,E,000.0,W84");
+    if (store_.value("nav.DAT") == "P90")
+        return buildSentence("GPDTM,P90,,0.000,N,0.000,E,000.0,W84");
     return buildSentence("GPDTM,W84,,0.000,N,0.000,E,000.0,W84");
 }
 
 std::string GeoStarReceiver::rlm() const {
-    // A test-service return link message (code F) for a simulated beacon.
-    const std::string time = nmea::formatTime(nmea::timeOfDay(utcSecondOfDay(), 2), 2);
-    return buildSentence("GPRLM,123456789ABCD12," + time + ",F,0000");
+    // A test-service return link message (code F, a short message) for the spec's beacon.
+    geostar::Rlm m;
+    m.beaconId = "123456789ABCD12";
+    m.time = nmea::timeOfDay(utcSecondOfDay(), 2);
+    m.messageCode = 0xF;
+    m.parameters = "0000";
+    return only(geostar::encodeRlm(m));
 }
 
 } // namespace gnss::sim

@@ -2,29 +2,35 @@
 // GeoStarReceiver: a GeoStar GeoS-5M (GPS, GLONASS, Galileo, SBAS) as
 // geostar-geos5-nmea-v4.0.ru.txt describes it.
 //
-// Defaults (the spec names none; taken from its one NQUERY example and the dialect's baud):
-// 115200 baud, 1 Hz, NMEA v2.x, GGA and GSA at the output rate, GSV, ZDA and DTM every second,
-// GNSS mode MIX (GLONASS+GPS+Galileo), SBAS corrections allowed, WGS-84, elevation mask 5 deg.
+// Settings: a sim::SettingsStore of the dialect's schema, keyed as the schema names them
+// (output.GGA ... output.NMEAV, output.RATE, power.PSM, nav.ELEV, nav.DAT, nav.NVS, port.BDR,
+// port.STOP). The spec names no factory defaults, so the schema has none: the receiver starts with
+// the outputs and rate of the spec's one NQUERY example (1 Hz, NMEA v2.x, GGA and GSA at the
+// output rate, GSV, ZDA and DTM every second), GNSS mode MIX (GLONASS+GPS+Galileo), SBAS
+// corrections allowed, WGS-84, elevation mask 5 deg, power saving off, one stop bit, and the
+// dialect's default speed (or SimOptions::baud).
 // RQUERY and NQUERY are sent once after power-on, and once a second while every standard
-// message is off (3.11, 3.12).
+// message is off (3.11, 3.12); both are built with the dialect's encoders (geostar_encoders.h)
+// from the store (reportSettings) and the engine's state (the status word's fields).
 //
-// Commands (section 4, read with the geostar decoder, the table of geostar_commands.cpp):
-// only RQUERY and NQUERY are answered; every other command acts silently (the spec names no
-// acknowledgement), its effect visible in the output, in the NQUERY reply or in the RQUERY words.
+// Commands (section 4, read with the geostar decoder, the table of geostar_commands.cpp): a set
+// command is applied to the store as the dialect reads it (extractSettings); only RQUERY and
+// NQUERY are answered; every other command acts silently (the spec names no acknowledgement),
+// its effect visible in the output, in the NQUERY reply or in the RQUERY words.
 // BDRxxx switches the port speed once the command is read; SWPROT leaves NMEA (the port falls
 // silent: the binary protocol is not simulated) until a power cycle.
 // SAVEFL writes the almanacs and the settings in force to the simulated flash (status bit 30
 // set for a second); a power cycle (powerCycle(), SIGHUP) reloads the settings from flash
 // (status bit 3) with the almanacs available at once. Without SAVEFL a power cycle returns to
-// the defaults.
+// the power-on settings.
 // NMEAV2 / NMEAV4 switch the numbering (3.4, 3.5): v2.x: GSV all under GP with three-digit ids
 // (Galileo 101-136), GSA per system (GP/GL/GA); v4.10: GN talkers, GSA with the system id,
 // GSV per system with the signal id (Galileo 7), GNS with per-system subsidiary sentences.
-#include "geostar/geostar_actions.h"
+#include "geostar/geostar_messages.h"
 #include "sim/receiver.h"
+#include "sim/settings_store.h"
 #include "sim/standard_output.h"
 
-#include <array>
 #include <cstdint>
 #include <string>
 
@@ -33,36 +39,14 @@ namespace gnss::sim {
 class GeoStarReceiver : public Receiver {
 public:
     explicit GeoStarReceiver(const SimOptions &options = {});
-    static constexpr int kDefaultBaud = geostar::kDefaultBaud;
 
-    // Output messages in NQUERY order (3.12; the 7th position is unknown and always 0).
-    static constexpr std::array<std::string_view, 10> kOutputs = {
-            "GGA", "GLL", "GSA", "GSV", "RMC", "VTG", "", "ZDA", "DTM", "RLM"};
+    // The settings in force (and the copy in flash).
+    const SettingsStore &settings() const { return store_; }
+    double epochInterval() const override { return 1.0 / double(store_.integer("output.RATE", 1)); }
 
-    struct Settings {
-        // NQUERY per-message codes: '0' off, '1' every s, '2' every 2 s, '3' every 20 s,
-        // 'R' at the output rate.
-        std::array<char, 10> codes{};
-        int rateHz = 1;
-        int nmeaVersion = 2;
-        bool powerSaving = false;
-        int elevationMask = 5;
-        std::string datum = "W84"; // W84 / P90
-        std::string gnss = "MIX";  // GPS / GLN / MIX
-        int baud = kDefaultBaud;
-        int stopBits = 1;
-        bool operator==(const Settings &) const = default;
-    };
-
-    const Settings &settings() const { return current_; }
-    double epochInterval() const override { return 1.0 / current_.rateHz; }
-
-    // The RQUERY words (tables 7, 8, 9) of the current state.
-    std::uint32_t statusWord() const;
-    std::uint32_t configRegister1() const;
-    std::uint32_t configRegister2() const;
-    std::string rqueryReply() const;
-    std::string nqueryReply() const;
+    // The RQUERY and NQUERY replies (3.11, 3.12) of the current state.
+    geostar::Rquery rquery() const;
+    geostar::Nquery nquery() const;
     bool binaryProtocol() const { return binary_; }
 
 protected:
@@ -73,9 +57,9 @@ protected:
     FixKind fixAfter(double seconds) const override;
 
 private:
-    static Settings defaults();
-    bool allStandardOff() const;
-    void apply(std::string_view settingKey, std::string_view value);
+    int nmeaVersion() const { return static_cast<int>(store_.integer("output.NMEAV", 2)); }
+    const std::string &gnssMode() const { return store_.value("nav.NVS"); }
+    void sendReports(); // RQUERY and NQUERY unasked
     std::vector<std::string> sentencesOf(std::string_view name, const SkySnapshot &snap) const;
 
     // Output builders (numbering and talkers by NMEA version).
@@ -87,7 +71,7 @@ private:
     std::string dtm() const;
     std::string rlm() const;
 
-    Settings current_, flash_;
+    SettingsStore store_;
     bool flashWritten_ = false;    // SAVEFL done at least once
     bool loadedFromFlash_ = false; // settings came from flash at the last power-on
     bool almanacInFlash_ = false;
@@ -98,7 +82,6 @@ private:
     bool hotStart_ = false;        // status bit 15
     bool validSinceStart_ = false; // status bit 18
     bool announce_ = true;         // RQUERY + NQUERY after power-on
-    std::int64_t epochIndex_ = 0;
     double lastAllOffReport_ = -1;
 };
 

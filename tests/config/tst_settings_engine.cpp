@@ -207,30 +207,30 @@ private slots:
         } else if (dialect == "geostar") {
             const auto *rx = static_cast<sim::GeoStarReceiver *>(rig.sim.receiver());
             const auto &s = rx->settings();
-            QCOMPARE(s.elevationMask, 10);
-            QCOMPARE(s.baud, 57600);
-            QCOMPARE(s.stopBits, 2);
-            QCOMPARE(s.datum, std::string("P90"));
-            QCOMPARE(s.gnss, std::string("GPS"));
-            QCOMPARE(s.rateHz, 5);
-            QCOMPARE(s.nmeaVersion, 4);
-            QVERIFY(s.powerSaving);
+            QCOMPARE(s.integer("nav.ELEV"), 10LL);
+            QCOMPARE(s.integer("port.BDR"), 57600LL);
+            QCOMPARE(s.integer("port.STOP"), 2LL);
+            QCOMPARE(s.value("nav.DAT"), std::string("P90"));
+            QCOMPARE(s.value("nav.NVS"), std::string("GPS"));
+            QCOMPARE(s.integer("output.RATE"), 5LL);
+            QCOMPARE(s.integer("output.NMEAV"), 4LL);
+            QCOMPARE(s.value("power.PSM"), std::string("1"));
             QCOMPARE(rig.sim.baud(), 57600);
         } else {
             const auto *rx = static_cast<sim::NemerixReceiver *>(rig.sim.receiver());
             const auto &s = rx->settings();
-            QCOMPARE(s.integer("serial.baud"), 19200LL);
-            QCOMPARE(s.real("fix.maxVdop"), 6.5);
-            QCOMPARE(s.integer("fix.maxAltitude"), 20000LL);
-            QCOMPARE(s.integer("nav.mode"), 4LL);
-            QCOMPARE(s.integer("nav.dynamics"), 1LL);
-            QCOMPARE(s.integer("nav.channels"), 14LL);
-            QCOMPARE(s.integer("power.mode"), 1LL);
-            QCOMPARE(s.integer("power.offPeriod"), 7LL);
-            QCOMPARE(s.integer("nmrx.303"), 2LL);
-            QCOMPARE(s.value("output.sequence"), std::string("RMC;GGA;GSV;GLL;ZDA"));
-            QCOMPARE(s.integer("datum.mapDatum"), 500LL);
-            QCOMPARE(s.integer("datum.dz"), 30LL);
+            QCOMPARE(s.baud, 19200);
+            QCOMPARE(s.maxVdop, 6.5);
+            QCOMPARE(s.maxAltitude, 20000);
+            QCOMPARE(s.navMode1, 4);
+            QCOMPARE(s.navMode2, 1);
+            QCOMPARE(s.channels, 14);
+            QCOMPARE(s.powerMode, 1);
+            QCOMPARE(s.offPeriod, 7);
+            QCOMPARE(s.reportModes[3], 2);
+            QCOMPARE(int(s.sequence.size()), 5);
+            QCOMPARE(s.datum, 500);
+            QCOMPARE(s.dz, 30);
             QCOMPARE(rig.sim.baud(), 19200);
         }
 
@@ -339,15 +339,13 @@ private slots:
             QVERIFY2(got && sameValue(*def, kv.value, *got), kv.key.c_str());
         }
         if (dialect == "nemerix")
-            QCOMPARE(static_cast<sim::NemerixReceiver *>(rig.sim.receiver())
-                             ->settings()
-                             .real("fix.maxVdop"),
+            QCOMPARE(static_cast<sim::NemerixReceiver *>(rig.sim.receiver())->settings().maxVdop,
                      4.0);
         if (dialect == "geostar")
             QCOMPARE(static_cast<sim::GeoStarReceiver *>(rig.sim.receiver())
                              ->settings()
-                             .elevationMask,
-                     7);
+                             .integer("nav.ELEV"),
+                     7LL);
         if (dialect == "nvs")
             QCOMPARE(static_cast<sim::NvsReceiver *>(rig.sim.receiver())->settings().timeDecimals,
                      1);
@@ -452,7 +450,7 @@ private slots:
         const auto r = rig.apply(presetValues(registry().find("geostar")->presets.front()));
         QVERIFY2(r.ok(), describe(r));
         const auto *rx = static_cast<sim::GeoStarReceiver *>(rig.sim.receiver());
-        QCOMPARE(rx->settings().nmeaVersion, 4);
+        QCOMPARE(rx->settings().integer("output.NMEAV"), 4LL);
     }
 };
 
