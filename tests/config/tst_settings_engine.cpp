@@ -219,18 +219,18 @@ private slots:
         } else {
             const auto *rx = static_cast<sim::NemerixReceiver *>(rig.sim.receiver());
             const auto &s = rx->settings();
-            QCOMPARE(s.baud, 19200);
-            QCOMPARE(s.maxVdop, 6.5);
-            QCOMPARE(s.maxAltitude, 20000);
-            QCOMPARE(s.navMode1, 4);
-            QCOMPARE(s.navMode2, 1);
-            QCOMPARE(s.channels, 14);
-            QCOMPARE(s.powerMode, 1);
-            QCOMPARE(s.offPeriod, 7);
-            QCOMPARE(s.reportModes[3], 2);
-            QCOMPARE(int(s.sequence.size()), 5);
-            QCOMPARE(s.datum, 500);
-            QCOMPARE(s.dz, 30);
+            QCOMPARE(s.integer("serial.baud"), 19200LL);
+            QCOMPARE(s.real("fix.maxVdop"), 6.5);
+            QCOMPARE(s.integer("fix.maxAltitude"), 20000LL);
+            QCOMPARE(s.integer("nav.mode"), 4LL);
+            QCOMPARE(s.integer("nav.dynamics"), 1LL);
+            QCOMPARE(s.integer("nav.channels"), 14LL);
+            QCOMPARE(s.integer("power.mode"), 1LL);
+            QCOMPARE(s.integer("power.offPeriod"), 7LL);
+            QCOMPARE(s.integer("nmrx.303"), 2LL);
+            QCOMPARE(s.value("output.sequence"), std::string("RMC;GGA;GSV;GLL;ZDA"));
+            QCOMPARE(s.integer("datum.mapDatum"), 500LL);
+            QCOMPARE(s.integer("datum.dz"), 30LL);
             QCOMPARE(rig.sim.baud(), 19200);
         }
 
@@ -339,7 +339,9 @@ private slots:
             QVERIFY2(got && sameValue(*def, kv.value, *got), kv.key.c_str());
         }
         if (dialect == "nemerix")
-            QCOMPARE(static_cast<sim::NemerixReceiver *>(rig.sim.receiver())->settings().maxVdop,
+            QCOMPARE(static_cast<sim::NemerixReceiver *>(rig.sim.receiver())
+                             ->settings()
+                             .real("fix.maxVdop"),
                      4.0);
         if (dialect == "geostar")
             QCOMPARE(static_cast<sim::GeoStarReceiver *>(rig.sim.receiver())
