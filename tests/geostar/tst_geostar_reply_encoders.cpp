@@ -336,9 +336,9 @@ private slots:
     }
 
     // The GeoS-5 RTK's subsidiary sentences carry no navigational status field at all; the spec
-    // prints them one comma short besides (the checksum proves the comma: docs/spec-notes.md).
-    // The encoder writes the GeoS-5M's form (an empty status field after the station), so this
-    // one comes back field for field, not byte for byte.
+    // prints them one comma short besides (restoring the comma gives the printed checksum; see
+    // geostar_gns.cpp). The encoder writes the GeoS-5M's form (an empty status field after the
+    // station), so this one comes back field for field, not byte for byte.
     void rtkSubsidiaryGnsComesBackFieldForField_data() {
         QTest::addColumn<QString>("line");
         QTest::newRow("GPS") << "$GPGNS,153632.00,,,,,09,,,,,000.8,0100*4D";
