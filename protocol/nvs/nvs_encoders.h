@@ -21,6 +21,8 @@ namespace gnss::nvs {
 inline constexpr std::size_t kMaxOutputMessages = 20;
 inline constexpr std::size_t kMaxStations = 32;
 inline constexpr int kMaxStationId = 4095;
+// 4.6: the RTCM data age PNVGBSS reports, "supported values: 0-999.9 seconds".
+inline constexpr double kMaxRtcmAge = 999.9;
 
 // ---- Commands ---------------------------------------------------------------------------------
 

@@ -58,7 +58,6 @@ inline constexpr double kMaxMetres = 1e8;            // distances, base-lines, d
 inline constexpr double kMaxSpeed = 1e5;             // m/s
 inline constexpr double kMaxAcceleration = 1e3;      // m/s^2
 inline constexpr double kMaxDop = 1e3;               // dilutions of precision
-inline constexpr double kMaxRtcmAge = 999.9;         // 4.6: "Supported values: 0-999.9 seconds"
 inline constexpr std::int64_t kMaxCount = 1LL << 53; // counters (exact in a double, as JSON)
 
 // "<name>: <value> is out of range; accepted: <accepted>" (the schema's template).

@@ -2,11 +2,12 @@
 // NvsReceiver: an NVS NV08C-RTK-A (the heading variant of the NV08C-RTK, a superset: it also
 // sends HDT, PNVGBLS, PNVGSDH) as nvs-nv08c-rtk-nmea-v1.6.txt describes it.
 //
-// Defaults: 115200 baud, PVT rate 5 Hz, RTK rover (MODE 2) with a simulated base 4.8 km away
-// (station 0002) whose corrections arrive from the first fix: autonomous → float after 5 s →
-// fixed after 15 s. The spec gives no default output list; the simulator sends GGA, GSA, RMC,
-// VTG every epoch and GSV, ZDA, PNVGBSS once a second, and PNVGTST once at start (4.7).
-// Commands (read with the NVS decoders, answered with the NVS encoders):
+// Its settings are the schema's (a SettingsStore seeded from its defaults: 115200 baud, PVT rate
+// 5 Hz, RTK rover), with a simulated base 4.8 km away (station 0002) whose corrections arrive
+// from the first fix: autonomous → float after 5 s → fixed after 15 s. The spec gives no default
+// output list; the simulator sends GGA, GSA, RMC, VTG every epoch and GSV, ZDA, PNVGBSS once a
+// second, and PNVGTST once at start (4.7). Everything it sends is built by the NVS encoders.
+// Commands (read with the NVS decoders, applied to the store through the dialect's reading):
 //   PNVGVER, $--GPQ,<address>, PNVGNME (echo, then switch), PNVGRST (no reply, restarts),
 //   PNVGRZA (reply, then the baud changes), PNVGRZB (no reply, output list), PNVGCFG W/E/R,
 //   PNVGPPS, PNVGRTK (reply names every parameter asked; an out-of-range value is not taken and
@@ -14,47 +15,29 @@
 // PNVGCFG,W saves to the simulated flash; a power cycle (Receiver::powerCycle(), SIGHUP to
 // gnss-sim) and PNVGCFG,R restore from it; PNVGRST keeps the settings in force (spec table 4.3).
 #include "sim/receiver.h"
+#include "sim/settings_store.h"
 #include "sim/standard_output.h"
 
-#include "nvs/nvs_actions.h"
 #include "nvs/nvs_messages.h"
+#include "nvs/nvs_schema.h"
 #include "rtcm/rtcm_framer.h"
 
-#include <map>
+#include <optional>
 
 namespace gnss::sim {
 
 class NvsReceiver : public Receiver {
 public:
     explicit NvsReceiver(const SimOptions &options = {});
-    static constexpr int kDefaultBaud = nvs::kDefaultBaud;
 
-    struct Station {
-        int id = 0;
-        double icb = 0;
-    };
-    struct Port {
-        int baud = kDefaultBaud;
-        int protocol = 1; // 0 off, 1 NMEA, 7 RTCM
-        std::vector<nvs::RzbEntry> output;
-    };
-    // Everything PNVGCFG saves (spec 4.8), plus PNVGNME's settings.
-    struct Settings {
-        std::map<std::string, std::string, std::less<>> rtk; // Table 4 name → value(s) as sent
-        int timeDecimals = 2, positionDecimals = 7, talkerMode = 0;
-        std::map<int, Port> ports; // 1 COM1, 2 COM2, 3 USB
-        char ppsType = 'P', ppsMode = 'S', ppsReference = 'U', ppsValidity = 'D';
-        int ppsAdjust = 1, ppsDuration = 1000, ppsCableDelay = 0;
-        int idlMode = 0;
-        std::vector<Station> stations;
-    };
-
-    const Settings &settings() const { return current_; }
-    const Settings &savedSettings() const { return saved_; }
-    std::string rtkValue(std::string_view name) const;
+    // Everything PNVGCFG saves (spec 4.8) and PNVGNME's settings, under the schema's keys
+    // ("rtk.PVTRATE", "nmea.time_decimals", "port.COM1.baud", "output.COM1", "pps.type",
+    // "idl.stations", ...), with the copy in flash (settings().saved()).
+    const SettingsStore &settings() const { return store_; }
     double epochInterval() const override;
 
     static constexpr int kCurrentPort = 1; // the simulated host is on COM1
+    static constexpr int kBaseStation = 2; // the simulated base's id (PNVGRTK BASEID default)
 
 protected:
     void onCommand(const Sentence &s, const Message *decoded, std::string_view error) override;
@@ -65,13 +48,21 @@ protected:
     void onHostBytes(std::string_view bytes) override;
 
 private:
-    Settings defaults() const;
     int mode() const;
-    StandardStyle style() const;
-    // Sentences of one output address for the current epoch ("GGA", "PNVGBSS", "BSS", ...).
+    // Output (nvs_sim_output.cpp): the sentences of one address for the current epoch ("GGA",
+    // "PNVGBSS", "BSS", ...), in the style PNVGNME sets.
     std::vector<std::string> sentencesOf(std::string_view address, const SkySnapshot &snap);
-    std::string timeField() const;
-    std::string proprietary(std::string_view body) const;
+    StandardStyle style() const;
+    std::optional<TimeOfDay> now() const; // the epoch's UTC at PNVGNME's time decimals
+    // The address an output-list entry or a query names ("RMC"; "BSS" or "PNVGBSS" → "PNVGBSS"),
+    // empty when the receiver sends no such sentence.
+    std::string canonical(std::string_view address) const;
+    // The port a command names (0 or none: the host's), nullopt when there is no such port.
+    static std::optional<int> portOf(std::optional<int> port);
+    std::vector<nvs::RzbEntry> outputList(int port) const;
+    std::vector<nvs::Station> stations() const;
+    // The reply that reports the settings written together with `key` (PNVGNME, PNVGPPS, ...).
+    std::string reportOf(std::string_view key) const;
 
     void handleRtk(const Sentence &s, const nvs::Rtk &m);
     void handleRzb(const nvs::Rzb &m);
@@ -81,7 +72,7 @@ private:
     void handlePps(const Sentence &s, const nvs::Pps &m);
     void handleIdl(const Sentence &s, const nvs::Idl &m);
 
-    Settings current_, saved_;
+    SettingsStore store_;
     std::int64_t epochIndex_ = 0;
     bool sendTestResults_ = true;
     // Base station link (RTK rover).

@@ -188,21 +188,26 @@ private slots:
         if (dialect == "nvs") {
             const auto *rx = static_cast<sim::NvsReceiver *>(rig.sim.receiver());
             const auto &s = rx->settings();
-            QCOMPARE(rx->rtkValue("MODE"), std::string("4"));
-            QCOMPARE(rx->rtkValue("ELGLO"), std::string("11"));
-            QCOMPARE(s.timeDecimals, 3);
-            QCOMPARE(s.positionDecimals, 8);
-            QCOMPARE(s.talkerMode, 1);
-            QCOMPARE(s.ports.at(1).baud, 57600);
-            QCOMPARE(s.ports.at(2).baud, 38400);
-            QCOMPARE(s.ports.at(2).protocol, 7);
-            QCOMPARE(s.ports.at(3).protocol, 0);
-            QCOMPARE(int(s.ports.at(2).output.size()), 1);
-            QCOMPARE(int(s.ports.at(3).output.size()), 2);
-            QCOMPARE(s.ppsType, 'A');
-            QCOMPARE(s.ppsCableDelay, 120);
-            QCOMPARE(s.idlMode, 1);
-            QCOMPARE(int(s.stations.size()), 2);
+            // Items of a list setting ("RMC:1;GSV:5").
+            const auto items = [&](const char *key) {
+                const std::string &v = s.value(key);
+                return v.empty() ? 0 : int(std::count(v.begin(), v.end(), ';')) + 1;
+            };
+            QCOMPARE(s.value("rtk.MODE"), std::string("4"));
+            QCOMPARE(s.value("rtk.ELGLO"), std::string("11"));
+            QCOMPARE(s.integer("nmea.time_decimals"), 3LL);
+            QCOMPARE(s.integer("nmea.position_decimals"), 8LL);
+            QCOMPARE(s.integer("nmea.talker_mode"), 1LL);
+            QCOMPARE(s.integer("port.COM1.baud"), 57600LL);
+            QCOMPARE(s.integer("port.COM2.baud"), 38400LL);
+            QCOMPARE(s.integer("port.COM2.protocol"), 7LL);
+            QCOMPARE(s.integer("port.USB.protocol"), 0LL);
+            QCOMPARE(items("output.COM2"), 1);
+            QCOMPARE(items("output.USB"), 2);
+            QCOMPARE(s.value("pps.type"), std::string("A"));
+            QCOMPARE(s.integer("pps.cable_delay"), 120LL);
+            QCOMPARE(s.integer("idl.mode"), 1LL);
+            QCOMPARE(items("idl.stations"), 2);
             QCOMPARE(rig.sim.baud(), 57600); // the link followed COM1's new speed
         } else if (dialect == "geostar") {
             const auto *rx = static_cast<sim::GeoStarReceiver *>(rig.sim.receiver());
@@ -349,8 +354,10 @@ private slots:
                              .integer("nav.ELEV"),
                      7LL);
         if (dialect == "nvs")
-            QCOMPARE(static_cast<sim::NvsReceiver *>(rig.sim.receiver())->settings().timeDecimals,
-                     1);
+            QCOMPARE(static_cast<sim::NvsReceiver *>(rig.sim.receiver())
+                             ->settings()
+                             .integer("nmea.time_decimals"),
+                     1LL);
     }
 
     void saveToFlashSurvivesAPowerCycle_data() {

@@ -121,8 +121,8 @@ private slots:
         const auto r = waitFor(rig.engine, [&] { view.applyEdits(); });
         QVERIFY2(r.ok(), describe(r));
         const auto *rx = static_cast<sim::NvsReceiver *>(rig.sim.receiver());
-        QCOMPARE(rx->rtkValue("ELGPS"), std::string("12"));
-        QCOMPARE(rx->settings().ppsReference, 'G');
+        QCOMPARE(rx->settings().value("rtk.ELGPS"), std::string("12"));
+        QCOMPARE(rx->settings().value("pps.reference"), std::string("G"));
         QVERIFY(view.edits().empty());
         QVERIFY(!view.editor("rtk.ELGPS")->property("edited").toBool());
         auto *outcomes = view.findChild<QTreeWidget *>("settingOutcomes");

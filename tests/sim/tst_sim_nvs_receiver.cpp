@@ -8,8 +8,11 @@
 #include "core/sentence.h"
 #include "core/sentence_builder.h"
 #include "nvs/nvs_dialect.h"
+#include "nvs/nvs_encoders.h"
 
 #include <QTest>
+
+#include <set>
 
 using namespace gnss;
 using namespace gnss::sim;
@@ -51,6 +54,55 @@ ReplyVerdict verdict(const std::string &body, const std::string &output) {
         if (v == ReplyVerdict::Accepted || v == ReplyVerdict::Refused) return v;
     }
     return v;
+}
+
+// The dialect's encoder of a proprietary sentence the receiver sends, applied to its decoding
+// (PNVGTMC at the default position decimals, 4.2); nullopt when the address has none.
+std::optional<std::string> reencoded(const std::string &line) {
+    static const DialectRegistry registry = makeBuiltinRegistry();
+    DecoderOptions o;
+    o.dialect = "nvs";
+    StreamDecoder dec(registry, o);
+    std::optional<std::string> out;
+    dec.decodeLine(line, [&](const SentenceEvent &ev) {
+        if (!ev.message) return;
+        const Message &m = *ev.message;
+        EncodeResult r;
+        if (const auto *x = message_cast<nvs::Ver>(m))
+            r = nvs::encodeVer(*x);
+        else if (const auto *x = message_cast<nvs::Bss>(m))
+            r = nvs::encodeBss(*x);
+        else if (const auto *x = message_cast<nvs::Tst>(m))
+            r = nvs::encodeTst(*x);
+        else if (const auto *x = message_cast<nvs::Imu>(m))
+            r = nvs::encodeImu(*x);
+        else if (const auto *x = message_cast<nvs::Brs>(m))
+            r = nvs::encodeBrs(*x);
+        else if (const auto *x = message_cast<nvs::Bls>(m))
+            r = nvs::encodeBls(*x);
+        else if (const auto *x = message_cast<nvs::Vog>(m))
+            r = nvs::encodeVog(*x);
+        else if (const auto *x = message_cast<nvs::Idl>(m))
+            r = nvs::encodeIdl(*x);
+        else if (const auto *x = message_cast<nvs::Tme>(m))
+            r = nvs::encodeTme(*x);
+        else if (const auto *x = message_cast<nvs::Tmu>(m))
+            r = nvs::encodeTmu(*x);
+        else if (const auto *x = message_cast<nvs::Tmc>(m))
+            r = nvs::encodeTmc(*x, 7);
+        else if (const auto *x = message_cast<nvs::Sdp>(m))
+            r = nvs::encodeSdp(*x);
+        else if (const auto *x = message_cast<nvs::Sdv>(m))
+            r = nvs::encodeSdv(*x);
+        else if (const auto *x = message_cast<nvs::Sdh>(m))
+            r = nvs::encodeSdh(*x);
+        else if (const auto *x = message_cast<nvs::Dop>(m))
+            r = nvs::encodeDop(*x);
+        else
+            return;
+        out = r.ok() ? r.sentences.front() : "refused: " + r.error;
+    });
+    return out;
 }
 
 int ggaQualityOfLast(const std::string &out) {
@@ -175,7 +227,7 @@ private slots:
         QCOMPARE(int(verdict("PNVGRTK,PVTRATE,1", reply)), int(ReplyVerdict::Accepted));
         rx->advance(10.0);
         QCOMPARE(summarize(rx->takeOutput(), "nvs").byType.at("GGA"), 10);
-        QCOMPARE(static_cast<NvsReceiver &>(*rx).rtkValue("PVTRATE"), std::string("1"));
+        QCOMPARE(static_cast<NvsReceiver &>(*rx).settings().value("rtk.PVTRATE"), std::string("1"));
     }
     void outOfRangeValuesAreNotTakenAndTheReplySaysSo_data() {
         QTest::addColumn<QString>("body");
@@ -336,6 +388,57 @@ private slots:
         const auto s = summarize(rx->takeOutput(), "nvs");
         QCOMPARE(s.all("PNVGRTK").size(), std::size_t(1));
         QVERIFY(s.all("PNVGVER").empty());
+    }
+    // What it sends of its own comes from the dialect's encoders: each proprietary sentence,
+    // decoded and encoded again, is the same bytes.
+    void everyProprietarySentenceIsItsEncodersOwn() {
+        auto rx = makeNvs(3);
+        command(*rx, "PNVGRZB,BSS,1,TST,5,IMU,1,BRS,1,BLS,1,VOG,1,SDP,1,SDV,1,SDH,1,DOP,1,TME,1,"
+                     "TMU,1,TMC,1");
+        command(*rx, "PNVGIDL,ADD,0043,0.072");
+        command(*rx, "PNVGIDL,SHOW");
+        command(*rx, "PNVGVER");
+        rx->advance(3); // not yet fixed: the fields of a solution not valid
+        command(*rx, "PNVGRTK,MODE,4");
+        rx->advance(25); // RTK fixed with heading
+        command(*rx, "PNVGIDL,REMOVE,0043");
+        command(*rx, "PNVGIDL,REMOVE,0043");
+        command(*rx, "PNVGIDL,SHOW");
+        rx->advance(1);
+        std::set<std::string> seen;
+        for (const auto &l : summarize(rx->takeOutput(), "nvs").lines) {
+            const auto again = reencoded(l.line);
+            if (!again) continue;
+            seen.insert(l.address);
+            QCOMPARE(QString::fromStdString(*again), QString::fromStdString(l.line));
+        }
+        QCOMPARE(int(seen.size()), 15); // every output sentence of the receiver
+    }
+    // Its settings are the schema's keys: commands land there, PNVGCFG,W copies them to flash.
+    void commandsLandInTheSettingsUnderTheSchemasKeys() {
+        auto rx = makeNvs();
+        const auto &settings = static_cast<NvsReceiver &>(*rx).settings();
+        for (const SettingDef &def : nvs::dialect().settings)
+            if (!def.defaultValue.empty())
+                QCOMPARE(settings.value(def.key), std::string(def.defaultValue));
+        QVERIFY(!settings.value("rtk.BASEXYZ").empty()); // the simulated base's position
+        QCOMPARE(settings.value("output.COM1"),
+                 std::string("GGA:1;GSA:1;GSV:5;RMC:1;VTG:1;ZDA:5;PNVGBSS:5"));
+        command(*rx, "PNVGNME,3,5,1");
+        command(*rx, "PNVGPPS,,,G,,,,");
+        command(*rx, "PNVGRZB,PORT,2,RMC,1,BSS,5");
+        command(*rx, "PNVGRZA,3,9600,7");
+        command(*rx, "PNVGIDL,ADD,0043,0.072");
+        QCOMPARE(settings.value("nmea.position_decimals"), std::string("5"));
+        QCOMPARE(settings.value("pps.reference"), std::string("G"));
+        QCOMPARE(settings.value("output.COM2"), std::string("RMC:1;PNVGBSS:5"));
+        QCOMPARE(settings.value("port.USB.baud"), std::string("9600"));
+        QCOMPARE(settings.value("port.USB.protocol"), std::string("7"));
+        QCOMPARE(settings.value("idl.stations"), std::string("43:0.0720"));
+        QCOMPARE(settings.saved().at("pps.reference"), std::string("U"));
+        command(*rx, "PNVGCFG,W");
+        QCOMPARE(settings.saved().at("pps.reference"), std::string("G"));
+        QCOMPARE(settings.saved().at("idl.stations"), std::string("43:0.0720"));
     }
     void sameSeedSameOutput() {
         auto a = makeNvs(5), b = makeNvs(5);
