@@ -1,0 +1,9 @@
+// gnss-cli with the test-only ACME family registered beside the built-in ones (acme_registry.h):
+// the same program as gnss-cli but for that one line.
+#include "acme_registry.h"
+#include "command_table.h"
+
+int main(int argc, char **argv) {
+    const gnss::DialectRegistry registry = gnss::acme::registryWithAcme();
+    return gnss::cli::runCli(registry, "test", argc, argv);
+}
