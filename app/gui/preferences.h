@@ -2,7 +2,7 @@
 // The user's preferences: language, theme, display units, coordinate format, time zone and the
 // baud rates "auto" tries. Stored with QSettings; the Preferences dialog edits them and the main
 // window applies them to every view.
-#include "views/value_format.h"
+#include "models/value_format.h"
 
 #include <QList>
 #include <QString>

@@ -4,7 +4,7 @@
 // column's fix type), so a day at 10 Hz draws as fast as a minute. Wheel zooms about the mouse,
 // dragging pans, a click moves the cursor, a double click shows the whole log again.
 #include "log_cursor.h"
-#include "views/value_format.h"
+#include "models/value_format.h"
 
 #include <QImage>
 #include <QWidget>

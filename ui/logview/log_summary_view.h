@@ -4,7 +4,7 @@
 // position spread (CEP50, CEP95, 2DRMS about the mean) and the worst HDOP. Computed from the
 // index alone, so it follows a range being dragged.
 #include "log_cursor.h"
-#include "views/value_format.h"
+#include "models/value_format.h"
 
 #include <QWidget>
 

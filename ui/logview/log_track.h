@@ -5,7 +5,7 @@
 // the nearest epoch, a double click fits the whole track. The dots are drawn once into an image
 // and only redrawn when the view or the log changes, so the cursor moves cheaply.
 #include "log_cursor.h"
-#include "views/value_format.h"
+#include "models/value_format.h"
 
 #include <QImage>
 #include <QWidget>

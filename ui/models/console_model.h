@@ -2,7 +2,7 @@
 // ConsoleModel: the lines received and sent, newest last, bounded. Lines arrive per sentence but
 // are handed to views in batches (flush() on the session's timer), so a 20 Hz receiver does not
 // repaint the console twenty times a second per line.
-#include "views/value_format.h"
+#include "models/value_format.h"
 
 #include <QAbstractListModel>
 #include <QByteArray>

@@ -2,7 +2,7 @@
 // MessageStatsModel: per address count, rate, last seen and errors. Refreshed from the decoder's
 // own counters on a timer, so counting costs nothing per sentence.
 #include "core/stream_decoder.h"
-#include "views/value_format.h"
+#include "models/value_format.h"
 
 #include <QAbstractTableModel>
 #include <vector>

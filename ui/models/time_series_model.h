@@ -3,8 +3,8 @@
 // type, mean SNR per constellation, standard deviations, baseline length, altitude, speed), one
 // sample per navigation epoch, trimmed to a rolling window. Fed from ReceiverStateModel::updated;
 // the chart reads it on its own timer, so the per-epoch cost is a few appends.
+#include "models/value_format.h"
 #include "state/receiver_state.h"
-#include "views/value_format.h"
 
 #include <QDateTime>
 #include <QObject>

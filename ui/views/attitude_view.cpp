@@ -2,7 +2,7 @@
 #include "models/refresh_intervals.h"
 
 #include "models/receiver_state_model.h"
-#include "value_format.h"
+#include "models/value_format.h"
 
 #include <QGridLayout>
 #include <QGroupBox>

@@ -2,7 +2,7 @@
 // AttitudeView: roll/pitch/yaw and accelerations (NVS PNVGIMU and the like, through
 // ReceiverState::attitude) and a table of time-mark events, newest first. Refreshes on a 10 Hz
 // timer when a new epoch has arrived; the table is rebuilt only when the events changed.
-#include "value_format.h"
+#include "models/value_format.h"
 
 #include <QWidget>
 

@@ -1,7 +1,7 @@
 #include "charts_view.h"
 #include "models/refresh_intervals.h"
 
-#include "style/chart_palette.h"
+#include "views/chart_palette.h"
 
 #include "models/receiver_state_model.h"
 #include "style/gnss_style.h"

@@ -1,9 +1,9 @@
 #include "corrections_view.h"
 
 #include "models/receiver_state_model.h"
-#include "style/chart_palette.h"
+#include "models/value_format.h"
 #include "style/gnss_style.h"
-#include "value_format.h"
+#include "views/chart_palette.h"
 
 #include "correction_forwarder.h"
 #include "corrections_monitor.h"

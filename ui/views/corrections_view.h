@@ -9,7 +9,7 @@
 //
 // The view starts nothing itself: it asks (startRequested/stopRequested) and whoever owns the
 // source (the application's CorrectionsController) answers with setStatus().
-#include "value_format.h"
+#include "models/value_format.h"
 
 #include <QString>
 #include <QWidget>

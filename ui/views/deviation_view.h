@@ -4,7 +4,7 @@
 // figures, autoscaled axes and a scale bar. The statistics live in PositionScatter; this widget
 // collects one position per epoch and repaints on a 10 Hz timer when something changed.
 #include "models/position_scatter.h"
-#include "value_format.h"
+#include "models/value_format.h"
 
 #include <QWidget>
 

@@ -2,8 +2,8 @@
 #include "models/refresh_intervals.h"
 
 #include "models/receiver_state_model.h"
+#include "models/value_format.h"
 #include "style/gnss_style.h"
-#include "value_format.h"
 
 #include <QComboBox>
 #include <QGridLayout>

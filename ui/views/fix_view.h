@@ -2,7 +2,7 @@
 // FixView: the fix at a glance — badge, position (degrees, degrees and minutes, or DMS), heights
 // above sea level and ellipsoid, satellites, DOPs, time, speed and course, corrections, in the
 // user's units and time zone. Refreshed on a timer.
-#include "value_format.h"
+#include "models/value_format.h"
 
 #include <QTimer>
 #include <QWidget>

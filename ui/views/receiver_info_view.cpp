@@ -3,7 +3,7 @@
 #include "style/gnss_style.h"
 
 #include "models/receiver_state_model.h"
-#include "value_format.h"
+#include "models/value_format.h"
 
 #include <QCoreApplication>
 #include <QHeaderView>

@@ -3,7 +3,7 @@
 // baseline, heading and antenna baseline, standard deviations, receiver DOPs, and a correction
 // age watchdog that turns red past a threshold. Reads ReceiverState::rtk through the model,
 // refreshes on a 10 Hz timer when a new epoch has arrived, never per update.
-#include "value_format.h"
+#include "models/value_format.h"
 
 #include <QWidget>
 
