@@ -65,6 +65,14 @@ QString integer(const std::optional<int> &v, const QString &unit) {
     return unit.isEmpty() ? QString::number(*v) : QString::number(*v) + ' ' + unit;
 }
 
+QString count(const std::optional<std::int64_t> &v) {
+    return v ? QString::number(*v) : dash();
+}
+
+QString angle(const std::optional<double> &degrees, int decimals) {
+    return degrees ? number(degrees, decimals) + QChar(0x00B0) : dash();
+}
+
 namespace {
 
 // Rounds `x` to `decimals` and carries what would show as 60 into the next unit up.

@@ -3,6 +3,7 @@
 // receiver has not sent, hemispheres instead of signs, units always said, and the user's
 // display preferences (units, coordinate format, time zone) applied in one place.
 #include <QString>
+#include <cstdint>
 #include <optional>
 
 namespace gnss {
@@ -47,6 +48,10 @@ namespace fmt {
 QString dash();
 QString number(const std::optional<double> &v, int decimals, const QString &unit = {});
 QString integer(const std::optional<int> &v, const QString &unit = {});
+// A counter, which can pass an int's range.
+QString count(const std::optional<std::int64_t> &v);
+// An angle in degrees, "40.61°": no space before the degree sign.
+QString angle(const std::optional<double> &degrees, int decimals);
 // 55.84338247° N  |  55° 50.602948′ N  |  55° 50′ 36.1769″ N
 QString latitude(const std::optional<double> &deg, CoordinateFormat f = CoordinateFormat::Degrees);
 QString longitude(const std::optional<double> &deg, CoordinateFormat f = CoordinateFormat::Degrees);

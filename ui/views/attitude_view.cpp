@@ -3,6 +3,7 @@
 
 #include "models/receiver_state_model.h"
 #include "models/value_format.h"
+#include "views/value_grid.h"
 
 #include <QGridLayout>
 #include <QGroupBox>
@@ -17,40 +18,23 @@
 
 namespace gnss::ui {
 
-namespace {
-
-// Angles read "40.61°", no space before the degree sign.
-QString degrees(const std::optional<double> &v, int decimals) {
-    return v ? fmt::number(v, decimals) + QChar(0x00B0) : fmt::dash();
-}
-
-// Counters can pass an int's range; "—" when not sent.
-QString count(const std::optional<std::int64_t> &v) {
-    return v ? QString::number(*v) : fmt::dash();
-}
-
-} // namespace
-
 AttitudeView::AttitudeView(ReceiverStateModel *model, QWidget *parent)
     : QWidget(parent), model_(model), timer_(new QTimer(this)) {
     auto *outer = new QVBoxLayout(this);
     auto *top = new QHBoxLayout;
 
-    auto *att = new QGroupBox(tr("Attitude"));
-    auto *g = new QGridLayout(att);
-    g->setColumnStretch(1, 1);
-    roll_ = addRow(g, tr("Roll"), "attitudeRoll");
-    pitch_ = addRow(g, tr("Pitch"), "attitudePitch");
-    yaw_ = addRow(g, tr("Yaw"), "attitudeYaw");
-    time_ = addRow(g, tr("Time"), "attitudeTime");
+    QGridLayout *g = nullptr;
+    auto *att = valueGroup(tr("Attitude"), g);
+    roll_ = addValueRow(g, tr("Roll"), "attitudeRoll");
+    pitch_ = addValueRow(g, tr("Pitch"), "attitudePitch");
+    yaw_ = addValueRow(g, tr("Yaw"), "attitudeYaw");
+    time_ = addValueRow(g, tr("Time"), "attitudeTime");
     top->addWidget(att, 1);
 
-    auto *acc = new QGroupBox(tr("Acceleration"));
-    g = new QGridLayout(acc);
-    g->setColumnStretch(1, 1);
-    accNorth_ = addRow(g, tr("North"), "attitudeAccNorth");
-    accEast_ = addRow(g, tr("East"), "attitudeAccEast");
-    accDown_ = addRow(g, tr("Down"), "attitudeAccDown");
+    auto *acc = valueGroup(tr("Acceleration"), g);
+    accNorth_ = addValueRow(g, tr("North"), "attitudeAccNorth");
+    accEast_ = addValueRow(g, tr("East"), "attitudeAccEast");
+    accDown_ = addValueRow(g, tr("Down"), "attitudeAccDown");
     g->setRowStretch(g->rowCount(), 1);
     top->addWidget(acc, 1);
     outer->addLayout(top);
@@ -79,17 +63,6 @@ AttitudeView::AttitudeView(ReceiverStateModel *model, QWidget *parent)
     refresh();
 }
 
-QLabel *AttitudeView::addRow(QGridLayout *grid, const QString &name, const char *objectName) {
-    const int row = grid->rowCount();
-    grid->addWidget(new QLabel(name + QLatin1Char(':')), row, 0);
-    auto *value = new QLabel(fmt::dash());
-    value->setObjectName(QString::fromLatin1(objectName));
-    value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    value->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    grid->addWidget(value, row, 1);
-    return value;
-}
-
 void AttitudeView::poll() {
     if (model_->epochCount() != shownEpochs_) refresh();
 }
@@ -113,9 +86,9 @@ void AttitudeView::refresh() {
     const ReceiverState &st = model_->state();
     const AttitudeState &a = st.attitude;
     const QString acc = tr("m/s\u00B2");
-    roll_->setText(degrees(a.roll, 2));
-    pitch_->setText(degrees(a.pitch, 2));
-    yaw_->setText(degrees(a.yaw, 2));
+    roll_->setText(fmt::angle(a.roll, 2));
+    pitch_->setText(fmt::angle(a.pitch, 2));
+    yaw_->setText(fmt::angle(a.yaw, 2));
     time_->setText(fmt::time(st.epoch.date, a.time, prefs_.time));
     accNorth_->setText(fmt::number(a.accNorth, 3, acc));
     accEast_->setText(fmt::number(a.accEast, 3, acc));
@@ -138,7 +111,7 @@ void AttitudeView::refresh() {
     marks_->setRowCount(rows);
     for (int row = 0; row < rows; ++row) {
         const TimeMarkEvent &e = tm[tm.size() - 1 - static_cast<std::size_t>(row)]; // newest first
-        const QString cells[ColumnCount] = {count(e.counter),
+        const QString cells[ColumnCount] = {fmt::count(e.counter),
                                             fmt::number(e.towSeconds, 6),
                                             fmt::time(std::nullopt, e.utc, prefs_.time, false),
                                             fmt::latitude(e.lat, prefs_.coordinates),

@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <optional>
 
-class QGridLayout;
 class QLabel;
 class QTableWidget;
 class QTimer;
@@ -36,7 +35,6 @@ public slots:
 private:
     void setHeaders();
     DisplayPrefs prefs_;
-    QLabel *addRow(QGridLayout *grid, const QString &name, const char *objectName);
     void poll();
 
     ReceiverStateModel *model_;

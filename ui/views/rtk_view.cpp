@@ -4,6 +4,7 @@
 #include "models/receiver_state_model.h"
 #include "models/value_format.h"
 #include "style/gnss_style.h"
+#include "views/value_grid.h"
 
 #include <QDoubleSpinBox>
 #include <QGridLayout>
@@ -19,21 +20,26 @@ namespace gnss::ui {
 
 namespace {
 
-// Angles read "40.61°", no space before the degree sign.
-QString degrees(const std::optional<double> &v, int decimals) {
-    return v ? fmt::number(v, decimals) + QChar(0x00B0) : fmt::dash();
+// A value of the panel written from the RTK state, in the user's units.
+using RtkText = QString (*)(const RtkState &, UnitSystem);
+
+struct RtkRow {
+    const char *name;       // QT_TR_NOOP, in the panel's context
+    const char *objectName; // of the value's label
+    RtkText text;
+};
+
+struct RtkGroup {
+    const char *title; // QT_TR_NOOP
+    std::vector<RtkRow> rows;
+};
+
+QString metres(const std::optional<double> &v, UnitSystem u) {
+    return fmt::length(v, 3, u);
 }
 
-// Counters can pass an int's range; "—" when not sent.
-QString count(const std::optional<std::int64_t> &v) {
-    return v ? QString::number(*v) : fmt::dash();
-}
-
-QGroupBox *box(const QString &title, QGridLayout **grid) {
-    auto *g = new QGroupBox(title);
-    *grid = new QGridLayout(g);
-    (*grid)->setColumnStretch(1, 1);
-    return g;
+QString speed(const std::optional<double> &v, UnitSystem u) {
+    return v ? fmt::number(*v * fmt::speedFactor(u), 3, fmt::speedUnit(u)) : fmt::dash();
 }
 
 } // namespace
@@ -82,55 +88,79 @@ RtkView::RtkView(ReceiverStateModel *model, QWidget *parent)
     top->addWidget(threshold_);
     pageLayout->addLayout(top);
 
+    // The groups, three to a row, each a grid of "name: value" rows, and how each value is
+    // written from the RTK state (S) in the user's units (U).
+    using S = const RtkState &;
+    using U = UnitSystem;
+    const RtkGroup groups[] = {
+            {QT_TR_NOOP("Base station"),
+             {{QT_TR_NOOP("Correction age"), "rtkCorrectionAge",
+               [](S r, U) { return fmt::number(r.correctionAge, 1, tr("s")); }},
+              {QT_TR_NOOP("Distance to base"), "rtkBaseDistance",
+               [](S r, U u) { return metres(r.baseDistance, u); }},
+              {QT_TR_NOOP("Base station id"), "rtkBaseId",
+               [](S r, U) { return fmt::integer(r.baseStationId); }},
+              {QT_TR_NOOP("RTCM messages"), "rtkRtcmTotal",
+               [](S r, U) { return fmt::count(r.rtcmTotal); }},
+              {QT_TR_NOOP("RTCM good"), "rtkRtcmOk", [](S r, U) { return fmt::count(r.rtcmOk); }},
+              {QT_TR_NOOP("RTCM errors"), "rtkRtcmErrors",
+               [](S r, U) { return fmt::count(r.rtcmErrors); }}}},
+            {QT_TR_NOOP("Baseline base \u2192 rover"),
+             {{QT_TR_NOOP("North"), "rtkBaselineNorth",
+               [](S r, U u) { return metres(r.baseToRover.north, u); }},
+              {QT_TR_NOOP("East"), "rtkBaselineEast",
+               [](S r, U u) { return metres(r.baseToRover.east, u); }},
+              {QT_TR_NOOP("Vertical"), "rtkBaselineVertical",
+               [](S r, U u) { return metres(r.baseToRover.vertical, u); }},
+              {QT_TR_NOOP("Length"), "rtkBaselineLength",
+               [](S r, U u) { return metres(r.baseToRover.length, u); }},
+              {QT_TR_NOOP("Course"), "rtkBaselineCourse",
+               [](S r, U) { return fmt::angle(r.baseToRover.course, 2); }},
+              {QT_TR_NOOP("Pitch"), "rtkBaselinePitch",
+               [](S r, U) { return fmt::angle(r.baseToRover.pitch, 2); }}}},
+            {QT_TR_NOOP("Heading (antenna baseline)"),
+             {{QT_TR_NOOP("Heading"), "rtkHeading",
+               [](S r, U) { return fmt::angle(r.heading ? r.heading : r.antennas.course, 2); }},
+              {QT_TR_NOOP("Pitch"), "rtkAntennaPitch",
+               [](S r, U) { return fmt::angle(r.antennas.pitch, 2); }},
+              {QT_TR_NOOP("Length"), "rtkAntennaLength",
+               [](S r, U u) { return metres(r.antennas.length, u); }},
+              {QT_TR_NOOP("North"), "rtkAntennaNorth",
+               [](S r, U u) { return metres(r.antennas.north, u); }},
+              {QT_TR_NOOP("East"), "rtkAntennaEast",
+               [](S r, U u) { return metres(r.antennas.east, u); }},
+              {QT_TR_NOOP("Vertical"), "rtkAntennaVertical",
+               [](S r, U u) { return metres(r.antennas.vertical, u); }}}},
+            {QT_TR_NOOP("Standard deviations"),
+             {{QT_TR_NOOP("Latitude"), "rtkSdLat", [](S r, U u) { return metres(r.sdLat, u); }},
+              {QT_TR_NOOP("Longitude"), "rtkSdLon", [](S r, U u) { return metres(r.sdLon, u); }},
+              {QT_TR_NOOP("Height"), "rtkSdHeight", [](S r, U u) { return metres(r.sdHeight, u); }},
+              {QT_TR_NOOP("Velocity north"), "rtkSdVelNorth",
+               [](S r, U u) { return speed(r.sdVelNorth, u); }},
+              {QT_TR_NOOP("Velocity east"), "rtkSdVelEast",
+               [](S r, U u) { return speed(r.sdVelEast, u); }},
+              {QT_TR_NOOP("Velocity up"), "rtkSdVelUp",
+               [](S r, U u) { return speed(r.sdVelUp, u); }},
+              {QT_TR_NOOP("Heading"), "rtkSdHeading",
+               [](S r, U) { return fmt::angle(r.sdHeading, 3); }}}},
+            {QT_TR_NOOP("Receiver DOPs"),
+             {{QT_TR_NOOP("GDOP"), "rtkGdop", [](S r, U) { return fmt::number(r.gdop, 2); }},
+              {QT_TR_NOOP("PDOP"), "rtkPdop", [](S r, U) { return fmt::number(r.pdop, 2); }},
+              {QT_TR_NOOP("HDOP"), "rtkHdop", [](S r, U) { return fmt::number(r.hdop, 2); }},
+              {QT_TR_NOOP("VDOP"), "rtkVdop", [](S r, U) { return fmt::number(r.vdop, 2); }},
+              {QT_TR_NOOP("TDOP"), "rtkTdop", [](S r, U) { return fmt::number(r.tdop, 2); }},
+              {QT_TR_NOOP("NDOP"), "rtkNdop", [](S r, U) { return fmt::number(r.ndop, 2); }},
+              {QT_TR_NOOP("EDOP"), "rtkEdop", [](S r, U) { return fmt::number(r.edop, 2); }}}},
+    };
     auto *cols = new QGridLayout;
-    QGridLayout *g = nullptr;
-
-    auto *base = box(tr("Base station"), &g);
-    correctionAge_ = addRow(g, tr("Correction age"), "rtkCorrectionAge");
-    baseDistance_ = addRow(g, tr("Distance to base"), "rtkBaseDistance");
-    baseId_ = addRow(g, tr("Base station id"), "rtkBaseId");
-    rtcmTotal_ = addRow(g, tr("RTCM messages"), "rtkRtcmTotal");
-    rtcmOk_ = addRow(g, tr("RTCM good"), "rtkRtcmOk");
-    rtcmErrors_ = addRow(g, tr("RTCM errors"), "rtkRtcmErrors");
-    cols->addWidget(base, 0, 0);
-
-    auto *bl = box(tr("Baseline base \u2192 rover"), &g);
-    blNorth_ = addRow(g, tr("North"), "rtkBaselineNorth");
-    blEast_ = addRow(g, tr("East"), "rtkBaselineEast");
-    blVertical_ = addRow(g, tr("Vertical"), "rtkBaselineVertical");
-    blLength_ = addRow(g, tr("Length"), "rtkBaselineLength");
-    blCourse_ = addRow(g, tr("Course"), "rtkBaselineCourse");
-    blPitch_ = addRow(g, tr("Pitch"), "rtkBaselinePitch");
-    cols->addWidget(bl, 0, 1);
-
-    auto *hd = box(tr("Heading (antenna baseline)"), &g);
-    heading_ = addRow(g, tr("Heading"), "rtkHeading");
-    antPitch_ = addRow(g, tr("Pitch"), "rtkAntennaPitch");
-    antLength_ = addRow(g, tr("Length"), "rtkAntennaLength");
-    antNorth_ = addRow(g, tr("North"), "rtkAntennaNorth");
-    antEast_ = addRow(g, tr("East"), "rtkAntennaEast");
-    antVertical_ = addRow(g, tr("Vertical"), "rtkAntennaVertical");
-    cols->addWidget(hd, 0, 2);
-
-    auto *sd = box(tr("Standard deviations"), &g);
-    sdLat_ = addRow(g, tr("Latitude"), "rtkSdLat");
-    sdLon_ = addRow(g, tr("Longitude"), "rtkSdLon");
-    sdHeight_ = addRow(g, tr("Height"), "rtkSdHeight");
-    sdVelNorth_ = addRow(g, tr("Velocity north"), "rtkSdVelNorth");
-    sdVelEast_ = addRow(g, tr("Velocity east"), "rtkSdVelEast");
-    sdVelUp_ = addRow(g, tr("Velocity up"), "rtkSdVelUp");
-    sdHeading_ = addRow(g, tr("Heading"), "rtkSdHeading");
-    cols->addWidget(sd, 1, 0);
-
-    auto *dop = box(tr("Receiver DOPs"), &g);
-    gdop_ = addRow(g, tr("GDOP"), "rtkGdop");
-    pdop_ = addRow(g, tr("PDOP"), "rtkPdop");
-    hdop_ = addRow(g, tr("HDOP"), "rtkHdop");
-    vdop_ = addRow(g, tr("VDOP"), "rtkVdop");
-    tdop_ = addRow(g, tr("TDOP"), "rtkTdop");
-    ndop_ = addRow(g, tr("NDOP"), "rtkNdop");
-    edop_ = addRow(g, tr("EDOP"), "rtkEdop");
-    cols->addWidget(dop, 1, 1);
+    int place = 0;
+    for (const RtkGroup &group : groups) {
+        QGridLayout *grid = nullptr;
+        cols->addWidget(valueGroup(tr(group.title), grid), place / 3, place % 3);
+        ++place;
+        for (const RtkRow &row : group.rows)
+            values_.push_back({addValueRow(grid, tr(row.name), row.objectName), row.text});
+    }
     cols->setRowStretch(2, 1);
     pageLayout->addLayout(cols, 1);
 
@@ -140,23 +170,13 @@ RtkView::RtkView(ReceiverStateModel *model, QWidget *parent)
     scroll->setWidget(page);
     stack_->addWidget(scroll);
     stack_->setCurrentIndex(0);
+    correctionAge_ = findChild<QLabel *>(QStringLiteral("rtkCorrectionAge"));
 
     connect(threshold_, &QDoubleSpinBox::valueChanged, this, [this] { updateWatchdog(age_); });
     timer_->setInterval(kLiveRefreshMs);
     connect(timer_, &QTimer::timeout, this, &RtkView::poll);
     timer_->start();
     refresh();
-}
-
-QLabel *RtkView::addRow(QGridLayout *grid, const QString &name, const char *objectName) {
-    const int row = grid->rowCount();
-    grid->addWidget(new QLabel(name + QLatin1Char(':')), row, 0);
-    auto *value = new QLabel(fmt::dash());
-    value->setObjectName(QString::fromLatin1(objectName));
-    value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    value->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    grid->addWidget(value, row, 1);
-    return value;
 }
 
 double RtkView::correctionAgeThreshold() const {
@@ -212,47 +232,7 @@ void RtkView::refresh() {
         mode_->setPalette(QPalette()); // back to the theme's colours
     }
 
-    const UnitSystem u = prefs_.units;
-    const auto m = [u](const std::optional<double> &v) { return fmt::length(v, 3, u); };
-    const auto ms = [u](const std::optional<double> &v) {
-        return v ? fmt::number(*v * fmt::speedFactor(u), 3, fmt::speedUnit(u)) : fmt::dash();
-    };
-    rtcmTotal_->setText(count(r.rtcmTotal));
-    rtcmOk_->setText(count(r.rtcmOk));
-    rtcmErrors_->setText(count(r.rtcmErrors));
-    baseDistance_->setText(m(r.baseDistance));
-    baseId_->setText(r.baseStationId ? QString::number(*r.baseStationId) : fmt::dash());
-    correctionAge_->setText(fmt::number(r.correctionAge, 1, tr("s")));
-
-    blNorth_->setText(m(r.baseToRover.north));
-    blEast_->setText(m(r.baseToRover.east));
-    blVertical_->setText(m(r.baseToRover.vertical));
-    blLength_->setText(m(r.baseToRover.length));
-    blCourse_->setText(degrees(r.baseToRover.course, 2));
-    blPitch_->setText(degrees(r.baseToRover.pitch, 2));
-
-    heading_->setText(degrees(r.heading ? r.heading : r.antennas.course, 2));
-    antPitch_->setText(degrees(r.antennas.pitch, 2));
-    antLength_->setText(m(r.antennas.length));
-    antNorth_->setText(m(r.antennas.north));
-    antEast_->setText(m(r.antennas.east));
-    antVertical_->setText(m(r.antennas.vertical));
-
-    sdLat_->setText(m(r.sdLat));
-    sdLon_->setText(m(r.sdLon));
-    sdHeight_->setText(m(r.sdHeight));
-    sdVelNorth_->setText(ms(r.sdVelNorth));
-    sdVelEast_->setText(ms(r.sdVelEast));
-    sdVelUp_->setText(ms(r.sdVelUp));
-    sdHeading_->setText(degrees(r.sdHeading, 3));
-
-    gdop_->setText(fmt::number(r.gdop, 2));
-    pdop_->setText(fmt::number(r.pdop, 2));
-    hdop_->setText(fmt::number(r.hdop, 2));
-    vdop_->setText(fmt::number(r.vdop, 2));
-    tdop_->setText(fmt::number(r.tdop, 2));
-    ndop_->setText(fmt::number(r.ndop, 2));
-    edop_->setText(fmt::number(r.edop, 2));
+    for (const Value &value : values_) value.label->setText(value.text(r, prefs_.units));
 
     updateWatchdog(r.correctionAge);
 }

@@ -8,12 +8,16 @@
 #include <QWidget>
 
 #include <optional>
+#include <vector>
 
 class QDoubleSpinBox;
 class QLabel;
-class QGridLayout;
 class QStackedWidget;
 class QTimer;
+
+namespace gnss {
+struct RtkState;
+}
 
 namespace gnss::ui {
 
@@ -47,7 +51,6 @@ signals:
 
 private:
     DisplayPrefs prefs_;
-    QLabel *addRow(QGridLayout *grid, const QString &name, const char *objectName);
     void updateWatchdog(std::optional<double> age);
     void poll();
 
@@ -61,11 +64,13 @@ private:
     QStackedWidget *stack_;
     QDoubleSpinBox *threshold_;
     QLabel *mode_, *watchdog_;
-    QLabel *rtcmTotal_, *rtcmErrors_, *rtcmOk_, *baseDistance_, *baseId_, *correctionAge_;
-    QLabel *blNorth_, *blEast_, *blVertical_, *blLength_, *blCourse_, *blPitch_;
-    QLabel *heading_, *antNorth_, *antEast_, *antVertical_, *antLength_, *antPitch_;
-    QLabel *sdLat_, *sdLon_, *sdHeight_, *sdVelNorth_, *sdVelEast_, *sdVelUp_, *sdHeading_;
-    QLabel *gdop_, *pdop_, *hdop_, *vdop_, *tdop_, *ndop_, *edop_;
+    QLabel *correctionAge_; // also the watchdog's
+    // Every value label of the groups and how its text is written from the RTK state.
+    struct Value {
+        QLabel *label;
+        QString (*text)(const RtkState &, UnitSystem);
+    };
+    std::vector<Value> values_;
 };
 
 } // namespace gnss::ui
