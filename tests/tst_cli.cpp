@@ -1,4 +1,6 @@
 // gnss-cli end to end: the real executable on files, its JSON, its exit codes.
+#include "cli_run.h"
+
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -9,30 +11,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+using namespace gnss::test;
+
 namespace {
-
-struct Run {
-    int exitCode = -1;
-    QProcess::ExitStatus status = QProcess::CrashExit;
-    QByteArray out, err;
-};
-
-Run cli(const QStringList &args, const QByteArray &stdinData = {}) {
-    QProcess p;
-    p.start(QStringLiteral(GNSS_CLI_PATH), args);
-    p.waitForStarted();
-    if (!stdinData.isEmpty()) p.write(stdinData);
-    p.closeWriteChannel();
-    p.waitForFinished(120000);
-    return {p.exitCode(), p.exitStatus(), p.readAllStandardOutput(), p.readAllStandardError()};
-}
-
-QList<QJsonObject> jsonLines(const QByteArray &out) {
-    QList<QJsonObject> l;
-    for (const auto &line : out.split('\n'))
-        if (!line.isEmpty()) l << QJsonDocument::fromJson(line).object();
-    return l;
-}
 
 const QByteArray kLog =
         "$GPRMC,153556.00,A,5550.602948,N,03732.239612,E,000.00000,000.0,310518,,,R*4E\r\n"
@@ -48,7 +29,7 @@ class TestCli : public QObject {
     Q_OBJECT
 private slots:
     void decodePrintsOneJsonObjectPerSentence() {
-        const Run r = cli({"decode", "-"}, kLog);
+        const Run r = runCli({"decode", "-"}, kLog);
         QCOMPARE(r.status, QProcess::NormalExit);
         QCOMPARE(r.exitCode, 0);
         const auto lines = jsonLines(r.out);
@@ -64,15 +45,15 @@ private slots:
     }
 
     void lenientDecodesBadChecksumsAndMarksThem() {
-        const auto lines = jsonLines(cli({"decode", "--lenient", "-"}, kLog).out);
+        const auto lines = jsonLines(runCli({"decode", "--lenient", "-"}, kLog).out);
         QCOMPARE(lines[3]["checksum"].toString(), QString("bad"));
         QCOMPARE(lines[3]["data"].toObject()["quality"].toInt(), 0);
     }
 
     void epochsPrintsOneSnapshotPerFix() {
-        const auto lines = jsonLines(cli({"epochs", "-"}, kLog).out);
+        const auto lines = jsonLines(runCli({"epochs", "-"}, kLog).out);
         QCOMPARE(lines.size(), 1); // the no-fix GGA has a bad checksum
-        QCOMPARE(jsonLines(cli({"epochs", "--lenient", "-"}, kLog).out).size(), 2);
+        QCOMPARE(jsonLines(runCli({"epochs", "--lenient", "-"}, kLog).out).size(), 2);
         QCOMPARE(lines[0]["time"].toString(), QString("2018-05-31T15:35:56.000Z"));
         QCOMPARE(lines[0]["fix"].toString(), QString("rtk_fixed"));
         QCOMPARE(lines[0]["sats_used"].toInt(), 15);
@@ -87,7 +68,7 @@ private slots:
         QVERIFY(f.open(QIODevice::WriteOnly));
         f.write(kLog);
         f.close();
-        const Run r = cli({"stats", "--json", path});
+        const Run r = runCli({"stats", "--json", path});
         QCOMPARE(r.exitCode, 0);
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
         QCOMPARE(o["sentences"].toInt(), 4);
@@ -95,7 +76,7 @@ private slots:
         QCOMPARE(o["bytes_skipped"].toInt(), 11);
         QCOMPARE(o["epochs"].toInt(), 1);
         QCOMPARE(o["addresses"].toArray().size(), 3);
-        const Run text = cli({"stats", path});
+        const Run text = runCli({"stats", path});
         QVERIFY(text.out.contains("GPGGA"));
         QVERIFY(text.out.contains("MB/s"));
     }
@@ -108,7 +89,7 @@ private slots:
         for (int i = 0; i < 2000; ++i) noise.append(i % 3 ? '$' : char(rng->bounded(256)));
         for (const char *cmd : {"decode", "epochs", "stats"}) {
             for (const char *lenient : {"--dialect=auto", "--lenient"}) {
-                const Run r = cli({cmd, lenient, "-"}, noise);
+                const Run r = runCli({cmd, lenient, "-"}, noise);
                 QCOMPARE(r.status, QProcess::NormalExit);
                 QCOMPARE(r.exitCode, 0);
             }
@@ -137,7 +118,7 @@ private slots:
         if (inputs.isEmpty()) QSKIP("../shared not present");
         for (const QString &in : inputs) {
             for (const char *cmd : {"decode", "epochs", "stats"}) {
-                const Run r = cli({cmd, "--lenient", in});
+                const Run r = runCli({cmd, "--lenient", in});
                 QVERIFY2(r.status == QProcess::NormalExit && r.exitCode == 0,
                          qPrintable(QString("%1 %2: %3").arg(cmd, in, QString::fromUtf8(r.err))));
             }
@@ -145,24 +126,24 @@ private slots:
     }
 
     void renamedPrefixIsUsedOnOutputAndAcceptedOnInput() {
-        Run r = cli({"encode", "nemerix", "--prefix", "PXYZW", "--query", "rate.GGA"});
+        Run r = runCli({"encode", "nemerix", "--prefix", "PXYZW", "--query", "rate.GGA"});
         QCOMPARE(r.exitCode, 0);
         QCOMPARE(r.out.trimmed(), QByteArray("$PXYZW603*69"));
         const auto lines =
-                jsonLines(cli({"decode", "--dialect", "nemerix", "--prefix", "PXYZW", "-"},
-                              "$PXYZW600*xx\r\n")
+                jsonLines(runCli({"decode", "--dialect", "nemerix", "--prefix", "PXYZW", "-"},
+                                 "$PXYZW600*xx\r\n")
                                   .out);
         QCOMPARE(lines.size(), 1);
         QVERIFY(lines[0].contains("data"));
-        QCOMPARE(cli({"encode", "nemerix", "--prefix", "pxyzw", "rate.GGA=1"}).exitCode, 2);
-        QCOMPARE(cli({"encode", "nvs", "--prefix", "PXYZW", "MODE=1"}).exitCode, 2);
+        QCOMPARE(runCli({"encode", "nemerix", "--prefix", "pxyzw", "rate.GGA=1"}).exitCode, 2);
+        QCOMPARE(runCli({"encode", "nvs", "--prefix", "PXYZW", "MODE=1"}).exitCode, 2);
     }
 
     void usageErrorsExitWithTwo() {
-        QCOMPARE(cli({"decode", "--dialect", "garmin", "-"}).exitCode, 2);
-        QCOMPARE(cli({"frobnicate"}).exitCode, 2);
-        QCOMPARE(cli({}).exitCode, 2);
-        QCOMPARE(cli({"decode", "/nonexistent/file"}).exitCode, 1);
+        QCOMPARE(runCli({"decode", "--dialect", "garmin", "-"}).exitCode, 2);
+        QCOMPARE(runCli({"frobnicate"}).exitCode, 2);
+        QCOMPARE(runCli({}).exitCode, 2);
+        QCOMPARE(runCli({"decode", "/nonexistent/file"}).exitCode, 1);
     }
 };
 

@@ -2,6 +2,8 @@
 // program and each gnss-cli command (also `gnss-cli help COMMAND`), --opt=value as well as
 // --opt value, unknown options refused, data on standard output and messages on standard error,
 // and the exit codes: 0 done, 1 failed, 2 usage error, 128 + signal when interrupted.
+#include "cli_run.h"
+
 #include <QDir>
 #include <QFile>
 #include <QProcess>
@@ -14,26 +16,15 @@
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out, err;
-};
+using gnss::test::Run;
 
 Run run(const QString &program, const QStringList &args, const QByteArray &input = {},
         const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment()) {
-    QProcess p;
-    p.setProcessEnvironment(env);
-    p.start(program, args);
-    p.waitForStarted();
-    if (!input.isEmpty()) p.write(input);
-    p.closeWriteChannel();
-    if (!p.waitForFinished(60000)) p.kill();
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
+    return gnss::test::runProgram(program, args, input, 60000, env);
 }
 
 Run cli(const QStringList &args, const QByteArray &input = {}) {
-    return run(QStringLiteral(GNSS_CLI_PATH), args, input);
+    return gnss::test::runCli(args, input, 60000);
 }
 
 QByteArray why(const Run &r) {

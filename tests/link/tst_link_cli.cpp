@@ -2,6 +2,7 @@
 // simulated receiver at a baud it is not told, send reports outcomes (and refuses a malformed
 // sentence before sending anything), record + monitor --replay give back what was received,
 // also after the recorder was killed with SIGKILL.
+#include "cli_run.h"
 #include "sim_process.h"
 
 #include <QFile>
@@ -17,17 +18,10 @@ using gnss::link::test::SimProcess;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out, err;
-};
+using gnss::test::Run;
 
-Run cli(const QStringList &args, int timeoutMs = 30000) {
-    QProcess p;
-    p.start(QStringLiteral(GNSS_CLI_PATH), args);
-    p.waitForFinished(timeoutMs);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
+Run cli(const QStringList &args) {
+    return gnss::test::runCli(args, {}, 30000);
 }
 
 #define REQUIRE_SIM(sim)                                                                           \

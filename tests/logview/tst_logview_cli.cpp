@@ -1,4 +1,5 @@
 // gnss-cli export, summary and play end to end: the real executable on generated logs.
+#include "cli_run.h"
 #include "scenario_log.h"
 
 #include <QFile>
@@ -14,22 +15,7 @@
 #include <termios.h>
 #include <unistd.h>
 
-namespace {
-
-struct Run {
-    int code = -1;
-    QByteArray out, err;
-};
-
-Run cli(const QStringList &args) {
-    QProcess p;
-    p.start(GNSS_CLI_PATH, args);
-    p.waitForFinished(120000);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
-
-} // namespace
+using namespace gnss::test;
 
 class TestLogviewCli : public QObject {
     Q_OBJECT
@@ -67,9 +53,10 @@ private slots:
         QFETCH(int, code);
         const QString out = dir_.filePath("out.txt");
         QFile::remove(out);
-        const Run r = cli(QStringList{"export"} + args +
-                          QStringList{log_, args.contains("--format=kml") ? "--out" : "-o", out});
-        QCOMPARE(r.code, code);
+        const Run r =
+                runCli(QStringList{"export"} + args +
+                       QStringList{log_, args.contains("--format=kml") ? "--out" : "-o", out});
+        QCOMPARE(r.exitCode, code);
         if (code) return;
         QFile f(out);
         QVERIFY(f.open(QIODevice::ReadOnly));
@@ -80,20 +67,20 @@ private slots:
     }
 
     void summaryJson() {
-        const Run r = cli({"summary", "--json", log_});
-        QCOMPARE(r.code, 0);
+        const Run r = runCli({"summary", "--json", log_});
+        QCOMPARE(r.exitCode, 0);
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
         QCOMPARE(o["stats"].toObject()["epochs"].toInt(), 600);
         QCOMPARE(o["stats"].toObject()["gaps"].toInt(), 1);
         QCOMPARE(o["stats"].toObject()["time_to_rtk_fixed_s"].toDouble(), 200.0);
         QVERIFY(o["stationary"].toObject()["position"].toObject()["cep95_m"].toDouble() > 0);
         QCOMPARE(o["events"].toArray().size(), 17);
-        const Run text = cli({"summary", log_});
-        QCOMPARE(text.code, 0);
+        const Run text = runCli({"summary", log_});
+        QCOMPARE(text.exitCode, 0);
         QVERIFY(text.out.contains("RTK fixed 28.3 %"));
         QVERIFY(text.out.contains("time_jump"));
-        QCOMPARE(cli({"summary", dir_.filePath("missing.nmea")}).code, 1);
-        QCOMPARE(cli({"summary"}).code, 2);
+        QCOMPARE(runCli({"summary", dir_.filePath("missing.nmea")}).exitCode, 1);
+        QCOMPARE(runCli({"summary"}).exitCode, 2);
     }
 
     // play --pty: read back from the pseudo-terminal, byte for byte, at 200 times the pace.
@@ -130,8 +117,8 @@ private slots:
     }
 
     void playNeedsOneOutput() {
-        QCOMPARE(cli({"play", log_}).code, 2);
-        QCOMPARE(cli({"play", log_, "--pty", "--speed", "0"}).code, 2);
+        QCOMPARE(runCli({"play", log_}).exitCode, 2);
+        QCOMPARE(runCli({"play", log_, "--pty", "--speed", "0"}).exitCode, 2);
     }
 };
 

@@ -1,5 +1,6 @@
 // The Nemerix dialect through gnss-cli: decode (with the spec's examples, a renamed prefix and
 // the lenient switch), schema nemerix, encode nemerix KEY=VALUE and --query.
+#include "cli_run.h"
 #include "examples_table.h"
 
 #include <QJsonArray>
@@ -8,29 +9,12 @@
 #include <QProcess>
 #include <QTest>
 
+using namespace gnss::test;
+
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out, err;
-};
-
 Run cli(const QStringList &args, const QByteArray &stdinData = {}) {
-    QProcess p;
-    p.start(QStringLiteral(GNSS_CLI_PATH), args);
-    p.waitForStarted();
-    if (!stdinData.isEmpty()) p.write(stdinData);
-    p.closeWriteChannel();
-    p.waitForFinished(60000);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
-
-QList<QJsonObject> jsonLines(const QByteArray &out) {
-    QList<QJsonObject> l;
-    for (const auto &line : out.split('\n'))
-        if (!line.isEmpty()) l << QJsonDocument::fromJson(line).object();
-    return l;
+    return runCli(args, stdinData, 60000);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // gnss-cli rtcm end to end: the built executable on a file made by the encoder and on standard
 // input; JSON lines on stdout, the summary on stderr, exit codes.
+#include "cli_run.h"
 #include "rtcm/rtcm_encoder.h"
 #include "rtcm_test_support.h"
 
@@ -14,31 +15,9 @@
 
 using namespace gnss::rtcm;
 using namespace rtcm_test;
+using namespace gnss::test;
 
 namespace {
-
-struct Run {
-    int exitCode = -1;
-    QProcess::ExitStatus status = QProcess::CrashExit;
-    QByteArray out, err;
-};
-
-Run cli(const QStringList &args, const QByteArray &stdinData = {}) {
-    QProcess p;
-    p.start(QStringLiteral(GNSS_CLI_PATH), args);
-    p.waitForStarted();
-    if (!stdinData.isEmpty()) p.write(stdinData);
-    p.closeWriteChannel();
-    p.waitForFinished(120000);
-    return {p.exitCode(), p.exitStatus(), p.readAllStandardOutput(), p.readAllStandardError()};
-}
-
-QList<QJsonObject> jsonLines(const QByteArray &out) {
-    QList<QJsonObject> l;
-    for (const auto &line : out.split('\n'))
-        if (!line.isEmpty()) l << QJsonDocument::fromJson(line).object();
-    return l;
-}
 
 // A base station's minute: 1005, 1033, 1230, then GPS and GLONASS MSM7 and a GPS ephemeris, with
 // NMEA and a corrupted frame between.
@@ -100,7 +79,7 @@ private slots:
         f.write(baseStationStream());
         f.close();
 
-        const Run r = cli({"rtcm", path});
+        const Run r = runCli({"rtcm", path});
         QCOMPARE(r.status, QProcess::NormalExit);
         QCOMPARE(r.exitCode, 0);
         const auto lines = jsonLines(r.out);
@@ -144,7 +123,7 @@ private slots:
             x = x * 1103515245u + 12345u;
             c = char(x >> 24);
         }
-        const Run r = cli({"rtcm", "-"}, noise + baseStationStream() + noise.left(100));
+        const Run r = runCli({"rtcm", "-"}, noise + baseStationStream() + noise.left(100));
         QCOMPARE(r.status, QProcess::NormalExit);
         QCOMPARE(r.exitCode, 0);
         const QJsonObject summary = QJsonDocument::fromJson(r.err.trimmed()).object();
@@ -155,14 +134,14 @@ private slots:
     }
 
     void rtcmExitCodesSayWhatWentWrong() {
-        Run r = cli({"rtcm", "/nonexistent/base.rtcm3"});
+        Run r = runCli({"rtcm", "/nonexistent/base.rtcm3"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("/nonexistent/base.rtcm3"));
-        r = cli({"rtcm", "a", "b"});
+        r = runCli({"rtcm", "a", "b"});
         QCOMPARE(r.exitCode, 2);
-        r = cli({"rtcm", "--lenient", "-"});
+        r = runCli({"rtcm", "--lenient", "-"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY(cli({"--help"}).out.contains("rtcm [FILE|-]"));
+        QVERIFY(runCli({"--help"}).out.contains("rtcm [FILE|-]"));
     }
 };
 
