@@ -1,5 +1,7 @@
 #include "field_parse.h"
 
+#include "hex_digit.h"
+
 #include <cstdio>
 
 namespace gnss {
@@ -102,15 +104,8 @@ bool parseHex(std::string_view s, std::uint64_t &out) {
     if (s.empty() || s.size() > 16) return false;
     std::uint64_t v = 0;
     for (char c : s) {
-        int d;
-        if (c >= '0' && c <= '9')
-            d = c - '0';
-        else if (c >= 'A' && c <= 'F')
-            d = c - 'A' + 10;
-        else if (c >= 'a' && c <= 'f')
-            d = c - 'a' + 10;
-        else
-            return false;
+        const int d = hexDigitValue(c);
+        if (d < 0) return false;
         v = (v << 4) | static_cast<std::uint64_t>(d);
     }
     out = v;

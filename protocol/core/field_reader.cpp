@@ -4,6 +4,29 @@
 
 namespace gnss {
 
+namespace {
+
+// Field i read by `parse`: nullopt when empty; when `parse` refuses it, `what` is recorded
+// (a phrase marked QT_TRANSLATE_NOOP("Refusal", ...)) and it reads as nullopt too.
+template <class T>
+std::optional<T> parsed(FieldReader &r, std::size_t i, const char *name,
+                        bool (*parse)(std::string_view, T &), const char *what) {
+    const auto t = r.text(i);
+    if (t.empty()) return std::nullopt;
+    T v;
+    if (parse(t, v)) return v;
+    r.fail(i, name, what);
+    return std::nullopt;
+}
+
+bool parseLetter(std::string_view s, char &out) {
+    if (s.size() != 1) return false;
+    out = s.front();
+    return true;
+}
+
+} // namespace
+
 void FieldReader::fail(std::size_t i, const char *name, const char *what) {
     if (!problem_.empty()) return;
     problem_ = refusal(QT_TRANSLATE_NOOP("Refusal", "field %1 (%2): %3: '%4'"),
@@ -22,14 +45,7 @@ bool FieldReader::require(std::size_t n) {
 }
 
 std::optional<std::int64_t> FieldReader::integer64(std::size_t i, const char *name) {
-    auto t = s_.field(i);
-    if (t.empty()) return std::nullopt;
-    std::int64_t v;
-    if (!parseInt(t, v)) {
-        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not an integer"));
-        return std::nullopt;
-    }
-    return v;
+    return parsed(*this, i, name, parseInt, QT_TRANSLATE_NOOP("Refusal", "not an integer"));
 }
 
 std::optional<int> FieldReader::integerSlow(std::size_t i, const char *name) {
@@ -43,24 +59,12 @@ std::optional<int> FieldReader::integerSlow(std::size_t i, const char *name) {
 }
 
 std::optional<std::uint64_t> FieldReader::hex(std::size_t i, const char *name) {
-    auto t = s_.field(i);
-    if (t.empty()) return std::nullopt;
-    std::uint64_t v;
-    if (!parseHex(t, v)) {
-        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not hexadecimal"));
-        return std::nullopt;
-    }
-    return v;
+    return parsed(*this, i, name, parseHex, QT_TRANSLATE_NOOP("Refusal", "not hexadecimal"));
 }
 
 std::optional<char> FieldReader::letter(std::size_t i, const char *name) {
-    auto t = s_.field(i);
-    if (t.empty()) return std::nullopt;
-    if (t.size() != 1) {
-        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "expected one character"));
-        return std::nullopt;
-    }
-    return t.front();
+    return parsed(*this, i, name, parseLetter,
+                  QT_TRANSLATE_NOOP("Refusal", "expected one character"));
 }
 
 std::optional<double> FieldReader::coordinate(std::size_t i, const char *name, int maxDeg, char pos,
@@ -89,25 +93,13 @@ std::optional<double> FieldReader::longitude(std::size_t i, const char *name) {
 }
 
 std::optional<TimeOfDay> FieldReader::time(std::size_t i, const char *name) {
-    auto t = s_.field(i);
-    if (t.empty()) return std::nullopt;
-    TimeOfDay v;
-    if (!parseTimeOfDay(t, v)) {
-        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not an hhmmss.ss time"));
-        return std::nullopt;
-    }
-    return v;
+    return parsed(*this, i, name, parseTimeOfDay,
+                  QT_TRANSLATE_NOOP("Refusal", "not an hhmmss.ss time"));
 }
 
 std::optional<Date> FieldReader::date(std::size_t i, const char *name) {
-    auto t = s_.field(i);
-    if (t.empty()) return std::nullopt;
-    Date v;
-    if (!parseDateDdMmYy(t, v)) {
-        fail(i, name, QT_TRANSLATE_NOOP("Refusal", "not a ddmmyy date"));
-        return std::nullopt;
-    }
-    return v;
+    return parsed(*this, i, name, parseDateDdMmYy,
+                  QT_TRANSLATE_NOOP("Refusal", "not a ddmmyy date"));
 }
 
 } // namespace gnss

@@ -37,27 +37,39 @@ void JsonWriter::separator() {
     if (needComma_) out_.push_back(',');
 }
 
-JsonWriter &JsonWriter::beginObject() {
+namespace {
+
+// A number as std::to_chars writes it: the shortest form that reads back the same.
+template <class T> JsonWriter &number(JsonWriter &w, T v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return w.raw(std::string_view(buf, static_cast<std::size_t>(r.ptr - buf)));
+}
+
+} // namespace
+
+JsonWriter &JsonWriter::open(char bracket) {
     separator();
-    out_.push_back('{');
+    out_.push_back(bracket);
     needComma_ = false;
     return *this;
+}
+JsonWriter &JsonWriter::close(char bracket) {
+    out_.push_back(bracket);
+    needComma_ = true;
+    return *this;
+}
+JsonWriter &JsonWriter::beginObject() {
+    return open('{');
 }
 JsonWriter &JsonWriter::endObject() {
-    out_.push_back('}');
-    needComma_ = true;
-    return *this;
+    return close('}');
 }
 JsonWriter &JsonWriter::beginArray() {
-    separator();
-    out_.push_back('[');
-    needComma_ = false;
-    return *this;
+    return open('[');
 }
 JsonWriter &JsonWriter::endArray() {
-    out_.push_back(']');
-    needComma_ = true;
-    return *this;
+    return close(']');
 }
 JsonWriter &JsonWriter::key(std::string_view k) {
     separator();
@@ -75,40 +87,19 @@ JsonWriter &JsonWriter::value(std::string_view s) {
 }
 JsonWriter &JsonWriter::value(double d) {
     if (!std::isfinite(d)) return null();
-    separator();
-    char buf[32];
-    auto r = std::to_chars(buf, buf + sizeof buf, d);
-    out_.append(buf, r.ptr);
-    needComma_ = true;
-    return *this;
+    return number(*this, d);
 }
 JsonWriter &JsonWriter::value(std::int64_t i) {
-    separator();
-    char buf[24];
-    auto r = std::to_chars(buf, buf + sizeof buf, i);
-    out_.append(buf, r.ptr);
-    needComma_ = true;
-    return *this;
+    return number(*this, i);
 }
 JsonWriter &JsonWriter::value(std::uint64_t i) {
-    separator();
-    char buf[24];
-    auto r = std::to_chars(buf, buf + sizeof buf, i);
-    out_.append(buf, r.ptr);
-    needComma_ = true;
-    return *this;
+    return number(*this, i);
 }
 JsonWriter &JsonWriter::value(bool b) {
-    separator();
-    out_ += b ? "true" : "false";
-    needComma_ = true;
-    return *this;
+    return raw(b ? "true" : "false");
 }
 JsonWriter &JsonWriter::null() {
-    separator();
-    out_ += "null";
-    needComma_ = true;
-    return *this;
+    return raw("null");
 }
 JsonWriter &JsonWriter::raw(std::string_view text) {
     separator();

@@ -45,6 +45,8 @@ public:
 
 private:
     void separator();
+    JsonWriter &open(char bracket);
+    JsonWriter &close(char bracket);
     std::string &out_;
     bool needComma_ = false;
     bool afterKey_ = false;

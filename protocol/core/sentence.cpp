@@ -1,5 +1,6 @@
 #include "sentence.h"
 
+#include "hex_digit.h"
 #include "refusal.h"
 
 #include <cstring>
@@ -9,16 +10,6 @@
 #endif
 
 namespace gnss {
-namespace {
-
-int hexValue(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    return -1;
-}
-
-} // namespace
 
 std::string_view toString(ChecksumStatus s) {
     switch (s) {
@@ -79,8 +70,8 @@ bool Sentence::parse(std::string_view line) {
         body_ = text.substr(0, star);
         std::string_view cs = text.substr(star + 1);
         while (!cs.empty() && cs.back() == ' ') cs.remove_suffix(1);
-        const int hi = cs.size() == 2 ? hexValue(cs[0]) : -1;
-        const int lo = cs.size() == 2 ? hexValue(cs[1]) : -1;
+        const int hi = cs.size() == 2 ? hexDigitValue(cs[0]) : -1;
+        const int lo = cs.size() == 2 ? hexDigitValue(cs[1]) : -1;
         if (hi >= 0 && lo >= 0) {
             declared_ = static_cast<std::uint8_t>(hi * 16 + lo);
             checksumStatus_ = ChecksumStatus::Ok; // compared below
