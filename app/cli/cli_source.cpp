@@ -1,5 +1,7 @@
 #include "cli_source.h"
 
+#include "cli_output.h"
+#include "core/json_writer.h"
 #include "gpsd_transport.h"
 #include "link_opener.h"
 #include "transport_factory.h"
@@ -163,6 +165,22 @@ std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
         }
     }
     return conn;
+}
+
+void printCommandResult(const link::CommandResult &r, bool timing) {
+    printJson([&](JsonWriter &w) {
+        w.beginObject()
+                .field("sentence", utf8(r.sentence))
+                .field("outcome", utf8(link::outcomeName(r.outcome)))
+                .field("detail", utf8(r.detail));
+        if (timing)
+            w.field("attempts", r.attempts).field("ms", static_cast<std::int64_t>(r.elapsedMs));
+        w.key("replies").beginArray();
+        for (const QString &line : r.replies) w.value(utf8(line));
+        w.endArray();
+        if (r.baudAfter > 0) w.field("baud", r.baudAfter);
+        w.endObject();
+    });
 }
 
 } // namespace gnss::cli

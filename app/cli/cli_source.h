@@ -10,6 +10,7 @@
 #include "baud_detector.h"
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "command_queue.h"
 #include "connection.h"
 #include "source_spec.h"
 
@@ -41,5 +42,9 @@ struct OpenOptions {
 std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
                                                  const link::SourceSpec &spec,
                                                  const OpenOptions &options, QString &error);
+
+// A command's result as one JSON line: sentence, outcome, detail, (with `timing`: attempts and
+// ms), the replies, and the speed it switched to (when it did).
+void printCommandResult(const link::CommandResult &r, bool timing);
 
 } // namespace gnss::cli

@@ -54,49 +54,30 @@ OperationReport run(SettingsEngine &engine, const std::function<bool()> &start) 
     return engine.lastReport();
 }
 
-void printCommand(const link::CommandResult &r) {
-    std::string out;
-    JsonWriter w(out);
-    w.beginObject()
-            .field("sentence", utf8(r.sentence))
-            .field("outcome", utf8(link::outcomeName(r.outcome)))
-            .field("detail", utf8(r.detail));
-    w.key("replies").beginArray();
-    for (const QString &line : r.replies) w.value(utf8(line));
-    w.endArray();
-    if (r.baudAfter > 0) w.field("baud", r.baudAfter);
-    w.endObject();
-    printLine(out);
-}
-
 // The verification of an apply, one line per setting, then the summary.
 void printChecks(const OperationReport &r) {
     for (const auto &c : r.checks) {
-        std::string out;
-        JsonWriter w(out);
-        w.beginObject()
-                .field("key", c.key)
-                .field("set", c.wanted)
-                .field("reported",
-                       c.reported.empty() ? std::nullopt : std::optional<std::string>(c.reported))
-                .field("verdict", utf8(config::verdictName(c.verdict)))
-                .endObject();
-        printLine(out);
+        printJson([&](JsonWriter &w) {
+            w.beginObject()
+                    .field("key", c.key)
+                    .field("set", c.wanted)
+                    .field("reported", textOrNull(c.reported))
+                    .field("verdict", utf8(config::verdictName(c.verdict)))
+                    .endObject();
+        });
     }
-    std::string out;
-    JsonWriter w(out);
-    w.beginObject()
-            .field("ok", r.ok())
-            .field("nothing_to_do", r.nothingToDo)
-            .field("commands", static_cast<int>(r.commands.size()))
-            .field("failed_commands", r.failedCommands())
-            .field("failed_checks", r.failedChecks());
-    w.key("companions").beginArray();
-    for (const auto &kv : r.companions) w.value(kv.key + "=" + kv.value);
-    w.endArray();
-    w.field("error", r.error.isEmpty() ? std::nullopt : std::optional<std::string>(utf8(r.error)))
-            .endObject();
-    printLine(out);
+    printJson([&](JsonWriter &w) {
+        w.beginObject()
+                .field("ok", r.ok())
+                .field("nothing_to_do", r.nothingToDo)
+                .field("commands", static_cast<int>(r.commands.size()))
+                .field("failed_commands", r.failedCommands())
+                .field("failed_checks", r.failedChecks());
+        w.key("companions").beginArray();
+        for (const auto &kv : r.companions) w.value(kv.key + "=" + kv.value);
+        w.endArray();
+        w.field("error", textOrNull(r.error)).endObject();
+    });
 }
 
 bool reportRead(const OperationReport &r) {
@@ -191,9 +172,8 @@ int get(SettingsEngine &engine, const std::vector<std::string> &keys) {
     JsonWriter w(out);
     w.beginObject().field("dialect", engine.dialect()->id);
     const auto &id = engine.identity();
-    w.field("model", id.model.empty() ? std::nullopt : std::optional<std::string>(id.model));
-    w.field("firmware",
-            id.firmware.empty() ? std::nullopt : std::optional<std::string>(id.firmware));
+    w.field("model", textOrNull(id.model));
+    w.field("firmware", textOrNull(id.firmware));
     w.key("values").beginObject();
     std::vector<std::string> writeOnly;
     for (const auto &def : engine.dialect()->settings) {
@@ -213,7 +193,8 @@ int get(SettingsEngine &engine, const std::vector<std::string> &keys) {
 }
 
 int applyValues(SettingsEngine &engine, const std::function<bool()> &start) {
-    auto c = QObject::connect(&engine, &SettingsEngine::commandFinished, printCommand);
+    auto c = QObject::connect(&engine, &SettingsEngine::commandFinished,
+                              [](const link::CommandResult &r) { printCommandResult(r, false); });
     const auto r = run(engine, start);
     QObject::disconnect(c);
     printChecks(r);
@@ -313,15 +294,14 @@ int cmdConfig(const CliContext &ctx) {
     // diff
     const auto entries = engine.diff(profile);
     for (const auto &d : entries) {
-        std::string out;
-        JsonWriter w(out);
-        w.beginObject()
-                .field("key", d.key)
-                .field("profile", d.profileValue)
-                .field("receiver",
-                       d.receiverKnown ? std::optional<std::string>(d.receiverValue) : std::nullopt)
-                .endObject();
-        printLine(out);
+        printJson([&](JsonWriter &w) {
+            w.beginObject()
+                    .field("key", d.key)
+                    .field("profile", d.profileValue)
+                    .field("receiver", d.receiverKnown ? std::optional<std::string>(d.receiverValue)
+                                                       : std::nullopt)
+                    .endObject();
+        });
     }
     return entries.empty() ? 0 : 1;
 }

@@ -99,17 +99,16 @@ void writeBaudTries(JsonWriter &w, const link::BaudDetection &d) {
 int cmdPorts(const CliContext &) {
     EventLoop loop;
     for (const link::PortInfo &p : link::systemPorts()) {
-        std::string out;
-        JsonWriter w(out);
-        w.beginObject()
-                .field("port", utf8(p.portName))
-                .field("location", utf8(p.systemLocation))
-                .field("description", utf8(p.description))
-                .field("manufacturer", utf8(p.manufacturer))
-                .field("serial_number", utf8(p.serialNumber))
-                .field("usb_id", utf8(p.usbId()))
-                .endObject();
-        printLine(out);
+        printJson([&](JsonWriter &w) {
+            w.beginObject()
+                    .field("port", utf8(p.portName))
+                    .field("location", utf8(p.systemLocation))
+                    .field("description", utf8(p.description))
+                    .field("manufacturer", utf8(p.manufacturer))
+                    .field("serial_number", utf8(p.serialNumber))
+                    .field("usb_id", utf8(p.usbId()))
+                    .endObject();
+        });
     }
     return 0;
 }
@@ -146,17 +145,13 @@ int cmdProbe(const CliContext &ctx) {
     w.field("dialect", id.found ? std::optional<std::string>(utf8(id.dialect)) : std::nullopt);
     w.field("dialect_name",
             id.found ? std::optional<std::string>(utf8(id.dialectName)) : std::nullopt);
-    w.field("model",
-            id.model.isEmpty() ? std::nullopt : std::optional<std::string>(utf8(id.model)));
-    w.field("firmware",
-            id.firmware.isEmpty() ? std::nullopt : std::optional<std::string>(utf8(id.firmware)));
-    w.field("method",
-            id.method.isEmpty() ? std::nullopt : std::optional<std::string>(utf8(id.method)));
-    w.field("reply",
-            id.reply.isEmpty() ? std::nullopt : std::optional<std::string>(utf8(id.reply)));
+    w.field("model", textOrNull(id.model));
+    w.field("firmware", textOrNull(id.firmware));
+    w.field("method", textOrNull(id.method));
+    w.field("reply", textOrNull(id.reply));
     writeBaudTries(w, found);
     const QString error = !conn ? found.error : id.error;
-    w.field("error", error.isEmpty() ? std::nullopt : std::optional<std::string>(utf8(error)));
+    w.field("error", textOrNull(error));
     w.endObject();
     printLine(out);
     if (rc != 0 && !error.isEmpty()) std::fprintf(stderr, "gnss-cli: %s\n", utf8(error).c_str());
@@ -185,12 +180,7 @@ int cmdMonitor(const CliContext &ctx) {
     auto *replay = qobject_cast<link::ReplayTransport *>(conn->transport());
     const bool epochs = args.flag("epochs");
     EpochAssembler assembler(conn->stream()->dialect());
-    auto onEpoch = [](const Epoch &e) {
-        std::string out;
-        JsonWriter w(out);
-        e.writeJson(w);
-        printLine(out);
-    };
+    auto onEpoch = [](const Epoch &e) { printJson([&](JsonWriter &w) { e.writeJson(w); }); };
     link::Connection *c = conn.get();
     QObject::connect(c->stream(), &link::SentenceStream::sentenceDecoded,
                      [&, c](const SentenceEvent &ev) {
@@ -200,10 +190,7 @@ int cmdMonitor(const CliContext &ctx) {
                              assembler.add(ev.sentence, *ev.message, onEpoch);
                              return;
                          }
-                         std::string out;
-                         JsonWriter w(out);
-                         writeSentenceEventJson(w, ev);
-                         printLine(out);
+                         printJson([&](JsonWriter &w) { writeSentenceEventJson(w, ev); });
                      });
     reportLinkEvents(*c, "");
     if (replay)
@@ -289,20 +276,7 @@ int cmdSend(const CliContext &ctx) {
                          if (r.outcome != link::CommandOutcome::Accepted &&
                              r.outcome != link::CommandOutcome::Sent)
                              ++failures;
-                         std::string out;
-                         JsonWriter w(out);
-                         w.beginObject()
-                                 .field("sentence", utf8(r.sentence))
-                                 .field("outcome", utf8(link::outcomeName(r.outcome)))
-                                 .field("detail", utf8(r.detail))
-                                 .field("attempts", r.attempts)
-                                 .field("ms", static_cast<std::int64_t>(r.elapsedMs));
-                         w.key("replies").beginArray();
-                         for (const QString &line : r.replies) w.value(utf8(line));
-                         w.endArray();
-                         if (r.baudAfter > 0) w.field("baud", r.baudAfter);
-                         w.endObject();
-                         printLine(out);
+                         printCommandResult(r, true);
                      });
     QObject::connect(queue, &link::CommandQueue::idle, [] { QCoreApplication::exit(0); });
     reportLinkEvents(*conn, "");

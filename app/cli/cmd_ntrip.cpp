@@ -31,6 +31,8 @@
 #include <cstdlib>
 #include <functional>
 #include <optional>
+#include <span>
+#include <variant>
 #include <vector>
 
 namespace gnss::cli {
@@ -64,69 +66,30 @@ std::optional<double> km(const std::optional<ntrip::GgaPosition> &from,
            10.0;
 }
 
+// One JSON line per record: its tag ("STR", "CAS", "NET") as "type", then its fields in the
+// source table's order, then what `more` adds.
+template <class Entry>
+void printRecords(const char *tag, const std::vector<Entry> &entries,
+                  std::span<const ntrip::RecordField<Entry>> fields,
+                  const std::function<void(JsonWriter &, const Entry &)> &more = {}) {
+    for (const Entry &e : entries) {
+        printJson([&](JsonWriter &w) {
+            w.beginObject().field("type", tag);
+            for (const auto &f : fields)
+                std::visit([&](auto member) { w.field(f.name, e.*member); }, f.member);
+            if (more) more(w, e);
+            w.endObject();
+        });
+    }
+}
+
 void printTable(const ntrip::SourceTable &t, const std::optional<ntrip::GgaPosition> &from) {
-    for (const ntrip::StreamEntry &s : t.streams) {
-        std::string out;
-        JsonWriter w(out);
-        w.beginObject()
-                .field("type", "STR")
-                .field("mountpoint", s.mountpoint)
-                .field("identifier", s.identifier)
-                .field("format", s.format)
-                .field("format_details", s.formatDetails)
-                .field("carrier", s.carrier)
-                .field("nav_system", s.navSystem)
-                .field("network", s.network)
-                .field("country", s.country)
-                .field("latitude", s.latitude)
-                .field("longitude", s.longitude)
-                .field("nmea", s.wantsGga)
-                .field("solution", s.solution)
-                .field("generator", s.generator)
-                .field("compression", s.compression)
-                .field("authentication", s.authentication)
-                .field("fee", s.fee)
-                .field("bitrate", s.bitrate)
-                .field("misc", s.misc);
-        if (const auto d = km(from, s)) w.field("distance_km", *d);
-        w.endObject();
-        printLine(out);
-    }
-    for (const ntrip::CasterEntry &c : t.casters) {
-        std::string out;
-        JsonWriter w(out);
-        w.beginObject()
-                .field("type", "CAS")
-                .field("host", c.host)
-                .field("port", c.port)
-                .field("identifier", c.identifier)
-                .field("operator", c.casterOperator)
-                .field("nmea", c.nmea)
-                .field("country", c.country)
-                .field("latitude", c.latitude)
-                .field("longitude", c.longitude)
-                .field("fallback_host", c.fallbackHost)
-                .field("fallback_port", c.fallbackPort)
-                .field("misc", c.misc)
-                .endObject();
-        printLine(out);
-    }
-    for (const ntrip::NetworkEntry &n : t.networks) {
-        std::string out;
-        JsonWriter w(out);
-        w.beginObject()
-                .field("type", "NET")
-                .field("identifier", n.identifier)
-                .field("operator", n.networkOperator)
-                .field("authentication", n.authentication)
-                .field("fee", n.fee)
-                .field("web_net", n.webNet)
-                .field("web_str", n.webStr)
-                .field("web_reg", n.webReg)
-                .field("misc", n.misc)
-                .endObject();
-        printLine(out);
-    }
+    printRecords<ntrip::StreamEntry>("STR", t.streams, ntrip::streamFields(),
+                                     [&](JsonWriter &w, const ntrip::StreamEntry &s) {
+                                         if (const auto d = km(from, s)) w.field("distance_km", *d);
+                                     });
+    printRecords("CAS", t.casters, ntrip::casterFields());
+    printRecords("NET", t.networks, ntrip::networkFields());
     std::string summary;
     JsonWriter w(summary);
     w.beginObject()
@@ -276,10 +239,7 @@ int receive(const CliContext &ctx, const Options &o, const QString &mount,
         if (const auto p = corrections::ggaPositionOf(e); p && !o.position)
             source.setRoverPosition(*p);
         if (o.quiet) return;
-        std::string out;
-        JsonWriter w(out);
-        e.writeJson(w);
-        printLine(out);
+        printJson([&](JsonWriter &w) { e.writeJson(w); });
     };
     if (o.receiver) {
         OpenOptions open;
@@ -307,10 +267,7 @@ int receive(const CliContext &ctx, const Options &o, const QString &mount,
         decoder.feed(std::string_view(b.constData(), std::size_t(b.size())),
                      [json](const rtcm::RtcmMessage &m) {
                          if (!json) return;
-                         std::string out;
-                         JsonWriter w(out);
-                         rtcm::writeRtcmJson(w, m);
-                         printLine(out);
+                         printJson([&](JsonWriter &w) { rtcm::writeRtcmJson(w, m); });
                      });
     });
     QObject::connect(&source, &corrections::CorrectionSource::dataReceived,

@@ -21,6 +21,16 @@ constexpr int kMessagesDelayMs = 200;      // a range being dragged is counted w
 constexpr std::size_t kJumpEpochs = 50;    // a move further than this starts the charts afresh
 constexpr std::size_t kConsoleLines = 200; // the log's own lines up to the cursor
 constexpr qint64 kUntimedEpochMs = 100;    // pace of epochs without a time (10 Hz)
+
+// The engine's format of an export of the track (GPX, KML, CSV, NMEA).
+logview::ExportFormat trackFormat(LogViewer::Export f) {
+    switch (f) {
+    case LogViewer::Export::Gpx: return logview::ExportFormat::Gpx;
+    case LogViewer::Export::Kml: return logview::ExportFormat::Kml;
+    case LogViewer::Export::Csv: return logview::ExportFormat::Csv;
+    default: return logview::ExportFormat::Nmea;
+    }
+}
 } // namespace
 
 LogViewer::LogViewer(const DialectRegistry &registry, ui::SessionModels models, QObject *parent)
@@ -370,16 +380,10 @@ bool LogViewer::exportTo(Export format, const QString &path, QString *why) {
                 bool ok = true;
                 switch (format) {
                 case Export::Gpx:
-                    ok = view->exportRange(logview::ExportFormat::Gpx, first, last, sink, name);
-                    break;
                 case Export::Kml:
-                    ok = view->exportRange(logview::ExportFormat::Kml, first, last, sink, name);
-                    break;
                 case Export::Csv:
-                    ok = view->exportRange(logview::ExportFormat::Csv, first, last, sink, name);
-                    break;
                 case Export::Nmea:
-                    ok = view->exportRange(logview::ExportFormat::Nmea, first, last, sink, name);
+                    ok = view->exportRange(trackFormat(format), first, last, sink, name);
                     break;
                 case Export::StatsJson: {
                     std::string out;

@@ -1,6 +1,7 @@
 #include "ntrip_source.h"
 
 #include "source_table_request.h"
+#include "while_closing.h"
 
 namespace gnss::corrections {
 
@@ -15,6 +16,16 @@ QString revisionOf(const ntrip::ResponseHead &h) {
 }
 
 } // namespace
+
+SourceTableQuery NtripSettings::caster() const {
+    SourceTableQuery q;
+    q.host = host;
+    q.port = port;
+    q.version = version;
+    q.user = user;
+    q.password = password;
+    return q;
+}
 
 NtripSource::NtripSource(NtripSettings settings, QObject *parent)
     : CorrectionSource(parent), settings_(std::move(settings)) {
@@ -77,22 +88,14 @@ void NtripSource::openConnection() {
 void NtripSource::closeConnection() {
     ggaTimer_.stop();
     dataStarted_ = false;
-    closing_ = true;
-    socket_.abort();
-    closing_ = false;
+    link::whileClosing(closing_, [this] { socket_.abort(); });
 }
 
 void NtripSource::onConnected() {
     if (closing_ || !isActive()) return;
-    ntrip::RequestTarget t;
-    t.host = settings_.host.toStdString();
-    t.port = settings_.port;
-    t.mountpoint = settings_.mountpoint.toStdString();
-    t.version = settings_.version;
-    t.user = settings_.user.toStdString();
-    t.password = settings_.password.toStdString();
     std::string error;
-    const std::string request = ntrip::buildRequest(t, error);
+    const std::string request =
+            ntrip::buildRequest(requestTarget(settings_.caster(), settings_.mountpoint), error);
     if (request.empty())
         return failed(
                 tr("Cannot ask %1 for data: %2").arg(description(), QString::fromStdString(error)),
@@ -223,13 +226,7 @@ void NtripSource::fetchSourceTable() {
         tableRequest_->abort();
         tableRequest_->deleteLater();
     }
-    SourceTableQuery q;
-    q.host = settings_.host;
-    q.port = settings_.port;
-    q.version = settings_.version;
-    q.user = settings_.user;
-    q.password = settings_.password;
-    tableRequest_ = new SourceTableRequest(q, this);
+    tableRequest_ = new SourceTableRequest(settings_.caster(), this);
     SourceTableRequest *request = tableRequest_;
     connect(request, &SourceTableRequest::received, this,
             [this, request](const ntrip::SourceTable &table) {

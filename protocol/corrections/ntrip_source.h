@@ -18,6 +18,7 @@
 #include "ntrip/ntrip_request.h"
 #include "ntrip/response_head.h"
 #include "ntrip/source_table.h"
+#include "source_table_request.h"
 
 #include <QDateTime>
 #include <QTcpSocket>
@@ -25,8 +26,6 @@
 #include <optional>
 
 namespace gnss::corrections {
-
-class SourceTableRequest;
 
 struct NtripSettings {
     QString host;
@@ -38,6 +37,9 @@ struct NtripSettings {
     enum class Gga { Never, Auto, Always };
     Gga gga = Gga::Auto;       // Auto: unless the source table says the stream does not want it
     int ggaIntervalMs = 10000; // between GGAs while receiving
+
+    // The caster part: where its source table is asked for, with the same credentials.
+    SourceTableQuery caster() const;
 };
 
 class NtripSource : public CorrectionSource {

@@ -1,5 +1,7 @@
 #include "serial_correction_source.h"
 
+#include "while_closing.h"
+
 namespace gnss::corrections {
 
 SerialCorrectionSource::SerialCorrectionSource(QString portName, int baud, QObject *parent)
@@ -47,10 +49,10 @@ void SerialCorrectionSource::openConnection() {
 }
 
 void SerialCorrectionSource::closeConnection() {
-    closing_ = true;
-    if (port_.isOpen()) port_.close();
-    port_.clearError();
-    closing_ = false;
+    link::whileClosing(closing_, [this] {
+        if (port_.isOpen()) port_.close();
+        port_.clearError();
+    });
 }
 
 QString SerialCorrectionSource::stallText(bool) const {

@@ -4,6 +4,17 @@
 
 namespace gnss::corrections {
 
+ntrip::RequestTarget requestTarget(const SourceTableQuery &query, const QString &mountpoint) {
+    ntrip::RequestTarget t;
+    t.host = query.host.toStdString();
+    t.port = query.port;
+    t.mountpoint = mountpoint.toStdString();
+    t.version = query.version;
+    t.user = query.user.toStdString();
+    t.password = query.password.toStdString();
+    return t;
+}
+
 SourceTableRequest::SourceTableRequest(SourceTableQuery query, QObject *parent)
     : QObject(parent), query_(std::move(query)) {
     timeout_.setSingleShot(true);
@@ -13,14 +24,8 @@ SourceTableRequest::SourceTableRequest(SourceTableQuery query, QObject *parent)
                      .arg((query_.timeoutMs + 999) / 1000));
     });
     connect(&socket_, &QTcpSocket::connected, this, [this] {
-        ntrip::RequestTarget t;
-        t.host = query_.host.toStdString();
-        t.port = query_.port;
-        t.version = query_.version;
-        t.user = query_.user.toStdString();
-        t.password = query_.password.toStdString();
         std::string error;
-        const std::string request = ntrip::buildRequest(t, error);
+        const std::string request = ntrip::buildRequest(requestTarget(query_), error);
         if (request.empty())
             return fail(tr("Cannot ask %1 for its source table: %2")
                                 .arg(hostPort(), QString::fromStdString(error)));

@@ -23,6 +23,9 @@ struct SourceTableQuery {
     int timeoutMs = 30000;
 };
 
+// What is sent to ask the caster of `query` for `mountpoint` (empty: for its source table).
+ntrip::RequestTarget requestTarget(const SourceTableQuery &query, const QString &mountpoint = {});
+
 class SourceTableRequest : public QObject {
     Q_OBJECT
 public:

@@ -1,5 +1,7 @@
 #include "tcp_correction_source.h"
 
+#include "while_closing.h"
+
 namespace gnss::corrections {
 
 TcpCorrectionSource::TcpCorrectionSource(QString host, quint16 port, QObject *parent)
@@ -44,9 +46,7 @@ void TcpCorrectionSource::openConnection() {
 }
 
 void TcpCorrectionSource::closeConnection() {
-    closing_ = true;
-    socket_.abort();
-    closing_ = false;
+    link::whileClosing(closing_, [this] { socket_.abort(); });
 }
 
 } // namespace gnss::corrections

@@ -7,8 +7,6 @@
 #include "core/sentence_builder.h"
 #include "transport.h"
 
-#include <QCoreApplication>
-
 #include <array>
 
 namespace gnss::link {
@@ -41,29 +39,16 @@ bool isStandardQuery(const Sentence &s) {
 } // namespace
 
 QString outcomeName(CommandOutcome outcome) {
-    const char *text = "";
     switch (outcome) {
-    case CommandOutcome::Accepted:
-        text = QT_TRANSLATE_NOOP("gnss::link::CommandQueue", "accepted");
-        break;
-    case CommandOutcome::Refused:
-        text = QT_TRANSLATE_NOOP("gnss::link::CommandQueue", "refused");
-        break;
-    case CommandOutcome::TimedOut:
-        text = QT_TRANSLATE_NOOP("gnss::link::CommandQueue", "timed out");
-        break;
-    case CommandOutcome::LinkLost:
-        text = QT_TRANSLATE_NOOP("gnss::link::CommandQueue", "link lost");
-        break;
-    case CommandOutcome::Cancelled:
-        text = QT_TRANSLATE_NOOP("gnss::link::CommandQueue", "cancelled");
-        break;
-    case CommandOutcome::Sent: text = QT_TRANSLATE_NOOP("gnss::link::CommandQueue", "sent"); break;
-    case CommandOutcome::Failed:
-        text = QT_TRANSLATE_NOOP("gnss::link::CommandQueue", "failed");
-        break;
+    case CommandOutcome::Accepted: return CommandQueue::tr("accepted");
+    case CommandOutcome::Refused: return CommandQueue::tr("refused");
+    case CommandOutcome::TimedOut: return CommandQueue::tr("timed out");
+    case CommandOutcome::LinkLost: return CommandQueue::tr("link lost");
+    case CommandOutcome::Cancelled: return CommandQueue::tr("cancelled");
+    case CommandOutcome::Sent: return CommandQueue::tr("sent");
+    case CommandOutcome::Failed: return CommandQueue::tr("failed");
     }
-    return QCoreApplication::translate("gnss::link::CommandQueue", text);
+    return {};
 }
 
 CommandQueue::CommandQueue(Transport *transport, SentenceStream *stream, QObject *parent)

@@ -1,5 +1,7 @@
 #include "gpsd_transport.h"
 
+#include "while_closing.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 
@@ -105,9 +107,7 @@ GpsdTransport::~GpsdTransport() {
 }
 
 void GpsdTransport::abortSocket() {
-    closing_ = true;
-    socket_.abort();
-    closing_ = false;
+    whileClosing(closing_, [this] { socket_.abort(); });
 }
 
 bool GpsdTransport::open() {

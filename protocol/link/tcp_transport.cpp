@@ -1,5 +1,7 @@
 #include "tcp_transport.h"
 
+#include "while_closing.h"
+
 namespace gnss::link {
 
 namespace {
@@ -64,9 +66,7 @@ bool TcpTransport::parseHostPort(const QString &text, QString &host, quint16 &po
 }
 
 void TcpTransport::abortSocket() {
-    closing_ = true;
-    socket_.abort();
-    closing_ = false;
+    whileClosing(closing_, [this] { socket_.abort(); });
 }
 
 bool TcpTransport::open() {

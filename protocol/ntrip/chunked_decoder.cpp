@@ -1,17 +1,12 @@
 #include "chunked_decoder.h"
 
+#include "core/hex_digit.h"
+
 #include <algorithm>
 
 namespace gnss::ntrip {
 
 namespace {
-
-int hexValue(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-}
 
 // The byte quoted in an error text: printable as itself, anything else as hex.
 std::string quoted(char c) {
@@ -35,16 +30,16 @@ ChunkedDecoder::Status ChunkedDecoder::feed(std::string_view in, std::string &ou
         const char c = in[i];
         switch (state_) {
         case State::SizeStart:
-            if (hexValue(c) < 0) {
+            if (hexDigitValue(c) < 0) {
                 fail("chunk size is not hexadecimal", c);
                 return status_;
             }
-            size_ = static_cast<std::uint64_t>(hexValue(c));
+            size_ = static_cast<std::uint64_t>(hexDigitValue(c));
             state_ = State::Size;
             break;
         case State::Size:
-            if (hexValue(c) >= 0) {
-                size_ = size_ * 16 + static_cast<std::uint64_t>(hexValue(c));
+            if (hexDigitValue(c) >= 0) {
+                size_ = size_ * 16 + static_cast<std::uint64_t>(hexDigitValue(c));
                 if (size_ >= kMaxChunk) {
                     fail("chunk size too large", c);
                     return status_;

@@ -49,17 +49,104 @@ bool yes(const std::vector<std::string_view> &f, std::size_t i) {
     return t == "1" || t == "Y" || t == "y";
 }
 
+// A field read as its member's type.
+void read(const std::vector<std::string_view> &f, std::size_t i, std::string &out) {
+    out = text(f, i);
+}
+void read(const std::vector<std::string_view> &f, std::size_t i, std::optional<int> &out) {
+    out = integer(f, i);
+}
+void read(const std::vector<std::string_view> &f, std::size_t i, std::optional<double> &out) {
+    out = number(f, i);
+}
+void read(const std::vector<std::string_view> &f, std::size_t i, bool &out) {
+    out = yes(f, i);
+}
+
 // Latitude and longitude only when they can be a place on Earth.
-void position(const std::vector<std::string_view> &f, std::size_t i, std::optional<double> &lat,
-              std::optional<double> &lon) {
-    lat = number(f, i);
-    lon = number(f, i + 1);
+void checkPosition(std::optional<double> &lat, std::optional<double> &lon) {
     if (lat && std::fabs(*lat) > 90) lat.reset();
     if (lon && (*lon < -180 || *lon > 360)) lon.reset(); // some tables use 0..360 east
     if (lon && *lon > 180) *lon -= 360;
 }
 
+// A record read field by field into `into`; one without a name (its first field) is a bad line,
+// one missing more than its last field (misc, often left off entirely) is short.
+template <class Entry>
+void addRecord(std::string_view line, std::span<const RecordField<Entry>> fields,
+               std::vector<Entry> &into, SourceTable &table) {
+    const auto f = splitFields(line, fields.size() + 1);
+    Entry e;
+    for (std::size_t i = 0; i < fields.size(); ++i)
+        std::visit([&](auto member) { read(f, i + 1, e.*member); }, fields[i].member);
+    if constexpr (requires { e.latitude; }) checkPosition(e.latitude, e.longitude);
+    if ((e.*std::get<std::string Entry::*>(fields[0].member)).empty()) {
+        ++table.badLines;
+        return;
+    }
+    if (f.size() < fields.size()) ++table.shortRecords;
+    into.push_back(std::move(e));
+}
+
 } // namespace
+
+std::span<const RecordField<StreamEntry>> streamFields() {
+    using E = StreamEntry;
+    static const RecordField<E> fields[] = {
+            {"mountpoint", &E::mountpoint},
+            {"identifier", &E::identifier},
+            {"format", &E::format},
+            {"format_details", &E::formatDetails},
+            {"carrier", &E::carrier},
+            {"nav_system", &E::navSystem},
+            {"network", &E::network},
+            {"country", &E::country},
+            {"latitude", &E::latitude},
+            {"longitude", &E::longitude},
+            {"nmea", &E::wantsGga},
+            {"solution", &E::solution},
+            {"generator", &E::generator},
+            {"compression", &E::compression},
+            {"authentication", &E::authentication},
+            {"fee", &E::fee},
+            {"bitrate", &E::bitrate},
+            {"misc", &E::misc},
+    };
+    return fields;
+}
+
+std::span<const RecordField<CasterEntry>> casterFields() {
+    using E = CasterEntry;
+    static const RecordField<E> fields[] = {
+            {"host", &E::host},
+            {"port", &E::port},
+            {"identifier", &E::identifier},
+            {"operator", &E::casterOperator},
+            {"nmea", &E::nmea},
+            {"country", &E::country},
+            {"latitude", &E::latitude},
+            {"longitude", &E::longitude},
+            {"fallback_host", &E::fallbackHost},
+            {"fallback_port", &E::fallbackPort},
+            {"misc", &E::misc},
+    };
+    return fields;
+}
+
+std::span<const RecordField<NetworkEntry>> networkFields() {
+    using E = NetworkEntry;
+    static const RecordField<E> fields[] = {
+            {"identifier", &E::identifier},
+            {"operator", &E::networkOperator},
+            {"authentication", &E::authentication},
+            {"fee", &E::fee},
+            {"web_net", &E::webNet},
+            {"web_str", &E::webStr},
+            {"web_reg", &E::webReg},
+            {"misc", &E::misc},
+    };
+    return fields;
+}
 
 const StreamEntry *SourceTable::find(std::string_view mountpoint) const {
     for (const StreamEntry &s : streams)
@@ -115,69 +202,12 @@ void SourceTableParser::line(std::string_view l) {
         ++table_.badLines;
         return;
     }
-    if (tag == "STR;") {
-        const auto f = splitFields(l, 19);
-        StreamEntry s;
-        s.mountpoint = text(f, 1);
-        if (s.mountpoint.empty()) {
-            ++table_.badLines;
-            return;
-        }
-        if (f.size() < 18) ++table_.shortRecords; // misc (19th) is often left off entirely
-        s.identifier = text(f, 2);
-        s.format = text(f, 3);
-        s.formatDetails = text(f, 4);
-        s.carrier = integer(f, 5);
-        s.navSystem = text(f, 6);
-        s.network = text(f, 7);
-        s.country = text(f, 8);
-        position(f, 9, s.latitude, s.longitude);
-        s.wantsGga = yes(f, 11);
-        s.solution = integer(f, 12);
-        s.generator = text(f, 13);
-        s.compression = text(f, 14);
-        s.authentication = text(f, 15);
-        s.fee = yes(f, 16);
-        s.bitrate = integer(f, 17);
-        s.misc = text(f, 18);
-        table_.streams.push_back(std::move(s));
-    } else if (tag == "CAS;") {
-        const auto f = splitFields(l, 12);
-        CasterEntry c;
-        c.host = text(f, 1);
-        if (c.host.empty()) {
-            ++table_.badLines;
-            return;
-        }
-        if (f.size() < 11) ++table_.shortRecords;
-        c.port = integer(f, 2);
-        c.identifier = text(f, 3);
-        c.casterOperator = text(f, 4);
-        c.nmea = yes(f, 5);
-        c.country = text(f, 6);
-        position(f, 7, c.latitude, c.longitude);
-        c.fallbackHost = text(f, 9);
-        c.fallbackPort = integer(f, 10);
-        c.misc = text(f, 11);
-        table_.casters.push_back(std::move(c));
-    } else {
-        const auto f = splitFields(l, 9);
-        NetworkEntry n;
-        n.identifier = text(f, 1);
-        if (n.identifier.empty()) {
-            ++table_.badLines;
-            return;
-        }
-        if (f.size() < 8) ++table_.shortRecords;
-        n.networkOperator = text(f, 2);
-        n.authentication = text(f, 3);
-        n.fee = yes(f, 4);
-        n.webNet = text(f, 5);
-        n.webStr = text(f, 6);
-        n.webReg = text(f, 7);
-        n.misc = text(f, 8);
-        table_.networks.push_back(std::move(n));
-    }
+    if (tag == "STR;")
+        addRecord(l, streamFields(), table_.streams, table_);
+    else if (tag == "CAS;")
+        addRecord(l, casterFields(), table_.casters, table_);
+    else
+        addRecord(l, networkFields(), table_.networks, table_);
 }
 
 SourceTable parseSourceTable(std::string_view text) {

@@ -13,8 +13,10 @@
 // counted and skipped. Nothing throws.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace gnss::ntrip {
@@ -61,6 +63,18 @@ struct NetworkEntry {
     std::string webNet, webStr, webReg;
     std::string misc;
 };
+
+// One field of a record after its tag, in the record's order: its name (snake case, as gnss-cli
+// prints it) and the member it is read into.
+template <class Entry> struct RecordField {
+    const char *name;
+    std::variant<std::string Entry::*, std::optional<int> Entry::*, std::optional<double> Entry::*,
+                 bool Entry::*>
+            member;
+};
+std::span<const RecordField<StreamEntry>> streamFields();   // STR
+std::span<const RecordField<CasterEntry>> casterFields();   // CAS
+std::span<const RecordField<NetworkEntry>> networkFields(); // NET
 
 struct SourceTable {
     std::vector<StreamEntry> streams;

@@ -84,18 +84,22 @@ double courseDegrees(const SkySnapshot &snap) {
     return c < 0 ? c + 360.0 : c;
 }
 
+// The position fields GGA and GNS share, set when the fix is valid (left empty otherwise).
+template <class Message> void setPosition(Message &m, const SkySnapshot &snap) {
+    if (!fixValid(snap)) return;
+    m.lat = snap.lat;
+    m.lon = snap.lon;
+    m.hdop = snap.dops.hdop;
+    m.altMsl = snap.altMsl;
+    m.geoidSep = snap.geoidSep;
+}
+
 nmea::Gga ggaOf(const SkySnapshot &snap, const EpochTime &t, int timeDecimals) {
     nmea::Gga m;
     m.time = nmea::timeOfDay(t.utcSecondOfDay, timeDecimals);
     m.quality = ggaQuality(snap.fix);
     m.satsUsed = snap.used;
-    if (fixValid(snap)) {
-        m.lat = snap.lat;
-        m.lon = snap.lon;
-        m.hdop = snap.dops.hdop;
-        m.altMsl = snap.altMsl;
-        m.geoidSep = snap.geoidSep;
-    }
+    setPosition(m, snap);
     return m;
 }
 
@@ -166,13 +170,7 @@ std::string gnsSentence(const SkySnapshot &snap, const EpochTime &t, const Stand
     }
     m.mode = mode;
     m.satsUsed = snap.used;
-    if (fixValid(snap)) {
-        m.lat = snap.lat;
-        m.lon = snap.lon;
-        m.hdop = snap.dops.hdop;
-        m.altMsl = snap.altMsl;
-        m.geoidSep = snap.geoidSep;
-    }
+    setPosition(m, snap);
     if (st.numbering == Numbering::Nmea41) m.navStatus = fixValid(snap) ? 'S' : 'V';
     return nmea::encodeGns(solutionTalker(snap, st.numbering), m, st.format);
 }
