@@ -23,18 +23,26 @@ QString qs(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-class IntegerEditor : public SettingEditor {
+// An editor whose input is one widget, made here; the subclass sets it up and calls finish().
+template <class Input> class InputEditor : public SettingEditor {
+public:
+    InputEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
+        : SettingEditor(def, texts, parent), box_(new Input(this)) {}
+    QWidget *input() const override { return box_; }
+
+protected:
+    Input *box_;
+};
+
+class IntegerEditor : public InputEditor<QSpinBox> {
 public:
     IntegerEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
-        : SettingEditor(def, texts, parent) {
-        box_ = new QSpinBox(this);
+        : InputEditor(def, texts, parent) {
         box_->setRange(def.min ? static_cast<int>(*def.min) : -999999999,
                        def.max ? static_cast<int>(*def.max) : 999999999);
         box_->setSuffix(unitSuffix());
         box_->setValue(qs(def.defaultValue).toInt());
-        connect(box_, &QSpinBox::valueChanged, this, [this] {
-            if (!loading_) emit edited();
-        });
+        editedOn(box_, &QSpinBox::valueChanged);
         finish(box_);
     }
     QString value() const override { return QString::number(box_->value()); }
@@ -42,29 +50,20 @@ public:
         bool ok = false;
         const int n = v.trimmed().toInt(&ok);
         if (!ok) return;
-        loading_ = true;
-        box_->setValue(n);
-        loading_ = false;
+        quietly([&] { box_->setValue(n); });
     }
-    QWidget *input() const override { return box_; }
-
-private:
-    QSpinBox *box_;
 };
 
-class RealEditor : public SettingEditor {
+class RealEditor : public InputEditor<QDoubleSpinBox> {
 public:
     RealEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
-        : SettingEditor(def, texts, parent) {
-        box_ = new QDoubleSpinBox(this);
+        : InputEditor(def, texts, parent) {
         box_->setDecimals(4);
         box_->setRange(def.min ? *def.min : -1e9, def.max ? *def.max : 1e9);
         box_->setSingleStep(def.max && def.min && *def.max - *def.min <= 2 ? 0.001 : 0.1);
         box_->setSuffix(unitSuffix());
         box_->setValue(qs(def.defaultValue).toDouble());
-        connect(box_, &QDoubleSpinBox::valueChanged, this, [this] {
-            if (!loading_) emit edited();
-        });
+        editedOn(box_, &QDoubleSpinBox::valueChanged);
         finish(box_);
     }
     QString value() const override {
@@ -76,14 +75,8 @@ public:
         bool ok = false;
         const double d = v.trimmed().toDouble(&ok);
         if (!ok) return;
-        loading_ = true;
-        box_->setValue(d);
-        loading_ = false;
+        quietly([&] { box_->setValue(d); });
     }
-    QWidget *input() const override { return box_; }
-
-private:
-    QDoubleSpinBox *box_;
 };
 
 // A combo box as wide as the value it shows (not as its longest option, which can be a sentence:
@@ -113,20 +106,17 @@ private:
     static constexpr int kMinChars = 8;
 };
 
-class EnumEditor : public SettingEditor {
+class EnumEditor : public InputEditor<FittingComboBox> {
 public:
     EnumEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
-        : SettingEditor(def, texts, parent) {
-        box_ = new FittingComboBox(this);
+        : InputEditor(def, texts, parent) {
         for (const auto &o : def.options) {
             const QString label = texts(o.label);
             box_->addItem(o.label == o.value ? label : QString("%1 (%2)").arg(label, qs(o.value)),
                           qs(o.value));
         }
         setValue(qs(def.defaultValue));
-        connect(box_, &QComboBox::currentIndexChanged, this, [this] {
-            if (!loading_) emit edited();
-        });
+        editedOn(box_, &QComboBox::currentIndexChanged);
         finish(box_);
     }
     QString value() const override { return box_->currentData().toString(); }
@@ -141,21 +131,14 @@ public:
                     i = k;
             }
         if (i < 0) return;
-        loading_ = true;
-        box_->setCurrentIndex(i);
-        loading_ = false;
+        quietly([&] { box_->setCurrentIndex(i); });
     }
-    QWidget *input() const override { return box_; }
-
-private:
-    QComboBox *box_;
 };
 
-class BoolEditor : public SettingEditor {
+class BoolEditor : public InputEditor<QCheckBox> {
 public:
     BoolEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
-        : SettingEditor(def, texts, parent) {
-        box_ = new QCheckBox(this);
+        : InputEditor(def, texts, parent) {
         // The schema's "on" and "off" values (options when given, else "1"/"0").
         for (const auto &o : def.options) {
             const QString l = qs(o.label).toLower();
@@ -163,9 +146,7 @@ public:
             if (l == "off" || l == "0" || l.startsWith("off")) off_ = qs(o.value);
         }
         setValue(qs(def.defaultValue));
-        connect(box_, &QCheckBox::toggled, this, [this] {
-            if (!loading_) emit edited();
-        });
+        editedOn(box_, &QCheckBox::toggled);
         finish(box_);
     }
     QString value() const override { return box_->isChecked() ? on_ : off_; }
@@ -178,34 +159,25 @@ public:
             on = false;
         else
             return;
-        loading_ = true;
-        box_->setChecked(on);
-        loading_ = false;
+        quietly([&] { box_->setChecked(on); });
     }
-    QWidget *input() const override { return box_; }
 
 private:
-    QCheckBox *box_;
     QString on_ = "1", off_ = "0";
 };
 
-class TextEditor : public SettingEditor {
+class TextEditor : public InputEditor<QLineEdit> {
 public:
     TextEditor(const SettingDef &def, const config::SchemaTexts &texts, QWidget *parent)
-        : SettingEditor(def, texts, parent) {
-        edit_ = new QLineEdit(this);
-        edit_->setText(qs(def.defaultValue));
-        edit_->setPlaceholderText(def.type == SettingType::List ? tr("items separated by ';'")
-                                                                : QString());
-        connect(edit_, &QLineEdit::textEdited, this, [this] { emit edited(); });
-        finish(edit_);
+        : InputEditor(def, texts, parent) {
+        box_->setText(qs(def.defaultValue));
+        box_->setPlaceholderText(def.type == SettingType::List ? tr("items separated by ';'")
+                                                               : QString());
+        connect(box_, &QLineEdit::textEdited, this, [this] { emit edited(); });
+        finish(box_);
     }
-    QString value() const override { return edit_->text().trimmed(); }
-    void setValue(const QString &v) override { edit_->setText(v); }
-    QWidget *input() const override { return edit_; }
-
-private:
-    QLineEdit *edit_;
+    QString value() const override { return box_->text().trimmed(); }
+    void setValue(const QString &v) override { box_->setText(v); }
 };
 
 QDoubleSpinBox *coordinateBox(QWidget *parent, double min, double max, int decimals,
@@ -297,19 +269,13 @@ CoordinateEditor::CoordinateEditor(const SettingDef &def, const config::SchemaTe
         row(0, tr("Latitude"), a_, ns_);
         row(1, tr("Longitude"), b_, ew_);
         row(2, tr("Ellipsoidal height"), c_, nullptr);
-        for (QComboBox *c : {ns_, ew_})
-            connect(c, &QComboBox::currentIndexChanged, this, [this] {
-                if (!loading_) emit edited();
-            });
+        for (QComboBox *c : {ns_, ew_}) editedOn(c, &QComboBox::currentIndexChanged);
     }
     convert_ = new QPushButton(this);
     convert_->setObjectName(qs(def.key) + ":convert");
     l->addWidget(convert_, 3, 1, 1, 2, Qt::AlignLeft);
     l->setColumnStretch(3, 1);
-    for (QDoubleSpinBox *b : {a_, b_, c_})
-        connect(b, &QDoubleSpinBox::valueChanged, this, [this] {
-            if (!loading_) emit edited();
-        });
+    for (QDoubleSpinBox *b : {a_, b_, c_}) editedOn(b, &QDoubleSpinBox::valueChanged);
     finish(a_);
 }
 

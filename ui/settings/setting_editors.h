@@ -35,6 +35,18 @@ protected:
     void finish(QWidget *input); // layout, tooltip, object name, change signal
     QString unitSuffix() const;  // " Hz", translated; empty when none
     const config::SchemaTexts &texts() const { return texts_; }
+    // edited() when `input` sends `changed`, but not while a value is shown (quietly()).
+    template <class Input, class Signal> void editedOn(Input *input, Signal changed) {
+        connect(input, changed, this, [this] {
+            if (!loading_) emit edited();
+        });
+    }
+    // Shows a value through `set` without emitting edited().
+    template <class Set> void quietly(Set set) {
+        loading_ = true;
+        set();
+        loading_ = false;
+    }
     bool loading_ = false;
 
 private:

@@ -57,9 +57,7 @@ AttitudeView::AttitudeView(ReceiverStateModel *model, QWidget *parent)
     tl->addWidget(marks_);
     outer->addWidget(tm, 1);
 
-    timer_->setInterval(kLiveRefreshMs);
-    connect(timer_, &QTimer::timeout, this, &AttitudeView::poll);
-    timer_->start();
+    startRefreshTimer(*timer_, kLiveRefreshMs, this, &AttitudeView::poll);
     refresh();
 }
 

@@ -159,9 +159,7 @@ ChartsView::ChartsView(ReceiverStateModel *model, QWidget *parent)
         selectionChanged_ = true;
         redraw();
     });
-    timer_->setInterval(kTrendRefreshMs);
-    connect(timer_, &QTimer::timeout, this, &ChartsView::redraw);
-    timer_->start();
+    startRefreshTimer(*timer_, kTrendRefreshMs, this, &ChartsView::redraw);
     redraw();
 }
 

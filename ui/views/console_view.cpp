@@ -81,11 +81,9 @@ ConsoleView::ConsoleView(ConsoleModel *model, QWidget *parent) : QWidget(parent)
     hex_->setVisible(false);
     layout->addWidget(hex_, 1);
     auto *hexTimer = new QTimer(this);
-    hexTimer->setInterval(kTrendRefreshMs);
-    connect(hexTimer, &QTimer::timeout, this, [this] {
+    startRefreshTimer(*hexTimer, kTrendRefreshMs, this, [this] {
         if (hex_->isVisible()) refreshHex();
     });
-    hexTimer->start();
 
     auto *send = new QHBoxLayout;
     input_ = new QLineEdit(this);

@@ -299,11 +299,9 @@ DeviationView::DeviationView(ReceiverStateModel *model, QWidget *parent)
     connect(refLat_, &QLineEdit::editingFinished, this, &DeviationView::applyReference);
     connect(refLon_, &QLineEdit::editingFinished, this, &DeviationView::applyReference);
     connect(model_, &ReceiverStateModel::updated, this, &DeviationView::takeEpoch);
-    timer_->setInterval(kStatisticsRefreshMs);
-    connect(timer_, &QTimer::timeout, this, [this] {
+    startRefreshTimer(*timer_, kStatisticsRefreshMs, this, [this] {
         if (dirty_) refresh();
     });
-    timer_->start();
     refresh();
 }
 

@@ -53,11 +53,9 @@ FixView::FixView(ReceiverStateModel *model, QWidget *parent) : QWidget(parent), 
     corrAge_ = addRow(tr("Age of corrections"), "fixCorrectionAge");
     base_ = addRow(tr("Base station"), "fixBaseStation");
     connect(model_, &ReceiverStateModel::updated, this, [this] { dirty_ = true; });
-    timer_.setInterval(kLiveRefreshMs);
-    connect(&timer_, &QTimer::timeout, this, [this] {
+    startRefreshTimer(timer_, kLiveRefreshMs, this, [this] {
         if (dirty_ && isVisible()) refresh();
     });
-    timer_.start();
     refresh();
 }
 

@@ -70,11 +70,9 @@ ReceiverInfoView::ReceiverInfoView(ReceiverStateModel *model, QWidget *parent)
     tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     layout->addWidget(tree_, 1);
     connect(model_, &ReceiverStateModel::updated, this, [this] { dirty_ = true; });
-    timer_.setInterval(kStatisticsRefreshMs);
-    connect(&timer_, &QTimer::timeout, this, [this] {
+    startRefreshTimer(timer_, kStatisticsRefreshMs, this, [this] {
         if (dirty_ && isVisible()) refresh();
     });
-    timer_.start();
     refresh();
 }
 

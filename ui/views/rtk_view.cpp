@@ -173,9 +173,7 @@ RtkView::RtkView(ReceiverStateModel *model, QWidget *parent)
     correctionAge_ = findChild<QLabel *>(QStringLiteral("rtkCorrectionAge"));
 
     connect(threshold_, &QDoubleSpinBox::valueChanged, this, [this] { updateWatchdog(age_); });
-    timer_->setInterval(kLiveRefreshMs);
-    connect(timer_, &QTimer::timeout, this, &RtkView::poll);
-    timer_->start();
+    startRefreshTimer(*timer_, kLiveRefreshMs, this, &RtkView::poll);
     refresh();
 }
 

@@ -17,11 +17,9 @@ SignalLevelsView::SignalLevelsView(SatelliteModel *model, QWidget *parent)
     auto markDirty = [this] { dirty_ = true; };
     connect(model_, &QAbstractItemModel::dataChanged, this, markDirty);
     connect(model_, &QAbstractItemModel::modelReset, this, markDirty);
-    repaintTimer_.setInterval(kLiveRefreshMs);
-    connect(&repaintTimer_, &QTimer::timeout, this, [this] {
+    startRefreshTimer(repaintTimer_, kLiveRefreshMs, this, [this] {
         if (dirty_ && isVisible()) update();
     });
-    repaintTimer_.start();
 }
 
 SignalLevelsView::Layout SignalLevelsView::layout() const {

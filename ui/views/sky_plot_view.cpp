@@ -57,11 +57,9 @@ SkyPlotView::SkyPlotView(SatelliteModel *model, QWidget *parent) : QWidget(paren
     auto markDirty = [this] { dirty_ = true; };
     connect(model_, &QAbstractItemModel::dataChanged, this, markDirty);
     connect(model_, &QAbstractItemModel::modelReset, this, markDirty);
-    repaintTimer_.setInterval(kLiveRefreshMs);
-    connect(&repaintTimer_, &QTimer::timeout, this, [this] {
+    startRefreshTimer(repaintTimer_, kLiveRefreshMs, this, [this] {
         if (dirty_ && isVisible()) update();
     });
-    repaintTimer_.start();
 }
 
 void SkyPlotView::setShowTracks(bool on) {
