@@ -3,7 +3,7 @@
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
 #include "dialects.h"
-#include "state/epoch_assembler.h"
+#include "log_scan_reference.h"
 #include "state/log_scan.h"
 
 #include <QTest>
@@ -13,25 +13,10 @@ using namespace gnss;
 
 namespace {
 
-LogScanResult sequential(std::string_view log, const DialectRegistry &reg,
-                         const DecoderOptions &o) {
-    StreamDecoder dec(reg, o);
-    EpochAssembler assembler;
-    LogScanResult r;
-    auto onEpoch = [&](const Epoch &) { ++r.epochs; };
-    // Odd-sized chunks on purpose: chunking must not matter either.
-    for (std::size_t pos = 0; pos < log.size(); pos += 777)
-        dec.feed(log.substr(pos, 777), [&](const SentenceEvent &ev) {
-            if (!ev.message) return;
-            assembler.setDialect(dec.dialect());
-            assembler.add(ev.sentence, *ev.message, onEpoch);
-        });
-    dec.finish();
-    assembler.flush(onEpoch);
-    r.framer = dec.framerStats();
-    r.addresses = dec.addressStats();
-    r.dialect = dec.dialect();
-    return r;
+// Odd-sized chunks on purpose: chunking must not matter either.
+LogScanResult frontToBack(std::string_view log, const DialectRegistry &reg,
+                          const DecoderOptions &o) {
+    return gnss::test::scanFrontToBack(log, reg, o, 777);
 }
 
 void expectSame(const LogScanResult &a, const LogScanResult &b) {
@@ -116,7 +101,7 @@ private slots:
             o.lenient = true;
         else
             o.dialect = dialect.toStdString();
-        const LogScanResult seq = sequential(log, reg, o);
+        const LogScanResult seq = frontToBack(log, reg, o);
         QVERIFY(seq.epochs > 2900);
         for (unsigned threads : {1u, 2u, 3u, 7u}) {
             const LogScanResult par = scanLog(log, reg, o, threads, 1000);
@@ -155,7 +140,7 @@ private slots:
         if (shape == "middle") log = gga + many + many + rmc;
         const DialectRegistry reg = makeBuiltinRegistry();
         const DecoderOptions o;
-        const LogScanResult seq = sequential(log, reg, o);
+        const LogScanResult seq = frontToBack(log, reg, o);
         QCOMPARE(seq.epochs, std::uint64_t{1});
         const LogScanResult par = scanLog(log, reg, o, threads, 16);
         QCOMPARE(par.segments, threads);

@@ -11,6 +11,7 @@
 #include "dialects.h"
 #include "link/connection.h"
 #include "link/sentence_stream.h"
+#include "loop_watch.h"
 #include "main_window.h"
 #include "models/console_model.h"
 #include "models/receiver_state_model.h"
@@ -88,22 +89,6 @@ QString cutOff(QWidget *w, QWidget *viewport) {
                 .arg(viewport->height());
     return {};
 }
-
-struct LoopWatch {
-    QTimer timer;
-    QElapsedTimer clock;
-    qint64 last = 0, worst = 0;
-    LoopWatch() {
-        timer.setInterval(10);
-        QObject::connect(&timer, &QTimer::timeout, [this] {
-            const qint64 now = clock.elapsed();
-            worst = std::max(worst, now - last);
-            last = now;
-        });
-        clock.start();
-        timer.start();
-    }
-};
 
 } // namespace
 
@@ -374,7 +359,7 @@ private slots:
         QVERIFY(probe.listen(QHostAddress::LocalHost));
         const QString where = QStringLiteral("127.0.0.1:%1").arg(probe.serverPort());
         probe.close();
-        LoopWatch watch;
+        gnss::test::LoopWatch watch;
         w_->controller()->connectTo(SourceSpec{SourceSpec::Kind::Tcp, where});
         QTRY_VERIFY_WITH_TIMEOUT(w_->controller()->stateText().contains("trying again"), 5000);
         QTest::qWait(3000); // a few attempts, with growing waits

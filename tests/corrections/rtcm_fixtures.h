@@ -5,7 +5,14 @@
 #include <QByteArray>
 #include <QList>
 
+#include <string_view>
+
 namespace corrections_test {
+
+// The bytes of `b`, as the corrections classes read them.
+inline std::string_view view(const QByteArray &b) {
+    return {b.constData(), std::size_t(b.size())};
+}
 
 // `count` one-second epochs of the simulated base (MSM4 GPS and GLONASS, 1005, 1230 at 0).
 inline QList<QByteArray> baseEpochs(int count, unsigned seed = 1) {

@@ -8,6 +8,7 @@
 // HTTP chunks of the configured sizes for NTRIP 2 clients. Every request and every byte a
 // client sends after its request (the GGA upload) is kept for the test to look at.
 #include "ntrip/base64.h"
+#include "ntrip/gga_upload.h"
 
 #include <QTcpServer>
 #include <QTcpSocket>
@@ -16,6 +17,15 @@
 #include <vector>
 
 namespace corrections_test {
+
+// The rover position the GGA upload tests give the source (Moscow, near the MOUNT stream).
+inline gnss::ntrip::GgaPosition roverPosition() {
+    gnss::ntrip::GgaPosition p;
+    p.latDeg = 55.7512;
+    p.lonDeg = 37.6184;
+    p.altitudeMsl = 152;
+    return p;
+}
 
 // No Q_OBJECT: it has no signals of its own (lambdas do the connecting), so no moc run.
 class TestCaster : public QObject {

@@ -5,6 +5,7 @@
 #include "file_correction_source.h"
 #include "rtcm_fixtures.h"
 #include "serial_correction_source.h"
+#include "sim_process.h"
 #include "source_watch.h"
 #include "tcp_correction_source.h"
 #include "test_caster.h"
@@ -23,20 +24,13 @@ using State = CorrectionSource::State;
 
 namespace {
 
-QString simPath() {
-#ifdef GNSS_SIM_PATH
-    return QStringLiteral(GNSS_SIM_PATH);
-#else
-    return {};
-#endif
-}
-
 // gnss-sim --rtcm-base with the given transport; its first line of output is where it is.
 struct SimBase {
     QProcess proc;
     QString where;
     explicit SimBase(const QStringList &transport) {
-        proc.start(simPath(), QStringList{"--rtcm-base", "--seed", "3"} + transport);
+        proc.start(gnss::link::test::simPath(),
+                   QStringList{"--rtcm-base", "--seed", "3"} + transport);
         if (!proc.waitForStarted(5000)) return;
         QElapsedTimer t;
         t.start();
@@ -49,12 +43,6 @@ struct SimBase {
         if (!proc.waitForFinished(3000)) proc.kill();
     }
 };
-
-void feedMonitor(CorrectionSource &s, CorrectionsMonitor &m) {
-    QObject::connect(&s, &CorrectionSource::dataReceived, [&m](const QByteArray &b) {
-        m.feed(std::string_view(b.constData(), std::size_t(b.size())), 0);
-    });
-}
 
 } // namespace
 
@@ -99,37 +87,31 @@ private slots:
     }
 
     void gnssSimBaseOverTcpGivesValidFrames() {
-        if (simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
         const quint16 port = closedPort();
         SimBase sim({"--tcp", QString::number(port)});
         QCOMPARE(sim.where, QString("127.0.0.1:%1").arg(port));
         TcpCorrectionSource source(QStringLiteral("127.0.0.1"), port);
-        CorrectionsMonitor monitor;
-        feedMonitor(source, monitor);
+        SourceWatch watch(source);
         source.start();
-        QTRY_VERIFY_WITH_TIMEOUT(monitor.messageType(1005, 0).has_value() &&
-                                         monitor.messageType(1074, 0).has_value() &&
-                                         monitor.messageType(1084, 0).has_value(),
-                                 5000);
-        QCOMPARE(monitor.crcErrors(), std::uint64_t(0));
-        QCOMPARE(monitor.decodeErrors(), std::uint64_t(0));
-        QVERIFY(monitor.basePosition());
-        QVERIFY(std::fabs(monitor.basePosition()->geodetic->latDeg - 55.7512) < 1e-6);
+        QTRY_VERIFY_WITH_TIMEOUT(watch.sawBaseMessages(), 5000);
+        QCOMPARE(watch.monitor.crcErrors(), std::uint64_t(0));
+        QCOMPARE(watch.monitor.decodeErrors(), std::uint64_t(0));
+        QVERIFY(watch.monitor.basePosition());
+        QVERIFY(std::fabs(watch.monitor.basePosition()->geodetic->latDeg - 55.7512) < 1e-6);
     }
 
     void aRadioModemOnASerialPortDeliversFrames() {
-        if (simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
         SimBase sim({"--pty", "--baud", "38400"});
         if (!sim.where.startsWith("/dev/")) QSKIP("gnss-sim gave no pseudo-terminal");
         SerialCorrectionSource source(sim.where, 38400);
-        CorrectionsMonitor monitor;
-        feedMonitor(source, monitor);
         SourceWatch watch(source);
         source.start();
         QCOMPARE(source.state(), State::Receiving);
         QVERIFY2(source.description().endsWith("at 38400 baud"), qPrintable(source.description()));
-        QTRY_VERIFY_WITH_TIMEOUT(monitor.messageType(1074, 0).has_value(), 5000);
-        QCOMPARE(monitor.crcErrors(), std::uint64_t(0));
+        QTRY_VERIFY_WITH_TIMEOUT(watch.monitor.messageType(1074, 0).has_value(), 5000);
+        QCOMPARE(watch.monitor.crcErrors(), std::uint64_t(0));
         QVERIFY(source.statusText().startsWith("Receiving RTCM from " + sim.where));
     }
 

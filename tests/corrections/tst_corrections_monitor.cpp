@@ -15,14 +15,6 @@ using namespace gnss;
 using namespace gnss::corrections;
 using namespace corrections_test;
 
-namespace {
-
-std::string_view view(const QByteArray &b) {
-    return {b.constData(), std::size_t(b.size())};
-}
-
-} // namespace
-
 class TstCorrectionsMonitor : public QObject {
     Q_OBJECT
 private slots:

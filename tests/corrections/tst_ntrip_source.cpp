@@ -79,10 +79,6 @@ private slots:
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, version));
         SourceWatch watch(source);
-        CorrectionsMonitor monitor;
-        connect(&source, &CorrectionSource::dataReceived, [&](const QByteArray &b) {
-            monitor.feed(std::string_view(b.constData(), std::size_t(b.size())), 0);
-        });
         source.start();
         QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
         QVERIFY2(source.statusText().contains(status), qPrintable(source.statusText()));
@@ -97,10 +93,10 @@ private slots:
         }
         QTRY_COMPARE_WITH_TIMEOUT(watch.data.size(), sent.size(), 5000);
         QCOMPARE(watch.data, sent);
-        QCOMPARE(monitor.crcErrors(), std::uint64_t(0));
-        QCOMPARE(monitor.bytesSkipped(), std::uint64_t(0));
-        QCOMPARE(monitor.messageType(1074, 0)->count, std::uint64_t(5));
-        QCOMPARE(monitor.messageType(1084, 0)->count, std::uint64_t(5));
+        QCOMPARE(watch.monitor.crcErrors(), std::uint64_t(0));
+        QCOMPARE(watch.monitor.bytesSkipped(), std::uint64_t(0));
+        QCOMPARE(watch.monitor.messageType(1074, 0)->count, std::uint64_t(5));
+        QCOMPARE(watch.monitor.messageType(1084, 0)->count, std::uint64_t(5));
         QVERIFY(watch.errors.isEmpty());
         QCOMPARE(source.bytesReceived(), quint64(sent.size()));
     }
@@ -278,11 +274,7 @@ private slots:
         s.ggaIntervalMs = 200;
         NtripSource source(s);
         source.setMountpointWantsGga(tableSaysWanted);
-        ntrip::GgaPosition p;
-        p.latDeg = 55.7512;
-        p.lonDeg = 37.6184;
-        p.altitudeMsl = 152;
-        source.setRoverPosition(p);
+        source.setRoverPosition(roverPosition());
         source.start();
         QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
         if (sent) QTRY_VERIFY_WITH_TIMEOUT(caster.uploads.startsWith("$GPGGA,"), 150); // at once
@@ -336,10 +328,7 @@ private slots:
         TestCaster caster;
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, 2));
-        CorrectionsMonitor monitor;
-        connect(&source, &CorrectionSource::dataReceived, [&](const QByteArray &b) {
-            monitor.feed(std::string_view(b.constData(), std::size_t(b.size())), 0);
-        });
+        SourceWatch watch(source);
         source.start();
         QTRY_COMPARE_WITH_TIMEOUT(caster.streamingClients(), 1, 5000);
         const QList<QByteArray> epochs = baseEpochs(3);
@@ -347,13 +336,13 @@ private slots:
         corrupt[10] = char(corrupt[10] ^ 0x55); // inside the first frame's payload (1074)
         caster.send(epochs[0] + corrupt + epochs[2]);
         QTRY_VERIFY_WITH_TIMEOUT(
-                monitor.bytesTotal() ==
+                watch.monitor.bytesTotal() ==
                         std::uint64_t(epochs[0].size() + corrupt.size() + epochs[2].size()),
                 3000);
-        QCOMPARE(monitor.crcErrors(), std::uint64_t(1));
-        QCOMPARE(monitor.messageType(1074, 0)->count, std::uint64_t(2));
-        QCOMPARE(monitor.messageType(1084, 0)->count, std::uint64_t(3));
-        QVERIFY(monitor.bytesSkipped() > 0);
+        QCOMPARE(watch.monitor.crcErrors(), std::uint64_t(1));
+        QCOMPARE(watch.monitor.messageType(1074, 0)->count, std::uint64_t(2));
+        QCOMPARE(watch.monitor.messageType(1084, 0)->count, std::uint64_t(3));
+        QVERIFY(watch.monitor.bytesSkipped() > 0);
     }
 
     void theSourceTableIsFetchedAndParsed_data() {

@@ -33,14 +33,6 @@ QString str2strPath() {
     return QStandardPaths::findExecutable(QStringLiteral("str2str"));
 }
 
-QString simPath() {
-#ifdef GNSS_SIM_PATH
-    return QStringLiteral(GNSS_SIM_PATH);
-#else
-    return {};
-#endif
-}
-
 // Whether something accepts connections on 127.0.0.1:port (closed again at once).
 bool accepts(quint16 port) {
     QTcpSocket s;
@@ -132,10 +124,6 @@ private slots:
         QVERIFY2(fed.ok, fed.caster.proc.readAll().constData());
         NtripSource source(settings(fed.caster.casterPort));
         SourceWatch watch(source);
-        CorrectionsMonitor monitor;
-        connect(&source, &CorrectionSource::dataReceived, [&](const QByteArray &b) {
-            monitor.feed(std::string_view(b.constData(), std::size_t(b.size())), 0);
-        });
         source.start();
         QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
         QVERIFY2(source.statusText().contains("(NTRIP 1 (ICY))"), qPrintable(source.statusText()));
@@ -148,8 +136,8 @@ private slots:
         }
         QTRY_COMPARE_WITH_TIMEOUT(watch.data.size(), sent.size(), 5000);
         QCOMPARE(watch.data, sent);
-        QCOMPARE(monitor.crcErrors(), std::uint64_t(0));
-        QCOMPARE(monitor.messageType(1074, 0)->count, std::uint64_t(5));
+        QCOMPARE(watch.monitor.crcErrors(), std::uint64_t(0));
+        QCOMPARE(watch.monitor.messageType(1074, 0)->count, std::uint64_t(5));
     }
 
     void aWrongPasswordIsSaidInWords() {
@@ -208,11 +196,7 @@ private slots:
         NtripSettings s = settings(fed.caster.casterPort);
         s.ggaIntervalMs = 300;
         NtripSource source(s);
-        ntrip::GgaPosition p;
-        p.latDeg = 55.7512;
-        p.lonDeg = 37.6184;
-        p.altitudeMsl = 152;
-        source.setRoverPosition(p);
+        source.setRoverPosition(roverPosition());
         source.start();
         QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
         QTRY_VERIFY_WITH_TIMEOUT(fed.relayed.count("$GPGGA,") >= 2, 5000);
@@ -263,25 +247,19 @@ private slots:
 
     void gnssSimBaseThroughStr2str() {
         REQUIRE_STR2STR();
-        if (simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
         const quint16 simPort = closedPort();
         QProcess sim;
-        sim.start(simPath(), {"--rtcm-base", "--tcp", QString::number(simPort)});
+        sim.start(gnss::link::test::simPath(), {"--rtcm-base", "--tcp", QString::number(simPort)});
         QVERIFY(sim.waitForReadyRead(5000)); // it prints its address once listening
         Str2StrCaster caster(QString("tcpcli://127.0.0.1:%1").arg(simPort), closedPort());
         QVERIFY(caster.ok);
         NtripSource source(settings(caster.casterPort));
-        CorrectionsMonitor monitor;
-        connect(&source, &CorrectionSource::dataReceived, [&](const QByteArray &b) {
-            monitor.feed(std::string_view(b.constData(), std::size_t(b.size())), 0);
-        });
+        SourceWatch watch(source);
         source.start();
-        QTRY_VERIFY_WITH_TIMEOUT(monitor.messageType(1074, 0).has_value() &&
-                                         monitor.messageType(1084, 0).has_value() &&
-                                         monitor.messageType(1005, 0).has_value(),
-                                 8000);
-        QCOMPARE(monitor.crcErrors(), std::uint64_t(0));
-        QCOMPARE(monitor.decodeErrors(), std::uint64_t(0));
+        QTRY_VERIFY_WITH_TIMEOUT(watch.sawBaseMessages(), 8000);
+        QCOMPARE(watch.monitor.crcErrors(), std::uint64_t(0));
+        QCOMPARE(watch.monitor.decodeErrors(), std::uint64_t(0));
         sim.terminate();
         sim.waitForFinished(3000);
     }
@@ -291,10 +269,10 @@ private slots:
     // corrections flow, then float, then fixed.
     void gnssCliTakesTheRoverToRtkFixedThroughStr2str() {
         REQUIRE_STR2STR();
-        if (simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
         const quint16 simPort = closedPort();
         QProcess base;
-        base.start(simPath(), {"--rtcm-base", "--tcp", QString::number(simPort)});
+        base.start(gnss::link::test::simPath(), {"--rtcm-base", "--tcp", QString::number(simPort)});
         QVERIFY(base.waitForReadyRead(5000));
         Str2StrCaster caster(QString("tcpcli://127.0.0.1:%1").arg(simPort), closedPort());
         QVERIFY(caster.ok);

@@ -13,10 +13,6 @@ using namespace corrections_test;
 
 namespace {
 
-std::string_view view(const QByteArray &b) {
-    return {b.constData(), std::size_t(b.size())};
-}
-
 // The groups cover the file whole, in order, without overlap.
 bool coversTheFile(const PlaybackPlan &p, std::size_t size) {
     std::size_t pos = 0;

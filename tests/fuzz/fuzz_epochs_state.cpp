@@ -114,15 +114,9 @@ GNSS_FUZZ_NO_COVERAGE void checkSame(const std::vector<std::string> &a,
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
-    Input in(data, size);
-    const std::uint8_t control = in.byte();
-    const DecoderOptions options = decoderOptions(control);
-    const std::uint8_t chunkSeed = in.byte();
-    std::string storage;
-    const std::string_view bytes = streamOf(control, in.rest(), storage);
-
-    const Run whole = run(bytes, options, {bytes.size()}, true);
-    const Run chunked = run(bytes, options, chunking(chunkSeed, bytes.size()), false);
+    const StreamInput in(data, size);
+    const Run whole = run(in.bytes, in.options, {in.bytes.size()}, true);
+    const Run chunked = run(in.bytes, in.options, chunking(in.chunkSeed, in.bytes.size()), false);
     checkSame(whole.epochs, chunked.epochs, "chunking changed the epochs");
     checkSame(whole.snapshots, chunked.snapshots, "chunking changed the receiver state");
     return 0;

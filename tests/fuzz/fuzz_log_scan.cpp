@@ -6,31 +6,12 @@
 // bits) and the least segment size (1 << the next bits, 1 to 64 bytes: small, so that short
 // inputs are cut too), the rest is the log.
 #include "fuzz_nmea.h"
-#include "state/epoch_assembler.h"
-#include "state/log_scan.h"
+#include "log_scan_reference.h"
 
 using namespace gnss;
 using namespace gnss::fuzz;
 
 namespace {
-
-LogScanResult sequential(std::string_view log, const DecoderOptions &o) {
-    StreamDecoder dec(registry(), o);
-    EpochAssembler assembler;
-    LogScanResult r;
-    auto onEpoch = [&](const Epoch &) { ++r.epochs; };
-    dec.feed(log, [&](const SentenceEvent &ev) {
-        if (!ev.message) return;
-        assembler.setDialect(dec.dialect());
-        assembler.add(ev.sentence, *ev.message, onEpoch);
-    });
-    dec.finish();
-    assembler.flush(onEpoch);
-    r.framer = dec.framerStats();
-    r.addresses = dec.addressStats();
-    r.dialect = dec.dialect();
-    return r;
-}
 
 GNSS_FUZZ_NO_COVERAGE std::string describe(const LogScanResult &r) {
     std::string s =
@@ -77,7 +58,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     std::string storage;
     const std::string_view log = streamOf(control, in.rest(), storage);
 
-    const LogScanResult seq = sequential(log, options);
+    const LogScanResult seq = gnss::test::scanFrontToBack(log, registry(), options);
     const LogScanResult par = scanLog(log, registry(), options, threads, minSegment);
     check(par.segments >= 1 && par.segments <= threads, "scanLog cut more segments than threads");
     if (!same(seq, par))

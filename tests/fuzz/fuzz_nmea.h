@@ -38,6 +38,28 @@ inline std::string_view streamOf(std::uint8_t b, std::string_view payload, std::
     return storage;
 }
 
+// The input of a harness that decodes one stream two ways: byte 0 the decoder options (and
+// streamOf's repeat), byte 1 the seed of a chunking (fuzz_common.h), the rest the stream.
+class StreamInput {
+public:
+    StreamInput(const std::uint8_t *data, std::size_t size) {
+        Input in(data, size);
+        const std::uint8_t control = in.byte();
+        options = decoderOptions(control);
+        chunkSeed = in.byte();
+        bytes = streamOf(control, in.rest(), storage_);
+    }
+    StreamInput(const StreamInput &) = delete; // `bytes` may point into the storage
+    StreamInput &operator=(const StreamInput &) = delete;
+
+    DecoderOptions options;
+    std::uint8_t chunkSeed = 0;
+    std::string_view bytes;
+
+private:
+    std::string storage_;
+};
+
 struct Transcript {
     std::vector<std::string> events; // one JSON object per event
     std::uint64_t lineBytes = 0;     // bytes of the lines handed over (terminators excluded)

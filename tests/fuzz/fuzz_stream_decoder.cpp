@@ -11,18 +11,12 @@ using namespace gnss;
 using namespace gnss::fuzz;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
-    Input in(data, size);
-    const std::uint8_t control = in.byte();
-    const DecoderOptions options = decoderOptions(control);
-    const std::uint8_t chunkSeed = in.byte();
-    std::string storage;
-    const std::string_view bytes = streamOf(control, in.rest(), storage);
-
-    const Transcript whole = decodeInChunks(bytes, options, {bytes.size()}, true);
-    checkCounts(whole, bytes.size(), options);
+    const StreamInput in(data, size);
+    const Transcript whole = decodeInChunks(in.bytes, in.options, {in.bytes.size()}, true);
+    checkCounts(whole, in.bytes.size(), in.options);
     const Transcript chunked =
-            decodeInChunks(bytes, options, chunking(chunkSeed, bytes.size()), false);
-    checkCounts(chunked, bytes.size(), options);
+            decodeInChunks(in.bytes, in.options, chunking(in.chunkSeed, in.bytes.size()), false);
+    checkCounts(chunked, in.bytes.size(), in.options);
     checkSame(whole, chunked, "chunking changed the decoder's output");
     return 0;
 }

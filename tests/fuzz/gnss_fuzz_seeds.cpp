@@ -23,6 +23,8 @@
 #include "fuzz_settings_input.h"
 #include "recorder.h"
 #include "rtcm/rtcm_encoder.h"
+#include "rtcm_test_support.h"
+#include "source_table_examples.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -34,6 +36,8 @@
 
 using namespace gnss;
 using namespace gnss::rtcm;
+using rtcm_test::satMask;
+using rtcm_test::sigMask;
 namespace fs = std::filesystem;
 
 namespace {
@@ -53,17 +57,6 @@ void write(const std::string &harness, const std::string &name, std::string_view
 // fuzz_rtcm's first byte picks the chunking: 0x23 cuts into chunks of 1 to 8 bytes.
 void writeRtcm(const std::string &name, const std::string &frames) {
     write("fuzz_rtcm", name, "\x23" + frames);
-}
-
-std::uint64_t satMask(std::initializer_list<unsigned> ids) {
-    std::uint64_t m = 0;
-    for (const unsigned id : ids) m |= std::uint64_t(1) << (64 - id);
-    return m;
-}
-std::uint32_t sigMask(std::initializer_list<unsigned> ids) {
-    std::uint32_t m = 0;
-    for (const unsigned id : ids) m |= std::uint32_t(1) << (32 - id);
-    return m;
 }
 
 MsmHeader msm(System s, unsigned type) {
@@ -239,17 +232,8 @@ void ntripSeeds() {
     rtcm += encodeMsm(msm(System::Gps, 4));
     rtcm += encodeMsm(msm(System::Glonass, 4));
 
-    // The tables of tests/ntrip/tst_source_table.cpp and tests/corrections/test_caster.h.
-    const std::string table =
-            "STR;MOSC00RUS0;Moscow;RTCM 3.2;1005(10),1074(1),1084(1),1230(10);2;GPS+GLO;IGS;RUS;"
-            "55.75;37.62;0;0;NV08C-RTK;none;B;N;9600;misc;with;semicolons\r\n"
-            "STR;VRS_RTCM3;Network VRS;RTCM 3;1004(1),1012(1);2;GPS+GLO;NET1;RUS;55.00;37.00;1;1;"
-            "sNTRIP;none;B;Y;5000;\r\n"
-            "STR;CMR;Old;CMR+;;2;GPS;NET1;RUS;56.00;38.00;0;0;gen;none;N;N;2400\r\n"
-            "CAS;caster.example.org;2101;Example;Operator;0;RUS;55.7;37.6;fallback.example.org;"
-            "2102;http://example.org\r\n"
-            "NET;NET1;Operator;B;N;http://net;http://str;http://reg;none\r\n"
-            "ENDSOURCETABLE\r\n";
+    // The tables of tests/ntrip (source_table_examples.h) and tests/corrections/test_caster.h.
+    const std::string table = ntrip_test::kSourceTable;
     const std::string casterTable =
             "STR;MOUNT;Test base;RTCM 3.2;1005(1),1074(1),1084(1);1;GPS+GLO;TEST;RUS;55.75;37.62;1;"
             "0;gnss-sim;none;B;N;9600;\r\n"
@@ -258,8 +242,7 @@ void ntripSeeds() {
             "CAS;127.0.0.1;2101;Test;Tests;0;RUS;55.75;37.62;;0;\r\n"
             "NET;TEST;Tests;B;N;none;none;none;\r\n"
             "ENDSOURCETABLE\r\n";
-    const std::string rtklib = "STR;MOUNT;MOUNT;RTCM 3.2;1005(10);2;GPS;LOCAL;XXX;0.00;0.00;0;0;"
-                               "sim;none;B;N;9600;\r\nENDSOURCETABLE\r\n";
+    const std::string rtklib = ntrip_test::kRtklibSourceTable;
     const std::string v2 = "HTTP/1.1 200 OK\r\nNtrip-Version: Ntrip/2.0\r\n";
 
     writeNtrip("icy_rtcm", 0, 0x23, "ICY 200 OK\r\n" + rtcm);

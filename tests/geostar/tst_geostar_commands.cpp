@@ -34,15 +34,7 @@ EncodeResult queries(std::initializer_list<std::string> keys) {
 }
 
 std::vector<KeyValue> extracted(const char *line) {
-    std::vector<KeyValue> out;
-    static const DialectRegistry registry = makeBuiltinRegistry();
-    DecoderOptions o;
-    o.dialect = "geostar";
-    StreamDecoder dec(registry, o);
-    dec.decodeLine(line, [&](const SentenceEvent &ev) {
-        if (ev.message) dialect().extractSettings(*ev.message, out);
-    });
-    return out;
+    return gnss::test::extractedSettings("geostar", line);
 }
 
 QString valueOf(const std::vector<KeyValue> &kv, const char *key) {

@@ -5,6 +5,7 @@
 // none; a value the schema refuses leaves the reply as it was.
 #include "core/setting_command.h"
 #include "core/stream_decoder.h"
+#include "decode_helper.h"
 #include "dialects.h"
 #include "geostar/geostar_dialect.h"
 #include "geostar/geostar_encoders.h"
@@ -19,15 +20,7 @@ namespace {
 
 // Decodes `line` with the geostar dialect and collects what extractSettings reads from it.
 std::vector<KeyValue> extracted(const std::string &line) {
-    static const DialectRegistry registry = makeBuiltinRegistry();
-    DecoderOptions o;
-    o.dialect = "geostar";
-    StreamDecoder dec(registry, o);
-    std::vector<KeyValue> out;
-    dec.decodeLine(line, [&](const SentenceEvent &ev) {
-        if (ev.message) extractSettings(*ev.message, out);
-    });
-    return out;
+    return gnss::test::extractedSettings("geostar", line);
 }
 
 std::string only(const EncodeResult &r) {

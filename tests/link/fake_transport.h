@@ -1,7 +1,7 @@
 #pragma once
 // A transport for unit tests: what is written is kept (and can be answered by a script), what the
 // test feeds is "received", and the link can be dropped on demand.
-#include "dialects.h"
+#include "builtin_registry.h"
 #include "sentence_stream.h"
 #include "transport.h"
 
@@ -10,10 +10,7 @@
 namespace gnss::link::test {
 
 // The built-in dialects, for the decoders tests put on a fake link.
-inline const DialectRegistry &builtinRegistry() {
-    static const DialectRegistry r = makeBuiltinRegistry();
-    return r;
-}
+using gnss::test::builtinRegistry;
 
 // (No Q_OBJECT: it adds no signals or slots, and so needs no moc.)
 class FakeTransport : public Transport {

@@ -46,3 +46,10 @@ public:
 };
 
 } // namespace gnss::link::test
+
+// Skips the test when gnss-sim is not built or `sim` (a SimProcess) did not start.
+#define REQUIRE_SIM(sim)                                                                           \
+    do {                                                                                           \
+        if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");                 \
+        if (!(sim).ok()) QSKIP(qPrintable("gnss-sim did not start: " + (sim).error));              \
+    } while (0)

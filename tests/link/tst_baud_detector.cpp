@@ -51,7 +51,7 @@ private slots:
         FakeTransport link(9600);
         link.open();
         FakeReceiver rx(link, rate);
-        SentenceStream stream(&link, test::builtinRegistry());
+        SentenceStream stream(&link, gnss::test::builtinRegistry());
         BaudDetector d(&stream);
         d.setListenMs(200);
         QSignalSpy finished(&d, &BaudDetector::finished);
@@ -67,7 +67,7 @@ private slots:
         FakeTransport link(9600);
         link.open();
         FakeReceiver rx(link, 0, true);
-        SentenceStream stream(&link, test::builtinRegistry());
+        SentenceStream stream(&link, gnss::test::builtinRegistry());
         BaudDetector d(&stream);
         d.setCandidates({9600, 115200});
         d.setListenMs(100);
@@ -84,7 +84,7 @@ private slots:
         FakeTransport link(9600);
         link.open();
         FakeReceiver rx(link, 1); // no rate works
-        SentenceStream stream(&link, test::builtinRegistry());
+        SentenceStream stream(&link, gnss::test::builtinRegistry());
         BaudDetector d(&stream);
         d.setCandidates({9600, 4800});
         d.setListenMs(150);
@@ -100,7 +100,7 @@ private slots:
     void probeIsSentAtEachRate() {
         FakeTransport link(9600);
         link.open();
-        SentenceStream stream(&link, test::builtinRegistry());
+        SentenceStream stream(&link, gnss::test::builtinRegistry());
         BaudDetector d(&stream);
         d.setCandidates({9600, 4800});
         d.setListenMs(50);

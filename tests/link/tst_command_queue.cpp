@@ -4,6 +4,7 @@
 #include "core/sentence_builder.h"
 #include "dialects.h"
 #include "fake_transport.h"
+#include "queue_checks.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -12,13 +13,6 @@ using namespace gnss;
 using namespace gnss::link;
 using gnss::link::test::FakeTransport;
 
-namespace gnss::link {
-// QCOMPARE prints outcomes by name.
-char *toString(CommandOutcome o) {
-    return qstrdup(qPrintable(outcomeName(o)));
-}
-} // namespace gnss::link
-
 namespace {
 
 QByteArray line(const char *body) {
@@ -26,14 +20,23 @@ QByteArray line(const char *body) {
 }
 
 const Dialect &dialectById(const char *id) {
-    static const DialectRegistry registry = makeBuiltinRegistry();
-    return *registry.find(id);
+    return *gnss::test::builtinRegistry().find(id);
 }
 
-// Waits until the queue has finished `n` commands in all.
-bool waitForHistory(CommandQueue &q, int n, int ms = 5000) {
-    return QTest::qWaitFor([&] { return q.history().size() >= n; }, ms);
-}
+// A command queue on an open fake link (at `baud`) that it reads through its own stream, speaking
+// `dialect` (nullptr: none yet).
+struct OpenFakeLink {
+    FakeTransport link;
+    explicit OpenFakeLink(int baud) : link(baud) { link.open(); }
+};
+struct QueueRig : OpenFakeLink {
+    SentenceStream stream;
+    CommandQueue q;
+    explicit QueueRig(const char *dialect = "nvs", int baud = 0)
+        : OpenFakeLink(baud), stream(&link, gnss::test::builtinRegistry()), q(&link, &stream) {
+        if (dialect) q.setDialect(&dialectById(dialect));
+    }
+};
 
 } // namespace
 
@@ -41,20 +44,16 @@ class TstCommandQueue : public QObject {
     Q_OBJECT
 private slots:
     void versionQueryAnsweredIsAccepted() {
-        FakeTransport link;
-        link.open();
-        link.responder = [](FakeTransport &t, const QByteArray &w) {
+        QueueRig rig;
+        rig.link.responder = [](FakeTransport &t, const QByteArray &w) {
             if (w.startsWith("$PNVGVER"))
                 t.feed("$GPGGA,partial" + line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
         };
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
-        QSignalSpy finished(&q, &CommandQueue::commandFinished);
-        const int id = q.enqueue("PNVGVER");
+        QSignalSpy finished(&rig.q, &CommandQueue::commandFinished);
+        const int id = rig.q.enqueue("PNVGVER");
         QVERIFY(id > 0);
-        QVERIFY(waitForHistory(q, 1));
-        const CommandResult r = q.history().first();
+        QVERIFY(waitForHistory(rig.q, 1));
+        const CommandResult r = rig.q.history().first();
         QCOMPARE(r.id, id);
         QCOMPARE(r.sentence, QStringLiteral("$PNVGVER*4E")); // checksum added
         QCOMPARE(r.outcome, CommandOutcome::Accepted);
@@ -62,253 +61,200 @@ private slots:
         QCOMPARE(r.replies.size(), 1);
         QVERIFY(r.replies.first().startsWith("$PNVGVER,NVS,RTK"));
         QCOMPARE(finished.count(), 1);
-        QCOMPARE(link.written.first(), QByteArray("$PNVGVER*4E\r\n"));
+        QCOMPARE(rig.link.written.first(), QByteArray("$PNVGVER*4E\r\n"));
     }
 
     void refusalCarriesTheReceiversWords() {
-        FakeTransport link;
-        link.open();
-        link.responder = [](FakeTransport &t, const QByteArray &w) {
+        QueueRig rig;
+        rig.link.responder = [](FakeTransport &t, const QByteArray &w) {
             if (w.startsWith("$PNVGRTK")) t.feed(line("PNVGRTK,PVTRATE,5")); // asked for 10
         };
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
-        q.enqueue("$PNVGRTK,PVTRATE,10");
-        QVERIFY(waitForHistory(q, 1));
-        const CommandResult r = q.history().first();
+        rig.q.enqueue("$PNVGRTK,PVTRATE,10");
+        QVERIFY(waitForHistory(rig.q, 1));
+        const CommandResult r = rig.q.history().first();
         QCOMPARE(r.outcome, CommandOutcome::Refused);
         QVERIFY2(r.detail.contains("PNVGRTK,PVTRATE,5"), qPrintable(r.detail));
     }
 
     void silenceTimesOutAfterEveryRetry() {
-        FakeTransport link;
-        link.open();
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
-        QSignalSpy sent(&q, &CommandQueue::commandSent);
+        QueueRig rig;
+        QSignalSpy sent(&rig.q, &CommandQueue::commandSent);
         CommandOptions o;
         o.timeoutMs = 40;
         o.retries = 2;
-        q.enqueue("PNVGVER", o);
-        QVERIFY(waitForHistory(q, 1));
-        QCOMPARE(q.history().first().outcome, CommandOutcome::TimedOut);
-        QCOMPARE(q.history().first().attempts, 3);
+        rig.q.enqueue("PNVGVER", o);
+        QVERIFY(waitForHistory(rig.q, 1));
+        QCOMPARE(rig.q.history().first().outcome, CommandOutcome::TimedOut);
+        QCOMPARE(rig.q.history().first().attempts, 3);
         QCOMPARE(sent.count(), 3);
-        QCOMPARE(link.written.size(), 3);
+        QCOMPARE(rig.link.written.size(), 3);
     }
 
     void answerToARetryIsAccepted() {
-        FakeTransport link;
-        link.open();
+        QueueRig rig;
         int seen = 0;
-        link.responder = [&](FakeTransport &t, const QByteArray &) {
+        rig.link.responder = [&](FakeTransport &t, const QByteArray &) {
             if (++seen == 2) t.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
         };
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
         CommandOptions o;
         o.timeoutMs = 40;
-        q.enqueue("PNVGVER", o);
-        QVERIFY(waitForHistory(q, 1));
-        QCOMPARE(q.history().first().outcome, CommandOutcome::Accepted);
-        QCOMPARE(q.history().first().attempts, 2);
+        rig.q.enqueue("PNVGVER", o);
+        QVERIFY(waitForHistory(rig.q, 1));
+        QCOMPARE(rig.q.history().first().outcome, CommandOutcome::Accepted);
+        QCOMPARE(rig.q.history().first().attempts, 2);
     }
 
     void commandsGoOneAtATimeInOrder() {
-        FakeTransport link;
-        link.open();
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
-        q.enqueue("PNVGVER");
-        q.enqueue("GPGPQ,PNVGTST");
-        QTRY_COMPARE(link.written.size(), 1);
+        QueueRig rig;
+        rig.q.enqueue("PNVGVER");
+        rig.q.enqueue("GPGPQ,PNVGTST");
+        QTRY_COMPARE(rig.link.written.size(), 1);
         QTest::qWait(50);
-        QCOMPARE(link.written.size(), 1); // the second waits for the first's answer
-        link.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
-        QTRY_COMPARE(link.written.size(), 2);
-        QVERIFY(link.written[1].startsWith("$GPGPQ,PNVGTST*"));
-        link.feed(line("PNVGTST,1,1,1"));
-        QVERIFY(waitForHistory(q, 2));
-        QCOMPARE(q.history()[1].outcome, CommandOutcome::Accepted);
+        QCOMPARE(rig.link.written.size(), 1); // the second waits for the first's answer
+        rig.link.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
+        QTRY_COMPARE(rig.link.written.size(), 2);
+        QVERIFY(rig.link.written[1].startsWith("$GPGPQ,PNVGTST*"));
+        rig.link.feed(line("PNVGTST,1,1,1"));
+        QVERIFY(waitForHistory(rig.q, 2));
+        QCOMPARE(rig.q.history()[1].outcome, CommandOutcome::Accepted);
     }
 
     void badChecksumReplyIsNotTaken() {
-        FakeTransport link;
-        link.open();
-        link.responder = [](FakeTransport &t, const QByteArray &) {
+        QueueRig rig;
+        rig.link.responder = [](FakeTransport &t, const QByteArray &) {
             t.feed("$PNVGVER,NVS,RTK,0207,CSM24,0405*00\r\n");
         };
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
         CommandOptions o;
         o.timeoutMs = 40;
         o.retries = 0;
-        q.enqueue("PNVGVER", o);
-        QVERIFY(waitForHistory(q, 1));
-        QCOMPARE(q.history().first().outcome, CommandOutcome::TimedOut);
+        rig.q.enqueue("PNVGVER", o);
+        QVERIFY(waitForHistory(rig.q, 1));
+        QCOMPARE(rig.q.history().first().outcome, CommandOutcome::TimedOut);
     }
 
     void commandWithoutReplyCountsAsSent() {
-        FakeTransport link;
-        link.open();
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
-        q.enqueue("PNVGRST,W");
-        QVERIFY(waitForHistory(q, 1));
-        QCOMPARE(q.history().first().outcome, CommandOutcome::Sent);
+        QueueRig rig;
+        rig.q.enqueue("PNVGRST,W");
+        QVERIFY(waitForHistory(rig.q, 1));
+        QCOMPARE(rig.q.history().first().outcome, CommandOutcome::Sent);
     }
 
     void unknownDialectFindsTheRuleAmongOthers() {
-        FakeTransport link;
-        link.open();
-        link.responder = [](FakeTransport &t, const QByteArray &) {
+        QueueRig rig(nullptr);
+        rig.link.responder = [](FakeTransport &t, const QByteArray &) {
             t.feed(line("GPSGG,RQUERY,GEOS-5,V.5.102,150324,0000,0000,0000"));
         };
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setOtherDialects({&dialectById("nvs"), &dialectById("geostar")});
-        q.enqueue("$GPSGG,RQUERY");
-        QVERIFY(waitForHistory(q, 1));
-        QCOMPARE(q.history().first().outcome, CommandOutcome::Accepted);
+        rig.q.setOtherDialects({&dialectById("nvs"), &dialectById("geostar")});
+        rig.q.enqueue("$GPSGG,RQUERY");
+        QVERIFY(waitForHistory(rig.q, 1));
+        QCOMPARE(rig.q.history().first().outcome, CommandOutcome::Accepted);
     }
 
     void standardQueryIsAnsweredByTheSentenceAsked() {
-        FakeTransport link;
-        link.open();
-        link.responder = [](FakeTransport &t, const QByteArray &) {
+        QueueRig rig(nullptr);
+        rig.link.responder = [](FakeTransport &t, const QByteArray &) {
             t.feed(line("GPRMC,100000.00,A,5540.0000,N,03730.0000,E,0.0,0.0,150324,,,A"));
             t.feed(line("GPGLL,5540.0000,N,03730.0000,E,100000.00,A,A"));
         };
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.enqueue("GPGPQ,GLL");
-        QVERIFY(waitForHistory(q, 1));
-        QCOMPARE(q.history().first().outcome, CommandOutcome::Accepted);
-        QVERIFY(q.history().first().replies.first().startsWith("$GPGLL"));
+        rig.q.enqueue("GPGPQ,GLL");
+        QVERIFY(waitForHistory(rig.q, 1));
+        QCOMPARE(rig.q.history().first().outcome, CommandOutcome::Accepted);
+        QVERIFY(rig.q.history().first().replies.first().startsWith("$GPGLL"));
     }
 
     void malformedSentenceIsRefusedBeforeSending() {
-        FakeTransport link;
-        link.open();
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
+        QueueRig rig(nullptr);
         QString error;
-        QCOMPARE(q.enqueue("PNVG\x01VER", {}, &error), -1);
+        QCOMPARE(rig.q.enqueue("PNVG\x01VER", {}, &error), -1);
         QVERIFY(error.contains("not allowed"));
-        QCOMPARE(q.enqueue("   ", {}, &error), -1);
+        QCOMPARE(rig.q.enqueue("   ", {}, &error), -1);
         QVERIFY(!error.isEmpty());
         QTest::qWait(20);
-        QVERIFY(link.written.isEmpty());
+        QVERIFY(rig.link.written.isEmpty());
     }
 
     void cancelStopsTheRunningAndTheQueuedCommand() {
-        FakeTransport link;
-        link.open();
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
-        const int a = q.enqueue("PNVGVER");
-        const int b = q.enqueue("GPGPQ,PNVGTST");
-        QTRY_COMPARE(link.written.size(), 1);
-        QVERIFY(q.cancel(b));
-        QVERIFY(q.cancel(a));
-        QVERIFY(!q.cancel(a));
-        QCOMPARE(q.history().size(), 2);
-        for (const auto &r : q.history()) QCOMPARE(r.outcome, CommandOutcome::Cancelled);
-        link.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405")); // too late: ignored
+        QueueRig rig;
+        const int a = rig.q.enqueue("PNVGVER");
+        const int b = rig.q.enqueue("GPGPQ,PNVGTST");
+        QTRY_COMPARE(rig.link.written.size(), 1);
+        QVERIFY(rig.q.cancel(b));
+        QVERIFY(rig.q.cancel(a));
+        QVERIFY(!rig.q.cancel(a));
+        QCOMPARE(rig.q.history().size(), 2);
+        for (const auto &r : rig.q.history()) QCOMPARE(r.outcome, CommandOutcome::Cancelled);
+        rig.link.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405")); // too late: ignored
         QTest::qWait(30);
-        QCOMPARE(q.history().size(), 2);
-        QCOMPARE(link.written.size(), 1);
+        QCOMPARE(rig.q.history().size(), 2);
+        QCOMPARE(rig.link.written.size(), 1);
     }
 
     void lostLinkFailsTheRunningAndEveryQueuedCommand() {
-        FakeTransport link;
-        link.open();
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
-        q.enqueue("PNVGVER");
-        q.enqueue("GPGPQ,PNVGTST");
-        QTRY_COMPARE(link.written.size(), 1);
-        link.drop(QStringLiteral("unplugged"));
-        QVERIFY(waitForHistory(q, 2));
-        QCOMPARE(q.history()[0].outcome, CommandOutcome::LinkLost);
-        QVERIFY(q.history()[0].detail.contains("unplugged"));
-        QCOMPARE(q.history()[1].outcome, CommandOutcome::LinkLost);
-        QCOMPARE(link.written.size(), 1);
+        QueueRig rig;
+        rig.q.enqueue("PNVGVER");
+        rig.q.enqueue("GPGPQ,PNVGTST");
+        QTRY_COMPARE(rig.link.written.size(), 1);
+        rig.link.drop(QStringLiteral("unplugged"));
+        QVERIFY(waitForHistory(rig.q, 2));
+        QCOMPARE(rig.q.history()[0].outcome, CommandOutcome::LinkLost);
+        QVERIFY(rig.q.history()[0].detail.contains("unplugged"));
+        QCOMPARE(rig.q.history()[1].outcome, CommandOutcome::LinkLost);
+        QCOMPARE(rig.link.written.size(), 1);
         // And a command for a closed link is not sent at all.
-        q.enqueue("PNVGVER");
-        QVERIFY(waitForHistory(q, 3));
-        QCOMPARE(q.history()[2].outcome, CommandOutcome::LinkLost);
+        rig.q.enqueue("PNVGVER");
+        QVERIFY(waitForHistory(rig.q, 3));
+        QCOMPARE(rig.q.history()[2].outcome, CommandOutcome::LinkLost);
     }
 
     void baudChangeSwitchesThePortAndConfirmsTraffic() {
-        FakeTransport link(115200);
-        link.open();
-        link.responder = [](FakeTransport &t, const QByteArray &w) {
+        QueueRig rig("nvs", 115200);
+        rig.link.responder = [](FakeTransport &t, const QByteArray &w) {
             if (w.startsWith("$PNVGRZA")) t.feed(line("PNVGRZA,1,38400,1"));
             // At the new speed the receiver answers its probe.
             if (w.startsWith("$PNVGVER") && t.baud() == 38400)
                 t.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
         };
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
-        QSignalSpy bauds(&q, &CommandQueue::baudChanged);
-        q.enqueue("PNVGRZA,1,38400,1");
-        QVERIFY(waitForHistory(q, 1));
-        const CommandResult r = q.history().first();
+        QSignalSpy bauds(&rig.q, &CommandQueue::baudChanged);
+        rig.q.enqueue("PNVGRZA,1,38400,1");
+        QVERIFY(waitForHistory(rig.q, 1));
+        const CommandResult r = rig.q.history().first();
         QCOMPARE(r.outcome, CommandOutcome::Accepted);
         QCOMPARE(r.baudBefore, 115200);
         QCOMPARE(r.baudAfter, 38400);
-        QCOMPARE(link.baud(), 38400);
+        QCOMPARE(rig.link.baud(), 38400);
         QCOMPARE(bauds.count(), 1);
     }
 
     void baudChangeWithoutTrafficFallsBackAndSaysSo() {
-        FakeTransport link(115200);
-        link.open();
-        link.responder = [](FakeTransport &t, const QByteArray &w) {
+        QueueRig rig("nvs", 115200);
+        rig.link.responder = [](FakeTransport &t, const QByteArray &w) {
             if (w.startsWith("$PNVGRZA")) t.feed(line("PNVGRZA,1,38400,1"));
             // The receiver did not really switch: it still answers at the old speed.
             if (w.startsWith("$PNVGVER") && t.baud() == 115200)
                 t.feed(line("PNVGVER,NVS,RTK,0207,CSM24,0405"));
         };
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
         CommandOptions o;
         o.confirmMs = 100;
-        q.enqueue("PNVGRZA,1,38400,1", o);
-        QVERIFY(waitForHistory(q, 1));
-        const CommandResult r = q.history().first();
+        rig.q.enqueue("PNVGRZA,1,38400,1", o);
+        QVERIFY(waitForHistory(rig.q, 1));
+        const CommandResult r = rig.q.history().first();
         QCOMPARE(r.outcome, CommandOutcome::Failed);
-        QCOMPARE(link.baud(), 115200);
-        QCOMPARE(link.bauds, (QList<int>{38400, 115200}));
+        QCOMPARE(rig.link.baud(), 115200);
+        QCOMPARE(rig.link.bauds, (QList<int>{38400, 115200}));
         QVERIFY2(r.detail.contains("38400") && r.detail.contains("115200"), qPrintable(r.detail));
     }
 
     void baudChangeLostAtBothRatesIsALostLink() {
-        FakeTransport link(115200);
-        link.open();
-        link.responder = [](FakeTransport &t, const QByteArray &w) {
+        QueueRig rig("nvs", 115200);
+        rig.link.responder = [](FakeTransport &t, const QByteArray &w) {
             if (w.startsWith("$PNVGRZA")) t.feed(line("PNVGRZA,1,38400,1"));
         };
-        SentenceStream stream(&link, test::builtinRegistry());
-        CommandQueue q(&link, &stream);
-        q.setDialect(&dialectById("nvs"));
         CommandOptions o;
         o.confirmMs = 60;
-        q.enqueue("PNVGRZA,1,38400,1", o);
-        QVERIFY(waitForHistory(q, 1));
-        QCOMPARE(q.history().first().outcome, CommandOutcome::LinkLost);
-        QCOMPARE(link.baud(), 115200);
+        rig.q.enqueue("PNVGRZA,1,38400,1", o);
+        QVERIFY(waitForHistory(rig.q, 1));
+        QCOMPARE(rig.q.history().first().outcome, CommandOutcome::LinkLost);
+        QCOMPARE(rig.link.baud(), 115200);
     }
 };
 

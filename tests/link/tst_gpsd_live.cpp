@@ -4,6 +4,7 @@
 // vendor's own sentences too (so its dialect is recognised), a device gpsd does not have is
 // refused in words, and gpsd going away is a lost link. Skipped when gpsd is not installed.
 // Before any Qt header: it has a member named emit, which Qt defines as a macro.
+#include "builtin_registry.h"
 #include "state/epoch_assembler.h"
 
 #include "connection.h"
@@ -23,15 +24,11 @@ using gnss::link::test::SimProcess;
 
 namespace {
 
-const DialectRegistry &registry() {
-    static const DialectRegistry r = makeBuiltinRegistry();
-    return r;
-}
-
 #define REQUIRE_SIM_AND_GPSD(sim, gpsd)                                                            \
     do {                                                                                           \
-        if (test::simPath().isEmpty()) QSKIP("gnss-sim is not built");                             \
-        if (test::gpsdPath().isEmpty()) QSKIP("gpsd is not installed (Debian package gpsd)");      \
+        if (link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");                       \
+        if (link::test::gpsdPath().isEmpty())                                                      \
+            QSKIP("gpsd is not installed (Debian package gpsd)");                                  \
         if (!(sim).ok()) QSKIP(qPrintable("gnss-sim did not start: " + (sim).error));              \
         QVERIFY2((gpsd).ok(), qPrintable((gpsd).error));                                           \
     } while (0)
@@ -75,7 +72,7 @@ private slots:
         SimProcess sim({"--dialect", "nmea", "--baud", "9600"});
         GpsdProcess gpsd(sim.device, 9600);
         REQUIRE_SIM_AND_GPSD(sim, gpsd);
-        Connection c(std::make_unique<GpsdTransport>(at(gpsd)), registry());
+        Connection c(std::make_unique<GpsdTransport>(at(gpsd)), gnss::test::builtinRegistry());
         Tally tally;
         tally.watch(c);
         QSignalSpy opened(&c, &Connection::opened);
@@ -105,7 +102,8 @@ private slots:
         GpsdProcess gpsd(sim.device, 115200);
         REQUIRE_SIM_AND_GPSD(sim, gpsd);
         // Watching the one device by name.
-        Connection c(std::make_unique<GpsdTransport>(at(gpsd, sim.device)), registry());
+        Connection c(std::make_unique<GpsdTransport>(at(gpsd, sim.device)),
+                     gnss::test::builtinRegistry());
         QSignalSpy dialect(&c, &Connection::dialectDetected);
         QVERIFY(c.open());
         QVERIFY2(dialect.wait(20000), qPrintable(c.transport()->errorString()));
@@ -128,7 +126,7 @@ private slots:
         SimProcess sim({"--dialect", "nmea", "--baud", "9600"});
         GpsdProcess gpsd(sim.device, 9600);
         REQUIRE_SIM_AND_GPSD(sim, gpsd);
-        Connection c(std::make_unique<GpsdTransport>(at(gpsd)), registry());
+        Connection c(std::make_unique<GpsdTransport>(at(gpsd)), gnss::test::builtinRegistry());
         c.setReconnectDelays(200, 400);
         QSignalSpy opened(&c, &Connection::opened);
         QSignalSpy lost(&c, &Connection::linkLost);

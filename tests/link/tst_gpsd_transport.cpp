@@ -2,6 +2,7 @@
 // keeps of gpsd's output (the receiver's sentences) and what it strips (gpsd's JSON, hex dumps of
 // binary packets), and the conversation with a scripted gpsd on 127.0.0.1 (greeting, watch
 // request, devices, refusals, a server that is not gpsd, gpsd going away).
+#include "builtin_registry.h"
 #include "command_queue.h"
 #include "connection.h"
 #include "dialects.h"
@@ -21,11 +22,6 @@ using namespace gnss;
 using namespace gnss::link;
 
 namespace {
-
-const DialectRegistry &registry() {
-    static const DialectRegistry r = makeBuiltinRegistry();
-    return r;
-}
 
 const QByteArray kGga = "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n";
 const QByteArray kRmc = "$GPRMC,123519,A,4807.038,N,01131.000,E,022.4,084.4,230394,003.1,W*6A\r\n";
@@ -225,7 +221,8 @@ private slots:
 
     void aCommandThroughGpsdFailsWithTheReason() {
         FakeGpsd gpsd;
-        Connection c(std::make_unique<GpsdTransport>(target(gpsd.port())), registry());
+        Connection c(std::make_unique<GpsdTransport>(target(gpsd.port())),
+                     gnss::test::builtinRegistry());
         QSignalSpy opened(&c, &Connection::opened);
         QVERIFY(c.open());
         QVERIFY(opened.wait(5000));
@@ -238,7 +235,8 @@ private slots:
 
     void decodedThroughAConnection() {
         FakeGpsd gpsd;
-        Connection c(std::make_unique<GpsdTransport>(target(gpsd.port())), registry());
+        Connection c(std::make_unique<GpsdTransport>(target(gpsd.port())),
+                     gnss::test::builtinRegistry());
         int gga = 0, rmc = 0;
         connect(c.stream(), &SentenceStream::sentenceDecoded, this, [&](const SentenceEvent &e) {
             if (!e.message) return;

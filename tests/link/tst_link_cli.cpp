@@ -24,12 +24,6 @@ Run cli(const QStringList &args) {
     return gnss::test::runCli(args, {}, 30000);
 }
 
-#define REQUIRE_SIM(sim)                                                                           \
-    do {                                                                                           \
-        if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");                 \
-        if (!(sim).ok()) QSKIP(qPrintable("gnss-sim did not start: " + (sim).error));              \
-    } while (0)
-
 } // namespace
 
 class TstLinkCli : public QObject {

@@ -4,9 +4,11 @@
 // simulator hangs up and comes back (same device path, now a new pseudo-terminal), recording
 // byte-exact.
 #include "baud_detector.h"
+#include "builtin_registry.h"
 #include "command_queue.h"
 #include "connection.h"
 #include "dialects.h"
+#include "queue_checks.h"
 #include "recording.h"
 #include "sentence_stream.h"
 #include "serial_transport.h"
@@ -22,39 +24,6 @@ using namespace gnss;
 using namespace gnss::link;
 using gnss::link::test::SimProcess;
 
-namespace gnss::link {
-char *toString(CommandOutcome o) {
-    return qstrdup(qPrintable(outcomeName(o)));
-}
-} // namespace gnss::link
-
-namespace {
-
-const DialectRegistry &registry() {
-    static const DialectRegistry r = makeBuiltinRegistry();
-    return r;
-}
-
-#define REQUIRE_SIM(sim)                                                                           \
-    do {                                                                                           \
-        if (test::simPath().isEmpty()) QSKIP("gnss-sim is not built");                             \
-        if (!(sim).ok()) QSKIP(qPrintable("gnss-sim did not start: " + (sim).error));              \
-    } while (0)
-
-SerialSettings at(const QString &device, int baud) {
-    SerialSettings s;
-    s.portName = device;
-    s.baud = baud;
-    return s;
-}
-
-// Runs the queue until it has `n` results.
-bool waitForHistory(CommandQueue &q, int n, int ms) {
-    return QTest::qWaitFor([&] { return q.history().size() >= n; }, ms);
-}
-
-} // namespace
-
 class TstLinkPty : public QObject {
     Q_OBJECT
 private slots:
@@ -67,9 +36,9 @@ private slots:
         QFETCH(int, rate);
         SimProcess sim({"--dialect", "nvs", "--baud", QString::number(rate), "--seed", "2"});
         REQUIRE_SIM(sim);
-        SerialTransport port(at(sim.device, 9600));
+        SerialTransport port(SerialSettings{sim.device, 9600});
         QVERIFY2(port.open(), qPrintable(port.errorString()));
-        SentenceStream stream(&port, registry());
+        SentenceStream stream(&port, gnss::test::builtinRegistry());
         BaudDetector d(&stream);
         d.setListenMs(500); // NVS: 5 Hz
         QSignalSpy finished(&d, &BaudDetector::finished);
@@ -88,9 +57,9 @@ private slots:
         QFETCH(QString, dialect);
         SimProcess sim({"--dialect", dialect, "--baud", "38400"});
         REQUIRE_SIM(sim);
-        SerialTransport port(at(sim.device, 38400));
+        SerialTransport port(SerialSettings{sim.device, 38400});
         QVERIFY2(port.open(), qPrintable(port.errorString()));
-        SentenceStream stream(&port, registry());
+        SentenceStream stream(&port, gnss::test::builtinRegistry());
         VendorDetector v(&stream);
         QSignalSpy finished(&v, &VendorDetector::finished);
         v.start();
@@ -107,11 +76,11 @@ private slots:
     void commandOutcomesThroughTheSimulator() {
         SimProcess sim({"--dialect", "nvs", "--faults", "noreply=PNVGCFG"});
         REQUIRE_SIM(sim);
-        SerialTransport port(at(sim.device, 115200));
+        SerialTransport port(SerialSettings{sim.device, 115200});
         QVERIFY2(port.open(), qPrintable(port.errorString()));
-        SentenceStream stream(&port, registry());
+        SentenceStream stream(&port, gnss::test::builtinRegistry());
         CommandQueue q(&port, &stream);
-        q.setDialect(registry().find("nvs"));
+        q.setDialect(gnss::test::builtinRegistry().find("nvs"));
         q.enqueue("PNVGVER");
         q.enqueue("PNVGRTK,PVTRATE,99"); // out of range: the reply carries the rate in force
         CommandOptions quick;
@@ -130,11 +99,11 @@ private slots:
     void baudChangeRoundTrip() {
         SimProcess sim({"--dialect", "nvs"});
         REQUIRE_SIM(sim);
-        SerialTransport port(at(sim.device, 115200));
+        SerialTransport port(SerialSettings{sim.device, 115200});
         QVERIFY2(port.open(), qPrintable(port.errorString()));
-        SentenceStream stream(&port, registry());
+        SentenceStream stream(&port, gnss::test::builtinRegistry());
         CommandQueue q(&port, &stream);
-        q.setDialect(registry().find("nvs"));
+        q.setDialect(gnss::test::builtinRegistry().find("nvs"));
         q.enqueue("PNVGRZA,1,38400,1");
         QVERIFY(waitForHistory(q, 1, 10000));
         QCOMPARE(q.history()[0].outcome, CommandOutcome::Accepted);
@@ -156,7 +125,8 @@ private slots:
         REQUIRE_SIM(first);
         QVERIFY(QFile::link(first.device, link));
 
-        Connection conn(std::make_unique<SerialTransport>(at(link, 9600)), registry());
+        Connection conn(std::make_unique<SerialTransport>(SerialSettings{link, 9600}),
+                        gnss::test::builtinRegistry());
         conn.setReconnectDelays(200, 800); // the waits grow (tst_sources); here they stay short
         const QString log = dir.filePath("run.nmea");
         QVERIFY(conn.startRecording(log));
@@ -210,7 +180,8 @@ private slots:
         SimProcess sim({"--dialect", "nvs", "--faults", "binary=0.3,badcs=0.05"});
         REQUIRE_SIM(sim);
         QTemporaryDir dir;
-        Connection conn(std::make_unique<SerialTransport>(at(sim.device, 115200)), registry());
+        Connection conn(std::make_unique<SerialTransport>(SerialSettings{sim.device, 115200}),
+                        gnss::test::builtinRegistry());
         const QString log = dir.filePath("rec.nmea");
         QVERIFY(conn.startRecording(log));
         QByteArray received;

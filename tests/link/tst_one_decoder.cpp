@@ -46,8 +46,8 @@ class TestOneDecoder : public QObject {
 private slots:
     void eachSentenceIsDecodedOnceWhateverListens() {
         const DialectRegistry registry(standardSentenceRules(), {&kCounting, &nmeaDialect()});
-        auto owned = std::make_unique<test::FakeTransport>(115200);
-        test::FakeTransport *fake = owned.get();
+        auto owned = std::make_unique<link::test::FakeTransport>(115200);
+        link::test::FakeTransport *fake = owned.get();
         Connection conn(std::move(owned), registry, {.dialect = "counting"});
         QVERIFY(conn.open());
         // The listeners the application puts on a link (the connection's own command queue and

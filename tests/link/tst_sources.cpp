@@ -1,9 +1,11 @@
 // The other sources behind the same interface: the in-process simulator (baud detection, vendor
 // detection and a command without any serial port) and a TCP client against gnss-sim --tcp.
 #include "baud_detector.h"
+#include "builtin_registry.h"
 #include "command_queue.h"
 #include "connection.h"
 #include "dialects.h"
+#include "loop_watch.h"
 #include "sentence_stream.h"
 #include "sim_process.h"
 #include "simulator_transport.h"
@@ -25,11 +27,6 @@ using namespace gnss;
 using namespace gnss::link;
 
 namespace {
-
-const DialectRegistry &registry() {
-    static const DialectRegistry r = makeBuiltinRegistry();
-    return r;
-}
 
 // A TCP port on 127.0.0.1 with nobody listening.
 quint16 closedPort() {
@@ -69,34 +66,16 @@ struct SilentListener {
     }
 };
 
-// Watches the event loop: the longest gap between the ticks of a 10 ms timer.
-struct LoopWatch {
-    QTimer timer;
-    QElapsedTimer clock;
-    qint64 last = 0, worst = 0;
-    int ticks = 0;
-    LoopWatch() {
-        timer.setInterval(10);
-        QObject::connect(&timer, &QTimer::timeout, [this] {
-            const qint64 now = clock.elapsed();
-            worst = std::max(worst, now - last);
-            last = now;
-            ++ticks;
-        });
-        clock.start();
-        timer.start();
-    }
-};
-
 } // namespace
 
 class TstSources : public QObject {
     Q_OBJECT
 private slots:
     void inProcessSimulatorIsDetectedAndCommanded() {
-        SimulatorTransport sim(registry(), QStringLiteral("nvs"), 3, 9600); // receiver at 115200
+        SimulatorTransport sim(gnss::test::builtinRegistry(), QStringLiteral("nvs"), 3,
+                               9600); // receiver at 115200
         QVERIFY2(sim.open(), qPrintable(sim.errorString()));
-        SentenceStream stream(&sim, registry());
+        SentenceStream stream(&sim, gnss::test::builtinRegistry());
         BaudDetector baud(&stream);
         baud.setListenMs(500);
         QSignalSpy baudDone(&baud, &BaudDetector::finished);
@@ -113,20 +92,20 @@ private slots:
         QVERIFY(!vendor.result().firmware.isEmpty());
 
         CommandQueue q(&sim, &stream);
-        q.setDialect(registry().find("nvs"));
+        q.setDialect(gnss::test::builtinRegistry().find("nvs"));
         q.enqueue("PNVGVER");
         QTRY_COMPARE_WITH_TIMEOUT(q.history().size(), 1, 5000);
         QCOMPARE(int(q.history().first().outcome), int(CommandOutcome::Accepted));
     }
 
     void tcpClientReadsGnssSimAndNoticesItLeaving() {
-        if (test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        if (link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
         QTcpServer probe; // a free port for the simulator
         QVERIFY(probe.listen(QHostAddress::LocalHost));
         const quint16 port = probe.serverPort();
         probe.close();
         QProcess sim;
-        sim.start(test::simPath(), {"--dialect", "nmea", "--tcp", QString::number(port)});
+        sim.start(link::test::simPath(), {"--dialect", "nmea", "--tcp", QString::number(port)});
         QVERIFY(sim.waitForReadyRead(5000)); // it prints its address once listening
         TcpTransport tcp(QStringLiteral("127.0.0.1"), port);
         QVERIFY2(tcp.open(), qPrintable(tcp.errorString()));
@@ -141,7 +120,7 @@ private slots:
     }
 
     void tcpConnectsInTheBackgroundAndSaysWhyItFailed() {
-        LoopWatch watch;
+        gnss::test::LoopWatch watch;
         TcpTransport tcp(QStringLiteral("127.0.0.1"), closedPort());
         QSignalSpy errors(&tcp, &Transport::errorOccurred);
         QElapsedTimer t;
@@ -163,7 +142,7 @@ private slots:
         // event loop runs throughout.
         SilentListener silent;
         QVERIFY(silent.port > 0);
-        LoopWatch watch;
+        gnss::test::LoopWatch watch;
         TcpTransport tcp(QStringLiteral("127.0.0.1"), silent.port);
         tcp.setConnectTimeout(400);
         QElapsedTimer t;
@@ -177,9 +156,9 @@ private slots:
     }
 
     void aConnectionRetriesAClosedPortWithGrowingWaits() {
-        LoopWatch watch;
+        gnss::test::LoopWatch watch;
         Connection conn(std::make_unique<TcpTransport>(QStringLiteral("127.0.0.1"), closedPort()),
-                        registry());
+                        gnss::test::builtinRegistry());
         conn.setReconnectDelays(50, 200);
         QList<int> waits;
         connect(&conn, &Connection::openFailed,
@@ -194,15 +173,15 @@ private slots:
     }
 
     void commandsQueuedWhileConnectingWaitForTheLink() {
-        if (test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        if (link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
         const quint16 port = closedPort();
         QProcess sim;
-        sim.start(test::simPath(), {"--dialect", "nvs", "--tcp", QString::number(port)});
+        sim.start(link::test::simPath(), {"--dialect", "nvs", "--tcp", QString::number(port)});
         QVERIFY(sim.waitForReadyRead(5000));
         Connection conn(std::make_unique<TcpTransport>(QStringLiteral("127.0.0.1"), port),
-                        registry());
+                        gnss::test::builtinRegistry());
         QVERIFY(conn.open());
-        conn.commands()->setDialect(registry().find("nvs"));
+        conn.commands()->setDialect(gnss::test::builtinRegistry().find("nvs"));
         conn.commands()->enqueue("PNVGVER"); // before the socket has connected
         QTRY_COMPARE_WITH_TIMEOUT(conn.commands()->history().size(), 1, 5000);
         QCOMPARE(int(conn.commands()->history().first().outcome), int(CommandOutcome::Accepted));

@@ -7,6 +7,7 @@
 // The spec prints no example of any of these reports: its only PNMRX600/603 examples
 // (examples.tsv) are the requests, checked here against the request encoders. The report lines
 // below are in the receiver's form (what the simulated VT002 sends).
+#include "builtin_registry.h"
 #include "core/stream_decoder.h"
 #include "dialects.h"
 #include "examples_table.h"
@@ -21,12 +22,9 @@
 using namespace gnss;
 using namespace gnss::nemerix;
 
-namespace {
+using gnss::test::builtinRegistry;
 
-const DialectRegistry &registry() {
-    static const DialectRegistry r = makeBuiltinRegistry();
-    return r;
-}
+namespace {
 
 // Decodes `line` (a renamed prefix read as PNMRX) and hands the message to `use` while its text
 // fields are valid; false when it does not decode.
@@ -34,7 +32,7 @@ bool withDecoded(const std::string &line, const std::function<void(const Message
     DecoderOptions o;
     o.dialect = "nemerix";
     o.addressAliases = {{"PXYZW", "PNMRX"}};
-    StreamDecoder d(registry(), o);
+    StreamDecoder d(builtinRegistry(), o);
     bool decoded = false;
     d.decodeLine(line, [&](const SentenceEvent &ev) {
         if (!ev.message) return;

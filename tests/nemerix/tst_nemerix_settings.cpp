@@ -24,15 +24,7 @@ gnss::EncodeResult encode(std::initializer_list<std::pair<const char *, const ch
 
 // Decodes a line and collects what extractSettings reads from it.
 std::vector<gnss::KeyValue> extract(const std::string &line) {
-    static const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
-    gnss::DecoderOptions o;
-    o.dialect = "nemerix";
-    gnss::StreamDecoder dec(registry, o);
-    std::vector<gnss::KeyValue> out;
-    dec.decodeLine(line, [&](const gnss::SentenceEvent &ev) {
-        if (ev.message) D().extractSettings(*ev.message, out);
-    });
-    return out;
+    return gnss::test::extractedSettings("nemerix", line);
 }
 
 QString joined(const std::vector<std::string> &v) {

@@ -1,31 +1,18 @@
 // Source tables: every STR field read, CAS and NET records, the table RTKLIB's caster sends,
 // short and garbage lines counted, and the same table whatever the chunking.
 #include "ntrip/source_table.h"
+#include "source_table_examples.h"
 
 #include <QTest>
 
 using namespace gnss::ntrip;
-
-namespace {
-
-const char kTable[] =
-        "STR;MOSC00RUS0;Moscow;RTCM 3.2;1005(10),1074(1),1084(1),1230(10);2;GPS+GLO;IGS;RUS;"
-        "55.75;37.62;0;0;NV08C-RTK;none;B;N;9600;misc;with;semicolons\r\n"
-        "STR;VRS_RTCM3;Network VRS;RTCM 3;1004(1),1012(1);2;GPS+GLO;NET1;RUS;55.00;37.00;1;1;"
-        "sNTRIP;none;B;Y;5000;\r\n"
-        "STR;CMR;Old;CMR+;;2;GPS;NET1;RUS;56.00;38.00;0;0;gen;none;N;N;2400\r\n"
-        "CAS;caster.example.org;2101;Example;Operator;0;RUS;55.7;37.6;fallback.example.org;"
-        "2102;http://example.org\r\n"
-        "NET;NET1;Operator;B;N;http://net;http://str;http://reg;none\r\n"
-        "ENDSOURCETABLE\r\n";
-
-} // namespace
+using namespace ntrip_test;
 
 class TstSourceTable : public QObject {
     Q_OBJECT
 private slots:
     void everyStreamFieldIsRead() {
-        const SourceTable t = parseSourceTable(kTable);
+        const SourceTable t = parseSourceTable(kSourceTable);
         QVERIFY(t.complete);
         QCOMPARE(int(t.streams.size()), 3);
         const StreamEntry &s = t.streams[0];
@@ -57,7 +44,7 @@ private slots:
     }
 
     void casterAndNetworkRecordsAreRead() {
-        const SourceTable t = parseSourceTable(kTable);
+        const SourceTable t = parseSourceTable(kSourceTable);
         QCOMPARE(int(t.casters.size()), 1);
         QCOMPARE(t.casters[0].host, std::string("caster.example.org"));
         QCOMPARE(t.casters[0].port.value_or(0), 2101);
@@ -71,10 +58,7 @@ private slots:
     }
 
     void rtklibCastersTableIsRead() {
-        // What Debian's str2str (RTKLIB 2.4.3 b34) sends for the mountpoint string of the tests.
-        const SourceTable t = parseSourceTable(
-                "STR;MOUNT;MOUNT;RTCM 3.2;1005(10);2;GPS;LOCAL;XXX;0.00;0.00;0;0;sim;none;B;N;"
-                "9600;\r\nENDSOURCETABLE\r\n");
+        const SourceTable t = parseSourceTable(kRtklibSourceTable);
         QVERIFY(t.complete);
         QCOMPARE(int(t.streams.size()), 1);
         QCOMPARE(t.streams[0].mountpoint, std::string("MOUNT"));
@@ -122,7 +106,7 @@ private slots:
     }
 
     void theTableDoesNotDependOnChunking() {
-        const std::string text = kTable;
+        const std::string text = kSourceTable;
         const SourceTable whole = parseSourceTable(text);
         for (std::size_t cut = 1; cut < text.size(); ++cut) {
             SourceTableParser p;

@@ -3,6 +3,7 @@
 // parameter and the accepted range (nothing built).
 #include "core/sentence.h"
 #include "core/stream_decoder.h"
+#include "decode_helper.h"
 #include "dialects.h"
 #include "nvs/nvs_encoders.h"
 
@@ -12,6 +13,7 @@
 
 using namespace gnss;
 using namespace gnss::nvs;
+using gnss::test::decodeWith;
 
 namespace {
 
@@ -19,26 +21,6 @@ QString one(const EncodeResult &r) {
     if (!r.ok()) return "error: " + QString::fromStdString(r.error);
     if (r.sentences.size() != 1) return "sentences: " + QString::number(r.sentences.size());
     return QString::fromStdString(r.sentences.front());
-}
-
-// Decodes `line` under the nvs dialect and hands the message to `check`.
-void decodeWith(const std::string &line, const std::function<void(const Message &)> &check) {
-    static const DialectRegistry registry = makeBuiltinRegistry();
-    DecoderOptions o;
-    o.dialect = "nvs";
-    StreamDecoder dec(registry, o);
-    bool decoded = false;
-    std::string error;
-    dec.decodeLine(line, [&](const SentenceEvent &ev) {
-        QCOMPARE(int(ev.sentence.checksum()), int(ChecksumStatus::Ok));
-        if (ev.message) {
-            decoded = true;
-            check(*ev.message);
-        } else {
-            error = std::string(ev.error);
-        }
-    });
-    QVERIFY2(decoded, error.c_str());
 }
 
 template <class T> const T &as(const Message &m) {
@@ -138,7 +120,7 @@ void TstNvsEncoders::rtkSetAndQueryRoundTrip() {
     QVERIFY(r.ok());
     QCOMPARE(QString::fromStdString(r.sentences[0]).section('*', 0, 0),
              QString("$PNVGRTK,PVTRATE,10,SFTRS,0.05,SYSGLO,0,MODE,INITGPSWEEK"));
-    decodeWith(r.sentences[0], [](const Message &m) {
+    decodeWith("nvs", r.sentences[0], [](const Message &m) {
         const auto &rtk = as<Rtk>(m);
         QCOMPARE(rtk.params.size(), std::size_t(5));
         QCOMPARE(rtk.find("PVTRATE")->values.at(0), std::string_view("10"));
@@ -155,7 +137,7 @@ void TstNvsEncoders::rtkBaseBlhBothFormsRoundTrip() {
     for (const auto &set : {std::span<const RtkSet>(radians), std::span<const RtkSet>(nmea)}) {
         const auto r = encodeRtk(set);
         QVERIFY2(r.ok(), r.error.c_str());
-        decodeWith(r.sentences[0], [&](const Message &m) {
+        decodeWith("nvs", r.sentences[0], [&](const Message &m) {
             const auto &rtk = as<Rtk>(m);
             QCOMPARE(rtk.params.size(), std::size_t(1));
             std::string joined;
@@ -172,7 +154,7 @@ void TstNvsEncoders::rtkEveryTable4ParameterQueries() {
     QCOMPARE(names.size(), std::size_t(33));
     const auto r = encodeRtk({}, names);
     QVERIFY(r.ok());
-    decodeWith(r.sentences[0], [&](const Message &m) {
+    decodeWith("nvs", r.sentences[0], [&](const Message &m) {
         const auto &rtk = as<Rtk>(m);
         QCOMPARE(rtk.params.size(), names.size());
         for (std::size_t i = 0; i < names.size(); ++i) {
@@ -187,7 +169,7 @@ void TstNvsEncoders::rzbListRoundTrips() {
     const auto r = encodeRzb(1, list);
     QCOMPARE(QString::fromStdString(r.sentences.at(0)).section('*', 0, 0),
              QString("$PNVGRZB,PORT,1,RMC,1,GSV,5,PNVGBSS,10"));
-    decodeWith(r.sentences[0], [&](const Message &m) {
+    decodeWith("nvs", r.sentences[0], [&](const Message &m) {
         const auto &rzb = as<Rzb>(m);
         QCOMPARE(rzb.port, std::optional<int>(1));
         QCOMPARE(rzb.entries.size(), std::size_t(3));
@@ -205,7 +187,7 @@ void TstNvsEncoders::ppsEmptyFieldsStayEmpty() {
     const auto r = encodePps(p);
     QCOMPARE(QString::fromStdString(r.sentences.at(0)).section('*', 0, 0),
              QString("$PNVGPPS,,,N,,500,,"));
-    decodeWith(r.sentences[0], [](const Message &m) {
+    decodeWith("nvs", r.sentences[0], [](const Message &m) {
         const auto &pps = as<Pps>(m);
         QVERIFY(!pps.type && !pps.mode && !pps.adjust && !pps.validity && !pps.cableDelay);
         QCOMPARE(pps.reference, std::optional<char>('N'));
@@ -214,51 +196,51 @@ void TstNvsEncoders::ppsEmptyFieldsStayEmpty() {
 }
 
 void TstNvsEncoders::nmeRzaRstCfgRoundTrip() {
-    decodeWith(encodeNme(3, 8, 1).sentences.at(0), [](const Message &m) {
+    decodeWith("nvs", encodeNme(3, 8, 1).sentences.at(0), [](const Message &m) {
         const auto &n = as<Nme>(m);
         QCOMPARE(n.timeDecimals, std::optional<int>(3));
         QCOMPARE(n.positionDecimals, std::optional<int>(8));
         QCOMPARE(n.talkerMode, std::optional<int>(1));
     });
-    decodeWith(encodeRza(2, 460800, 7).sentences.at(0), [](const Message &m) {
+    decodeWith("nvs", encodeRza(2, 460800, 7).sentences.at(0), [](const Message &m) {
         const auto &z = as<Rza>(m);
         QCOMPARE(z.port, std::optional<int>(2));
         QCOMPARE(z.baud, std::optional<int>(460800));
         QCOMPARE(z.protocol, std::optional<int>(7));
     });
-    decodeWith(encodeRst('W').sentences.at(0),
+    decodeWith("nvs", encodeRst('W').sentences.at(0),
                [](const Message &m) { QCOMPARE(as<Rst>(m).type, std::optional<char>('W')); });
-    decodeWith(encodeCfg('E').sentences.at(0),
+    decodeWith("nvs", encodeCfg('E').sentences.at(0),
                [](const Message &m) { QCOMPARE(as<Cfg>(m).action, std::string_view("E")); });
-    decodeWith(encodeVersionRequest().sentences.at(0),
+    decodeWith("nvs", encodeVersionRequest().sentences.at(0),
                [](const Message &m) { QVERIFY(as<Ver>(m).request); });
 }
 
 void TstNvsEncoders::idlSubcommandsRoundTrip() {
-    decodeWith(encodeIdlMode(0).sentences.at(0), [](const Message &m) {
+    decodeWith("nvs", encodeIdlMode(0).sentences.at(0), [](const Message &m) {
         QCOMPARE(int(as<Idl>(m).kind), int(IdlKind::Mode));
         QCOMPARE(as<Idl>(m).mode, std::optional<int>(0));
     });
-    decodeWith(encodeIdlAdd().sentences.at(0), [](const Message &m) {
+    decodeWith("nvs", encodeIdlAdd().sentences.at(0), [](const Message &m) {
         QCOMPARE(int(as<Idl>(m).kind), int(IdlKind::Add));
         QVERIFY(!as<Idl>(m).stationId && !as<Idl>(m).icb);
     });
-    decodeWith(encodeIdlAdd(4095).sentences.at(0), [](const Message &m) {
+    decodeWith("nvs", encodeIdlAdd(4095).sentences.at(0), [](const Message &m) {
         QCOMPARE(as<Idl>(m).stationId, std::optional<int>(4095));
         QVERIFY(!as<Idl>(m).icb);
     });
-    decodeWith(encodeIdlAdd(7, -0.25).sentences.at(0), [](const Message &m) {
+    decodeWith("nvs", encodeIdlAdd(7, -0.25).sentences.at(0), [](const Message &m) {
         QCOMPARE(as<Idl>(m).stationId, std::optional<int>(7));
         QCOMPARE(as<Idl>(m).icb, std::optional<double>(-0.25));
     });
-    decodeWith(encodeIdlRemove(32).sentences.at(0), [](const Message &m) {
+    decodeWith("nvs", encodeIdlRemove(32).sentences.at(0), [](const Message &m) {
         QCOMPARE(int(as<Idl>(m).kind), int(IdlKind::Remove));
         QCOMPARE(as<Idl>(m).stationId, std::optional<int>(32));
         QVERIFY(!as<Idl>(m).ok);
     });
-    decodeWith(encodeIdlClear().sentences.at(0),
+    decodeWith("nvs", encodeIdlClear().sentences.at(0),
                [](const Message &m) { QCOMPARE(int(as<Idl>(m).kind), int(IdlKind::Clear)); });
-    decodeWith(encodeIdlShow().sentences.at(0),
+    decodeWith("nvs", encodeIdlShow().sentences.at(0),
                [](const Message &m) { QCOMPARE(int(as<Idl>(m).kind), int(IdlKind::Show)); });
 }
 

@@ -5,6 +5,7 @@
 // with a translatable reason, never printed.
 #include "core/sentence.h"
 #include "core/stream_decoder.h"
+#include "decode_helper.h"
 #include "dialects.h"
 #include "examples_table.h"
 #include "nvs/nvs_encoders.h"
@@ -18,6 +19,7 @@
 
 using namespace gnss;
 using namespace gnss::nvs;
+using gnss::test::decodeWith;
 
 namespace {
 
@@ -61,30 +63,9 @@ std::string json(const Message &m) {
     return out;
 }
 
-// Decodes `line` under the nvs dialect and hands the message to `check` (the message refers to
-// the line: it is only valid inside).
-void decodeWith(const std::string &line, const std::function<void(const Message &)> &check) {
-    static const DialectRegistry registry = makeBuiltinRegistry();
-    DecoderOptions o;
-    o.dialect = "nvs";
-    StreamDecoder dec(registry, o);
-    bool decoded = false;
-    std::string error;
-    dec.decodeLine(line, [&](const SentenceEvent &ev) {
-        QCOMPARE(int(ev.sentence.checksum()), int(ChecksumStatus::Ok));
-        if (ev.message) {
-            decoded = true;
-            check(*ev.message);
-        } else {
-            error = std::string(ev.error);
-        }
-    });
-    QVERIFY2(decoded, (line + ": " + error).c_str());
-}
-
 // encode(decode(line)) == line, byte for byte.
 void rebuildsByteForByte(const std::string &line) {
-    decodeWith(line, [&](const Message &m) {
+    decodeWith("nvs", line, [&](const Message &m) {
         const EncodeResult r = encodeMessage(m);
         QVERIFY2(r.ok(), r.error.c_str());
         QCOMPARE(r.sentences.size(), std::size_t(1));
@@ -398,11 +379,11 @@ private slots:
         QCOMPARE(r.sentences.size(), std::size_t(1));
         const std::string line = r.sentences.front();
         // Decoded, it is the message encoded; encoded again, the same bytes.
-        decodeWith(line, [&](const Message &m) {
+        decodeWith("nvs", line, [&](const Message &m) {
             const EncodeResult again = encodeMessage(m);
             QVERIFY2(again.ok(), again.error.c_str());
             QCOMPARE(QString::fromStdString(again.sentences.front()), QString::fromStdString(line));
-            decodeWith(again.sentences.front(),
+            decodeWith("nvs", again.sentences.front(),
                        [&](const Message &m2) { QCOMPARE(json(m2), json(m)); });
         });
     }

@@ -3,6 +3,7 @@
 // `gnss-cli schema nvs` / `gnss-cli encode nvs` end to end.
 #include "core/settings_plan.h"
 #include "core/stream_decoder.h"
+#include "decode_helper.h"
 #include "dialects.h"
 #include "nvs/nvs_dialect.h"
 #include "nvs/nvs_encoders.h"
@@ -20,16 +21,9 @@ using namespace gnss;
 
 namespace {
 
+// Decodes `line` with the nvs dialect and collects what extractSettings reads from it.
 std::vector<KeyValue> extract(const std::string &line) {
-    static const DialectRegistry registry = makeBuiltinRegistry();
-    DecoderOptions o;
-    o.dialect = "nvs";
-    StreamDecoder dec(registry, o);
-    std::vector<KeyValue> out;
-    dec.decodeLine(line, [&](const SentenceEvent &ev) {
-        if (ev.message) nvs::dialect().extractSettings(*ev.message, out);
-    });
-    return out;
+    return gnss::test::extractedSettings("nvs", line);
 }
 
 QStringList lines(const EncodeResult &r) {

@@ -1,10 +1,12 @@
 #pragma once
-// Small helpers shared by the RTCM suites: hex fixtures, frames ↔ payloads.
+// Small helpers shared by the RTCM suites (and the fuzz seeds): hex fixtures, MSM masks,
+// frames ↔ payloads.
 #include "rtcm/rtcm_framer.h"
 #include "rtcm/rtcm_messages.h"
 
 #include <cctype>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
@@ -29,6 +31,20 @@ inline std::string fromHex(std::string_view hex) {
         }
     }
     return out;
+}
+
+// An MSM satellite mask with the given satellite ids (1..64) set, the first id the highest bit.
+inline std::uint64_t satMask(std::initializer_list<unsigned> ids) {
+    std::uint64_t m = 0;
+    for (const unsigned id : ids) m |= std::uint64_t(1) << (64 - id);
+    return m;
+}
+
+// An MSM signal mask with the given signal ids (1..32) set, the first id the highest bit.
+inline std::uint32_t sigMask(std::initializer_list<unsigned> ids) {
+    std::uint32_t m = 0;
+    for (const unsigned id : ids) m |= std::uint32_t(1) << (32 - id);
+    return m;
 }
 
 inline std::span<const std::uint8_t> bytesOf(std::string_view s) {

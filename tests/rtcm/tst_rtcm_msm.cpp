@@ -15,17 +15,6 @@ Q_DECLARE_METATYPE(System)
 
 namespace {
 
-std::uint64_t satMask(std::initializer_list<unsigned> ids) {
-    std::uint64_t m = 0;
-    for (const unsigned id : ids) m |= std::uint64_t(1) << (64 - id);
-    return m;
-}
-std::uint32_t sigMask(std::initializer_list<unsigned> ids) {
-    std::uint32_t m = 0;
-    for (const unsigned id : ids) m |= std::uint32_t(1) << (32 - id);
-    return m;
-}
-
 // A plausible header for each system: its own satellites and signals.
 MsmHeader headerFor(System s, unsigned type) {
     MsmHeader h;

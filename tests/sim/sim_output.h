@@ -1,7 +1,7 @@
 #pragma once
 // Test helper: what a stretch of simulator output contains, decoded with the real stream decoder.
+#include "builtin_registry.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 
 #include <map>
 #include <string>
@@ -32,13 +32,17 @@ struct OutputSummary {
                 out.push_back(l.line);
         return out;
     }
+    // How many sentences of a type (GGA, PNVGBSS) there were.
+    int count(const std::string &type) const {
+        auto it = byType.find(type);
+        return it == byType.end() ? 0 : it->second;
+    }
 };
 
 inline OutputSummary summarize(const std::string &bytes, std::string_view dialect = "auto") {
-    static const DialectRegistry registry = makeBuiltinRegistry();
     DecoderOptions o;
     o.dialect = std::string(dialect);
-    StreamDecoder d(registry, o);
+    StreamDecoder d(builtinRegistry(), o);
     OutputSummary s;
     d.feed(bytes, [&](const SentenceEvent &ev) {
         DecodedLine l;

@@ -1,5 +1,6 @@
 // Every simulated receiver is deterministic for a seed (same seed, same bytes; another seed,
 // another sky noise), and its output is limited to what its line speed carries.
+#include "builtin_registry.h"
 #include "receiver.h"
 #include "sim_output.h"
 
@@ -10,6 +11,8 @@
 
 using namespace gnss;
 using namespace gnss::sim;
+
+using gnss::test::builtinRegistry;
 
 namespace {
 
@@ -26,11 +29,6 @@ std::string run(std::string_view dialect, std::uint32_t seed, int baud = 0) {
     return out;
 }
 
-const DialectRegistry &registry() {
-    static const DialectRegistry r = makeBuiltinRegistry();
-    return r;
-}
-
 } // namespace
 
 class TstSimDeterminism : public QObject {
@@ -38,7 +36,7 @@ class TstSimDeterminism : public QObject {
 private slots:
     void sameSeedSameBytes_data() {
         QTest::addColumn<QString>("dialect");
-        for (std::string_view d : simulatedDialects(registry()))
+        for (std::string_view d : simulatedDialects(builtinRegistry()))
             QTest::newRow(std::string(d).c_str()) << QString::fromUtf8(d.data(), d.size());
     }
     void sameSeedSameBytes() {
@@ -54,7 +52,7 @@ private slots:
     }
     void outputIsLimitedByTheLineSpeed_data() {
         QTest::addColumn<QString>("dialect");
-        for (std::string_view d : simulatedDialects(registry()))
+        for (std::string_view d : simulatedDialects(builtinRegistry()))
             QTest::newRow(std::string(d).c_str()) << QString::fromUtf8(d.data(), d.size());
     }
     void outputIsLimitedByTheLineSpeed() {

@@ -5,6 +5,7 @@
 #include "geostar/geostar_sim_receiver.h"
 #include "receiver.h"
 #include "sim_output.h"
+#include "sim_receiver.h"
 
 #include "core/sentence.h"
 #include "core/sentence_builder.h"
@@ -22,10 +23,7 @@ using gnss::test::summarize;
 namespace {
 
 std::unique_ptr<GeoStarReceiver> makeGeoStar(std::uint32_t seed = 1) {
-    SimOptions o;
-    o.seed = seed;
-    auto rx = makeReceiver("geostar", o);
-    return std::unique_ptr<GeoStarReceiver>(static_cast<GeoStarReceiver *>(rx.release()));
+    return gnss::test::makeReceiverAs<GeoStarReceiver>("geostar", seed);
 }
 
 void command(Receiver &rx, std::string_view text) {
@@ -70,11 +68,6 @@ Decoded query(Receiver &rx) {
     return replies(rx.takeOutput());
 }
 
-int count(const gnss::test::OutputSummary &s, const std::string &type) {
-    auto it = s.byType.find(type);
-    return it == s.byType.end() ? 0 : it->second;
-}
-
 } // namespace
 
 class TstSimGeoStarReceiver : public QObject {
@@ -89,11 +82,11 @@ private slots:
         const auto s = summarize(out, "geostar");
         QCOMPARE(s.checksumErrors, 0);
         QCOMPARE(s.decodeErrors, 0);
-        QCOMPARE(count(s, "GGA"), 5);
-        QCOMPARE(count(s, "ZDA"), 5);
-        QCOMPARE(count(s, "DTM"), 5);
-        QVERIFY(count(s, "GSA") >= 5 && count(s, "GSV") >= 5);
-        for (auto t : {"RMC", "VTG", "GLL", "GNS", "RLM"}) QVERIFY2(!count(s, t), t);
+        QCOMPARE(s.count("GGA"), 5);
+        QCOMPARE(s.count("ZDA"), 5);
+        QCOMPARE(s.count("DTM"), 5);
+        QVERIFY(s.count("GSA") >= 5 && s.count("GSV") >= 5);
+        for (auto t : {"RMC", "VTG", "GLL", "GNS", "RLM"}) QVERIFY2(!s.count(t), t);
         // Power-on: one RQUERY and one NQUERY, the NQUERY the spec's own example.
         const auto r = replies(out);
         QCOMPARE(r.rqueries, 1);
@@ -157,7 +150,7 @@ private slots:
             QCOMPARE(rx->takeOutput().size(), std::size_t(0)); // NMEA off
             rx->powerCycle();
             rx->advance(1.5);
-            QVERIFY(count(summarize(rx->takeOutput(), "geostar"), "GGA") > 0);
+            QVERIFY(summarize(rx->takeOutput(), "geostar").count("GGA") > 0);
             return;
         }
         if (def->effect == CommandEffect::ResetsReceiver) {
@@ -185,7 +178,7 @@ private slots:
             rx->takeOutput();
             rx->advance(3);
             const auto s = summarize(rx->takeOutput(), "geostar");
-            if (msg != "RLM") QCOMPARE(count(s, msg) > 0, value == "1");
+            if (msg != "RLM") QCOMPARE(s.count(msg) > 0, value == "1");
         } else if (key == "output.NMEAV") {
             QCOMPARE(std::string(nq.field(3)), value);
         } else if (key == "output.RATE") {
@@ -193,7 +186,7 @@ private slots:
             QCOMPARE(geostar::rateCodeToHz(std::stoi(std::string(nq.field(2)))), std::stoi(value));
             rx->takeOutput();
             rx->advance(2.0);
-            QCOMPARE(count(summarize(rx->takeOutput(), "geostar"), "GGA"), 2 * std::stoi(value));
+            QCOMPARE(summarize(rx->takeOutput(), "geostar").count("GGA"), 2 * std::stoi(value));
         } else if (key == "power.PSM") {
             QCOMPARE(q.config1->powerSavingEnabled, value == "1");
         } else if (key == "nav.ELEV") {
@@ -378,7 +371,7 @@ private slots:
         rx->setLineBaud(9600);
         rx->advance(2.0);
         const std::string out = rx->takeOutput();
-        QVERIFY(count(summarize(out, "geostar"), "GGA") > 0);
+        QVERIFY(summarize(out, "geostar").count("GGA") > 0);
         QCOMPARE(replies(out).rqueries, 0);
     }
 };

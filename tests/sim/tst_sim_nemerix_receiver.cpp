@@ -4,6 +4,7 @@
 #include "nemerix/nemerix_sim_receiver.h"
 #include "receiver.h"
 #include "sim_output.h"
+#include "sim_receiver.h"
 
 #include "core/sentence.h"
 #include "core/sentence_builder.h"
@@ -22,19 +23,11 @@ using gnss::test::summarize;
 namespace {
 
 std::unique_ptr<NemerixReceiver> makeNemerix(std::uint32_t seed = 1) {
-    SimOptions o;
-    o.seed = seed;
-    auto rx = makeReceiver("nemerix", o);
-    return std::unique_ptr<NemerixReceiver>(static_cast<NemerixReceiver *>(rx.release()));
+    return gnss::test::makeReceiverAs<NemerixReceiver>("nemerix", seed);
 }
 
 void command(Receiver &rx, const std::string &body) {
     rx.receive(buildSentence(body) + "\r\n");
-}
-
-int count(const gnss::test::OutputSummary &s, const std::string &type) {
-    auto it = s.byType.find(type);
-    return it == s.byType.end() ? 0 : it->second;
 }
 
 // Settings read back from PNMRX603 by the dialect's own extractSettings.
@@ -71,11 +64,11 @@ private slots:
         const auto s = summarize(rx->takeOutput(), "nemerix");
         QCOMPARE(s.checksumErrors, 0); // the checksum is optional on input, always sent here
         QCOMPARE(s.decodeErrors, 0);
-        QCOMPARE(count(s, "GGA"), 9);
-        QCOMPARE(count(s, "RMC"), 9);
-        QCOMPARE(count(s, "VTG"), 9);
-        QCOMPARE(count(s, "GSA"), 3); // seconds 0, 3, 6
-        QVERIFY(!count(s, "GLL") && !count(s, "ZDA"));
+        QCOMPARE(s.count("GGA"), 9);
+        QCOMPARE(s.count("RMC"), 9);
+        QCOMPARE(s.count("VTG"), 9);
+        QCOMPARE(s.count("GSA"), 3); // seconds 0, 3, 6
+        QVERIFY(!s.count("GLL") && !s.count("ZDA"));
         for (const auto &l : s.lines) {
             QVERIFY2(l.address.rfind("GP", 0) == 0, l.line.c_str()); // GPS only
             QVERIFY(l.line.find("*") != std::string::npos);
@@ -97,9 +90,9 @@ private slots:
         rx->takeOutput();
         rx->advance(6.0);
         auto s = summarize(rx->takeOutput(), "nemerix");
-        QCOMPARE(count(s, "ZDA"), 6);
-        QCOMPARE(count(s, "GSA"), 0);
-        QVERIFY(count(s, "GSV") >= 3);
+        QCOMPARE(s.count("ZDA"), 6);
+        QCOMPARE(s.count("GSA"), 0);
+        QVERIFY(s.count("GSV") >= 3);
         auto rb = readBack(*rx);
         QCOMPARE(rb["rate.ZDA"], std::string("1"));
         QCOMPARE(rb["rate.GSV"], std::string("2"));
@@ -111,13 +104,13 @@ private slots:
         rx->advance(4.0);
         rx->takeOutput();
         rx->advance(4.0);
-        QCOMPARE(count(summarize(rx->takeOutput(), "nemerix"), "GGA"), 2);
+        QCOMPARE(summarize(rx->takeOutput(), "nemerix").count("GGA"), 2);
         command(*rx, "PNMRX108,GGA,GLL,GSA"); // only these, every second, in this order
         rx->takeOutput();
         rx->advance(3.0);
         s = summarize(rx->takeOutput(), "nemerix");
-        QCOMPARE(count(s, "GLL"), 3);
-        QVERIFY(!count(s, "RMC") && !count(s, "GSV"));
+        QCOMPARE(s.count("GLL"), 3);
+        QVERIFY(!s.count("RMC") && !s.count("GSV"));
         QCOMPARE(s.lines[0].address, std::string("GPGGA"));
         QCOMPARE(s.lines[1].address, std::string("GPGLL"));
         command(*rx, "PNMRX103,GGA,12"); // out of range 0..9: not taken
@@ -193,7 +186,7 @@ private slots:
         command(*rx, "PNMRX113");
         rx->advance(5.0);
         QCOMPARE(rx->currentFix(), FixKind::None);
-        QVERIFY(count(summarize(rx->takeOutput(), "nemerix"), "GGA") > 0); // still talking
+        QVERIFY(summarize(rx->takeOutput(), "nemerix").count("GGA") > 0); // still talking
         command(*rx, "PNMRX111");
         rx->advance(10.0);
         QVERIFY(rx->currentFix() != FixKind::None);
@@ -211,7 +204,7 @@ private slots:
         command(*rx, "PNMRX100,0,4801,0"); // not in the table: refused as a whole
         QCOMPARE(rx->baud(), 4800);
         rx->advance(2.0);
-        QVERIFY(count(summarize(rx->takeOutput(), "nemerix"), "GGA") > 0);
+        QVERIFY(summarize(rx->takeOutput(), "nemerix").count("GGA") > 0);
         command(*rx, "PNMRX601");
         rx->takeOutput();
         rx->advance(3.0);
@@ -219,7 +212,7 @@ private slots:
         rx->powerCycle(); // factory settings: 9600 again
         rx->setLineBaud(9600);
         rx->advance(2.0);
-        QVERIFY(count(summarize(rx->takeOutput(), "nemerix"), "GGA") > 0);
+        QVERIFY(summarize(rx->takeOutput(), "nemerix").count("GGA") > 0);
     }
     void navigationDataReportsMatchTheSky() {
         auto rx = makeNemerix(5);
