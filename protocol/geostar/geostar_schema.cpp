@@ -3,7 +3,9 @@
 #include "geostar_schema.h"
 
 #include "core/field_parse.h"
+#include "core/number_options.h"
 #include "core/setting_command.h"
+#include "geostar_actions.h"
 #include "geostar_commands.h"
 
 #include <algorithm>
@@ -14,10 +16,6 @@ namespace {
 using A = SettingAccess;
 using T = SettingType;
 
-constexpr SettingOption kBaud[] = {
-        {"4800", "4800"},     {"9600", "9600"},     {"19200", "19200"},
-        {"38400", "38400"},   {"57600", "57600"},   {"115200", "115200"},
-        {"230400", "230400"}, {"460800", "460800"}, {"921600", "921600"}};
 constexpr SettingOption kStop[] = {{"1", "1 stop bit"}, {"2", "2 stop bits"}};
 constexpr SettingOption kNmea[] = {{"2", "NMEA v2.x"}, {"4", "NMEA v4.10"}};
 constexpr SettingOption kRate[] = {{"1", "1 Hz"}, {"2", "2 Hz"}, {"5", "5 Hz"}, {"10", "10 Hz"}};
@@ -87,35 +85,25 @@ EncodeResult readRquery(std::span<const std::string>) {
     return query("RQUERY");
 }
 
-// Set commands are answered with nothing: the query that reports them is the confirmation.
-constexpr SettingCommand kOutputCommand{.name = "GPSGG (output, NQUERY)",
-                                        .confirmedByRead = true,
-                                        .validate = validateByTable,
-                                        .write = writeByTable,
-                                        .read = readNquery};
-constexpr SettingCommand kConfigCommand{.name = "GPSGG (configuration, RQUERY)",
-                                        .confirmedByRead = true,
-                                        .validate = validateByTable,
-                                        .write = writeByTable,
-                                        .read = readRquery};
-constexpr SettingCommand kUnreportedCommand{
-        .name = "GPSGG (not reported)", .validate = validateByTable, .write = writeByTable};
-// What changes the link: a restart, then the port's framing, then leaving NMEA.
-constexpr SettingCommand kRestartCommand{.name = "GPSGG,xSTART",
-                                         .changesLink = true,
-                                         .order = 0,
-                                         .validate = validateByTable,
-                                         .write = writeByTable};
-constexpr SettingCommand kPortCommand{.name = "GPSGG,BDR/STOP",
-                                      .changesLink = true,
-                                      .order = 1,
-                                      .validate = validateByTable,
-                                      .write = writeByTable};
-constexpr SettingCommand kProtocolCommand{.name = "GPSGG,SWPROT",
-                                          .changesLink = true,
-                                          .order = 2,
-                                          .validate = validateByTable,
-                                          .write = writeByTable};
+// Every command of the rows validates and writes by the command table; what differs is how it is
+// confirmed (set commands are answered with nothing: the query that reports them is the
+// confirmation) and what changes the link: a restart, then the port's framing, then leaving NMEA.
+constexpr SettingCommand byTable(SettingCommand c) {
+    c.validate = validateByTable;
+    c.write = writeByTable;
+    return c;
+}
+constexpr SettingCommand kOutputCommand =
+        byTable({.name = "GPSGG (output, NQUERY)", .confirmedByRead = true, .read = readNquery});
+constexpr SettingCommand kConfigCommand = byTable(
+        {.name = "GPSGG (configuration, RQUERY)", .confirmedByRead = true, .read = readRquery});
+constexpr SettingCommand kUnreportedCommand = byTable({.name = "GPSGG (not reported)"});
+constexpr SettingCommand kRestartCommand =
+        byTable({.name = "GPSGG,xSTART", .changesLink = true, .order = 0});
+constexpr SettingCommand kPortCommand =
+        byTable({.name = "GPSGG,BDR/STOP", .changesLink = true, .order = 1});
+constexpr SettingCommand kProtocolCommand =
+        byTable({.name = "GPSGG,SWPROT", .changesLink = true, .order = 2});
 
 #define GEOSTAR_OUTPUT(MSG, LABEL, HELP, FIELD)                                                    \
     SettingDef {                                                                                   \
@@ -203,7 +191,7 @@ constexpr SettingDef kSchema[] = {
          .group = "Port",
          .type = T::Enum,
          .unit = "bit/s",
-         .options = kBaud,
+         .options = kNumberOptions<kSupportedBauds>, // BDR004 ... BDR921
          .help = "Serial port speed; takes effect after the command (4.8)",
          .access = A::WriteOnly,
          .readBack = "not reported (NQUERY gives the port number only)",

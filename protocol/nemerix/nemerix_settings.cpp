@@ -4,8 +4,10 @@
 // PNMRX101 (channel count), PNMRX112 (power), PNMRX108 (sequence) before PNMRX103 (rates, which
 // override the sequence's defaults), PNMRX107, and PNMRX100 last, since the port speed changes
 // right after it.
+#include "core/baud_rates.h"
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"
+#include "nemerix_actions.h"
 #include "nemerix_commands.h"
 #include "nemerix_dialect_parts.h"
 
@@ -169,26 +171,27 @@ EncodeResult writeSequence(std::span<const KeyValue> values) {
     return r;
 }
 
+// The (id, value) items of PNMRX103 / PNMRX107 that `values` set, under "<prefix><id>", in the
+// order of `ids`.
+std::vector<RateItem> rateItems(std::span<const KeyValue> values, std::string_view prefix,
+                                std::span<const std::string_view> ids) {
+    const Values v = valuesOf(values);
+    std::vector<RateItem> items;
+    for (std::string_view id : ids) {
+        const std::string key = std::string(prefix) + std::string(id);
+        if (v.has(key.c_str())) items.push_back({std::string(id), *v.integer(key.c_str())});
+    }
+    return items;
+}
+
 // PNMRX103, after the sequence (its rates override the sequence's defaults).
 EncodeResult writeRates(std::span<const KeyValue> values) {
-    const Values v = valuesOf(values);
-    std::vector<RateItem> rates;
-    for (std::string_view id : kNmeaMessageIds) {
-        const std::string key = "rate." + std::string(id);
-        if (v.has(key.c_str())) rates.push_back({std::string(id), *v.integer(key.c_str())});
-    }
-    return withoutSentences(encodeNmeaRates(rates));
+    return withoutSentences(encodeNmeaRates(rateItems(values, "rate.", kNmeaMessageIds)));
 }
 
 // PNMRX107
 EncodeResult writeNemerixRates(std::span<const KeyValue> values) {
-    const Values v = valuesOf(values);
-    std::vector<RateItem> modes;
-    for (std::string_view id : kNavDataMessageIds) {
-        const std::string key = "nmrx." + std::string(id);
-        if (v.has(key.c_str())) modes.push_back({std::string(id), *v.integer(key.c_str())});
-    }
-    return withoutSentences(encodeNemerixRates(modes));
+    return withoutSentences(encodeNemerixRates(rateItems(values, "nmrx.", kNavDataMessageIds)));
 }
 
 // PNMRX100, last: the port's speed changes right after it.
@@ -196,11 +199,11 @@ EncodeResult writeSerial(std::span<const KeyValue> values) {
     const Values v = valuesOf(values);
     if (!v.has("serial.baud")) {
         EncodeResult out;
-        out.refuse(refusal(QT_TRANSLATE_NOOP("Refusal",
-                                             "serial.baud: required with serial.protocol / "
-                                             "serial.parity (PNMRX100 sends all three); accepted: "
-                                             "1200, 2400, 4800, 9600, 19200, 38400, 57600"),
-                           {}));
+        out.refuse(
+                refusal(QT_TRANSLATE_NOOP("Refusal",
+                                          "serial.baud: required with serial.protocol / "
+                                          "serial.parity (PNMRX100 sends all three); accepted: %1"),
+                        {baudList(kSupportedBauds)}));
         return out;
     }
     return withoutSentences(encodeSerialPort(v.integer("serial.protocol").value_or(0),
