@@ -26,6 +26,7 @@
 // NMEAV2 / NMEAV4 switch the numbering (3.4, 3.5): v2.x: GSV all under GP with three-digit ids
 // (Galileo 101-136), GSA per system (GP/GL/GA); v4.10: GN talkers, GSA with the system id,
 // GSV per system with the signal id (Galileo 7), GNS with per-system subsidiary sentences.
+#include "core/dialect_hooks.h"
 #include "geostar/geostar_messages.h"
 #include "sim/receiver.h"
 #include "sim/settings_store.h"
@@ -88,6 +89,5 @@ private:
 } // namespace gnss::sim
 
 namespace gnss::geostar {
-// The record's simulator (Dialect::makeSimulator).
-std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
+MakeSimulatorHook makeSimulatedReceiver; // the record's simulator (Dialect::makeSimulator)
 } // namespace gnss::geostar

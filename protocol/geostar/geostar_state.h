@@ -1,13 +1,8 @@
 #pragma once
-#include "core/message.h"
-
-namespace gnss {
-struct ReceiverState;
-}
+#include "core/dialect_hooks.h"
 
 namespace gnss::geostar {
 
-// The dialect's updateState hook (see core/dialect.h).
-bool updateState(const Message &m, ReceiverState &state);
+UpdateStateHook updateState; // the dialect's updateState hook (see core/dialect.h)
 
 } // namespace gnss::geostar

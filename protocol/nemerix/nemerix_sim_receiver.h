@@ -21,6 +21,7 @@
 //   PNMRX603 the five settings reports (messages 0..4) from the store.
 // Every PNMRX sentence it sends is built by the nemerix encoders (nemerix_commands.h).
 // The VT002 has no "save" command: a power cycle returns to the factory settings.
+#include "core/dialect_hooks.h"
 #include "nemerix/nemerix_messages.h"
 #include "sim/receiver.h"
 #include "sim/settings_store.h"
@@ -79,6 +80,5 @@ private:
 } // namespace gnss::sim
 
 namespace gnss::nemerix {
-// The record's simulator (Dialect::makeSimulator).
-std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
+MakeSimulatorHook makeSimulatedReceiver; // the record's simulator (Dialect::makeSimulator)
 } // namespace gnss::nemerix

@@ -14,6 +14,7 @@
 //   the reply carries the value in force), PNVGIDL MODE/ADD/REMOVE/CLEAR/SHOW.
 // PNVGCFG,W saves to the simulated flash; a power cycle (Receiver::powerCycle(), SIGHUP to
 // gnss-sim) and PNVGCFG,R restore from it; PNVGRST keeps the settings in force (spec table 4.3).
+#include "core/dialect_hooks.h"
 #include "sim/receiver.h"
 #include "sim/settings_store.h"
 #include "sim/standard_output.h"
@@ -93,6 +94,5 @@ private:
 } // namespace gnss::sim
 
 namespace gnss::nvs {
-// The record's simulator (Dialect::makeSimulator).
-std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
+MakeSimulatorHook makeSimulatedReceiver; // the record's simulator (Dialect::makeSimulator)
 } // namespace gnss::nvs

@@ -1,6 +1,7 @@
 #include "acme_sim_receiver.h"
 
 #include "acme_dialect.h"
+#include "sim/receiver.h"
 #include "sim/settings_store.h"
 #include "sim/standard_output.h"
 

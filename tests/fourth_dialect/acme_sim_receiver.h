@@ -1,12 +1,10 @@
 #pragma once
 // The simulated ACME AX-1: standard NMEA 4.11 output with PACMS every epoch, its settings a
 // SettingsStore of the schema, commands applied through the dialect's reading of them.
-#include "sim/receiver.h"
-
-#include <memory>
+#include "core/dialect_hooks.h"
 
 namespace gnss::acme {
 
-std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
+MakeSimulatorHook makeSimulatedReceiver; // the record's simulator (Dialect::makeSimulator)
 
 } // namespace gnss::acme

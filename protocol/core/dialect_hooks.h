@@ -1,0 +1,25 @@
+#pragma once
+// The signatures of the functions a dialect record names (core/dialect.h), written once, so that
+// a receiver family's folder declares each of its own in one line:
+//
+//     namespace gnss::geostar {
+//     UpdateStateHook updateState;            // defined in geostar_state.cpp
+//     MakeSimulatorHook makeSimulatedReceiver; // defined in geostar_sim_receiver.cpp
+//     }
+//
+// (A function type declares a function of that signature; the definition is written out.)
+#include "dialect.h"
+
+#include <memory>
+#include <vector>
+
+namespace gnss {
+
+// Dialect::updateState: the vendor-neutral receiver state from one of the dialect's messages.
+using UpdateStateHook = bool(const Message &m, ReceiverState &state);
+// Dialect::extractSettings: the setting values a decoded reply or command carries.
+using ExtractSettingsHook = void(const Message &reply, std::vector<KeyValue> &out);
+// Dialect::makeSimulator: the family's simulated receiver.
+using MakeSimulatorHook = std::unique_ptr<sim::Receiver>(const sim::SimOptions &options);
+
+} // namespace gnss
