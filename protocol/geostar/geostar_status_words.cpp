@@ -2,6 +2,7 @@
 #include "geostar_status_words.h"
 
 #include <cstdio>
+#include <span>
 #include <string>
 
 namespace gnss::geostar {
@@ -14,11 +15,42 @@ constexpr int bits(std::uint32_t w, int hi, int lo) {
     return static_cast<int>((w >> lo) & ((1u << (hi - lo + 1)) - 1u));
 }
 
+// One flag of a word: its bit, the field it fills and its JSON key; a flag with words for its two
+// states is written as the word ("state": "active"), else as true/false. Tables list a word's
+// flags from the highest bit down, the order its JSON keeps.
+template <class W> struct Flag {
+    int bit;
+    bool W::*field;
+    std::string_view key;
+    std::string_view whenClear = {}, whenSet = {};
+};
+
+template <class W> void readFlags(std::uint32_t w, W &word, std::span<const Flag<W>> flags) {
+    for (const Flag<W> &f : flags) word.*f.field = bit(w, f.bit);
+}
+
+// The flags of bits hi down to lo.
+template <class W>
+void writeFlags(JsonWriter &w, const W &word, std::span<const Flag<W>> flags, int hi, int lo) {
+    for (const Flag<W> &f : flags) {
+        if (f.bit > hi || f.bit < lo) continue;
+        const bool on = word.*f.field;
+        if (f.whenSet.empty())
+            w.field(f.key, on);
+        else
+            w.field(f.key, on ? f.whenSet : f.whenClear);
+    }
+}
+
 // Sets the bits of one word as decode reads them; the first field that does not fit is refused.
 class WordBuilder {
 public:
     WordBuilder &bit(int n, bool on) {
         if (on) w_ |= 1u << n;
+        return *this;
+    }
+    template <class W> WordBuilder &flags(const W &word, std::span<const Flag<W>> flags) {
+        for (const Flag<W> &f : flags) bit(f.bit, word.*f.field);
         return *this;
     }
     WordBuilder &bits(int hi, int lo, int v, const char *name) {
@@ -80,164 +112,108 @@ int rateHzToCode(int hz) {
 
 // ---- Table 7 ----------------------------------------------------------------------------------
 
+using SW = StatusWord;
+constexpr Flag<SW> kStatusFlags[] = {
+        {31, &SW::jammingDetected, "jamming_detected"},
+        {30, &SW::flashWriteInProgress, "flash_write_in_progress"},
+        {28, &SW::geoPathActive, "geopath_active"},
+        {27, &SW::referenceWithinThreshold, "reference_within_threshold"},
+        {26, &SW::averagingInProgress, "averaging_in_progress"},
+        {25, &SW::rtcmCorrectionsUsed, "rtcm_corrections_used"},
+        {24, &SW::sbasCorrectionsUsed, "sbas_corrections_used"},
+        {23, &SW::active, "state", "sleep", "active"},
+        {22, &SW::differential, "solution_type", "autonomous", "differential"},
+        {21, &SW::extrapolated, "extrapolated"},
+        {20, &SW::stationary, "stationary"},
+        {19, &SW::solutionAvailable, "solution_available"},
+        {18, &SW::validSinceStart, "valid_since_start"},
+        {16, &SW::solution2D, "solution_dim", "3D", "2D"},
+        {15, &SW::clockRestoredHotStart, "clock_restored_hot_start"},
+        {14, &SW::gpsIonoUtcAvailable, "gps_iono_utc_available"},
+        {13, &SW::dateFromNavMessage, "date_from_nav_message"},
+        {12, &SW::timeFromNavMessage, "time_from_nav_message"},
+        {11, &SW::qzssAlmanac, "almanac_qzss"},
+        {10, &SW::galileoAlmanac, "almanac_galileo"},
+        {9, &SW::glonassAlmanac, "almanac_glonass"},
+        {8, &SW::gpsAlmanac, "almanac_gps"},
+        // 7:6 antenna
+        {5, &SW::glonassAgcOk, "agc_glonass_ok"},
+        {4, &SW::gpsAgcOk, "agc_gps_ok"},
+        {3, &SW::settingsLoadedFromFlash, "settings_loaded_from_flash"},
+        {2, &SW::pllOk, "pll_ok"},
+        {1, &SW::rtcOk, "rtc_ok"},
+        {0, &SW::backupRamOk, "backup_ram_ok"},
+};
+
 StatusWord StatusWord::decode(std::uint32_t w) {
     StatusWord s;
     s.raw = w;
-    s.jammingDetected = bit(w, 31);
-    s.flashWriteInProgress = bit(w, 30);
-    s.geoPathActive = bit(w, 28);
-    s.referenceWithinThreshold = bit(w, 27);
-    s.averagingInProgress = bit(w, 26);
-    s.rtcmCorrectionsUsed = bit(w, 25);
-    s.sbasCorrectionsUsed = bit(w, 24);
-    s.active = bit(w, 23);
-    s.differential = bit(w, 22);
-    s.extrapolated = bit(w, 21);
-    s.stationary = bit(w, 20);
-    s.solutionAvailable = bit(w, 19);
-    s.validSinceStart = bit(w, 18);
-    s.solution2D = bit(w, 16);
-    s.clockRestoredHotStart = bit(w, 15);
-    s.gpsIonoUtcAvailable = bit(w, 14);
-    s.dateFromNavMessage = bit(w, 13);
-    s.timeFromNavMessage = bit(w, 12);
-    s.qzssAlmanac = bit(w, 11);
-    s.galileoAlmanac = bit(w, 10);
-    s.glonassAlmanac = bit(w, 9);
-    s.gpsAlmanac = bit(w, 8);
+    readFlags<SW>(w, s, kStatusFlags);
     s.antenna = static_cast<AntennaState>(bits(w, 7, 6));
-    s.glonassAgcOk = bit(w, 5);
-    s.gpsAgcOk = bit(w, 4);
-    s.settingsLoadedFromFlash = bit(w, 3);
-    s.pllOk = bit(w, 2);
-    s.rtcOk = bit(w, 1);
-    s.backupRamOk = bit(w, 0);
     return s;
 }
 
 EncodedWord StatusWord::encode() const {
     WordBuilder b;
-    b.bit(31, jammingDetected)
-            .bit(30, flashWriteInProgress)
-            .bit(28, geoPathActive)
-            .bit(27, referenceWithinThreshold)
-            .bit(26, averagingInProgress)
-            .bit(25, rtcmCorrectionsUsed)
-            .bit(24, sbasCorrectionsUsed)
-            .bit(23, active)
-            .bit(22, differential)
-            .bit(21, extrapolated)
-            .bit(20, stationary)
-            .bit(19, solutionAvailable)
-            .bit(18, validSinceStart)
-            .bit(16, solution2D)
-            .bit(15, clockRestoredHotStart)
-            .bit(14, gpsIonoUtcAvailable)
-            .bit(13, dateFromNavMessage)
-            .bit(12, timeFromNavMessage)
-            .bit(11, qzssAlmanac)
-            .bit(10, galileoAlmanac)
-            .bit(9, glonassAlmanac)
-            .bit(8, gpsAlmanac)
-            .bits(7, 6, static_cast<int>(antenna), "status word bits 7:6 (antenna)")
-            .bit(5, glonassAgcOk)
-            .bit(4, gpsAgcOk)
-            .bit(3, settingsLoadedFromFlash)
-            .bit(2, pllOk)
-            .bit(1, rtcOk)
-            .bit(0, backupRamOk);
+    b.flags<SW>(*this, kStatusFlags)
+            .bits(7, 6, static_cast<int>(antenna), "status word bits 7:6 (antenna)");
     return b.done(raw, kReservedMask);
 }
 
 void StatusWord::writeJson(JsonWriter &w) const {
     w.beginObject();
     writeHex(w, "raw", raw);
-    w.field("jamming_detected", jammingDetected)
-            .field("flash_write_in_progress", flashWriteInProgress)
-            .field("geopath_active", geoPathActive)
-            .field("reference_within_threshold", referenceWithinThreshold)
-            .field("averaging_in_progress", averagingInProgress)
-            .field("rtcm_corrections_used", rtcmCorrectionsUsed)
-            .field("sbas_corrections_used", sbasCorrectionsUsed)
-            .field("state", std::string_view(active ? "active" : "sleep"))
-            .field("solution_type", std::string_view(differential ? "differential" : "autonomous"))
-            .field("extrapolated", extrapolated)
-            .field("stationary", stationary)
-            .field("solution_available", solutionAvailable)
-            .field("valid_since_start", validSinceStart)
-            .field("solution_dim", std::string_view(solution2D ? "2D" : "3D"))
-            .field("clock_restored_hot_start", clockRestoredHotStart)
-            .field("gps_iono_utc_available", gpsIonoUtcAvailable)
-            .field("date_from_nav_message", dateFromNavMessage)
-            .field("time_from_nav_message", timeFromNavMessage)
-            .field("almanac_qzss", qzssAlmanac)
-            .field("almanac_galileo", galileoAlmanac)
-            .field("almanac_glonass", glonassAlmanac)
-            .field("almanac_gps", gpsAlmanac)
-            .field("antenna", toString(antenna))
-            .field("agc_glonass_ok", glonassAgcOk)
-            .field("agc_gps_ok", gpsAgcOk)
-            .field("settings_loaded_from_flash", settingsLoadedFromFlash)
-            .field("pll_ok", pllOk)
-            .field("rtc_ok", rtcOk)
-            .field("backup_ram_ok", backupRamOk);
+    writeFlags<SW>(w, *this, kStatusFlags, 31, 8);
+    w.field("antenna", toString(antenna));
+    writeFlags<SW>(w, *this, kStatusFlags, 5, 0);
     writeHex(w, "reserved_bits", raw & kReservedMask);
     w.endObject();
 }
 
 // ---- Table 8 ----------------------------------------------------------------------------------
 
+using CR1 = ConfigRegister1;
+constexpr Flag<CR1> kConfig1Flags[] = {
+        {30, &CR1::antennaPower, "antenna_power"},
+        {28, &CR1::fixedCoordinatesMode, "operating_mode", "autonomous_or_differential",
+         "fixed_coordinates"},
+        {27, &CR1::raim, "raim"},
+        {26, &CR1::smoothedPseudoranges, "smoothed_pseudoranges"},
+        {25, &CR1::fixByRequest, "power_saving_type", "RELAXED FIX", "FIX-BY-REQUEST"},
+        {24, &CR1::powerSavingEnabled, "power_saving_enabled"},
+        // 23:21 dynamics, 19:18 rate
+        {15, &CR1::kalmanFilter, "kalman_filter"},
+        {14, &CR1::firstFix2DAllowed, "first_fix_2d_allowed"},
+        {13, &CR1::mode2DAllowed, "mode_2d_allowed"},
+        {12, &CR1::geoPath, "geopath"},
+        // 11:9 1PPS time scale
+        {8, &CR1::ppsNegative, "pps_polarity", "positive", "negative"},
+        {7, &CR1::ppsEnabled, "pps_enabled"},
+        {6, &CR1::searchUnusedSystems, "search_unused_systems"},
+        {4, &CR1::sbas, "sbas"},
+        {3, &CR1::qzss, "qzss"},
+        {2, &CR1::galileo, "galileo"},
+        {1, &CR1::gps, "gps"},
+        {0, &CR1::glonass, "glonass"},
+};
+
 ConfigRegister1 ConfigRegister1::decode(std::uint32_t w) {
     ConfigRegister1 c;
     c.raw = w;
-    c.antennaPower = bit(w, 30);
-    c.fixedCoordinatesMode = bit(w, 28);
-    c.raim = bit(w, 27);
-    c.smoothedPseudoranges = bit(w, 26);
-    c.fixByRequest = bit(w, 25);
-    c.powerSavingEnabled = bit(w, 24);
+    readFlags<CR1>(w, c, kConfig1Flags);
     c.dynamicsCode = bits(w, 23, 21);
     c.rateCode = bits(w, 19, 18);
     c.rateHz = rateCodeToHz(c.rateCode);
-    c.kalmanFilter = bit(w, 15);
-    c.firstFix2DAllowed = bit(w, 14);
-    c.mode2DAllowed = bit(w, 13);
-    c.geoPath = bit(w, 12);
     c.ppsTimeScaleCode = bits(w, 11, 9);
-    c.ppsNegative = bit(w, 8);
-    c.ppsEnabled = bit(w, 7);
-    c.searchUnusedSystems = bit(w, 6);
-    c.sbas = bit(w, 4);
-    c.qzss = bit(w, 3);
-    c.galileo = bit(w, 2);
-    c.gps = bit(w, 1);
-    c.glonass = bit(w, 0);
     return c;
 }
 
 EncodedWord ConfigRegister1::encode() const {
     WordBuilder b;
-    b.bit(30, antennaPower)
-            .bit(28, fixedCoordinatesMode)
-            .bit(27, raim)
-            .bit(26, smoothedPseudoranges)
-            .bit(25, fixByRequest)
-            .bit(24, powerSavingEnabled)
+    b.flags<CR1>(*this, kConfig1Flags)
             .bits(23, 21, dynamicsCode, "configuration register 1 bits 23:21 (dynamics)")
             .bits(19, 18, rateCode, "configuration register 1 bits 19:18 (rate code)")
-            .bit(15, kalmanFilter)
-            .bit(14, firstFix2DAllowed)
-            .bit(13, mode2DAllowed)
-            .bit(12, geoPath)
-            .bits(11, 9, ppsTimeScaleCode, "configuration register 1 bits 11:9 (1PPS time scale)")
-            .bit(8, ppsNegative)
-            .bit(7, ppsEnabled)
-            .bit(6, searchUnusedSystems)
-            .bit(4, sbas)
-            .bit(3, qzss)
-            .bit(2, galileo)
-            .bit(1, gps)
-            .bit(0, glonass);
+            .bits(11, 9, ppsTimeScaleCode, "configuration register 1 bits 11:9 (1PPS time scale)");
     return b.done(raw, kReservedMask);
 }
 
@@ -265,48 +241,35 @@ std::string_view ConfigRegister1::ppsTimeScaleName() const {
 void ConfigRegister1::writeJson(JsonWriter &w) const {
     w.beginObject();
     writeHex(w, "raw", raw);
-    w.field("antenna_power", antennaPower)
-            .field("operating_mode",
-                   std::string_view(fixedCoordinatesMode ? "fixed_coordinates"
-                                                         : "autonomous_or_differential"))
-            .field("raim", raim)
-            .field("smoothed_pseudoranges", smoothedPseudoranges)
-            .field("power_saving_type",
-                   std::string_view(fixByRequest ? "FIX-BY-REQUEST" : "RELAXED FIX"))
-            .field("power_saving_enabled", powerSavingEnabled)
-            .field("dynamics_code", dynamicsCode)
+    writeFlags<CR1>(w, *this, kConfig1Flags, 30, 24);
+    w.field("dynamics_code", dynamicsCode)
             .field("dynamics", dynamicsName())
             .field("rate_code", rateCode)
-            .field("rate_hz", rateHz)
-            .field("kalman_filter", kalmanFilter)
-            .field("first_fix_2d_allowed", firstFix2DAllowed)
-            .field("mode_2d_allowed", mode2DAllowed)
-            .field("geopath", geoPath)
-            .field("pps_time_scale_code", ppsTimeScaleCode)
-            .field("pps_time_scale", ppsTimeScaleName())
-            .field("pps_polarity", std::string_view(ppsNegative ? "negative" : "positive"))
-            .field("pps_enabled", ppsEnabled)
-            .field("search_unused_systems", searchUnusedSystems)
-            .field("sbas", sbas)
-            .field("qzss", qzss)
-            .field("galileo", galileo)
-            .field("gps", gps)
-            .field("glonass", glonass);
+            .field("rate_hz", rateHz);
+    writeFlags<CR1>(w, *this, kConfig1Flags, 15, 12);
+    w.field("pps_time_scale_code", ppsTimeScaleCode).field("pps_time_scale", ppsTimeScaleName());
+    writeFlags<CR1>(w, *this, kConfig1Flags, 8, 0);
     writeHex(w, "reserved_bits", raw & kReservedMask);
     w.endObject();
 }
 
 // ---- Table 9 ----------------------------------------------------------------------------------
 
+using CR2 = ConfigRegister2;
+constexpr Flag<CR2> kConfig2Flags[] = {
+        // 31:16 receiver type, 15:14 datum
+        {8, &CR2::differentialAllowed, "differential_allowed"},
+        {4, &CR2::sbasTestModeAllowed, "sbas_test_mode_allowed"},
+        {3, &CR2::useAllSatellites, "use_all_satellites"},
+        {2, &CR2::sbasPrnAuto, "sbas_prn", "user", "auto"},
+};
+
 ConfigRegister2 ConfigRegister2::decode(std::uint32_t w) {
     ConfigRegister2 c;
     c.raw = w;
     c.receiverTypeCode = static_cast<std::uint16_t>(w >> 16);
     c.datumCode = bits(w, 15, 14);
-    c.differentialAllowed = bit(w, 8);
-    c.sbasTestModeAllowed = bit(w, 4);
-    c.useAllSatellites = bit(w, 3);
-    c.sbasPrnAuto = bit(w, 2);
+    readFlags<CR2>(w, c, kConfig2Flags);
     return c;
 }
 
@@ -314,10 +277,7 @@ EncodedWord ConfigRegister2::encode() const {
     WordBuilder b;
     b.bits(31, 16, receiverTypeCode, "configuration register 2 bits 31:16 (receiver type)")
             .bits(15, 14, datumCode, "configuration register 2 bits 15:14 (datum)")
-            .bit(8, differentialAllowed)
-            .bit(4, sbasTestModeAllowed)
-            .bit(3, useAllSatellites)
-            .bit(2, sbasPrnAuto);
+            .flags<CR2>(*this, kConfig2Flags);
     return b.done(raw, kReservedMask);
 }
 
@@ -350,12 +310,8 @@ void ConfigRegister2::writeJson(JsonWriter &w) const {
         w.key("receiver_type").null();
     else
         w.field("receiver_type", receiverType());
-    w.field("datum_code", datumCode)
-            .field("datum", datumName())
-            .field("differential_allowed", differentialAllowed)
-            .field("sbas_test_mode_allowed", sbasTestModeAllowed)
-            .field("use_all_satellites", useAllSatellites)
-            .field("sbas_prn", std::string_view(sbasPrnAuto ? "auto" : "user"));
+    w.field("datum_code", datumCode).field("datum", datumName());
+    writeFlags<CR2>(w, *this, kConfig2Flags, 8, 0);
     writeHex(w, "reserved_bits", raw & kReservedMask);
     w.endObject();
 }
