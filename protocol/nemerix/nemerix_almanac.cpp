@@ -40,18 +40,6 @@ std::span<const HexFieldDef> Almanac::fields() {
     return kAlmanacFields;
 }
 
-std::optional<double> Almanac::value(Field f) const {
-    if (!raw[f]) return std::nullopt;
-    return scaled(*raw[f], kAlmanacFields[f]);
-}
-
-Refusal Almanac::setValue(Field f, double v) {
-    std::optional<std::int64_t> r;
-    Refusal why = toRaw(v, kAlmanacFields[f], r);
-    if (why.empty()) raw[f] = r;
-    return why;
-}
-
 bool decodeAlmanac(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     Almanac m;

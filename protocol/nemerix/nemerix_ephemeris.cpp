@@ -66,10 +66,8 @@ std::span<const HexFieldDef> EphemerisSubframe::fields(int subframe) {
 }
 
 std::optional<double> EphemerisSubframe::value(int field) const {
-    const auto defs = fields(subframe);
-    if (field < 0 || static_cast<std::size_t>(field) >= defs.size() || !raw[field])
-        return std::nullopt;
-    return scaled(*raw[field], defs[field]);
+    if (field < 0) return std::nullopt;
+    return valueOf(fields(subframe), raw, static_cast<std::size_t>(field));
 }
 
 Refusal EphemerisSubframe::setValue(int field, double v) {
@@ -79,10 +77,7 @@ Refusal EphemerisSubframe::setValue(int field, double v) {
                        {"field", std::to_string(field),
                         defs.empty() ? std::string("none (subframe 1..3 first)")
                                      : "0.." + std::to_string(defs.size() - 1)});
-    std::optional<std::int64_t> r;
-    Refusal why = toRaw(v, defs[field], r);
-    if (why.empty()) raw[field] = r;
-    return why;
+    return setValueOf(defs, raw, static_cast<std::size_t>(field), v);
 }
 
 bool decodeEphemeris(const Sentence &s, DecodeContext &ctx) {

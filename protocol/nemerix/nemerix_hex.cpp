@@ -96,6 +96,20 @@ std::optional<std::int64_t> toRaw(double value, const HexFieldDef &def, std::str
     return raw;
 }
 
+std::optional<double> valueOf(std::span<const HexFieldDef> defs,
+                              std::span<const std::optional<std::int64_t>> raws, std::size_t f) {
+    if (f >= defs.size() || !raws[f]) return std::nullopt;
+    return scaled(*raws[f], defs[f]);
+}
+
+Refusal setValueOf(std::span<const HexFieldDef> defs, std::span<std::optional<std::int64_t>> raws,
+                   std::size_t f, double value) {
+    std::optional<std::int64_t> r;
+    Refusal why = toRaw(value, defs[f], r);
+    if (why.empty()) raws[f] = r;
+    return why;
+}
+
 Refusal checkRaw(const std::optional<std::int64_t> &raw, const HexFieldDef &def) {
     if (!raw) return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: missing"), {std::string(def.key)});
     if (fitsHex(*raw, def)) return {};

@@ -42,6 +42,13 @@ bool fitsHex(std::int64_t raw, const HexFieldDef &def);
 std::optional<std::int64_t> toRaw(double value, const HexFieldDef &def, std::string &error);
 // The same as a refusal (translatable); `raw` is set only when it fits.
 Refusal toRaw(double value, const HexFieldDef &def, std::optional<std::int64_t> &raw);
+// The engineering value of raws[f] (nullopt when it is absent or f is past defs), and its
+// inverse: raws[f] from an engineering value, refused (nothing set) when it does not fit; f must
+// be one of defs. What value() and setValue() of the PNMRX300-303 messages do.
+std::optional<double> valueOf(std::span<const HexFieldDef> defs,
+                              std::span<const std::optional<std::int64_t>> raws, std::size_t f);
+Refusal setValueOf(std::span<const HexFieldDef> defs, std::span<std::optional<std::int64_t>> raws,
+                   std::size_t f, double value);
 // Why a raw word cannot be written in the def's field (missing, or wider than its bits); empty
 // when it can. Encoders check every field with it before building anything.
 Refusal checkRaw(const std::optional<std::int64_t> &raw, const HexFieldDef &def);

@@ -59,36 +59,11 @@ std::span<const HexFieldDef> UtcParameters::fields() {
 }
 
 namespace {
-template <class Raws>
-std::optional<double> valueOf(const Raws &raw, std::span<const HexFieldDef> defs, std::size_t f) {
-    if (f >= defs.size() || !raw[f]) return std::nullopt;
-    return scaled(*raw[f], defs[f]);
-}
-template <class Raws>
-Refusal setValueOf(Raws &raw, std::span<const HexFieldDef> defs, std::size_t f, double v) {
-    std::optional<std::int64_t> r;
-    Refusal why = toRaw(v, defs[f], r);
-    if (why.empty()) raw[f] = r;
-    return why;
-}
 Refusal badSv(int sv) {
     return refusal(QT_TRANSLATE_NOOP("Refusal", "%1: %2 is out of range; accepted: %3"),
                    {"sv", std::to_string(sv), "1..32"});
 }
 } // namespace
-
-std::optional<double> Ionosphere::value(int field) const {
-    return valueOf(raw, kIono, static_cast<std::size_t>(field));
-}
-Refusal Ionosphere::setValue(int field, double v) {
-    return setValueOf(raw, kIono, static_cast<std::size_t>(field), v);
-}
-std::optional<double> UtcParameters::value(Field f) const {
-    return valueOf(raw, kUtc, f);
-}
-Refusal UtcParameters::setValue(Field f, double v) {
-    return setValueOf(raw, kUtc, f, v);
-}
 
 bool decodeIonosphere(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);

@@ -172,10 +172,10 @@ struct Almanac : Message {
     Almanac() : Message(kType) {}
     int sv = 0;
     std::array<std::optional<std::int64_t>, kFieldCount> raw{};
-    std::optional<double> value(Field f) const;
+    std::optional<double> value(Field f) const { return valueOf(fields(), raw, f); }
     // The inverse of value(): engineering units → the raw word (IS-GPS-200 scale, rounded);
     // refused (nothing set) when it does not fit the field.
-    Refusal setValue(Field f, double v);
+    Refusal setValue(Field f, double v) { return setValueOf(fields(), raw, f, v); }
     void writeJson(JsonWriter &w) const override;
 };
 
@@ -204,8 +204,13 @@ struct Ionosphere : Message {
     Ionosphere() : Message(kType) {}
     std::optional<int> sv;
     std::array<std::optional<std::int64_t>, 8> raw{};
-    std::optional<double> value(int field) const;
-    Refusal setValue(int field, double v); // the inverse of value(), as Almanac::setValue
+    std::optional<double> value(int field) const {
+        return valueOf(fields(), raw, static_cast<std::size_t>(field));
+    }
+    // The inverse of value(), as Almanac::setValue.
+    Refusal setValue(int field, double v) {
+        return setValueOf(fields(), raw, static_cast<std::size_t>(field), v);
+    }
     void writeJson(JsonWriter &w) const override;
 };
 
@@ -217,8 +222,9 @@ struct UtcParameters : Message {
     UtcParameters() : Message(kType) {}
     std::optional<int> sv;
     std::array<std::optional<std::int64_t>, kFieldCount> raw{};
-    std::optional<double> value(Field f) const;
-    Refusal setValue(Field f, double v); // the inverse of value(), as Almanac::setValue
+    std::optional<double> value(Field f) const { return valueOf(fields(), raw, f); }
+    // The inverse of value(), as Almanac::setValue.
+    Refusal setValue(Field f, double v) { return setValueOf(fields(), raw, f, v); }
     void writeJson(JsonWriter &w) const override;
 };
 
