@@ -1,13 +1,14 @@
 #include "nemerix_sim_navdata.h"
 
+#include "core/wgs84.h"
+
 #include <cmath>
-#include <numbers>
 
 namespace gnss::sim::nemerixdata {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using wgs84::kPi;
 constexpr double kEarthRate = 7.2921151467e-5; // rad/s (IS-GPS-200)
 
 const SkyModel::Orbit *gpsOrbit(const SkyModel &sky, int prn) {
