@@ -8,27 +8,12 @@ namespace gnss::nmea {
 
 const MessageType Gll::kType{"GLL"};
 
-bool decodeGll(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Gll m;
-    if (r.require(4)) {
-        m.lat = r.latitude(0, "latitude");
-        m.lon = r.longitude(2, "longitude");
-        m.time = r.time(4, "time");
-        m.status = r.letter(5, "status");
-        m.mode = r.letter(6, "mode");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Gll::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("lat", lat)
-            .field("lon", lon)
-            .field("time", time)
-            .field("status", status)
-            .field("mode", mode)
-            .endObject();
-}
+const FieldRow<Gll> Gll::kFields[] = {
+        {&Gll::lat, "latitude", "lat", {}, FieldForm::Latitude},
+        {&Gll::lon, "longitude", "lon", {}, FieldForm::Longitude},
+        {&Gll::time, "time", "time"},
+        {&Gll::status, "status", "status"},
+        {&Gll::mode, "mode", "mode"},
+};
 
 } // namespace gnss::nmea

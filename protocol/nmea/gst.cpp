@@ -9,33 +9,15 @@ namespace gnss::nmea {
 
 const MessageType Gst::kType{"GST"};
 
-bool decodeGst(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Gst m;
-    if (r.require(8)) {
-        m.time = r.time(0, "time");
-        m.rms = r.real(1, "rms");
-        m.sdMajor = r.real(2, "semi-major");
-        m.sdMinor = r.real(3, "semi-minor");
-        m.orientation = r.real(4, "orientation");
-        m.sdLat = r.real(5, "sd latitude");
-        m.sdLon = r.real(6, "sd longitude");
-        m.sdAlt = r.real(7, "sd altitude");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Gst::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("time", time)
-            .field("rms", rms)
-            .field("sd_major", sdMajor)
-            .field("sd_minor", sdMinor)
-            .field("orientation", orientation)
-            .field("sd_lat", sdLat)
-            .field("sd_lon", sdLon)
-            .field("sd_alt", sdAlt)
-            .endObject();
-}
+const FieldRow<Gst> Gst::kFields[] = {
+        {&Gst::time, "time", "time"},
+        {&Gst::rms, "rms", "rms"},
+        {&Gst::sdMajor, "semi-major", "sd_major"},
+        {&Gst::sdMinor, "semi-minor", "sd_minor"},
+        {&Gst::orientation, "orientation", "orientation"},
+        {&Gst::sdLat, "sd latitude", "sd_lat"},
+        {&Gst::sdLon, "sd longitude", "sd_lon"},
+        {&Gst::sdAlt, "sd altitude", "sd_alt"},
+};
 
 } // namespace gnss::nmea

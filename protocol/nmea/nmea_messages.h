@@ -1,8 +1,11 @@
 #pragma once
 // Standard NMEA-0183 (2.x - 4.11) messages as small typed structs. Empty fields are
-// std::nullopt. Each struct's decoder and field diagram live in <type>.cpp.
+// std::nullopt. Each struct's decoder and field diagram live in <type>.cpp; a sentence that is a
+// plain list of fields is a FieldMessage (core/field_table.h), its rows there decode it and
+// write its JSON.
 #include "core/dialect.h"
 #include "core/field_reader.h"
+#include "core/field_table.h"
 #include "core/field_types.h"
 #include "core/finish_decode.h"
 #include "core/message.h"
@@ -38,14 +41,14 @@ struct Gga : Message, GgaFields {
     void writeJson(JsonWriter &w) const override { writeGgaFieldsJson(w, *this); }
 };
 
-struct Gll : Message {
+struct Gll : FieldMessage<Gll> {
     static const MessageType kType;
-    Gll() : Message(kType) {}
+    static const FieldRow<Gll> kFields[5];
+    static constexpr std::size_t kRequired = 4;
     std::optional<double> lat, lon;
     std::optional<TimeOfDay> time;
     std::optional<char> status; // A valid, V invalid
     std::optional<char> mode;   // 2.3+: A D E M N (GeoStar also G, M)
-    void writeJson(JsonWriter &w) const override;
 };
 
 struct Gns : Message {
@@ -143,12 +146,12 @@ struct Dtm : Message {
     void writeJson(JsonWriter &w) const override;
 };
 
-struct Gst : Message {
+struct Gst : FieldMessage<Gst> {
     static const MessageType kType;
-    Gst() : Message(kType) {}
+    static const FieldRow<Gst> kFields[8];
+    static constexpr std::size_t kRequired = 8;
     std::optional<TimeOfDay> time;
     std::optional<double> rms, sdMajor, sdMinor, orientation, sdLat, sdLon, sdAlt;
-    void writeJson(JsonWriter &w) const override;
 };
 
 struct Txt : Message {
@@ -168,7 +171,7 @@ struct Query : Message {
 };
 
 bool decodeGga(const Sentence &, DecodeContext &);
-bool decodeGll(const Sentence &, DecodeContext &);
+inline constexpr DecodeFn decodeGll = decodeMessage<Gll>;
 bool decodeGns(const Sentence &, DecodeContext &);
 bool decodeGsa(const Sentence &, DecodeContext &);
 bool decodeGsv(const Sentence &, DecodeContext &);
@@ -177,7 +180,7 @@ bool decodeVtg(const Sentence &, DecodeContext &);
 bool decodeZda(const Sentence &, DecodeContext &);
 bool decodeHdt(const Sentence &, DecodeContext &);
 bool decodeDtm(const Sentence &, DecodeContext &);
-bool decodeGst(const Sentence &, DecodeContext &);
+inline constexpr DecodeFn decodeGst = decodeMessage<Gst>;
 bool decodeTxt(const Sentence &, DecodeContext &);
 bool decodeQuery(const Sentence &, DecodeContext &);
 

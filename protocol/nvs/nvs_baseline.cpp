@@ -8,27 +8,44 @@
 #include "nvs_encoders.h"
 #include "nvs_output_fields.h"
 
+#include <span>
+
 namespace gnss::nvs {
 
 const MessageType Brs::kType{"PNVGBRS"};
 const MessageType Bls::kType{"PNVGBLS"};
 
 namespace {
+
+// Metres in millimetres, angles in hundredths of a degree ($PNVGBRS,091244.60,4604.566,...,344.90,
+// -0.33,R).
+constexpr FieldRow<Baseline> kBaselineFields[] = {
+        {&Baseline::time, "time", "time"},
+        {&Baseline::north, "north", "north", {3, -kMaxMetres, kMaxMetres}},
+        {&Baseline::east, "east", "east", {3, -kMaxMetres, kMaxMetres}},
+        {&Baseline::vertical, "vertical", "vertical", {3, -kMaxMetres, kMaxMetres}},
+        {&Baseline::length, "length", "length", {3, 0, kMaxMetres}},
+        {&Baseline::course, "course", "course", {2, 0, 360}},
+        {&Baseline::pitch, "pitch", "pitch", {2, -90, 90}},
+        {&Baseline::mode, "mode", "mode"},
+};
+// Every row, or (PNVGBLS before rev 1.5, no time tag) the rows after the time.
+constexpr std::span<const FieldRow<Baseline>> baselineFields(bool timed) {
+    return std::span(kBaselineFields).subspan(timed ? 0 : 1);
+}
+
 bool decodeBaseline(const Sentence &s, DecodeContext &ctx, Baseline &m, bool timeOptional) {
     FieldReader r(s);
-    if (r.require(timeOptional ? 7 : 8)) {
-        const std::size_t o = (!timeOptional || s.fieldCount() >= 8) ? 1 : 0;
-        if (o) m.time = r.time(0, "time");
-        m.north = r.real(o + 0, "north");
-        m.east = r.real(o + 1, "east");
-        m.vertical = r.real(o + 2, "vertical");
-        m.length = r.real(o + 3, "length");
-        m.course = r.real(o + 4, "course");
-        m.pitch = r.real(o + 5, "pitch");
-        m.mode = r.letter(o + 6, "mode");
-    }
+    if (r.require(timeOptional ? 7 : 8))
+        readFields(r, m, baselineFields(!timeOptional || s.fieldCount() >= 8));
     return finishDecode(r, ctx, m);
 }
+
+// Without a time, PNVGBLS takes the form of firmware before 1.5 (no time field).
+EncodeResult encodeBaseline(const Baseline &m, bool timeOptional) {
+    return encodeRows(m, baselineFields(m.time || !timeOptional));
+}
+
 } // namespace
 
 bool decodeBrs(const Sentence &s, DecodeContext &ctx) {
@@ -42,34 +59,8 @@ bool decodeBls(const Sentence &s, DecodeContext &ctx) {
 }
 
 void Baseline::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("time", time)
-            .field("north", north)
-            .field("east", east)
-            .field("vertical", vertical)
-            .field("length", length)
-            .field("course", course)
-            .field("pitch", pitch)
-            .field("mode", mode)
-            .endObject();
+    writeFieldsJson(w, *this, kBaselineFields);
 }
-
-namespace {
-// Metres in millimetres, angles in hundredths of a degree ($PNVGBRS,091244.60,4604.566,...,344.90,
-// -0.33,R). Without a time, PNVGBLS takes the form of firmware before 1.5 (no time field).
-EncodeResult encodeBaseline(const Baseline &m, bool timeOptional) {
-    OutputFields f(m.type->name);
-    if (m.time || !timeOptional) f.time("time", m.time);
-    f.real("north", m.north, 3, -kMaxMetres, kMaxMetres)
-            .real("east", m.east, 3, -kMaxMetres, kMaxMetres)
-            .real("vertical", m.vertical, 3, -kMaxMetres, kMaxMetres)
-            .real("length", m.length, 3, 0, kMaxMetres)
-            .real("course", m.course, 2, 0, 360)
-            .real("pitch", m.pitch, 2, -90, 90)
-            .mode("mode", m.mode);
-    return f.build();
-}
-} // namespace
 
 EncodeResult encodeBrs(const Brs &m) {
     return encodeBaseline(m, false);

@@ -11,38 +11,17 @@ namespace gnss::nvs {
 
 const MessageType Bss::kType{"PNVGBSS"};
 
-bool decodeBss(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Bss m;
-    if (r.require(4)) {
-        m.rtcmTotal = r.integer64(0, "RTCM messages received");
-        m.rtcmErrors = r.integer64(1, "RTCM messages with errors");
-        m.rtcmOk = r.integer64(2, "RTCM messages without errors");
-        m.baseDistance = r.real(3, "distance to base");
-        m.rtcmAge = r.real(4, "RTCM age");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Bss::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("rtcm_total", rtcmTotal)
-            .field("rtcm_errors", rtcmErrors)
-            .field("rtcm_ok", rtcmOk)
-            .field("base_distance", baseDistance)
-            .field("rtcm_age", rtcmAge)
-            .endObject();
-}
-
 // The receiver's layout: distance in millimetres, age in tenths of a second.
+const FieldRow<Bss> Bss::kFields[] = {
+        {&Bss::rtcmTotal, "RTCM messages received", "rtcm_total", {0, 0, kMaxCount}},
+        {&Bss::rtcmErrors, "RTCM messages with errors", "rtcm_errors", {0, 0, kMaxCount}},
+        {&Bss::rtcmOk, "RTCM messages without errors", "rtcm_ok", {0, 0, kMaxCount}},
+        {&Bss::baseDistance, "distance to base", "base_distance", {3, 0, kMaxMetres}},
+        {&Bss::rtcmAge, "RTCM age", "rtcm_age", {1, 0, kMaxRtcmAge}},
+};
+
 EncodeResult encodeBss(const Bss &m) {
-    OutputFields f(Bss::kType.name);
-    f.integer("RTCM messages received", m.rtcmTotal, 0, kMaxCount)
-            .integer("RTCM messages with errors", m.rtcmErrors, 0, kMaxCount)
-            .integer("RTCM messages without errors", m.rtcmOk, 0, kMaxCount)
-            .real("distance to base", m.baseDistance, 3, 0, kMaxMetres)
-            .real("RTCM age", m.rtcmAge, 1, 0, kMaxRtcmAge);
-    return f.build();
+    return encodeRows(m, Bss::kFields);
 }
 
 } // namespace gnss::nvs

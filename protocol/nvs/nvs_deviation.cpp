@@ -13,96 +13,37 @@ const MessageType Sdp::kType{"PNVGSDP"};
 const MessageType Sdv::kType{"PNVGSDV"};
 const MessageType Sdh::kType{"PNVGSDH"};
 
-bool decodeSdp(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Sdp m;
-    if (r.require(5)) {
-        m.time = r.time(0, "time");
-        m.sdLat = r.real(1, "latitude deviation");
-        m.sdLon = r.real(2, "longitude deviation");
-        m.sdHeight = r.real(3, "height deviation");
-        m.mode = r.letter(4, "mode");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Sdp::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("time", time)
-            .field("sd_lat", sdLat)
-            .field("sd_lon", sdLon)
-            .field("sd_height", sdHeight)
-            .field("mode", mode)
-            .endObject();
-}
-
-bool decodeSdv(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Sdv m;
-    if (r.require(5)) {
-        m.time = r.time(0, "time");
-        m.sdVelNorth = r.real(1, "north velocity deviation");
-        m.sdVelEast = r.real(2, "east velocity deviation");
-        m.sdVelUp = r.real(3, "vertical velocity deviation");
-        m.mode = r.letter(4, "mode");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Sdv::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("time", time)
-            .field("sd_vel_north", sdVelNorth)
-            .field("sd_vel_east", sdVelEast)
-            .field("sd_vel_up", sdVelUp)
-            .field("mode", mode)
-            .endObject();
-}
-
-bool decodeSdh(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Sdh m;
-    if (r.require(3)) {
-        m.time = r.time(0, "time");
-        m.sdHeading = r.real(1, "heading deviation");
-        m.mode = r.letter(2, "mode");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Sdh::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("time", time)
-            .field("sd_heading", sdHeading)
-            .field("mode", mode)
-            .endObject();
-}
-
 // Deviations in millimetres, mm/s and thousandths of a degree.
+const FieldRow<Sdp> Sdp::kFields[] = {
+        {&Sdp::time, "time", "time"},
+        {&Sdp::sdLat, "latitude deviation", "sd_lat", {3, 0, kMaxMetres}},
+        {&Sdp::sdLon, "longitude deviation", "sd_lon", {3, 0, kMaxMetres}},
+        {&Sdp::sdHeight, "height deviation", "sd_height", {3, 0, kMaxMetres}},
+        {&Sdp::mode, "mode", "mode"},
+};
+const FieldRow<Sdv> Sdv::kFields[] = {
+        {&Sdv::time, "time", "time"},
+        {&Sdv::sdVelNorth, "north velocity deviation", "sd_vel_north", {3, 0, kMaxSpeed}},
+        {&Sdv::sdVelEast, "east velocity deviation", "sd_vel_east", {3, 0, kMaxSpeed}},
+        {&Sdv::sdVelUp, "vertical velocity deviation", "sd_vel_up", {3, 0, kMaxSpeed}},
+        {&Sdv::mode, "mode", "mode"},
+};
+const FieldRow<Sdh> Sdh::kFields[] = {
+        {&Sdh::time, "time", "time"},
+        {&Sdh::sdHeading, "heading deviation", "sd_heading", {3, 0, 360}},
+        {&Sdh::mode, "mode", "mode"},
+};
+
 EncodeResult encodeSdp(const Sdp &m) {
-    OutputFields f(Sdp::kType.name);
-    f.time("time", m.time)
-            .real("latitude deviation", m.sdLat, 3, 0, kMaxMetres)
-            .real("longitude deviation", m.sdLon, 3, 0, kMaxMetres)
-            .real("height deviation", m.sdHeight, 3, 0, kMaxMetres)
-            .mode("mode", m.mode);
-    return f.build();
+    return encodeRows(m, Sdp::kFields);
 }
 
 EncodeResult encodeSdv(const Sdv &m) {
-    OutputFields f(Sdv::kType.name);
-    f.time("time", m.time)
-            .real("north velocity deviation", m.sdVelNorth, 3, 0, kMaxSpeed)
-            .real("east velocity deviation", m.sdVelEast, 3, 0, kMaxSpeed)
-            .real("vertical velocity deviation", m.sdVelUp, 3, 0, kMaxSpeed)
-            .mode("mode", m.mode);
-    return f.build();
+    return encodeRows(m, Sdv::kFields);
 }
 
 EncodeResult encodeSdh(const Sdh &m) {
-    OutputFields f(Sdh::kType.name);
-    f.time("time", m.time).real("heading deviation", m.sdHeading, 3, 0, 360).mode("mode", m.mode);
-    return f.build();
+    return encodeRows(m, Sdh::kFields);
 }
 
 } // namespace gnss::nvs

@@ -6,50 +6,45 @@
 #include "nvs_encoders.h"
 #include "nvs_output_fields.h"
 
+#include <span>
+
 namespace gnss::nvs {
 
 const MessageType Imu::kType{"PNVGIMU"};
 
+// Angles in hundredths of a degree, accelerations in mm/s^2.
+const FieldRow<Imu> Imu::kFields[] = {
+        {&Imu::time, "time", "time"},
+        {&Imu::roll, "roll", "roll", {2, -360, 360}},
+        {&Imu::pitch, "pitch", "pitch", {2, -90, 90}},
+        {&Imu::yaw, "yaw", "yaw", {2, -360, 360}},
+        {&Imu::accNorth,
+         "north acceleration",
+         "acc_north",
+         {3, -kMaxAcceleration, kMaxAcceleration}},
+        {&Imu::accEast, "east acceleration", "acc_east", {3, -kMaxAcceleration, kMaxAcceleration}},
+        {&Imu::accDown, "down acceleration", "acc_down", {3, -kMaxAcceleration, kMaxAcceleration}},
+};
+
+namespace {
+
+// Every row, or (firmware before 1.5, no time tag) the rows after the time.
+std::span<const FieldRow<Imu>> imuFields(bool timed) {
+    return std::span(Imu::kFields).subspan(timed ? 0 : 1);
+}
+
+} // namespace
+
 bool decodeImu(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     Imu m;
-    if (r.require(6)) {
-        const std::size_t o = s.fieldCount() >= 7 ? 1 : 0;
-        if (o) m.time = r.time(0, "time");
-        m.roll = r.real(o + 0, "roll");
-        m.pitch = r.real(o + 1, "pitch");
-        m.yaw = r.real(o + 2, "yaw");
-        m.accNorth = r.real(o + 3, "north acceleration");
-        m.accEast = r.real(o + 4, "east acceleration");
-        m.accDown = r.real(o + 5, "down acceleration");
-    }
+    if (r.require(6)) readFields(r, m, imuFields(s.fieldCount() >= 7));
     return finishDecode(r, ctx, m);
 }
 
-void Imu::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("time", time)
-            .field("roll", roll)
-            .field("pitch", pitch)
-            .field("yaw", yaw)
-            .field("acc_north", accNorth)
-            .field("acc_east", accEast)
-            .field("acc_down", accDown)
-            .endObject();
-}
-
-// Angles in hundredths of a degree, accelerations in mm/s^2. Without a time, the form of
-// firmware before 1.5 (no time field).
+// Without a time, the form of firmware before 1.5 (no time field).
 EncodeResult encodeImu(const Imu &m) {
-    OutputFields f(Imu::kType.name);
-    if (m.time) f.time("time", m.time);
-    f.real("roll", m.roll, 2, -360, 360)
-            .real("pitch", m.pitch, 2, -90, 90)
-            .real("yaw", m.yaw, 2, -360, 360)
-            .real("north acceleration", m.accNorth, 3, -kMaxAcceleration, kMaxAcceleration)
-            .real("east acceleration", m.accEast, 3, -kMaxAcceleration, kMaxAcceleration)
-            .real("down acceleration", m.accDown, 3, -kMaxAcceleration, kMaxAcceleration);
-    return f.build();
+    return encodeRows(m, imuFields(m.time.has_value()));
 }
 
 } // namespace gnss::nvs

@@ -1,10 +1,13 @@
 #pragma once
 // NVS NV08C-RTK proprietary sentences (nvs-nv08c-rtk-nmea-v1.6.txt, chapter 4) as small typed
-// structs. Empty fields are std::nullopt. Each decoder and its field diagram live in nvs_<x>.cpp;
-// sentences that are both command and reply decode into one struct (the console shows what was
-// sent, the simulator reads what it receives).
+// structs. Empty fields are std::nullopt. Each decoder and its field diagram live in nvs_<x>.cpp
+// (a sentence that is a plain list of fields is a FieldMessage, core/field_table.h: its rows there
+// decode it, write its JSON and, for what the receiver sends, encode it); sentences that are both
+// command and reply decode into one struct (the console shows what was sent, the simulator reads
+// what it receives).
 #include "core/dialect.h"
 #include "core/field_reader.h"
+#include "core/field_table.h"
 #include "core/field_types.h"
 #include "core/finish_decode.h"
 #include "core/message.h"
@@ -18,26 +21,25 @@
 namespace gnss::nvs {
 
 // 4.1 PNVGVER: the request has no fields; the reply names manufacturer, device and firmware.
-struct Ver : Message {
+struct Ver : FieldMessage<Ver> {
     static const MessageType kType;
-    Ver() : Message(kType) {}
+    static const FieldRow<Ver> kFields[5];
     bool request = false;                         // "$PNVGVER" without fields
     std::optional<std::string_view> manufacturer; // "NVS"
     std::optional<std::string_view> device;       // "RTK" (NV08C-RTK) or "RTA" (NV08C-RTK-A)
     std::optional<std::string_view> rtkFw;        // "xxxx", kept as printed (leading zeros)
     std::optional<std::string_view> csmHw;        // "CSM24"
     std::optional<std::string_view> csmFw;
-    void writeJson(JsonWriter &w) const override;
 };
 
 // 4.2 PNVGNME: NMEA output resolution and talker compatibility (command and reply).
-struct Nme : Message {
+struct Nme : FieldMessage<Nme> {
     static const MessageType kType;
-    Nme() : Message(kType) {}
+    static const FieldRow<Nme> kFields[3];
+    static constexpr std::size_t kRequired = 2;
     std::optional<int> timeDecimals;     // 0..6
     std::optional<int> positionDecimals; // 0..9
     std::optional<int> talkerMode;       // 0 GGA/RMC always "GP", 1 as specified (optional)
-    void writeJson(JsonWriter &w) const override;
 };
 
 // 4.3 PNVGRST: reset (command only).
@@ -49,13 +51,13 @@ struct Rst : Message {
 };
 
 // 4.4 PNVGRZA: COM port protocol and speed (command and reply).
-struct Rza : Message {
+struct Rza : FieldMessage<Rza> {
     static const MessageType kType;
-    Rza() : Message(kType) {}
+    static const FieldRow<Rza> kFields[3];
+    static constexpr std::size_t kRequired = 3;
     std::optional<int> port;     // 0 current, 1 COM1, 2 COM2, 3 USB
     std::optional<int> baud;     // 4800..460800
     std::optional<int> protocol; // 0 disabled, 1 NMEA, 7 RTCM
-    void writeJson(JsonWriter &w) const override;
 };
 
 // 4.5 PNVGRZB: output list (clear, or add messages with rates; optionally for one port).
@@ -72,13 +74,13 @@ struct Rzb : Message {
 };
 
 // 4.6 PNVGBSS: base station statistics.
-struct Bss : Message {
+struct Bss : FieldMessage<Bss> {
     static const MessageType kType;
-    Bss() : Message(kType) {}
+    static const FieldRow<Bss> kFields[5];
+    static constexpr std::size_t kRequired = 4;
     std::optional<std::int64_t> rtcmTotal, rtcmErrors, rtcmOk;
     std::optional<double> baseDistance; // metres
     std::optional<double> rtcmAge;      // seconds; blank until the first RTCM message
-    void writeJson(JsonWriter &w) const override;
 };
 
 // 4.7 PNVGTST: internal test results, name/result pairs (ID, ANT).
@@ -104,9 +106,10 @@ struct Cfg : Message {
 };
 
 // 4.9 PNVGPPS: time pulse (command with empty = unchanged fields, and reply).
-struct Pps : Message {
+struct Pps : FieldMessage<Pps> {
     static const MessageType kType;
-    Pps() : Message(kType) {}
+    static const FieldRow<Pps> kFields[7];
+    static constexpr std::size_t kRequired = 7;
     std::optional<char> type;      // P software-synchronised, A hardware-synchronised
     std::optional<char> mode;      // I interval, S 1PPS
     std::optional<char> reference; // U UTC, S UTC(SU), G GLONASS, N GPS
@@ -114,17 +117,15 @@ struct Pps : Message {
     std::optional<int> duration;   // microseconds, 1..1000
     std::optional<char> validity;  // E enabled, D disabled
     std::optional<int> cableDelay; // nanoseconds
-    void writeJson(JsonWriter &w) const override;
 };
 
 // 4.10 PNVGIMU: attitude and NED acceleration. Firmware before 1.5 sends no time tag.
-struct Imu : Message {
+struct Imu : FieldMessage<Imu> {
     static const MessageType kType;
-    Imu() : Message(kType) {}
+    static const FieldRow<Imu> kFields[7];
     std::optional<TimeOfDay> time;
     std::optional<double> roll, pitch, yaw;           // degrees
     std::optional<double> accNorth, accEast, accDown; // m/s^2
-    void writeJson(JsonWriter &w) const override;
 };
 
 // 4.11 PNVGBRS (base-to-rover) and 4.12 PNVGBLS (ANT1-ANT2 base-line; no time tag before 1.5).
@@ -146,13 +147,13 @@ struct Bls : Baseline {
 };
 
 // 4.13 PNVGVOG: velocity over ground.
-struct Vog : Message {
+struct Vog : FieldMessage<Vog> {
     static const MessageType kType;
-    Vog() : Message(kType) {}
+    static const FieldRow<Vog> kFields[5];
+    static constexpr std::size_t kRequired = 5;
     std::optional<TimeOfDay> time;
     std::optional<double> velNorth, velEast, velUp; // m/s
     std::optional<char> mode;
-    void writeJson(JsonWriter &w) const override;
 };
 
 // 4.14 PNVGRTK: any mix of parameters; a parameter with values is set (or reported), one
@@ -186,19 +187,19 @@ struct Idl : Message {
 };
 
 // 4.16 PNVGTME / 4.17 PNVGTMU: time mark event (TOW / UTC).
-struct Tme : Message {
+struct Tme : FieldMessage<Tme> {
     static const MessageType kType;
-    Tme() : Message(kType) {}
+    static const FieldRow<Tme> kFields[2];
+    static constexpr std::size_t kRequired = 2;
     std::optional<std::int64_t> counter;
     std::optional<double> tow; // seconds of GPS week
-    void writeJson(JsonWriter &w) const override;
 };
-struct Tmu : Message {
+struct Tmu : FieldMessage<Tmu> {
     static const MessageType kType;
-    Tmu() : Message(kType) {}
+    static const FieldRow<Tmu> kFields[2];
+    static constexpr std::size_t kRequired = 2;
     std::optional<std::int64_t> counter;
     std::optional<TimeOfDay> time;
-    void writeJson(JsonWriter &w) const override;
 };
 
 // 4.18 PNVGTMC: GGA-like fix at the time mark (kept apart from GGA: it is not the epoch's fix).
@@ -210,64 +211,64 @@ struct Tmc : Message, nmea::GgaFields {
 };
 
 // 4.19-4.21 PNVGSDP / PNVGSDV / PNVGSDH: standard deviations.
-struct Sdp : Message {
+struct Sdp : FieldMessage<Sdp> {
     static const MessageType kType;
-    Sdp() : Message(kType) {}
+    static const FieldRow<Sdp> kFields[5];
+    static constexpr std::size_t kRequired = 5;
     std::optional<TimeOfDay> time;
     std::optional<double> sdLat, sdLon, sdHeight; // metres
     std::optional<char> mode;
-    void writeJson(JsonWriter &w) const override;
 };
-struct Sdv : Message {
+struct Sdv : FieldMessage<Sdv> {
     static const MessageType kType;
-    Sdv() : Message(kType) {}
+    static const FieldRow<Sdv> kFields[5];
+    static constexpr std::size_t kRequired = 5;
     std::optional<TimeOfDay> time;
     std::optional<double> sdVelNorth, sdVelEast, sdVelUp; // m/s
     std::optional<char> mode;
-    void writeJson(JsonWriter &w) const override;
 };
-struct Sdh : Message {
+struct Sdh : FieldMessage<Sdh> {
     static const MessageType kType;
-    Sdh() : Message(kType) {}
+    static const FieldRow<Sdh> kFields[3];
+    static constexpr std::size_t kRequired = 3;
     std::optional<TimeOfDay> time;
     std::optional<double> sdHeading; // degrees
     std::optional<char> mode;
-    void writeJson(JsonWriter &w) const override;
 };
 
 // 4.22 PNVGDOP (the spec's field table calls its address PNVGSDH: a copy-paste typo,
 // docs/spec-notes.md).
-struct Dop : Message {
+struct Dop : FieldMessage<Dop> {
     static const MessageType kType;
-    Dop() : Message(kType) {}
+    static const FieldRow<Dop> kFields[9];
+    static constexpr std::size_t kRequired = 9;
     std::optional<TimeOfDay> time;
     std::optional<double> gdop, pdop, hdop, vdop, tdop, ndop, edop;
     std::optional<char> mode;
-    void writeJson(JsonWriter &w) const override;
 };
 
 bool decodeVer(const Sentence &, DecodeContext &);
-bool decodeNme(const Sentence &, DecodeContext &);
+inline constexpr DecodeFn decodeNme = decodeMessage<Nme>;
 bool decodeRst(const Sentence &, DecodeContext &);
-bool decodeRza(const Sentence &, DecodeContext &);
+inline constexpr DecodeFn decodeRza = decodeMessage<Rza>;
 bool decodeRzb(const Sentence &, DecodeContext &);
-bool decodeBss(const Sentence &, DecodeContext &);
+inline constexpr DecodeFn decodeBss = decodeMessage<Bss>;
 bool decodeTst(const Sentence &, DecodeContext &);
 bool decodeCfg(const Sentence &, DecodeContext &);
-bool decodePps(const Sentence &, DecodeContext &);
+inline constexpr DecodeFn decodePps = decodeMessage<Pps>;
 bool decodeImu(const Sentence &, DecodeContext &);
 bool decodeBrs(const Sentence &, DecodeContext &);
 bool decodeBls(const Sentence &, DecodeContext &);
-bool decodeVog(const Sentence &, DecodeContext &);
+inline constexpr DecodeFn decodeVog = decodeMessage<Vog>;
 bool decodeRtk(const Sentence &, DecodeContext &);
 bool decodeIdl(const Sentence &, DecodeContext &);
-bool decodeTme(const Sentence &, DecodeContext &);
-bool decodeTmu(const Sentence &, DecodeContext &);
+inline constexpr DecodeFn decodeTme = decodeMessage<Tme>;
+inline constexpr DecodeFn decodeTmu = decodeMessage<Tmu>;
 bool decodeTmc(const Sentence &, DecodeContext &);
-bool decodeSdp(const Sentence &, DecodeContext &);
-bool decodeSdv(const Sentence &, DecodeContext &);
-bool decodeSdh(const Sentence &, DecodeContext &);
-bool decodeDop(const Sentence &, DecodeContext &);
+inline constexpr DecodeFn decodeSdp = decodeMessage<Sdp>;
+inline constexpr DecodeFn decodeSdv = decodeMessage<Sdv>;
+inline constexpr DecodeFn decodeSdh = decodeMessage<Sdh>;
+inline constexpr DecodeFn decodeDop = decodeMessage<Dop>;
 
 // The NVS sentence table (every PNVG* address, whole-address rules).
 std::span<const SentenceRule> sentenceRules();

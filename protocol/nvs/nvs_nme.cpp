@@ -5,28 +5,17 @@
 //            0 time decimals (0-6), 1 position decimals (0-9), 2 talker mode (0/1, optional)
 #include "nvs_encode_util.h"
 
+#include "core/field_table.h"
+
 namespace gnss::nvs {
 
 const MessageType Nme::kType{"PNVGNME"};
 
-bool decodeNme(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Nme m;
-    if (r.require(2)) {
-        m.timeDecimals = r.integer(0, "time decimals");
-        m.positionDecimals = r.integer(1, "position decimals");
-        m.talkerMode = r.integer(2, "talker mode");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Nme::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("time_decimals", timeDecimals)
-            .field("position_decimals", positionDecimals)
-            .field("talker_mode", talkerMode)
-            .endObject();
-}
+const FieldRow<Nme> Nme::kFields[] = {
+        {&Nme::timeDecimals, "time decimals", "time_decimals"},
+        {&Nme::positionDecimals, "position decimals", "position_decimals"},
+        {&Nme::talkerMode, "talker mode", "talker_mode"},
+};
 
 EncodeResult encodeNme(int timeDecimals, int positionDecimals, std::optional<int> talkerMode) {
     std::string err = checkSetting("nmea.time_decimals", std::to_string(timeDecimals));

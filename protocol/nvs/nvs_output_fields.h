@@ -4,6 +4,7 @@
 // must be finite and within what its field holds (a value a receiver never prints is refused
 // rather than printed as "nan" or as 300 digits), a mode indicator one of the spec's letters,
 // text free of the characters that frame a sentence. The first refusal wins; nothing is built.
+#include "core/field_table.h"
 #include "core/field_types.h"
 #include "core/refusal.h"
 #include "core/settings_schema.h"
@@ -36,6 +37,13 @@ public:
     OutputFields &text(std::string_view name, std::optional<std::string_view> v);
     // Fields another encoder built and checked ("ddmm.mmmm,N,..."), appended after a comma.
     OutputFields &fields(std::string_view checked);
+    // Each row's field of `m` (core/field_table.h): a time, a real with the row's decimals and
+    // range, a count within the row's range, a mode indicator, text.
+    template <class M, class Rows> OutputFields &rows(const M &m, const Rows &table) {
+        for (const auto &row : table)
+            std::visit([&](auto p) { add(row.name, m.*p, row.layout); }, row.member);
+        return *this;
+    }
 
     void refuse(Refusal why);
     bool ok() const { return why_.empty(); }
@@ -43,6 +51,22 @@ public:
     EncodeResult build() const;
 
 private:
+    void add(std::string_view n, const std::optional<TimeOfDay> &t, const FieldLayout &) {
+        time(n, t);
+    }
+    void add(std::string_view n, std::optional<double> v, const FieldLayout &l) {
+        real(n, v, l.decimals, l.min, l.max);
+    }
+    void add(std::string_view n, std::optional<std::int64_t> v, const FieldLayout &l) {
+        integer(n, v, static_cast<std::int64_t>(l.min), static_cast<std::int64_t>(l.max));
+    }
+    void add(std::string_view n, std::optional<int> v, const FieldLayout &l) {
+        add(n, v ? std::optional<std::int64_t>(*v) : std::nullopt, l);
+    }
+    void add(std::string_view n, std::optional<char> m, const FieldLayout &) { mode(n, m); }
+    void add(std::string_view n, std::optional<std::string_view> v, const FieldLayout &) {
+        text(n, v);
+    }
     std::string name(std::string_view field) const;
     std::string_view address_;
     std::string body_;
@@ -59,6 +83,13 @@ inline constexpr double kMaxSpeed = 1e5;             // m/s
 inline constexpr double kMaxAcceleration = 1e3;      // m/s^2
 inline constexpr double kMaxDop = 1e3;               // dilutions of precision
 inline constexpr std::int64_t kMaxCount = 1LL << 53; // counters (exact in a double, as JSON)
+
+// The sentence of a message that is just its rows (as OutputFields::rows).
+template <class M, class Rows> EncodeResult encodeRows(const M &m, const Rows &rows) {
+    OutputFields f(m.type->name);
+    f.rows(m, rows);
+    return f.build();
+}
 
 // "<name>: <value> is out of range; accepted: <accepted>" (the schema's template).
 Refusal outOfRange(std::string name, std::string value, std::string accepted);

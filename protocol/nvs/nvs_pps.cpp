@@ -7,36 +7,21 @@
 //            4 duration (1-1000 us), 5 validity control (E/D), 6 cable delay (ns)
 #include "nvs_encode_util.h"
 
+#include "core/field_table.h"
+
 namespace gnss::nvs {
 
 const MessageType Pps::kType{"PNVGPPS"};
 
-bool decodePps(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Pps m;
-    if (r.require(7)) {
-        m.type = r.letter(0, "type");
-        m.mode = r.letter(1, "mode");
-        m.reference = r.letter(2, "reference");
-        m.adjust = r.integer(3, "timescale adjustment");
-        m.duration = r.integer(4, "duration");
-        m.validity = r.letter(5, "validity control");
-        m.cableDelay = r.integer(6, "cable delay");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Pps::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("type", type)
-            .field("mode", mode)
-            .field("reference", reference)
-            .field("adjust", adjust)
-            .field("duration", duration)
-            .field("validity", validity)
-            .field("cable_delay", cableDelay)
-            .endObject();
-}
+const FieldRow<Pps> Pps::kFields[] = {
+        {&Pps::type, "type", "type"},
+        {&Pps::mode, "mode", "mode"},
+        {&Pps::reference, "reference", "reference"},
+        {&Pps::adjust, "timescale adjustment", "adjust"},
+        {&Pps::duration, "duration", "duration"},
+        {&Pps::validity, "validity control", "validity"},
+        {&Pps::cableDelay, "cable delay", "cable_delay"},
+};
 
 EncodeResult encodePps(const PpsSettings &p) {
     std::string fields[7];

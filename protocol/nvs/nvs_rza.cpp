@@ -6,24 +6,17 @@
 //            2 protocol (0 disable, 1 NMEA 0183, 7 RTCM)
 #include "nvs_encode_util.h"
 
+#include "core/field_table.h"
+
 namespace gnss::nvs {
 
 const MessageType Rza::kType{"PNVGRZA"};
 
-bool decodeRza(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Rza m;
-    if (r.require(3)) {
-        m.port = r.integer(0, "port");
-        m.baud = r.integer(1, "baud rate");
-        m.protocol = r.integer(2, "protocol");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Rza::writeJson(JsonWriter &w) const {
-    w.beginObject().field("port", port).field("baud", baud).field("protocol", protocol).endObject();
-}
+const FieldRow<Rza> Rza::kFields[] = {
+        {&Rza::port, "port", "port"},
+        {&Rza::baud, "baud rate", "baud"},
+        {&Rza::protocol, "protocol", "protocol"},
+};
 
 EncodeResult encodeRza(int port, int baud, int protocol) {
     std::string err = checkRange("PNVGRZA port", port, 0, 3);

@@ -17,33 +17,16 @@ const MessageType Tme::kType{"PNVGTME"};
 const MessageType Tmu::kType{"PNVGTMU"};
 const MessageType Tmc::kType{"PNVGTMC"};
 
-bool decodeTme(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Tme m;
-    if (r.require(2)) {
-        m.counter = r.integer64(0, "event counter");
-        m.tow = r.real(1, "time of week");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Tme::writeJson(JsonWriter &w) const {
-    w.beginObject().field("counter", counter).field("tow", tow).endObject();
-}
-
-bool decodeTmu(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Tmu m;
-    if (r.require(2)) {
-        m.counter = r.integer64(0, "event counter");
-        m.time = r.time(1, "time");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Tmu::writeJson(JsonWriter &w) const {
-    w.beginObject().field("counter", counter).field("time", time).endObject();
-}
+// Time of week to the nanosecond ($PNVGTME,128,40327.564756284); the UTC time with the decimals
+// it carries ($PNVGTMU,128,081248.547824228).
+const FieldRow<Tme> Tme::kFields[] = {
+        {&Tme::counter, "event counter", "counter", {0, 0, kMaxCount}},
+        {&Tme::tow, "time of week", "tow", {9, 0, 604799.999999999}},
+};
+const FieldRow<Tmu> Tmu::kFields[] = {
+        {&Tmu::counter, "event counter", "counter", {0, 0, kMaxCount}},
+        {&Tmu::time, "time", "time"},
+};
 
 bool decodeTmc(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
@@ -52,19 +35,12 @@ bool decodeTmc(const Sentence &s, DecodeContext &ctx) {
     return finishDecode(r, ctx, m);
 }
 
-// Time of week to the nanosecond ($PNVGTME,128,40327.564756284).
 EncodeResult encodeTme(const Tme &m) {
-    OutputFields f(Tme::kType.name);
-    f.integer("event counter", m.counter, 0, kMaxCount)
-            .real("time of week", m.tow, 9, 0, 604799.999999999);
-    return f.build();
+    return encodeRows(m, Tme::kFields);
 }
 
-// The time with the decimals it carries ($PNVGTMU,128,081248.547824228).
 EncodeResult encodeTmu(const Tmu &m) {
-    OutputFields f(Tmu::kType.name);
-    f.integer("event counter", m.counter, 0, kMaxCount).time("time", m.time);
-    return f.build();
+    return encodeRows(m, Tmu::kFields);
 }
 
 // The GGA layout, written by the GGA encoder (one layout for both); the time with the decimals it

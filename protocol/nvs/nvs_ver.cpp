@@ -13,44 +13,30 @@ namespace gnss::nvs {
 
 const MessageType Ver::kType{"PNVGVER"};
 
+// The texts as the receiver prints them (firmware versions keep their leading zeros).
+const FieldRow<Ver> Ver::kFields[] = {
+        {&Ver::manufacturer, "manufacturer", "manufacturer"},
+        {&Ver::device, "device", "device"},
+        {&Ver::rtkFw, "RTK firmware", "rtk_fw"},
+        {&Ver::csmHw, "CSM hardware", "csm_hw"},
+        {&Ver::csmFw, "CSM firmware", "csm_fw"},
+};
+
 bool decodeVer(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     Ver m;
     m.request = s.fieldCount() == 0;
-    if (!m.request && r.require(5)) {
-        m.manufacturer = r.str(0);
-        m.device = r.str(1);
-        m.rtkFw = r.str(2);
-        m.csmHw = r.str(3);
-        m.csmFw = r.str(4);
-    }
+    if (!m.request && r.require(5)) readFields(r, m, Ver::kFields);
     return finishDecode(r, ctx, m);
-}
-
-void Ver::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("manufacturer", manufacturer)
-            .field("device", device)
-            .field("rtk_fw", rtkFw)
-            .field("csm_hw", csmHw)
-            .field("csm_fw", csmFw)
-            .endObject();
 }
 
 EncodeResult encodeVersionRequest() {
     return {{buildSentence("PNVGVER")}, {}};
 }
 
-// The texts as the receiver prints them (firmware versions keep their leading zeros).
+// A request gives "$PNVGVER".
 EncodeResult encodeVer(const Ver &m) {
-    if (m.request) return encodeVersionRequest();
-    OutputFields f(Ver::kType.name);
-    f.text("manufacturer", m.manufacturer)
-            .text("device", m.device)
-            .text("RTK firmware", m.rtkFw)
-            .text("CSM hardware", m.csmHw)
-            .text("CSM firmware", m.csmFw);
-    return f.build();
+    return m.request ? encodeVersionRequest() : encodeRows(m, Ver::kFields);
 }
 
 } // namespace gnss::nvs

@@ -9,38 +9,17 @@ namespace gnss::nvs {
 
 const MessageType Vog::kType{"PNVGVOG"};
 
-bool decodeVog(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Vog m;
-    if (r.require(5)) {
-        m.time = r.time(0, "time");
-        m.velNorth = r.real(1, "north velocity");
-        m.velEast = r.real(2, "east velocity");
-        m.velUp = r.real(3, "vertical velocity");
-        m.mode = r.letter(4, "mode");
-    }
-    return finishDecode(r, ctx, m);
-}
-
-void Vog::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("time", time)
-            .field("vel_north", velNorth)
-            .field("vel_east", velEast)
-            .field("vel_up", velUp)
-            .field("mode", mode)
-            .endObject();
-}
-
 // Velocities in mm/s.
+const FieldRow<Vog> Vog::kFields[] = {
+        {&Vog::time, "time", "time"},
+        {&Vog::velNorth, "north velocity", "vel_north", {3, -kMaxSpeed, kMaxSpeed}},
+        {&Vog::velEast, "east velocity", "vel_east", {3, -kMaxSpeed, kMaxSpeed}},
+        {&Vog::velUp, "vertical velocity", "vel_up", {3, -kMaxSpeed, kMaxSpeed}},
+        {&Vog::mode, "mode", "mode"},
+};
+
 EncodeResult encodeVog(const Vog &m) {
-    OutputFields f(Vog::kType.name);
-    f.time("time", m.time)
-            .real("north velocity", m.velNorth, 3, -kMaxSpeed, kMaxSpeed)
-            .real("east velocity", m.velEast, 3, -kMaxSpeed, kMaxSpeed)
-            .real("vertical velocity", m.velUp, 3, -kMaxSpeed, kMaxSpeed)
-            .mode("mode", m.mode);
-    return f.build();
+    return encodeRows(m, Vog::kFields);
 }
 
 } // namespace gnss::nvs
