@@ -1,9 +1,10 @@
 #pragma once
 // WGS-84, in one place: the ellipsoid's constants, degrees and radians, Earth-centred Earth-fixed
 // X, Y, Z (metres) to and from latitude, longitude (degrees) and height above the ellipsoid
-// (metres), and the metres a degree spans at a latitude (for local east/north offsets). Written
-// here rather than pulled in: a few formulas, used by the RTCM station messages, the base-station
-// editors, the simulator, the log viewer's statistics and the deviation view.
+// (metres), the metres a degree spans at a latitude (for local east/north offsets), and the
+// Earth's mean radius for distances on a sphere. Written here rather than pulled in: a few
+// formulas, used by the RTCM station messages, the base-station editors, the simulator, the log
+// viewer's statistics, the deviation view and the NTRIP nearest-mountpoint search.
 #include <optional>
 
 namespace gnss::wgs84 {
@@ -12,6 +13,8 @@ inline constexpr double kA = 6378137.0;           // semi-major axis (m)
 inline constexpr double kF = 1.0 / 298.257223563; // flattening
 inline constexpr double kE2 = kF * (2.0 - kF);    // first eccentricity squared
 inline constexpr double kB = kA * (1.0 - kF);     // semi-minor axis (m)
+// The IUGG mean radius (m): for great-circle distances where the ellipsoid would add nothing.
+inline constexpr double kMeanRadius = 6371008.8;
 // π as std::numbers::pi has it (<numbers> is not included: Qt 6.4's moc cannot parse it, and
 // this header reaches files moc reads).
 inline constexpr double kPi = 3.141592653589793238462643383279502884;

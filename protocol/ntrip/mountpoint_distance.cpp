@@ -15,7 +15,7 @@ double greatCircleMetres(double lat1Deg, double lon1Deg, double lat2Deg, double 
                                                                        std::sin(dLambda / 2) *
                                                                        std::sin(dLambda / 2);
     // Clamped: rounding can push a above 1 for antipodal points.
-    return 2 * kMeanEarthRadius * std::asin(std::sqrt(std::clamp(a, 0.0, 1.0)));
+    return 2 * wgs84::kMeanRadius * std::asin(std::sqrt(std::clamp(a, 0.0, 1.0)));
 }
 
 std::optional<std::pair<double, double>> entryPosition(const StreamEntry &s) {

@@ -1,14 +1,17 @@
 #pragma once
 // How far a mountpoint's base is from the rover, and which one is nearest: great-circle
-// distance on a sphere of the Earth's mean radius (the source table gives positions to a
-// hundredth of a degree at best, so an ellipsoid would add nothing).
+// distance on a sphere of the Earth's mean radius, wgs84::kMeanRadius (the source table gives
+// positions to a hundredth of a degree at best, so an ellipsoid would add nothing).
 #include "source_table.h"
+
+#include "core/wgs84.h"
 
 #include <optional>
 
 namespace gnss::ntrip {
 
-inline constexpr double kMeanEarthRadius = 6371008.8; // metres (IUGG mean radius)
+// The sphere's radius the distances below are on (the one value: wgs84::kMeanRadius).
+inline constexpr double kMeanEarthRadius = wgs84::kMeanRadius;
 
 // Metres along the Earth's surface between two points given in degrees (haversine).
 double greatCircleMetres(double lat1Deg, double lon1Deg, double lat2Deg, double lon2Deg);

@@ -5,13 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 
 namespace gnss::sim {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = wgs84::kDegree;
 constexpr double kGm = 3.986004418e14;         // m^3/s^2
 constexpr double kEarthRate = 7.2921151467e-5; // rad/s
@@ -113,7 +111,7 @@ double SkyModel::meanMotion(double radius) {
 SkyModel::SkyModel(std::uint32_t seed, Observer observer) : observer_(observer), rng_(seed) {
     std::uniform_real_distribution<double> jitter(-4.0 * kDeg, 4.0 * kDeg);
     // A random instant of the constellations' day, so different seeds see different skies.
-    std::uniform_real_distribution<double> day(0.0, 2 * kPi);
+    std::uniform_real_distribution<double> day(0.0, 2 * wgs84::kPi);
     const double skyOffset = day(rng_);
     for (const Walker &w : kWalkers) {
         for (int p = 0; p < w.planes; ++p) {
@@ -123,9 +121,9 @@ SkyModel::SkyModel(std::uint32_t seed, Observer observer) : observer_(observer),
                 o.prn = w.firstPrn + p * w.perPlane + k;
                 o.radius = w.radius;
                 o.inclination = w.inclinationDeg * kDeg;
-                o.raan = 2 * kPi * p / w.planes + skyOffset;
-                o.phase = 2 * kPi * k / w.perPlane + 2 * kPi * p / (w.planes * w.perPlane) +
-                          jitter(rng_);
+                o.raan = 2 * wgs84::kPi * p / w.planes + skyOffset;
+                o.phase = 2 * wgs84::kPi * k / w.perPlane +
+                          2 * wgs84::kPi * p / (w.planes * w.perPlane) + jitter(rng_);
                 if (w.system == Constellation::Glonass)
                     o.glonassChannel = kGlonassChannels[static_cast<std::size_t>(o.prn - 1)];
                 orbits_.push_back(o);

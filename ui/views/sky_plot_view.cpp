@@ -4,15 +4,16 @@
 #include "models/satellite_model.h"
 #include "style/gnss_style.h"
 
+#include "core/wgs84.h"
+
 #include <QContextMenuEvent>
 #include <QHelpEvent>
 #include <QMenu>
 #include <QPainter>
 #include <QPainterPath>
 #include <QToolTip>
-#include <QtMath>
 
-#include <numbers>
+#include <cmath>
 #include <numeric>
 
 namespace gnss::ui {
@@ -22,7 +23,7 @@ void drawConstellationMarker(QPainter &p, Constellation c, QPointF o, double s) 
     QPainterPath path;
     auto polygon = [&](int n, double rot, double r) {
         for (int i = 0; i < n; ++i) {
-            const double a = rot + 2 * std::numbers::pi * i / n;
+            const double a = rot + 2 * wgs84::kPi * i / n;
             const QPointF q(o.x() + r * std::sin(a), o.y() - r * std::cos(a));
             i == 0 ? path.moveTo(q) : path.lineTo(q);
         }
@@ -35,11 +36,11 @@ void drawConstellationMarker(QPainter &p, Constellation c, QPointF o, double s) 
         break;
     case style::Marker::Diamond: polygon(4, 0, h * 1.2); break;
     case style::Marker::TriangleUp: polygon(3, 0, h * 1.2); break;
-    case style::Marker::TriangleDown: polygon(3, std::numbers::pi, h * 1.2); break;
+    case style::Marker::TriangleDown: polygon(3, wgs84::kPi, h * 1.2); break;
     case style::Marker::Pentagon: polygon(5, 0, h * 1.1); break;
     case style::Marker::Star: {
         for (int i = 0; i < 10; ++i) {
-            const double a = 2 * std::numbers::pi * i / 10;
+            const double a = 2 * wgs84::kPi * i / 10;
             const double r = i % 2 ? h * 0.5 : h * 1.2;
             const QPointF q(o.x() + r * std::sin(a), o.y() - r * std::cos(a));
             i == 0 ? path.moveTo(q) : path.lineTo(q);
@@ -93,7 +94,7 @@ QPointF SkyPlotView::center() const {
 
 QPointF SkyPlotView::project(double az, double el) const {
     const double rho = radius() * (90.0 - std::clamp(el, 0.0, 90.0)) / 90.0;
-    const double a = qDegreesToRadians(az);
+    const double a = wgs84::radians(az);
     const QPointF c = center();
     return {c.x() + rho * std::sin(a), c.y() - rho * std::cos(a)};
 }
