@@ -45,7 +45,7 @@ QVariant SatelliteModel::data(const QModelIndex &index, int role) const {
     case LabelRole: return label(r);
     case Qt::ForegroundRole:
         if (index.column() == System) return style::constellationColor(r.sat.system);
-        return r.inView ? QVariant() : QVariant(QColor(Qt::gray));
+        return r.inView ? QVariant() : QVariant(style::mutedColor());
     case Qt::DisplayRole: {
         const QString dash = QStringLiteral("—");
         auto show = [&](const std::optional<int> &v) { return v ? QString::number(*v) : dash; };

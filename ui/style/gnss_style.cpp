@@ -78,6 +78,10 @@ QColor cautionColor() {
     return lineColor(LineTone::Vermillion);
 }
 
+QColor mutedColor() {
+    return QColor(0xa0, 0xa0, 0xa4); // Qt::gray
+}
+
 QColor sentColor() {
     return lineColor(LineTone::Blue);
 }

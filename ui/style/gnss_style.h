@@ -24,6 +24,8 @@ QColor errorColor();
 QColor okColor();
 // A value to look at twice (out of the receiver's range, not applied yet).
 QColor cautionColor();
+// What is listed but not current, in text (a satellite no longer in view).
+QColor mutedColor();
 // What the user sent, and the lines of a chart that are not a constellation's (Okabe-Ito).
 QColor sentColor();
 enum class LineTone { Blue, Vermillion, BluishGreen, ReddishPurple };
