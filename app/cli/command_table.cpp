@@ -1,5 +1,7 @@
 #include "command_table.h"
 
+#include "core/baud_rates.h"
+
 #include <algorithm>
 
 namespace gnss::cli {
@@ -17,7 +19,6 @@ constexpr OptionSpec kPrefix{"prefix", "NEW",
                              "with --dialect D: the dialect's renamable prefix (below) was renamed "
                              "NEW on the receiver"};
 constexpr OptionSpec kPort{"port", "P", "serial port: ttyUSB0, /dev/ttyACM0 or any path to a tty"};
-constexpr OptionSpec kBaud{"baud", "B", "line speed (default 9600)"};
 constexpr OptionSpec kTcp{"tcp", "HOST:PORT",
                           "a TCP source: a serial-to-Ethernet server, gnss-sim --tcp"};
 constexpr OptionSpec kGpsd{"gpsd", "HOST[:PORT][/DEVICE]",
@@ -202,8 +203,8 @@ constexpr CommandSpec kCommands[] = {
         {"probe", cmdProbe,
          "probe --port P [--baud B] | --tcp HOST:PORT | --gpsd HOST[:PORT][/DEVICE] | --sim D",
          "detect a receiver's baud, dialect, model and firmware", kProbeOptions,
-         "Finds the speed (the --baud given first, then 115200, 9600, 38400, 57600, 4800, 19200, "
-         "230400, 460800, 921600: the first giving two valid sentences), then the receiver (its "
+         "Finds the speed (the --baud given first, then {detection order}: the first giving two "
+         "valid sentences), then the receiver (its "
          "proprietary sentences, then each dialect's probe), and prints one JSON object: port, "
          "baud, dialect, dialect_name, model, firmware, method, reply, tried (bytes and "
          "sentences per rate) and error. Through gpsd no probe can be sent: the receiver is known "
@@ -317,6 +318,16 @@ void appendWrapped(std::string &out, std::string_view text, std::size_t column,
         lineStart = false;
     }
     out += '\n';
+}
+
+// A help text with "{detection order}" replaced by the rates baud detection tries, in its order
+// (core/baud_rates.h), so that the help says what the opener does.
+std::string withDetectionOrder(std::string_view text) {
+    constexpr std::string_view kMark = "{detection order}";
+    std::string out(text);
+    if (const auto at = out.find(kMark); at != std::string::npos)
+        out.replace(at, kMark.size(), baudList(kDetectionBauds));
+    return out;
 }
 
 // A details paragraph; "  label   text" keeps its label and is continued under its text.
@@ -438,7 +449,7 @@ std::string commandHelp(const CommandSpec &command, const DialectRegistry &regis
         first = false;
     });
     out += '\n';
-    forEachLine(command.details,
+    forEachLine(withDetectionOrder(command.details),
                 [&](std::string_view paragraph) { appendParagraph(out, paragraph); });
     appendOptions(out, command.options);
     if (takesDialect(command)) appendDialects(out, registry);

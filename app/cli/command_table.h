@@ -16,7 +16,9 @@ struct CommandSpec {
     std::string_view synopsis; // what follows "gnss-cli "; one line per form
     std::string_view summary;  // one line for the overview
     std::span<const OptionSpec> options;
-    std::string_view details; // what it reads and prints, and its exit status
+    // What it reads and prints, and its exit status; "{detection order}" stands for the rates
+    // baud detection tries (core/baud_rates.h).
+    std::string_view details;
 };
 
 std::span<const CommandSpec> commandTable();
