@@ -92,6 +92,26 @@ constexpr std::string_view kRtk = "RTK engine";
         .command = &kOutputCommands[N[0] - '1']                                                    \
     }
 
+// One PNVGNME row (4.2): the three fields are one command, answered only when set; TALKER is how
+// the command template shows the optional talker mode.
+#define NME(NAME, LABEL, TYPE, MIN, MAX, OPTS, DEF, HELP, TALKER)                                  \
+    SettingDef {                                                                                   \
+        .key = "nmea." NAME, .label = LABEL, .group = "NMEA output", .type = TYPE, .min = MIN,     \
+        .max = MAX, .options = OPTS, .defaultValue = DEF, .help = HELP,                            \
+        .access = SettingAccess::WriteOnly,                                                        \
+        .readBack = "none documented (PNVGNME answers only when set)",                             \
+        .write = "$PNVGNME,<time decimals>,<position decimals>" TALKER, .command = &kNmeCommand    \
+    }
+
+// One PNVGPPS row (4.9): the seven fields are one command, read back by sending it empty;
+// READ_BACK says where the value is in the reply.
+#define PPS(NAME, LABEL, TYPE, UNIT, MIN, MAX, OPTS, DEF, HELP, READ_BACK, WRITE)                  \
+    SettingDef {                                                                                   \
+        .key = "pps." NAME, .label = LABEL, .group = "Time pulse", .type = TYPE, .unit = UNIT,     \
+        .min = MIN, .max = MAX, .options = OPTS, .defaultValue = DEF, .help = HELP,                \
+        .readBack = "$PNVGPPS,,,,,,, -> " READ_BACK, .write = WRITE, .command = &kPpsCommand       \
+    }
+
 const SettingDef kSchema[] = {
         // ---- 4.14 PNVGRTK, Table 4 (33 parameters, in the spec's order) ----
         RTK("MODE", "Operation mode", T::Enum, "", kNone, kNone, kMode, "2",
@@ -188,44 +208,17 @@ const SettingDef kSchema[] = {
             "on RTK FW release date)."),
 
         // ---- 4.2 PNVGNME ----
-        {.key = "nmea.time_decimals",
-         .label = "Time decimals",
-         .group = "NMEA output",
-         .type = T::Integer,
-         .min = 0,
-         .max = 6,
-         .defaultValue = "2",
-         .help = "Number of digits in fractional part of time output, 0 to 6 (2 by default). "
-                 "PNVGNME sets time and position decimals together.",
-         .access = SettingAccess::WriteOnly,
-         .readBack = "none documented (PNVGNME answers only when set)",
-         .write = "$PNVGNME,<time decimals>,<position decimals>[,<talker mode>]",
-         .command = &kNmeCommand},
-        {.key = "nmea.position_decimals",
-         .label = "Position decimals",
-         .group = "NMEA output",
-         .type = T::Integer,
-         .min = 0,
-         .max = 9,
-         .defaultValue = "7",
-         .help = "Number of digits in fractional part of position output, 0 to 9 (7 by "
-                 "default).",
-         .access = SettingAccess::WriteOnly,
-         .readBack = "none documented (PNVGNME answers only when set)",
-         .write = "$PNVGNME,<time decimals>,<position decimals>[,<talker mode>]",
-         .command = &kNmeCommand},
-        {.key = "nmea.talker_mode",
-         .label = "Talker ID compatibility",
-         .group = "NMEA output",
-         .type = T::Enum,
-         .options = kTalker,
-         .defaultValue = "0",
-         .help = "0 - Talker ID for GGA and RMC always GP (by default); 1 - compatibility mode "
-                 "off, talker ID as specified (GN for combined solutions). Optional field.",
-         .access = SettingAccess::WriteOnly,
-         .readBack = "none documented (PNVGNME answers only when set)",
-         .write = "$PNVGNME,<time decimals>,<position decimals>,<talker mode>",
-         .command = &kNmeCommand},
+        NME("time_decimals", "Time decimals", T::Integer, 0, 6, {}, "2",
+            "Number of digits in fractional part of time output, 0 to 6 (2 by default). PNVGNME "
+            "sets time and position decimals together.",
+            "[,<talker mode>]"),
+        NME("position_decimals", "Position decimals", T::Integer, 0, 9, {}, "7",
+            "Number of digits in fractional part of position output, 0 to 9 (7 by default).",
+            "[,<talker mode>]"),
+        NME("talker_mode", "Talker ID compatibility", T::Enum, kNone, kNone, kTalker, "0",
+            "0 - Talker ID for GGA and RMC always GP (by default); 1 - compatibility mode off, "
+            "talker ID as specified (GN for combined solutions). Optional field.",
+            ",<talker mode>"),
 
         // ---- 4.4 PNVGRZA per port ----
         // The simulated and usual host is on COM1: its speed is the link's.
@@ -239,87 +232,33 @@ const SettingDef kSchema[] = {
         OUTPUT("3", "USB"),
 
         // ---- 4.9 PNVGPPS (empty fields stay unchanged; all empty reads the settings back) ----
-        {.key = "pps.type",
-         .label = "Time pulse type",
-         .group = "Time pulse",
-         .type = T::Enum,
-         .options = kPpsType,
-         .defaultValue = "P",
-         .help = "P (by default) - software-synchronised time pulse; A - hardware-synchronised "
-                 "(aligned to internal timescale).",
-         .readBack = "$PNVGPPS,,,,,,, -> $PNVGPPS,<type>,...",
-         .write = "$PNVGPPS,<type>,,,,,,",
-         .command = &kPpsCommand},
-        {.key = "pps.mode",
-         .label = "Software time pulse",
-         .group = "Time pulse",
-         .type = T::Enum,
-         .options = kPpsMode,
-         .defaultValue = "S",
-         .help = "I - interval time pulse at PVT update rate; S (by default) - 1PPS, one pulse "
-                 "per second.",
-         .readBack = "$PNVGPPS,,,,,,, -> field 2",
-         .write = "$PNVGPPS,,<mode>,,,,,",
-         .command = &kPpsCommand},
-        {.key = "pps.reference",
-         .label = "1PPS reference",
-         .group = "Time pulse",
-         .type = T::Enum,
-         .options = kPpsRef,
-         .defaultValue = "U",
-         .help = "1PPS time pulse reference: U - UTC (by default), S - UTC(SU), G - GLONASS "
-                 "time, N - GPS time. Applies to 1PPS only.",
-         .readBack = "$PNVGPPS,,,,,,, -> field 3",
-         .write = "$PNVGPPS,,,<reference>,,,,",
-         .command = &kPpsCommand},
-        {.key = "pps.adjust",
-         .label = "Timescale adjustment",
-         .group = "Time pulse",
-         .type = T::Bool,
-         .options = kOnOff,
-         .defaultValue = "1",
-         .help = "Internal receiver timescale adjustment: 1 - On (by default), adjusted once the "
-                 "offset to UTC exceeds 1 ms; 0 - Off (not recommended).",
-         .readBack = "$PNVGPPS,,,,,,, -> field 4",
-         .write = "$PNVGPPS,,,,<adjust>,,,",
-         .command = &kPpsCommand},
-        {.key = "pps.duration",
-         .label = "Pulse duration",
-         .group = "Time pulse",
-         .type = T::Integer,
-         .unit = "us",
-         .min = 1,
-         .max = 1000,
-         .defaultValue = "1000",
-         .help = "Software-defined time pulse duration in microseconds, 1 to 1000 (1000 by "
-                 "default).",
-         .readBack = "$PNVGPPS,,,,,,, -> field 5",
-         .write = "$PNVGPPS,,,,,<duration>,,",
-         .command = &kPpsCommand},
-        {.key = "pps.validity",
-         .label = "PPS validity control",
-         .group = "Time pulse",
-         .type = T::Enum,
-         .options = kPpsValid,
-         .defaultValue = "D",
-         .help = "Output PPS only with a valid navigation solution and UTC parameters: E - "
-                 "enabled, D - disabled (by default).",
-         .readBack = "$PNVGPPS,,,,,,, -> field 6",
-         .write = "$PNVGPPS,,,,,,<validity>,",
-         .command = &kPpsCommand},
-        {.key = "pps.cable_delay",
-         .label = "Antenna cable delay",
-         .group = "Time pulse",
-         .type = T::Integer,
-         .unit = "ns",
-         .min = 0,
-         .max = 9999,
-         .defaultValue = "0",
-         .help = "Delay in antenna cable in nanoseconds (0 by default). Range from the field's "
-                 "four digits (xxxx).",
-         .readBack = "$PNVGPPS,,,,,,, -> field 7",
-         .write = "$PNVGPPS,,,,,,,<delay>",
-         .command = &kPpsCommand},
+        PPS("type", "Time pulse type", T::Enum, "", kNone, kNone, kPpsType, "P",
+            "P (by default) - software-synchronised time pulse; A - hardware-synchronised "
+            "(aligned to internal timescale).",
+            "$PNVGPPS,<type>,...", "$PNVGPPS,<type>,,,,,,"),
+        PPS("mode", "Software time pulse", T::Enum, "", kNone, kNone, kPpsMode, "S",
+            "I - interval time pulse at PVT update rate; S (by default) - 1PPS, one pulse per "
+            "second.",
+            "field 2", "$PNVGPPS,,<mode>,,,,,"),
+        PPS("reference", "1PPS reference", T::Enum, "", kNone, kNone, kPpsRef, "U",
+            "1PPS time pulse reference: U - UTC (by default), S - UTC(SU), G - GLONASS time, N - "
+            "GPS time. Applies to 1PPS only.",
+            "field 3", "$PNVGPPS,,,<reference>,,,,"),
+        PPS("adjust", "Timescale adjustment", T::Bool, "", kNone, kNone, kOnOff, "1",
+            "Internal receiver timescale adjustment: 1 - On (by default), adjusted once the "
+            "offset to UTC exceeds 1 ms; 0 - Off (not recommended).",
+            "field 4", "$PNVGPPS,,,,<adjust>,,,"),
+        PPS("duration", "Pulse duration", T::Integer, "us", 1, 1000, {}, "1000",
+            "Software-defined time pulse duration in microseconds, 1 to 1000 (1000 by default).",
+            "field 5", "$PNVGPPS,,,,,<duration>,,"),
+        PPS("validity", "PPS validity control", T::Enum, "", kNone, kNone, kPpsValid, "D",
+            "Output PPS only with a valid navigation solution and UTC parameters: E - enabled, "
+            "D - disabled (by default).",
+            "field 6", "$PNVGPPS,,,,,,<validity>,"),
+        PPS("cable_delay", "Antenna cable delay", T::Integer, "ns", 0, 9999, {}, "0",
+            "Delay in antenna cable in nanoseconds (0 by default). Range from the field's four "
+            "digits (xxxx).",
+            "field 7", "$PNVGPPS,,,,,,,<delay>"),
 
         // ---- 4.15 PNVGIDL ----
         {.key = "idl.mode",
@@ -349,6 +288,8 @@ const SettingDef kSchema[] = {
 #undef RTK
 #undef PORT
 #undef OUTPUT
+#undef PPS
+#undef NME
 
 constexpr std::string_view kPorts[] = {"current", "COM1", "COM2", "USB"};
 
