@@ -9,9 +9,9 @@
 #include "nvs_encode_util.h"
 
 #include "core/field_parse.h"
+#include "core/wgs84.h"
 
 #include <cmath>
-#include <numbers>
 
 namespace gnss::nvs {
 
@@ -52,7 +52,7 @@ std::string validateBaseBlh(std::string_view value) {
     double b, l, h;
     if (parts.size() == 3 && parseReal(parts[0], b) && parseReal(parts[1], l) &&
         parseReal(parts[2], h)) {
-        constexpr double kPi = std::numbers::pi;
+        using wgs84::kPi;
         if (std::fabs(b) > kPi / 2)
             return "rtk.BASEBLH: latitude B " + std::string(parts[0]) +
                    " rad is out of range; accepted: -1.5708..1.5708 rad";
