@@ -40,6 +40,20 @@ public:
     Body &time(const std::optional<TimeOfDay> &t, int decimals) {
         return text(t ? formatTime(*t, decimals) : std::string());
     }
+    // Latitude and longitude: four fields, ddmm.mmmm,N,dddmm.mmmm,E.
+    Body &position(std::optional<double> lat, std::optional<double> lon, const EncodeFormat &f) {
+        return raw(formatLatitude(lat, f.positionDecimals))
+                .raw(formatLongitude(lon, f.positionDecimals));
+    }
+    // What GGA and GNS both report of the solution: satellites used, HDOP, altitude above MSL,
+    // geoid separation (GGA follows each height with its unit M), differential age and station.
+    template <class Fix> Body &solution(const Fix &m, bool heightUnits) {
+        integer(m.satsUsed, 2).real(m.hdop, 1).real(m.altMsl, 3);
+        if (heightUnits) text(m.altMsl ? "M" : "");
+        real(m.geoidSep, 3);
+        if (heightUnits) text(m.geoidSep ? "M" : "");
+        return real(m.dgpsAge, 1).integer(m.dgpsStation, 4);
+    }
     std::string build() const { return buildSentence(s_); }
 
 private:
@@ -115,45 +129,21 @@ std::string formatDate(const Date &d) {
 // $--GGA,hhmmss.ss,llll.ll,a,yyyyy.yy,a,x,xx,x.x,x.x,M,x.x,M,x.x,xxxx
 std::string encodeGga(std::string_view talker, const Gga &m, const EncodeFormat &f) {
     Body b(talker, "GGA");
-    b.time(m.time, f.timeDecimals)
-            .raw(formatLatitude(m.lat, f.positionDecimals))
-            .raw(formatLongitude(m.lon, f.positionDecimals))
-            .integer(m.quality)
-            .integer(m.satsUsed, 2)
-            .real(m.hdop, 1)
-            .real(m.altMsl, 3)
-            .text(m.altMsl ? "M" : "")
-            .real(m.geoidSep, 3)
-            .text(m.geoidSep ? "M" : "")
-            .real(m.dgpsAge, 1)
-            .integer(m.dgpsStation, 4);
+    b.time(m.time, f.timeDecimals).position(m.lat, m.lon, f).integer(m.quality).solution(m, true);
     return b.build();
 }
 
 // $--GLL,llll.ll,a,yyyyy.yy,a,hhmmss.ss,A,a
 std::string encodeGll(std::string_view talker, const Gll &m, const EncodeFormat &f) {
     Body b(talker, "GLL");
-    b.raw(formatLatitude(m.lat, f.positionDecimals))
-            .raw(formatLongitude(m.lon, f.positionDecimals))
-            .time(m.time, f.timeDecimals)
-            .letter(m.status)
-            .letter(m.mode);
+    b.position(m.lat, m.lon, f).time(m.time, f.timeDecimals).letter(m.status).letter(m.mode);
     return b.build();
 }
 
 // $--GNS,hhmmss.ss,llll.ll,a,yyyyy.yy,a,c--c,xx,x.x,x.x,x.x,x.x,x.x,a
 std::string encodeGns(std::string_view talker, const Gns &m, const EncodeFormat &f) {
     Body b(talker, "GNS");
-    b.time(m.time, f.timeDecimals)
-            .raw(formatLatitude(m.lat, f.positionDecimals))
-            .raw(formatLongitude(m.lon, f.positionDecimals))
-            .text(m.mode)
-            .integer(m.satsUsed, 2)
-            .real(m.hdop, 1)
-            .real(m.altMsl, 3)
-            .real(m.geoidSep, 3)
-            .real(m.dgpsAge, 1)
-            .integer(m.dgpsStation, 4);
+    b.time(m.time, f.timeDecimals).position(m.lat, m.lon, f).text(m.mode).solution(m, false);
     if (m.navStatus) b.letter(m.navStatus);
     return b.build();
 }
@@ -207,8 +197,7 @@ std::string encodeRmc(std::string_view talker, const Rmc &m, const EncodeFormat 
     Body b(talker, "RMC");
     b.time(m.time, f.timeDecimals)
             .letter(m.status)
-            .raw(formatLatitude(m.lat, f.positionDecimals))
-            .raw(formatLongitude(m.lon, f.positionDecimals))
+            .position(m.lat, m.lon, f)
             .real(m.sogKnots, 2)
             .real(m.cog, 2)
             .text(m.date ? formatDate(*m.date) : std::string())
