@@ -8,6 +8,8 @@
 // the 2.x numbering ranges (see core/satellite.h).
 #include "nmea_messages.h"
 
+#include "core/satellite_json.h"
+
 namespace gnss::nmea {
 
 const MessageType Gsv::kType{"GSV"};
@@ -60,17 +62,8 @@ void Gsv::writeJson(JsonWriter &w) const {
             .field("signal_id", signalId)
             .key("satellites")
             .beginArray();
-    for (std::size_t i = 0; i < satelliteCount; ++i) {
-        const GsvSatellite &sv = satellites[i];
-        w.beginObject()
-                .field("system", toString(sv.sat.system))
-                .field("prn", sv.sat.prn)
-                .field("id", sv.id)
-                .field("elevation", sv.elevation)
-                .field("azimuth", sv.azimuth)
-                .field("snr", sv.snr)
-                .endObject();
-    }
+    for (std::size_t i = 0; i < satelliteCount; ++i)
+        beginSatelliteJson(w, satellites[i], "id", satellites[i].id).endObject();
     w.endArray().endObject();
 }
 

@@ -1,5 +1,7 @@
 #include "epoch.h"
 
+#include "core/satellite_json.h"
+
 namespace gnss {
 
 std::string Epoch::timeText() const {
@@ -30,17 +32,8 @@ void Epoch::writeJson(JsonWriter &w) const {
             .field("dgps_station", dgpsStation)
             .key("satellites")
             .beginArray();
-    for (const auto &s : satellites) {
-        w.beginObject()
-                .field("system", toString(s.sat.system))
-                .field("prn", s.sat.prn)
-                .field("signal_id", s.signalId)
-                .field("elevation", s.elevation)
-                .field("azimuth", s.azimuth)
-                .field("snr", s.snr)
-                .field("used", s.used)
-                .endObject();
-    }
+    for (const auto &s : satellites)
+        beginSatelliteJson(w, s, "signal_id", s.signalId).field("used", s.used).endObject();
     w.endArray().endObject();
 }
 
