@@ -23,6 +23,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 namespace gnss::cli {
 namespace {
@@ -239,10 +240,13 @@ int cmdSend(const CliContext &ctx) {
         std::fprintf(stderr, "gnss-cli: send needs at least one SENTENCE\n");
         return 2;
     }
-    // Every sentence is checked before anything is sent.
+    // Every sentence is checked before anything is sent (its length too, when the dialect is
+    // given: the queue would refuse what the receiver does not take).
+    std::vector<std::string> lines;
     for (const auto &typed : args.positionals()) {
         std::string error;
-        if (completeSentence(typed, error).empty()) {
+        lines.push_back(completeSentence(typed, error));
+        if (lines.back().empty()) {
             std::fprintf(stderr, "gnss-cli: not a sentence: '%s' (%s); nothing was sent\n",
                          typed.c_str(), error.c_str());
             return 2;
@@ -253,6 +257,13 @@ int cmdSend(const CliContext &ctx) {
     if (dialectId != "auto" && !dialect) {
         std::fprintf(stderr, "gnss-cli: unknown dialect '%s'\n", dialectId.c_str());
         return 2;
+    }
+    for (std::size_t i = 0; dialect && i < lines.size(); ++i) {
+        if (const QString why = link::lengthRefusal(lines[i], *dialect); !why.isEmpty()) {
+            std::fprintf(stderr, "gnss-cli: '%s': %s; nothing was sent\n",
+                         args.positionals()[i].c_str(), utf8(why).c_str());
+            return 2;
+        }
     }
     EventLoop loop;
     OpenOptions o;
@@ -282,7 +293,14 @@ int cmdSend(const CliContext &ctx) {
     reportLinkEvents(*conn, "");
     link::CommandOptions co;
     if (timeout >= 0) co.timeoutMs = static_cast<int>(timeout * 1000);
-    for (const auto &typed : args.positionals()) queue->enqueue(QString::fromStdString(typed), co);
+    for (const auto &typed : args.positionals()) {
+        QString why; // nothing is written before the loop runs
+        if (queue->enqueue(QString::fromStdString(typed), co, &why) < 0) {
+            std::fprintf(stderr, "gnss-cli: '%s': %s; nothing was sent\n", typed.c_str(),
+                         utf8(why).c_str());
+            return 2;
+        }
+    }
     rc = loop.exec();
     if (rc != 0) return rc;
     return failures == 0 ? 0 : 1;

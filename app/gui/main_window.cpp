@@ -274,8 +274,10 @@ void MainWindow::createDocks() {
     consoleDock->raise();
     connect(consoleView_, &ui::ConsoleView::sendRequested, this, [this](const QByteArray &s) {
         QString why;
-        if (!controller_->send(s, &why))
+        if (!controller_->send(s, &why)) {
+            consoleView_->showNotSent(why);
             statusBar()->showMessage(tr("Not sent: %1").arg(why), 8000);
+        }
     });
     connect(session_, &ui::ReceiverSession::dialectChanged, this, [this](const Dialect *d) {
         QStringList names;

@@ -51,6 +51,16 @@ QString outcomeName(CommandOutcome outcome) {
     return {};
 }
 
+QString lengthRefusal(std::string_view line, const Dialect &dialect) {
+    const std::size_t n = line.size() + 2; // with "\r\n"
+    if (n <= dialect.maxSentenceLength) return {};
+    return CommandQueue::tr("Too long: %1 characters with its line end; %2 takes at most %3")
+            .arg(n)
+            .arg(QString::fromUtf8(dialect.displayName.data(),
+                                   qsizetype(dialect.displayName.size())))
+            .arg(dialect.maxSentenceLength);
+}
+
 CommandQueue::CommandQueue(Transport *transport, SentenceStream *stream, QObject *parent)
     : QObject(parent), transport_(transport), stream_(stream) {
     timer_.setSingleShot(true);
@@ -76,6 +86,12 @@ int CommandQueue::enqueue(const QString &typed, const CommandOptions &options, Q
             *error =
                     tr("Not a sentence: %1 (%2)").arg(typed.trimmed(), QString::fromStdString(why));
         return -1;
+    }
+    if (dialect_) {
+        if (const QString tooLong = lengthRefusal(line, *dialect_); !tooLong.isEmpty()) {
+            if (error) *error = tooLong;
+            return -1;
+        }
     }
     const int id = nextId_++;
     queue_.push_back({id, std::move(line), options});

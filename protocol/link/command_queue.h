@@ -39,6 +39,10 @@ enum class CommandOutcome {
 
 QString outcomeName(CommandOutcome outcome);
 
+// Why `line` (a complete sentence, without its "\r\n") is too long for a receiver of `dialect`
+// (its maxSentenceLength, line end included); empty when it fits.
+QString lengthRefusal(std::string_view line, const Dialect &dialect);
+
 struct CommandOptions {
     int timeoutMs = -1; // -1: the rule's
     int retries = -1;   // -1: the rule's
@@ -73,7 +77,8 @@ public:
     void setOtherDialects(std::vector<const Dialect *> others) { others_ = std::move(others); }
 
     // Queues a command as typed: checksum added when missing ("PNVGVER" → "$PNVGVER*4E").
-    // Returns its id, or -1 with `error` set when it is not a sentence (nothing is sent then).
+    // Returns its id, or -1 with `error` set when it is not a sentence or is longer than the
+    // dialect's receiver takes (lengthRefusal; nothing is sent then).
     int enqueue(const QString &typed, const CommandOptions &options = {}, QString *error = nullptr);
     // Cancels a queued or running command; false when it is not pending.
     bool cancel(int id);

@@ -173,6 +173,35 @@ private slots:
         QVERIFY(rig.link.written.isEmpty());
     }
 
+    // NMEA 0183's 82 characters and the NVS receiver's 512, line end included.
+    void sentenceLongerThanTheReceiverTakesIsRefusedBeforeSending() {
+        for (const char *id : {"nmea", "nvs"}) {
+            QueueRig rig(id);
+            const int max = int(dialectById(id).maxSentenceLength);
+            // "$" + typed + "*hh" + "\r\n": six characters more than what is typed.
+            QString typed = "PXXXX," + QString(max - 5 - 6, 'A');
+            QString error;
+            QCOMPARE(rig.q.enqueue(typed, {}, &error), -1);
+            QVERIFY2(error.contains(QString::number(max + 1)) &&
+                             error.contains(QString::number(max)),
+                     qPrintable(QString("%1: %2").arg(id, error)));
+            QTest::qWait(20);
+            QVERIFY(rig.link.written.isEmpty());
+            QVERIFY(rig.q.history().isEmpty());
+            // One character less fits exactly, and is sent.
+            typed.chop(1);
+            QVERIFY2(rig.q.enqueue(typed, {}, &error) > 0, id);
+            QTRY_COMPARE(rig.link.written.size(), 1);
+            QCOMPARE(rig.link.written.first().size(), qsizetype(max));
+        }
+    }
+
+    void withoutADialectOnlyTheFramersLimitApplies() {
+        QueueRig rig(nullptr);
+        QVERIFY(rig.q.enqueue("PXXXX," + QString(200, 'A')) > 0);
+        QTRY_COMPARE(rig.link.written.size(), 1);
+    }
+
     void cancelStopsTheRunningAndTheQueuedCommand() {
         QueueRig rig;
         const int a = rig.q.enqueue("PNVGVER");

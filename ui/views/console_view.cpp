@@ -164,8 +164,7 @@ bool ConsoleView::submit() {
     std::string error;
     const std::string sentence = completeSentence(typed.toStdString(), error);
     if (sentence.empty()) {
-        inputError_->setText(tr("Not sent: %1").arg(QString::fromStdString(error)));
-        inputError_->setVisible(true);
+        showNotSent(QString::fromStdString(error));
         return false;
     }
     inputError_->setVisible(false);
@@ -176,6 +175,11 @@ bool ConsoleView::submit() {
     input_->clear();
     emit sendRequested(QByteArray::fromStdString(sentence));
     return true;
+}
+
+void ConsoleView::showNotSent(const QString &why) {
+    inputError_->setText(tr("Not sent: %1").arg(why));
+    inputError_->setVisible(true);
 }
 
 bool ConsoleView::eventFilter(QObject *o, QEvent *e) {

@@ -39,6 +39,9 @@ public:
     // Sends what the send box holds: completes the checksum, refuses a malformed sentence with a
     // message beside the box. Returns whether a sentence was emitted.
     bool submit();
+    // Says beside the send box why a sentence emitted was not sent after all (the link refused
+    // it: too long for the receiver, not connected); it stays in the history.
+    void showNotSent(const QString &why);
 
 signals:
     void sendRequested(const QByteArray &sentence);
