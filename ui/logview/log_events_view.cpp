@@ -1,4 +1,6 @@
 #include "log_events_view.h"
+#include "panel_layout.h"
+#include "widgets/read_only_table.h"
 
 #include "core/dialect_registry.h"
 #include "style/gnss_style.h"
@@ -33,10 +35,7 @@ QString eventTime(const logview::LogEvent &e) {
 
 LogEventsView::LogEventsView(LogCursor *cursor, const DialectRegistry &registry, QWidget *parent)
     : QWidget(parent), cursor_(cursor), registry_(registry) {
-    setObjectName("logEventsView");
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(4, 4, 4, 4);
-    auto *row = new QHBoxLayout;
+    const auto [layout, row] = panelLayout(this, "logEventsView");
     row->addWidget(new QLabel(tr("Show:"), this));
     filter_ = new QComboBox(this);
     filter_->setObjectName("eventFilter");
@@ -46,20 +45,15 @@ LogEventsView::LogEventsView(LogCursor *cursor, const DialectRegistry &registry,
     export_ = new QPushButton(tr("Export CSV…"), this);
     export_->setObjectName("exportEvents");
     row->addWidget(export_);
-    layout->addLayout(row);
     count_ = new QLabel(this);
     count_->setObjectName("eventCount");
     layout->addWidget(count_);
-    table_ = new QTableWidget(0, 3, this);
-    table_->setObjectName("eventTable");
+    table_ = readOnlyTable(3, "eventTable", this);
     table_->setHorizontalHeaderLabels({tr("Time"), tr("Event"), tr("Details")});
-    table_->verticalHeader()->hide();
-    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
     table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
-    table_->horizontalHeader()->setStretchLastSection(true);
     layout->addWidget(table_, 1);
     connect(filter_, &QComboBox::currentIndexChanged, this, &LogEventsView::reload);
     connect(export_, &QPushButton::clicked, this, &LogEventsView::exportRequested);

@@ -13,7 +13,6 @@ namespace gnss::ui {
 
 namespace {
 constexpr int kLeft = 58, kRight = 10, kTop = 8, kBottom = 22; // plot margins, pixels
-constexpr int kClickSlop = 4; // a press that moves less is a click, not a pan
 
 // 1, 2 or 5 times a power of ten, about range/ticks.
 double niceStep(double range, int ticks) {
@@ -271,27 +270,22 @@ void LogPlot::wheelEvent(QWheelEvent *e) {
 }
 
 void LogPlot::mousePressEvent(QMouseEvent *e) {
-    if (e->button() != Qt::LeftButton) return;
-    pressed_ = true;
-    panned_ = false;
-    pressPos_ = e->position();
+    if (!press_.press(e)) return;
     pressFirst_ = first_;
     pressLast_ = last_;
 }
 
 void LogPlot::mouseMoveEvent(QMouseEvent *e) {
-    if (!pressed_) return;
-    const double dx = e->position().x() - pressPos_.x();
-    if (!panned_ && std::abs(dx) < kClickSlop) return;
-    panned_ = true;
+    const auto d = press_.drag(e, true);
+    if (!d) return;
+    const double dx = d->x();
     const double perPixel = (pressLast_ - pressFirst_) / std::max(1, plotRect().width() - 1);
     setWindow(pressFirst_ - dx * perPixel, pressLast_ - dx * perPixel);
 }
 
 void LogPlot::mouseReleaseEvent(QMouseEvent *e) {
-    if (pressed_ && !panned_ && !cursor_->empty())
+    if (press_.release() && !cursor_->empty())
         cursor_->seek(std::size_t(std::max(0.0, std::round(epochAtX(e->position().x())))));
-    pressed_ = false;
 }
 
 void LogPlot::mouseDoubleClickEvent(QMouseEvent *) {

@@ -3,6 +3,7 @@
 // SNR) against the epochs, decimated per pixel column (its minimum to maximum, coloured by the
 // column's fix type), so a day at 10 Hz draws as fast as a minute. Wheel zooms about the mouse,
 // dragging pans, a click moves the cursor, a double click shows the whole log again.
+#include "drag_gesture.h"
 #include "log_cursor.h"
 #include "models/value_format.h"
 
@@ -57,9 +58,8 @@ private:
     DisplayPrefs prefs_;
     double first_ = 0, last_ = 0;
     bool zoomed_ = false;
-    QPointF pressPos_;
-    double pressFirst_ = 0, pressLast_ = 0;
-    bool pressed_ = false, panned_ = false;
+    DragGesture press_;
+    double pressFirst_ = 0, pressLast_ = 0; // the window when it began
     QImage image_; // the series, axes and labels (the cursor is drawn over it)
     bool imageValid_ = false;
 };

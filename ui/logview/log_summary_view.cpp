@@ -1,4 +1,5 @@
 #include "log_summary_view.h"
+#include "widgets/read_only_table.h"
 
 #include "style/gnss_style.h"
 
@@ -40,13 +41,9 @@ LogSummaryView::LogSummaryView(LogCursor *cursor, QWidget *parent)
     save->setObjectName("exportSummary");
     row->addWidget(save);
     layout->addLayout(row);
-    table_ = new QTableWidget(0, 2, this);
-    table_->setObjectName("summaryTable");
+    table_ = readOnlyTable(2, "summaryTable", this);
     table_->horizontalHeader()->hide();
-    table_->verticalHeader()->hide();
-    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    table_->horizontalHeader()->setStretchLastSection(true);
     layout->addWidget(table_, 1);
     connect(stationary_, &QCheckBox::toggled, this, &LogSummaryView::reload);
     connect(save, &QPushButton::clicked, this, &LogSummaryView::exportRequested);

@@ -11,7 +11,6 @@
 namespace gnss::ui {
 
 namespace {
-constexpr int kClickSlop = 4;      // pixels: a press that moves less is a click
 constexpr double kPickRadius = 12; // pixels: how near a click must be to an epoch
 constexpr double kFitMargin = 0.9; // the fitted track fills 90 % of the smaller side
 
@@ -217,28 +216,21 @@ void LogTrack::wheelEvent(QWheelEvent *e) {
 }
 
 void LogTrack::mousePressEvent(QMouseEvent *e) {
-    if (e->button() != Qt::LeftButton) return;
-    pressed_ = true;
-    panned_ = false;
-    pressPos_ = e->position();
-    pressCentre_ = centre_;
+    if (press_.press(e)) pressCentre_ = centre_;
 }
 
 void LogTrack::mouseMoveEvent(QMouseEvent *e) {
-    if (!pressed_) return;
-    const QPointF d = e->position() - pressPos_;
-    if (!panned_ && std::hypot(d.x(), d.y()) < kClickSlop) return;
-    panned_ = true;
-    centre_ = pressCentre_ + QPointF(-d.x() / scale_, d.y() / scale_);
+    const auto d = press_.drag(e, false);
+    if (!d) return;
+    centre_ = pressCentre_ + QPointF(-d->x() / scale_, d->y() / scale_);
     userView_ = true;
     dotsValid_ = false;
     update();
 }
 
 void LogTrack::mouseReleaseEvent(QMouseEvent *e) {
-    if (pressed_ && !panned_)
+    if (press_.release())
         if (const auto k = epochNear(e->position(), kPickRadius)) cursor_->seek(*k);
-    pressed_ = false;
 }
 
 void LogTrack::mouseDoubleClickEvent(QMouseEvent *) {

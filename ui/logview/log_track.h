@@ -4,6 +4,7 @@
 // cursor's epoch ringed. Wheel zooms about the mouse, dragging pans, a click moves the cursor to
 // the nearest epoch, a double click fits the whole track. The dots are drawn once into an image
 // and only redrawn when the view or the log changes, so the cursor moves cheaply.
+#include "drag_gesture.h"
 #include "log_cursor.h"
 #include "models/value_format.h"
 
@@ -60,8 +61,8 @@ private:
     bool userView_ = false;   // zoomed or panned: a growing log does not refit
     QImage dots_;
     bool dotsValid_ = false;
-    QPointF pressPos_, pressCentre_;
-    bool pressed_ = false, panned_ = false;
+    DragGesture press_;
+    QPointF pressCentre_; // the centre when it began
 };
 
 } // namespace gnss::ui

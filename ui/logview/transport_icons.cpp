@@ -4,6 +4,8 @@
 #include <QPainterPath>
 #include <QPixmap>
 
+#include <optional>
+
 namespace gnss::ui {
 
 namespace {
@@ -25,6 +27,16 @@ QPainterPath triangle(double x, double w, bool right) {
     p.closeSubpath();
     return p;
 }
+
+// The forward icons are the backward ones mirrored: the one each mirrors, if any.
+std::optional<TransportIcon> mirrorOf(TransportIcon kind) {
+    switch (kind) {
+    case TransportIcon::StepForward: return TransportIcon::StepBack;
+    case TransportIcon::NextEvent: return TransportIcon::PreviousEvent;
+    case TransportIcon::End: return TransportIcon::Start;
+    default: return std::nullopt;
+    }
+}
 } // namespace
 
 QIcon transportIcon(TransportIcon kind, const QColor &colour) {
@@ -34,6 +46,11 @@ QIcon transportIcon(TransportIcon kind, const QColor &colour) {
     p.setRenderHint(QPainter::Antialiasing);
     p.setPen(Qt::NoPen);
     p.setBrush(colour);
+    if (const auto backward = mirrorOf(kind)) {
+        p.translate(kSize, 0);
+        p.scale(-1, 1);
+        kind = *backward;
+    }
     auto bar = [&](double x, double w = 3) { p.drawRect(QRectF(x, 8, w, kSize - 16)); };
     switch (kind) {
     case TransportIcon::Start:
@@ -54,17 +71,8 @@ QIcon transportIcon(TransportIcon kind, const QColor &colour) {
         bar(18, 4);
         break;
     case TransportIcon::StepForward:
-        bar(8);
-        p.drawPath(triangle(12, 11, true));
-        break;
     case TransportIcon::NextEvent:
-        p.drawPath(triangle(5, 12, true));
-        p.drawPath(triangle(16, 12, true));
-        break;
-    case TransportIcon::End:
-        p.drawPath(triangle(8, 14, true));
-        bar(22);
-        break;
+    case TransportIcon::End: break; // drawn as their mirror images, above
     }
     return QIcon(pm);
 }

@@ -1,4 +1,5 @@
 #include "whole_log_panels.h"
+#include "panel_layout.h"
 
 #include "style/gnss_style.h"
 
@@ -13,10 +14,7 @@
 namespace gnss::ui {
 
 LogChartsPanel::LogChartsPanel(LogCursor *cursor, QWidget *parent) : QWidget(parent) {
-    setObjectName("logChartsPanel");
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(4, 4, 4, 4);
-    auto *row = new QHBoxLayout;
+    const auto [layout, row] = panelLayout(this, "logChartsPanel");
     quantity_ = new QComboBox(this);
     quantity_->setObjectName("logQuantity");
     using Q = LogPlot::Quantity;
@@ -29,7 +27,6 @@ LogChartsPanel::LogChartsPanel(LogCursor *cursor, QWidget *parent) : QWidget(par
     auto *all = new QPushButton(tr("Whole log"), this);
     all->setObjectName("logPlotAll");
     row->addWidget(all);
-    layout->addLayout(row);
     plot_ = new LogPlot(cursor, this);
     layout->addWidget(plot_, 1);
     connect(quantity_, &QComboBox::currentIndexChanged, this,
@@ -38,10 +35,7 @@ LogChartsPanel::LogChartsPanel(LogCursor *cursor, QWidget *parent) : QWidget(par
 }
 
 LogTrackPanel::LogTrackPanel(LogCursor *cursor, QWidget *parent) : QWidget(parent) {
-    setObjectName("logTrackPanel");
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(4, 4, 4, 4);
-    auto *row = new QHBoxLayout;
+    const auto [layout, row] = panelLayout(this, "logTrackPanel");
     row->addWidget(new QLabel(tr("Reference:"), this));
     reference_ = new QLineEdit(this);
     reference_->setObjectName("trackReference");
@@ -53,9 +47,8 @@ LogTrackPanel::LogTrackPanel(LogCursor *cursor, QWidget *parent) : QWidget(paren
     auto *fit = new QPushButton(tr("Fit"), this);
     fit->setObjectName("trackFit");
     row->addWidget(fit);
-    layout->addLayout(row);
     message_ = new QLabel(this);
-    message_->setStyleSheet(QStringLiteral("color: %1;").arg(style::errorColor().name()));
+    message_->setStyleSheet(style::textColorCss(style::errorColor()));
     message_->hide();
     layout->addWidget(message_);
     track_ = new LogTrack(cursor, this);

@@ -3,6 +3,7 @@
 #include "receiver_state_model.h"
 
 #include <algorithm>
+#include <iterator>
 
 namespace gnss::ui {
 
@@ -22,6 +23,42 @@ Constellation snrConstellation(TimeSeriesModel::Series s) {
     default: return Constellation::Unknown;
     }
 }
+
+// Each series' settings key, label and chart, in the order of Series; the SNR series have no
+// key or label here: theirs are made from their constellation's name.
+struct SeriesText {
+    const char *key;
+    const char *label;
+    TimeSeriesModel::Group group;
+};
+using TS = TimeSeriesModel;
+constexpr SeriesText kSnr{nullptr, nullptr, TS::Snr};
+constexpr SeriesText kSeriesTexts[] = {
+        {"satsUsed", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "Satellites used"),
+         TS::Satellites},
+        {"hdop", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "HDOP"), TS::Dop},
+        {"pdop", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "PDOP"), TS::Dop},
+        {"fixType", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "Fix type"), TS::Fix},
+        kSnr, // GPS
+        kSnr, // GLONASS
+        kSnr, // Galileo
+        kSnr, // BeiDou
+        kSnr, // QZSS
+        kSnr, // SBAS
+        kSnr, // NavIC
+        {"sdLat", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "Std. dev. latitude"),
+         TS::Deviation},
+        {"sdLon", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "Std. dev. longitude"),
+         TS::Deviation},
+        {"sdHeight", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "Std. dev. height"),
+         TS::Deviation},
+        {"baselineLength", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "Baseline length"),
+         TS::Baseline},
+        {"altitudeMsl", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "Altitude above sea level"),
+         TS::Altitude},
+        {"speed", QT_TRANSLATE_NOOP("gnss::ui::TimeSeriesModel", "Speed"), TS::SpeedGroup},
+};
+static_assert(std::size(kSeriesTexts) == TS::SeriesCount);
 
 } // namespace
 
@@ -116,22 +153,10 @@ std::optional<double> TimeSeriesModel::valueOf(Series s, const ReceiverState &st
 }
 
 QString TimeSeriesModel::key(Series s) {
-    switch (s) {
-    case SatsUsed: return QStringLiteral("satsUsed");
-    case Hdop: return QStringLiteral("hdop");
-    case Pdop: return QStringLiteral("pdop");
-    case FixKind: return QStringLiteral("fixType");
-    case SdLat: return QStringLiteral("sdLat");
-    case SdLon: return QStringLiteral("sdLon");
-    case SdHeight: return QStringLiteral("sdHeight");
-    case BaselineLength: return QStringLiteral("baselineLength");
-    case AltitudeMsl: return QStringLiteral("altitudeMsl");
-    case Speed: return QStringLiteral("speed");
-    case SeriesCount: return {};
-    default:
-        return QStringLiteral("snr.") + QString::fromLatin1(toString(snrConstellation(s)).data(),
-                                                            toString(snrConstellation(s)).size());
-    }
+    if (s < 0 || s >= SeriesCount) return {};
+    if (const char *k = kSeriesTexts[s].key) return QString::fromLatin1(k);
+    const auto name = toString(snrConstellation(s));
+    return QStringLiteral("snr.") + QString::fromLatin1(name.data(), name.size());
 }
 
 std::optional<TimeSeriesModel::Series> TimeSeriesModel::fromKey(const QString &k) {
@@ -141,39 +166,14 @@ std::optional<TimeSeriesModel::Series> TimeSeriesModel::fromKey(const QString &k
 }
 
 QString TimeSeriesModel::label(Series s) {
-    switch (s) {
-    case SatsUsed: return tr("Satellites used");
-    case Hdop: return tr("HDOP");
-    case Pdop: return tr("PDOP");
-    case FixKind: return tr("Fix type");
-    case SdLat: return tr("Std. dev. latitude");
-    case SdLon: return tr("Std. dev. longitude");
-    case SdHeight: return tr("Std. dev. height");
-    case BaselineLength: return tr("Baseline length");
-    case AltitudeMsl: return tr("Altitude above sea level");
-    case Speed: return tr("Speed");
-    case SeriesCount: return {};
-    default: {
-        const auto name = toString(snrConstellation(s));
-        return tr("Mean SNR %1").arg(QString::fromLatin1(name.data(), name.size()));
-    }
-    }
+    if (s < 0 || s >= SeriesCount) return {};
+    if (const char *l = kSeriesTexts[s].label) return tr(l);
+    const auto name = toString(snrConstellation(s));
+    return tr("Mean SNR %1").arg(QString::fromLatin1(name.data(), name.size()));
 }
 
 TimeSeriesModel::Group TimeSeriesModel::group(Series s) {
-    switch (s) {
-    case SatsUsed: return Satellites;
-    case Hdop:
-    case Pdop: return Dop;
-    case FixKind: return Fix;
-    case SdLat:
-    case SdLon:
-    case SdHeight: return Deviation;
-    case BaselineLength: return Baseline;
-    case AltitudeMsl: return Altitude;
-    case Speed: return SpeedGroup;
-    default: return Snr;
-    }
+    return s >= 0 && s < SeriesCount ? kSeriesTexts[s].group : Snr;
 }
 
 QString TimeSeriesModel::groupTitle(Group g, UnitSystem units) {

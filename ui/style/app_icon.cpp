@@ -5,8 +5,19 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPixmap>
+#include <QPolygonF>
 
 namespace gnss::style {
+
+namespace {
+// The closed outline through `corners`, in order.
+QPainterPath closedPath(std::initializer_list<QPointF> corners) {
+    QPainterPath path;
+    path.addPolygon(QPolygonF(corners));
+    path.closeSubpath();
+    return path;
+}
+} // namespace
 
 QPixmap appIconPixmap(int size) {
     QPixmap pm(size, size);
@@ -31,19 +42,10 @@ QPixmap appIconPixmap(int size) {
     p.drawEllipse(QPointF(86, 40), 9, 9);
     p.setBrush(constellationColor(Constellation::Glonass));
     p.drawRect(QRectF(30, 42, 16, 16));
-    QPainterPath diamond;
-    diamond.moveTo(76, 80);
-    diamond.lineTo(86, 90);
-    diamond.lineTo(76, 100);
-    diamond.lineTo(66, 90);
-    diamond.closeSubpath();
-    p.fillPath(diamond, constellationColor(Constellation::Galileo));
-    QPainterPath triangle;
-    triangle.moveTo(44, 96);
-    triangle.lineTo(53, 80);
-    triangle.lineTo(62, 96);
-    triangle.closeSubpath();
-    p.fillPath(triangle, constellationColor(Constellation::BeiDou));
+    p.fillPath(closedPath({{76, 80}, {86, 90}, {76, 100}, {66, 90}}),
+               constellationColor(Constellation::Galileo)); // diamond
+    p.fillPath(closedPath({{44, 96}, {53, 80}, {62, 96}}),
+               constellationColor(Constellation::BeiDou)); // triangle
     return pm;
 }
 

@@ -4,6 +4,7 @@
 #include "models/receiver_state_model.h"
 #include "models/value_format.h"
 #include "views/value_grid.h"
+#include "widgets/read_only_table.h"
 
 #include <QGridLayout>
 #include <QGroupBox>
@@ -44,16 +45,12 @@ AttitudeView::AttitudeView(ReceiverStateModel *model, QWidget *parent)
     markCount_ = new QLabel(fmt::dash());
     markCount_->setObjectName("timeMarkCount");
     tl->addWidget(markCount_);
-    marks_ = new QTableWidget(0, ColumnCount);
-    marks_->setObjectName("timeMarkTable");
+    marks_ = readOnlyTable(ColumnCount, "timeMarkTable");
     setHeaders();
-    marks_->verticalHeader()->hide();
     marks_->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
-    marks_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     marks_->setSelectionBehavior(QAbstractItemView::SelectRows);
     marks_->setAlternatingRowColors(true);
     marks_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    marks_->horizontalHeader()->setStretchLastSection(true);
     tl->addWidget(marks_);
     outer->addWidget(tm, 1);
 

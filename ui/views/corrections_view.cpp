@@ -4,6 +4,7 @@
 #include "models/value_format.h"
 #include "style/gnss_style.h"
 #include "views/chart_palette.h"
+#include "widgets/read_only_table.h"
 
 #include "correction_forwarder.h"
 #include "corrections_monitor.h"
@@ -138,15 +139,11 @@ CorrectionsView::CorrectionsView(const corrections::CorrectionsMonitor &monitor,
     auto *streamLayout = new QVBoxLayout(streamBox);
     stream_ = wrappingLabel("correctionsStream");
     streamLayout->addWidget(stream_);
-    types_ = new QTableWidget(0, 5, content);
+    types_ = readOnlyTable(5, "correctionsTypes", content);
     types_->setMinimumHeight(types_->verticalHeader()->defaultSectionSize() * 4);
-    types_->setObjectName(QStringLiteral("correctionsTypes"));
     types_->setHorizontalHeaderLabels(
             {tr("Message"), tr("Count"), tr("Rate, /s"), tr("Age, s"), tr("Meaning")});
-    types_->verticalHeader()->hide();
-    types_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     types_->setSelectionMode(QAbstractItemView::NoSelection);
-    types_->horizontalHeader()->setStretchLastSection(true);
     types_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     streamLayout->addWidget(types_, 1);
     // The correction age over the last ten minutes (the monitor samples it once a second).
