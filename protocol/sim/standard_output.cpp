@@ -108,9 +108,9 @@ std::string ggaSentence(const SkySnapshot &snap, const EpochTime &t, const Stand
     return nmea::encodeGga(talker, ggaOf(snap, t, st.format.timeDecimals), st.format);
 }
 
-std::string rmcSentence(const SkySnapshot &snap, const EpochTime &t, const StandardStyle &st) {
+nmea::Rmc rmcOf(const SkySnapshot &snap, const EpochTime &t, int timeDecimals) {
     nmea::Rmc m;
-    m.time = nmea::timeOfDay(t.utcSecondOfDay, st.format.timeDecimals);
+    m.time = nmea::timeOfDay(t.utcSecondOfDay, timeDecimals);
     m.status = fixValid(snap) ? 'A' : 'V';
     if (fixValid(snap)) {
         m.lat = snap.lat;
@@ -120,6 +120,11 @@ std::string rmcSentence(const SkySnapshot &snap, const EpochTime &t, const Stand
     }
     m.date = t.date;
     m.mode = modeIndicator(snap.fix);
+    return m;
+}
+
+std::string rmcSentence(const SkySnapshot &snap, const EpochTime &t, const StandardStyle &st) {
+    nmea::Rmc m = rmcOf(snap, t, st.format.timeDecimals);
     if (st.numbering == Numbering::Nmea41) m.navStatus = fixValid(snap) ? 'S' : 'V';
     const auto talker = st.gpTalkerForGgaRmc ? "GP" : solutionTalker(snap, st.numbering);
     return nmea::encodeRmc(talker, m, st.format);

@@ -32,6 +32,9 @@ std::string_view gsvTalker(Constellation c, Numbering n);
 std::string_view solutionTalker(const SkySnapshot &snap, Numbering n);
 
 nmea::Gga ggaOf(const SkySnapshot &snap, const EpochTime &t, int timeDecimals);
+// RMC's time, status, position, speed, course, date and mode (the navigational status, which
+// only NMEA 4.1 has, is left to the caller).
+nmea::Rmc rmcOf(const SkySnapshot &snap, const EpochTime &t, int timeDecimals);
 std::string ggaSentence(const SkySnapshot &snap, const EpochTime &t, const StandardStyle &st);
 std::string rmcSentence(const SkySnapshot &snap, const EpochTime &t, const StandardStyle &st);
 std::string vtgSentence(const SkySnapshot &snap, const StandardStyle &st);
