@@ -1,6 +1,7 @@
 #pragma once
 // GeoS-5 settings as data: what can be set with the section 4 commands, and where RQUERY /
 // NQUERY report the current value (write-only where neither does).
+#include "core/dialect_hooks.h"
 #include "core/message.h"
 #include "core/refusal.h"
 #include "core/settings_schema.h"
@@ -26,7 +27,7 @@ std::span<const SettingDef> settingsSchema();
 // command (the setting and value its row of the command table names; actions and queries carry
 // none), so that a receiver applies what it is sent through the same reading
 // (geostar_settings_report.cpp).
-void extractSettings(const Message &message, std::vector<KeyValue> &out);
+ExtractSettingsHook extractSettings;
 
 // The inverse, for a receiver that answers (the simulator): the settings in force, by key, written
 // into the reply fields that report them. RQUERY: output.RATE (configuration register 1 bits

@@ -1,6 +1,7 @@
 #pragma once
 // The pieces the dialect record (nemerix_dialect.cpp) is assembled from, one file each.
 #include "core/dialect.h"
+#include "core/dialect_hooks.h"
 #include "core/setting_command.h"
 
 #include <span>
@@ -14,7 +15,7 @@ std::span<const SentenceRule> sentenceRules(); // nemerix_rules.cpp
 std::span<const SettingDef> settingsSchema();  // nemerix_schema.cpp
 std::span<const ReplyRule> replyRules();       // nemerix_reply_rules.cpp
 // Settings a decoded PNMRX603 report or a command carries (nemerix_settings_values.cpp).
-void extractSettings(const Message &reply, std::vector<KeyValue> &out);
+ExtractSettingsHook extractSettings;
 
 // The ids of an output.sequence value ("GGA;GSA", ',' accepted too), and the schema key of a
 // PNMRX110 mask id (nullptr past the table) (nemerix_settings.cpp).
