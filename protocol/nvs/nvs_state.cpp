@@ -129,15 +129,7 @@ bool updateState(const Message &m, ReceiverState &st) {
         if (!e.utc) e.utc = t->time;
         return true;
     }
-    if (message_cast<Tst>(m)) {
-        st.reports["Self-test"] = messageJson(m);
-        return true;
-    }
-    if (message_cast<Pps>(m)) {
-        st.reports["Time pulse"] = messageJson(m);
-        return true;
-    }
-    return false;
+    return keepReport<Tst>(m, st, "Self-test") || keepReport<Pps>(m, st, "Time pulse");
 }
 
 } // namespace gnss::nvs
