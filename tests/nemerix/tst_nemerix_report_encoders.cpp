@@ -13,11 +13,13 @@
 #include "examples_table.h"
 #include "nemerix/nemerix_commands.h"
 #include "nemerix/nemerix_dialect.h"
+#include "vendor_refusal_rows.h"
 
 #include <QTest>
 
 #include <cmath>
 #include <functional>
+#include <type_traits>
 
 using namespace gnss;
 using namespace gnss::nemerix;
@@ -142,6 +144,30 @@ SettingsReportState simulatedState() {
     s.acqThreshold2 = 300;
     s.kalmanMode = 1;
     return s;
+}
+
+// A refusal row's encoder: `valid` as `change` leaves it, through its report encoder.
+template <class M>
+std::function<EncodeResult()> encoded(M valid, std::type_identity_t<void (*)(M &)> change) {
+    return gnss::test::encodedAfter(
+            valid, [](const Message &m) { return encodeReport(m, kPrefix); }, change);
+}
+
+// A message whose every raw field is 0 (which it can carry), for a row to break one field of.
+template <class M> M zeroed() {
+    M m;
+    for (auto &v : m.raw) v = 0;
+    return m;
+}
+
+// A refusal row's encoder: the factory settings as `change` leaves them, through
+// encodeSettingsReports.
+std::function<EncodeResult()> factoryWith(void (*change)(std::vector<KeyValue> &)) {
+    return [=] {
+        std::vector<KeyValue> v = factorySettings();
+        change(v);
+        return encodeSettingsReports(v, simulatedState());
+    };
 }
 
 } // namespace
@@ -445,173 +471,85 @@ void TestNemerixReportEncoders::invalidInputIsRefused_data() {
 void TestNemerixReportEncoders::invalidInputIsRefused() {
     static const std::vector<Refused> rows = {
             {"ephemeris SV 33",
-             [] {
-                 EphemerisSubframe e;
-                 e.sv = 33, e.subframe = 1;
-                 return encodeEphemerisSubframe(e);
-             },
+             encoded(EphemerisSubframe{}, [](EphemerisSubframe &e) { e.sv = 33, e.subframe = 1; }),
              "sv"},
             {"ephemeris subframe 4",
-             [] {
-                 EphemerisSubframe e;
-                 e.sv = 1, e.subframe = 4;
-                 return encodeEphemerisSubframe(e);
-             },
+             encoded(EphemerisSubframe{}, [](EphemerisSubframe &e) { e.sv = 1, e.subframe = 4; }),
              "subframe"},
             {"ephemeris field missing",
-             [] {
-                 EphemerisSubframe e;
-                 e.sv = 1, e.subframe = 1;
-                 for (auto &v : e.raw) v = 0;
-                 e.raw[EphemerisSubframe::Toc].reset();
-                 return encodeEphemerisSubframe(e);
-             },
+             encoded(zeroed<EphemerisSubframe>(),
+                     [](EphemerisSubframe &e) {
+                         e.sv = 1, e.subframe = 1;
+                         e.raw[EphemerisSubframe::Toc].reset();
+                     }),
              "toc"},
             {"ephemeris IODC wider than 10 bits",
-             [] {
-                 EphemerisSubframe e;
-                 e.sv = 1, e.subframe = 1;
-                 for (auto &v : e.raw) v = 0;
-                 e.raw[EphemerisSubframe::Iodc] = 0x400;
-                 return encodeEphemerisSubframe(e);
-             },
+             encoded(zeroed<EphemerisSubframe>(),
+                     [](EphemerisSubframe &e) {
+                         e.sv = 1, e.subframe = 1;
+                         e.raw[EphemerisSubframe::Iodc] = 0x400;
+                     }),
              "iodc"},
-            {"ionosphere SV 0",
-             [] {
-                 Ionosphere m;
-                 m.sv = 0;
-                 for (auto &v : m.raw) v = 0;
-                 return encodeIonosphere(m);
-             },
+            {"ionosphere SV 0", encoded(zeroed<Ionosphere>(), [](Ionosphere &m) { m.sv = 0; }),
              "1..32"},
             {"ionosphere alpha0 of 128",
-             [] {
-                 Ionosphere m;
-                 for (auto &v : m.raw) v = 0;
-                 m.raw[0] = 128;
-                 return encodeIonosphere(m);
-             },
-             "alpha0"},
+             encoded(zeroed<Ionosphere>(), [](Ionosphere &m) { m.raw[0] = 128; }), "alpha0"},
             {"ionosphere beta3 missing",
-             [] {
-                 Ionosphere m;
-                 for (auto &v : m.raw) v = 0;
-                 m.raw[7].reset();
-                 return encodeIonosphere(m);
-             },
-             "beta3"},
+             encoded(zeroed<Ionosphere>(), [](Ionosphere &m) { m.raw[7].reset(); }), "beta3"},
             {"UTC A0 missing",
-             [] {
-                 UtcParameters m;
-                 m.sv = 1;
-                 for (auto &v : m.raw) v = 0;
-                 m.raw[UtcParameters::A0].reset();
-                 return encodeUtc(m);
-             },
+             encoded(zeroed<UtcParameters>(),
+                     [](UtcParameters &m) {
+                         m.sv = 1;
+                         m.raw[UtcParameters::A0].reset();
+                     }),
              "a0"},
             {"UTC leap seconds of 200",
-             [] {
-                 UtcParameters m;
-                 for (auto &v : m.raw) v = 0;
-                 m.raw[UtcParameters::DtLs] = 200;
-                 return encodeUtc(m);
-             },
+             encoded(zeroed<UtcParameters>(),
+                     [](UtcParameters &m) { m.raw[UtcParameters::DtLs] = 200; }),
              "dt_ls"},
             {"health code with a comma",
-             [] {
-                 ConstellationHealth m;
-                 m.codes[m.count++] = "0,0";
-                 return encodeHealth(m);
-             },
+             encoded(ConstellationHealth{},
+                     [](ConstellationHealth &m) { m.codes[m.count++] = "0,0"; }),
              "health code"},
             {"version without fields",
              [] { return encodeVersionReport(VersionReport(VersionReport::kSoftwareType)); },
              "version"},
             {"version with '*'",
-             [] {
-                 VersionReport v(VersionReport::kFlashType);
-                 v.fieldsText[v.count++] = "FC*1";
-                 return encodeVersionReport(v);
-             },
+             encoded(VersionReport(VersionReport::kFlashType),
+                     [](VersionReport &v) { v.fieldsText[v.count++] = "FC*1"; }),
              "'*'"},
             {"settings message 5", [] { return encodeSettingsReport(report(5)); },
              "message number"},
             {"settings message 0 delay of 10",
-             [] {
-                 SettingsReport m = validReport(0);
-                 m.delay[2] = 10;
-                 return encodeSettingsReport(m);
-             },
-             "message delay"},
+             encoded(validReport(0), [](SettingsReport &m) { m.delay[2] = 10; }), "message delay"},
             {"settings message 0 without UART word",
-             [] {
-                 SettingsReport m = validReport(0);
-                 m.uartSettings.reset();
-                 return encodeSettingsReport(m);
-             },
+             encoded(validReport(0), [](SettingsReport &m) { m.uartSettings.reset(); }),
              "uart_settings"},
             {"settings message 1 zone of 14 h",
-             [] {
-                 SettingsReport m = validReport(1);
-                 m.tzHours = 14;
-                 return encodeSettingsReport(m);
-             },
+             encoded(validReport(1), [](SettingsReport &m) { m.tzHours = 14; }),
              "local zone hours"},
             {"settings message 1 blocks of 16",
-             [] {
-                 SettingsReport m = validReport(1);
-                 m.numBlocks = 16;
-                 return encodeSettingsReport(m);
-             },
-             "num_blocks"},
+             encoded(validReport(1), [](SettingsReport &m) { m.numBlocks = 16; }), "num_blocks"},
             {"settings message 2 PDOP not a number",
-             [] {
-                 SettingsReport m = validReport(2);
-                 m.maxPdop = std::nan("");
-                 return encodeSettingsReport(m);
-             },
+             encoded(validReport(2), [](SettingsReport &m) { m.maxPdop = std::nan(""); }),
              "max PDOP"},
             {"settings message 3 Kalman mode of 16",
-             [] {
-                 SettingsReport m = validReport(3);
-                 m.kalmanMode = 16;
-                 return encodeSettingsReport(m);
-             },
-             "kalman_mode"},
+             encoded(validReport(3), [](SettingsReport &m) { m.kalmanMode = 16; }), "kalman_mode"},
             {"settings message 4 without datum",
-             [] {
-                 SettingsReport m = validReport(4);
-                 m.datum.reset();
-                 return encodeSettingsReport(m);
-             },
-             "map datum"},
+             encoded(validReport(4), [](SettingsReport &m) { m.datum.reset(); }), "map datum"},
             {"settings message 4 dx of 9 digits",
-             [] {
-                 SettingsReport m = validReport(4);
-                 m.dx = 123456789;
-                 return encodeSettingsReport(m);
-             },
-             "dx"},
-            {"settings without a rate",
-             [] {
-                 std::vector<KeyValue> v = factorySettings();
+             encoded(validReport(4), [](SettingsReport &m) { m.dx = 123456789; }), "dx"},
+            {"settings without a rate", factoryWith([](std::vector<KeyValue> &v) {
                  std::erase_if(v, [](const KeyValue &kv) { return kv.key == "rate.VTG"; });
-                 return encodeSettingsReports(v, simulatedState());
-             },
+             }),
              "rate.VTG"},
-            {"settings with a bad time zone",
-             [] {
-                 std::vector<KeyValue> v = factorySettings();
+            {"settings with a bad time zone", factoryWith([](std::vector<KeyValue> &v) {
                  v.push_back({"fix.timeZone", "25:00"});
-                 return encodeSettingsReports(v, simulatedState());
-             },
+             }),
              "fix.timeZone"},
-            {"settings with SNR not a number",
-             [] {
-                 std::vector<KeyValue> v = factorySettings();
+            {"settings with SNR not a number", factoryWith([](std::vector<KeyValue> &v) {
                  v.push_back({"fix.minSnr", "high"});
-                 return encodeSettingsReports(v, simulatedState());
-             },
+             }),
              "fix.minSnr"},
             {"settings report with a bad prefix",
              [] { return encodeSettingsReport(validReport(3), "pnmrx"); }, "prefix"},
