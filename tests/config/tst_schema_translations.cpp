@@ -12,6 +12,7 @@
 #include "schema_texts.h"
 #include "session_feed.h"
 #include "settings/settings_view.h"
+#include "vendor_test_rows.h"
 
 #include <QComboBox>
 #include <QFile>
@@ -24,6 +25,7 @@
 
 using namespace gnss;
 using namespace gnss::config::test;
+using gnss::test::textRow;
 
 namespace {
 
@@ -96,31 +98,23 @@ private slots:
         QTest::addColumn<QString>("value");
         QTest::addColumn<QString>("english");
         QTest::addColumn<QString>("russian");
-        QTest::newRow("nvs range, unit") << "nvs"
-                                         << "rtk.ELGPS"
-                                         << "95"
-                                         << "rtk.ELGPS: 95 is out of range; accepted: 0..90 deg"
-                                         << "rtk.ELGPS: 95 вне допустимого диапазона; допустимо: "
-                                            "0..90 град";
-        QTest::newRow("nvs list syntax")
-                << "nvs"
-                << "output.COM1"
-                << "RMC:x"
-                << "output.COM1: 'RMC:x' is not ADDRESS:RATE (rate in PVT intervals, >= 1)"
-                << "output.COM1: «RMC:x» не в виде АДРЕС:ТЕМП (темп в интервалах PVT, >= 1)";
-        QTest::newRow("geostar not a number") << "geostar"
-                                              << "nav.ELEV"
-                                              << "high"
-                                              << "nav.ELEV: expected an integer, got 'high'"
-                                              << "nav.ELEV: ожидается целое число, получено «high»";
-        QTest::newRow("nemerix beyond the schema")
-                << "nemerix"
-                << "fix.timeZone"
-                << "25:00"
-                << "fix.timeZone: '25:00' is not accepted; accepted: h:m with hours -13..13 and "
-                   "minutes 0..59"
-                << "fix.timeZone: «25:00» недопустимо; допустимо: ч:м, часы -13..13, минуты "
-                   "0..59";
+        textRow("nvs range, unit",
+                {"nvs", "rtk.ELGPS", "95", "rtk.ELGPS: 95 is out of range; accepted: 0..90 deg",
+                 "rtk.ELGPS: 95 вне допустимого диапазона; допустимо: "
+                 "0..90 град"});
+        textRow("nvs list syntax",
+                {"nvs", "output.COM1", "RMC:x",
+                 "output.COM1: 'RMC:x' is not ADDRESS:RATE (rate in PVT intervals, >= 1)",
+                 "output.COM1: «RMC:x» не в виде АДРЕС:ТЕМП (темп в интервалах PVT, >= 1)"});
+        textRow("geostar not a number",
+                {"geostar", "nav.ELEV", "high", "nav.ELEV: expected an integer, got 'high'",
+                 "nav.ELEV: ожидается целое число, получено «high»"});
+        textRow("nemerix beyond the schema",
+                {"nemerix", "fix.timeZone", "25:00",
+                 "fix.timeZone: '25:00' is not accepted; accepted: h:m with hours -13..13 and "
+                 "minutes 0..59",
+                 "fix.timeZone: «25:00» недопустимо; допустимо: ч:м, часы -13..13, минуты "
+                 "0..59"});
     }
     void refusalsAreInRussian() {
         QFETCH(QString, dialect);

@@ -10,12 +10,14 @@
 #include "nvs/nvs_sim_receiver.h"
 #include "presets.h"
 #include "setting_values.h"
+#include "vendor_test_rows.h"
 
 #include <QTemporaryDir>
 
 using namespace gnss;
 using namespace gnss::config;
 using namespace gnss::config::test;
+using gnss::test::textRow;
 
 namespace {
 
@@ -364,12 +366,8 @@ private slots:
         QTest::addColumn<QString>("dialect");
         QTest::addColumn<QString>("key");
         QTest::addColumn<QString>("value");
-        QTest::newRow("nvs") << "nvs"
-                             << "rtk.ELGPS"
-                             << "15";
-        QTest::newRow("geostar") << "geostar"
-                                 << "output.RATE"
-                                 << "2";
+        textRow("nvs", {"nvs", "rtk.ELGPS", "15"});
+        textRow("geostar", {"geostar", "output.RATE", "2"});
     }
     void saveToFlashSurvivesAPowerCycle() {
         QFETCH(QString, dialect);

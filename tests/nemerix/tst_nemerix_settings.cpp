@@ -4,11 +4,15 @@
 #include "core/settings_plan.h"
 #include "decode_helper.h"
 #include "nemerix/nemerix_dialect.h"
+#include "vendor_refusal_rows.h"
+#include "vendor_test_rows.h"
 
 #include <QJsonArray>
 #include <QTest>
 
 #include <set>
+
+using gnss::test::textRow;
 
 namespace {
 
@@ -185,65 +189,30 @@ void TestNemerixSettings::settingsEncodeToCommands() {
 }
 
 void TestNemerixSettings::refusedSettingsBuildNothing_data() {
-    QTest::addColumn<QString>("key");
-    QTest::addColumn<QString>("value");
-    QTest::addColumn<QString>("message");
-    QTest::newRow("unknown key") << "fix.nothing"
-                                 << "1"
-                                 << "unknown setting";
-    QTest::newRow("baud") << "serial.baud"
-                          << "115200"
-                          << "serial.baud";
-    QTest::newRow("snr") << "fix.minSnr"
-                         << "46"
-                         << "fix.minSnr: 46 is out of range; accepted: 20..45 dB-Hz";
-    QTest::newRow("rate") << "rate.GGA"
-                          << "10"
-                          << "rate.GGA: 10 is out of range; accepted: 0..9 s";
-    QTest::newRow("time zone") << "fix.timeZone"
-                               << "-14:0"
-                               << "fix.timeZone";
-    QTest::newRow("datum hole") << "datum.mapDatum"
-                                << "300"
-                                << "0..218";
-    QTest::newRow("user datum incomplete") << "datum.mapDatum"
-                                           << "500"
-                                           << "needs";
-    QTest::newRow("offset without datum") << "datum.dx"
-                                          << "5"
-                                          << "datum.mapDatum: required";
-    QTest::newRow("parity without baud") << "serial.parity"
-                                         << "1"
-                                         << "serial.baud: required";
-    QTest::newRow("sequence unknown") << "output.sequence"
-                                      << "GGA;GNS"
-                                      << "'GNS'";
-    QTest::newRow("channels") << "nav.channels"
-                              << "8"
-                              << "nav.channels: 8 is out of range";
-    QTest::newRow("nav mode") << "nav.mode"
-                              << "3"
-                              << "nav.mode";
-    QTest::newRow("off period") << "power.offPeriod"
-                                << "4"
-                                << "5..10";
-    QTest::newRow("injection") << "fix.timeZone"
-                               << "1:0*00"
-                               << "not allowed";
+    gnss::test::addRefusedSettingColumns();
+    textRow("unknown key", {"fix.nothing", "1", "unknown setting"});
+    textRow("baud", {"serial.baud", "115200", "serial.baud"});
+    textRow("snr", {"fix.minSnr", "46", "fix.minSnr: 46 is out of range; accepted: 20..45 dB-Hz"});
+    textRow("rate", {"rate.GGA", "10", "rate.GGA: 10 is out of range; accepted: 0..9 s"});
+    textRow("time zone", {"fix.timeZone", "-14:0", "fix.timeZone"});
+    textRow("datum hole", {"datum.mapDatum", "300", "0..218"});
+    textRow("user datum incomplete", {"datum.mapDatum", "500", "needs"});
+    textRow("offset without datum", {"datum.dx", "5", "datum.mapDatum: required"});
+    textRow("parity without baud", {"serial.parity", "1", "serial.baud: required"});
+    textRow("sequence unknown", {"output.sequence", "GGA;GNS", "'GNS'"});
+    textRow("channels", {"nav.channels", "8", "nav.channels: 8 is out of range"});
+    textRow("nav mode", {"nav.mode", "3", "nav.mode"});
+    textRow("off period", {"power.offPeriod", "4", "5..10"});
+    textRow("injection", {"fix.timeZone", "1:0*00", "not allowed"});
 }
 
 void TestNemerixSettings::refusedSettingsBuildNothing() {
-    QFETCH(QString, key);
-    QFETCH(QString, value);
-    QFETCH(QString, message);
     // A valid value next to the refused one: still nothing is built.
-    std::vector<gnss::KeyValue> kv = {{"fix.minSnr", "30"},
-                                      {key.toStdString(), value.toStdString()}};
-    if (key == "fix.minSnr") kv.erase(kv.begin());
-    const auto r = encodeSettings(D(), kv);
-    QVERIFY(!r.ok());
-    QVERIFY(r.sentences.empty());
-    QVERIFY2(QString::fromStdString(r.error).contains(message), r.error.c_str());
+    gnss::test::checkRefusedSetting([](const gnss::KeyValue &refused) {
+        std::vector<gnss::KeyValue> kv = {{"fix.minSnr", "30"}, refused};
+        if (refused.key == "fix.minSnr") kv.erase(kv.begin());
+        return encodeSettings(D(), kv);
+    });
 }
 
 void TestNemerixSettings::readableSettingsAreQueriedWithOneSettingsRequest() {
@@ -325,49 +294,39 @@ void TestNemerixSettings::commandsCarryTheSettingsTheyWrite_data() {
     // through extractSettings).
     QTest::addColumn<QString>("line");
     QTest::addColumn<QString>("settings");
-    QTest::newRow("100 port") << "$PNMRX100,0,4800,0*48"
-                              << "serial.protocol=0 serial.baud=4800 serial.parity=0";
-    QTest::newRow("100 without baud") << "$PNMRX100,1,,2"
-                                      << "";
-    QTest::newRow("101 channels") << "$PNMRX101,,,,,,,14,"
-                                  << "nav.channels=14";
-    QTest::newRow("101 position") << "$PNMRX101,-742507,-5462738, 3196706,*4F"
-                                  << "";
-    QTest::newRow("104 channels") << "$PNMRX104,,,,,,,,,16"
-                                  << "nav.channels=16";
-    QTest::newRow("103 rates") << "$PNMRX103, GSV, 2,GGA, 1,ZDA, 0*04"
-                               << "rate.GSV=2 rate.GGA=1 rate.ZDA=0";
-    QTest::newRow("103 ALL") << "$PNMRX103, ALL, 2*18"
-                             << "rate.GGA=2 rate.GLL=2 rate.GSA=2 rate.GSV=2 rate.RMC=2 "
-                                "rate.VTG=2 rate.ZDA=2";
-    QTest::newRow("107 one") << "$PNMRX107, 301, 2*6F"
-                             << "nmrx.301=2";
-    QTest::newRow("107 ALL") << "$PNMRX107, ALL, 2*1C"
-                             << "nmrx.300=2 nmrx.301=2 nmrx.302=2 nmrx.303=2 nmrx.304=2";
-    QTest::newRow("108 sequence") << "$PNMRX108,RMC,GGA,RMC"
-                                  << "output.sequence=RMC;GGA rate.GGA=1 rate.GLL=0 rate.GSA=0 "
-                                     "rate.GSV=0 rate.RMC=1 rate.VTG=0 rate.ZDA=0";
-    QTest::newRow("106 user datum")
-            << "$PNMRX106, 0,500, -2000,-2000,-2000, 8257224, 8137000*69"
-            << "datum.correction=0 datum.mapDatum=500 datum.dx=-2000 datum.dy=-2000 "
-               "datum.dz=-2000 datum.inverseFlattening=298.257224 "
-               "datum.semiMajorAxis=6378137.000";
-    QTest::newRow("106 WGS 84") << "$PNMRX106, 1, 216,*46"
-                                << "datum.correction=1 datum.mapDatum=216";
-    QTest::newRow("110 time zone") << "$PNMRX110, 0,-2:0*6C"
-                                   << "fix.timeZone=-2:0";
-    QTest::newRow("110 masks") << "$PNMRX110,0,-0:30,1,65,3,100,4,35,5,10,6,700,7,4,8,250,9,1,10,"
-                                  "20000"
-                               << "fix.timeZone=-0:30 fix.maxPdop=6.5 fix.maxVdop=10 "
-                                  "fix.minSnr=35 fix.minElevation=10 fix.noiseFloor=700 "
-                                  "nav.mode=4 fix.altitude2d=250 nav.dynamics=1 "
-                                  "fix.maxAltitude=20000";
-    QTest::newRow("112 low power") << "$PNMRX112, 1, 5*6F"
-                                   << "power.mode=1 power.offPeriod=5";
-    QTest::newRow("111 reset") << "$PNMRX111,COLD"
-                               << "";
-    QTest::newRow("603 request") << "$PNMRX603*6C"
-                                 << "";
+    textRow("100 port",
+            {"$PNMRX100,0,4800,0*48", "serial.protocol=0 serial.baud=4800 serial.parity=0"});
+    textRow("100 without baud", {"$PNMRX100,1,,2", ""});
+    textRow("101 channels", {"$PNMRX101,,,,,,,14,", "nav.channels=14"});
+    textRow("101 position", {"$PNMRX101,-742507,-5462738, 3196706,*4F", ""});
+    textRow("104 channels", {"$PNMRX104,,,,,,,,,16", "nav.channels=16"});
+    textRow("103 rates",
+            {"$PNMRX103, GSV, 2,GGA, 1,ZDA, 0*04", "rate.GSV=2 rate.GGA=1 rate.ZDA=0"});
+    textRow("103 ALL",
+            {"$PNMRX103, ALL, 2*18", "rate.GGA=2 rate.GLL=2 rate.GSA=2 rate.GSV=2 rate.RMC=2 "
+                                     "rate.VTG=2 rate.ZDA=2"});
+    textRow("107 one", {"$PNMRX107, 301, 2*6F", "nmrx.301=2"});
+    textRow("107 ALL",
+            {"$PNMRX107, ALL, 2*1C", "nmrx.300=2 nmrx.301=2 nmrx.302=2 nmrx.303=2 nmrx.304=2"});
+    textRow("108 sequence",
+            {"$PNMRX108,RMC,GGA,RMC", "output.sequence=RMC;GGA rate.GGA=1 rate.GLL=0 rate.GSA=0 "
+                                      "rate.GSV=0 rate.RMC=1 rate.VTG=0 rate.ZDA=0"});
+    textRow("106 user datum",
+            {"$PNMRX106, 0,500, -2000,-2000,-2000, 8257224, 8137000*69",
+             "datum.correction=0 datum.mapDatum=500 datum.dx=-2000 datum.dy=-2000 "
+             "datum.dz=-2000 datum.inverseFlattening=298.257224 "
+             "datum.semiMajorAxis=6378137.000"});
+    textRow("106 WGS 84", {"$PNMRX106, 1, 216,*46", "datum.correction=1 datum.mapDatum=216"});
+    textRow("110 time zone", {"$PNMRX110, 0,-2:0*6C", "fix.timeZone=-2:0"});
+    textRow("110 masks", {"$PNMRX110,0,-0:30,1,65,3,100,4,35,5,10,6,700,7,4,8,250,9,1,10,"
+                          "20000",
+                          "fix.timeZone=-0:30 fix.maxPdop=6.5 fix.maxVdop=10 "
+                          "fix.minSnr=35 fix.minElevation=10 fix.noiseFloor=700 "
+                          "nav.mode=4 fix.altitude2d=250 nav.dynamics=1 "
+                          "fix.maxAltitude=20000"});
+    textRow("112 low power", {"$PNMRX112, 1, 5*6F", "power.mode=1 power.offPeriod=5"});
+    textRow("111 reset", {"$PNMRX111,COLD", ""});
+    textRow("603 request", {"$PNMRX603*6C", ""});
 }
 
 void TestNemerixSettings::commandsCarryTheSettingsTheyWrite() {

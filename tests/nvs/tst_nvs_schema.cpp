@@ -8,6 +8,8 @@
 #include "nvs/nvs_dialect.h"
 #include "nvs/nvs_encoders.h"
 #include "nvs/nvs_schema.h"
+#include "vendor_refusal_rows.h"
+#include "vendor_test_rows.h"
 
 #include <QFileInfo>
 #include <QJsonArray>
@@ -18,6 +20,7 @@
 #include <QTest>
 
 using namespace gnss;
+using gnss::test::textRow;
 
 namespace {
 
@@ -182,51 +185,26 @@ void TstNvsSchema::encodeSettingsBuildsOneSentencePerCommandInSafeOrder() {
 }
 
 void TstNvsSchema::encodeSettingsRefusesBeforeBuilding_data() {
-    QTest::addColumn<QString>("key");
-    QTest::addColumn<QString>("value");
-    QTest::addColumn<QString>("mentions");
-    QTest::newRow("unknown key") << "rtk.NOPE"
-                                 << "1"
-                                 << "rtk.NOPE";
-    QTest::newRow("PVTRATE 3") << "rtk.PVTRATE"
-                               << "3"
-                               << "1, 2, 5, 10";
-    QTest::newRow("baud alone") << "port.COM2.baud"
-                                << "9600"
-                                << "port.COM2.protocol";
-    QTest::newRow("NME alone") << "nmea.time_decimals"
-                               << "3"
-                               << "nmea.position_decimals";
-    QTest::newRow("output bad rate") << "output.COM1"
-                                     << "RMC:x"
-                                     << "output.COM1";
-    QTest::newRow("output rate 0") << "output.COM1"
-                                   << "RMC:0"
-                                   << ">= 1";
-    QTest::newRow("station bad") << "idl.stations"
-                                 << "abc"
-                                 << "idl.stations";
-    QTest::newRow("station id") << "idl.stations"
-                                << "5000:0.1"
-                                << "0..4095";
-    QTest::newRow("PPS delay") << "pps.cable_delay"
-                               << "10000"
-                               << "0..9999";
+    test::addRefusedSettingColumns();
+    textRow("unknown key", {"rtk.NOPE", "1", "rtk.NOPE"});
+    textRow("PVTRATE 3", {"rtk.PVTRATE", "3", "1, 2, 5, 10"});
+    textRow("baud alone", {"port.COM2.baud", "9600", "port.COM2.protocol"});
+    textRow("NME alone", {"nmea.time_decimals", "3", "nmea.position_decimals"});
+    textRow("output bad rate", {"output.COM1", "RMC:x", "output.COM1"});
+    textRow("output rate 0", {"output.COM1", "RMC:0", ">= 1"});
+    textRow("station bad", {"idl.stations", "abc", "idl.stations"});
+    textRow("station id", {"idl.stations", "5000:0.1", "0..4095"});
+    textRow("PPS delay", {"pps.cable_delay", "10000", "0..9999"});
     // A number of 5,000 digits is a mistake, and would make a sentence no receiver reads.
-    QTest::newRow("5000 digits") << "rtk.ICBGLO"
-                                 << "0." + QString(5000, '3') << "at most 32";
+    textRow("5000 digits", {"rtk.ICBGLO", "0." + QString(5000, '3'), "at most 32"});
 }
 
 void TstNvsSchema::encodeSettingsRefusesBeforeBuilding() {
-    QFETCH(QString, key);
-    QFETCH(QString, value);
-    QFETCH(QString, mentions);
     // A valid setting first: nothing at all may be built when a later one is refused.
-    const KeyValue values[] = {{"rtk.MODE", "2"}, {key.toStdString(), value.toStdString()}};
-    const auto r = encodeSettings(nvs::dialect(), std::span<const KeyValue>(values));
-    QVERIFY(!r.ok());
-    QVERIFY(r.sentences.empty());
-    QVERIFY2(QString::fromStdString(r.error).contains(mentions), r.error.c_str());
+    test::checkRefusedSetting([](const KeyValue &refused) {
+        const KeyValue values[] = {{"rtk.MODE", "2"}, refused};
+        return encodeSettings(nvs::dialect(), std::span<const KeyValue>(values));
+    });
 }
 
 void TstNvsSchema::sentencesLongerThanTheDialectAllowsAreRefused() {
