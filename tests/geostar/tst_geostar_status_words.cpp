@@ -19,40 +19,32 @@ QJsonObject exampleWord(const char *word) {
     return d.data[word].toObject();
 }
 
+// fn(W{}) with W the word named "status", "config1" or "config2".
+template <class Fn> auto forWord(const QString &word, Fn fn) {
+    if (word == "status") return fn(StatusWord{});
+    if (word == "config1") return fn(ConfigRegister1{});
+    return fn(ConfigRegister2{});
+}
+
 QJsonObject wordJson(const char *word, std::uint32_t v) {
     std::string json;
     gnss::JsonWriter w(json);
-    if (std::string_view(word) == "status")
-        StatusWord::decode(v).writeJson(w);
-    else if (std::string_view(word) == "config1")
-        ConfigRegister1::decode(v).writeJson(w);
-    else
-        ConfigRegister2::decode(v).writeJson(w);
+    forWord(word, [&](auto type) { decltype(type)::decode(v).writeJson(w); });
     return QJsonDocument::fromJson(QByteArray::fromStdString(json)).object();
 }
 
 // decode(v).encode(), with the raw word kept (reserved bits come back) or cleared (the fields
 // alone: what a receiver filling the struct field by field gets).
 EncodedWord reencoded(const QString &word, std::uint32_t v, bool keepRaw) {
-    if (word == "status") {
-        StatusWord w = StatusWord::decode(v);
+    return forWord(word, [&](auto type) {
+        auto w = decltype(type)::decode(v);
         if (!keepRaw) w.raw = 0;
         return w.encode();
-    }
-    if (word == "config1") {
-        ConfigRegister1 w = ConfigRegister1::decode(v);
-        if (!keepRaw) w.raw = 0;
-        return w.encode();
-    }
-    ConfigRegister2 w = ConfigRegister2::decode(v);
-    if (!keepRaw) w.raw = 0;
-    return w.encode();
+    });
 }
 
 std::uint32_t reservedMask(const QString &word) {
-    if (word == "status") return StatusWord::kReservedMask;
-    if (word == "config1") return ConfigRegister1::kReservedMask;
-    return ConfigRegister2::kReservedMask;
+    return forWord(word, [](auto type) { return std::uint32_t(decltype(type)::kReservedMask); });
 }
 
 } // namespace
@@ -341,20 +333,16 @@ void TestGeostarStatusWords::aFieldWiderThanItsBitsIsRefused_data() {
     QTest::addColumn<QString>("field");
     QTest::addColumn<int>("value");
     QTest::addColumn<QString>("accepted");
-    QTest::addRow("antenna 4") << "status"
-                               << "antenna" << 4 << "0..3";
-    QTest::addRow("dynamics 8") << "config1"
-                                << "dynamics" << 8 << "0..7";
-    QTest::addRow("dynamics -1") << "config1"
-                                 << "dynamics" << -1 << "0..7";
-    QTest::addRow("rate code 4") << "config1"
-                                 << "rate" << 4 << "0..3";
-    QTest::addRow("rate code -1 (no such rate)") << "config1"
-                                                 << "rate" << -1 << "0..3";
-    QTest::addRow("1PPS time scale 8") << "config1"
-                                       << "1PPS" << 8 << "0..7";
-    QTest::addRow("datum 4") << "config2"
-                             << "datum" << 4 << "0..3";
+    const auto row = [](const char *name, const char *w, const char *f, int v, const char *a) {
+        QTest::newRow(name) << QString(w) << QString(f) << v << QString(a);
+    };
+    row("antenna 4", "status", "antenna", 4, "0..3");
+    row("dynamics 8", "config1", "dynamics", 8, "0..7");
+    row("dynamics -1", "config1", "dynamics", -1, "0..7");
+    row("rate code 4", "config1", "rate", 4, "0..3");
+    row("rate code -1 (no such rate)", "config1", "rate", -1, "0..3");
+    row("1PPS time scale 8", "config1", "1PPS", 8, "0..7");
+    row("datum 4", "config2", "datum", 4, "0..3");
 }
 
 void TestGeostarStatusWords::aFieldWiderThanItsBitsIsRefused() {
