@@ -1,6 +1,7 @@
 // Decoder throughput on a generated 10 Hz multi-constellation log of at least 100 MB: a full
 // decode (framer, checksum, every field of every sentence, epoch assembly) against a
 // checksum-only pass. Prints MB/s and sentences/s.
+#include "bench_throughput.h"
 #include "log_generator.h"
 
 #include "core/framer.h"
@@ -26,7 +27,9 @@ const std::string &log100MB() {
     return log;
 }
 
-constexpr std::size_t kChunk = 1 << 20;
+using gnss::bench::feedInChunks;
+using gnss::bench::reportBytes;
+using gnss::bench::reportRate;
 
 void BM_FullDecode(benchmark::State &state) {
     const std::string &log = log100MB();
@@ -40,17 +43,12 @@ void BM_FullDecode(benchmark::State &state) {
             ++sentences;
             if (ev.message) assembler.add(ev.sentence, *ev.message, onEpoch);
         };
-        for (std::size_t pos = 0; pos < log.size(); pos += kChunk)
-            dec.feed(std::string_view(log).substr(pos, kChunk), onSentence);
+        feedInChunks(log, [&](std::string_view chunk) { dec.feed(chunk, onSentence); });
         dec.finish();
         assembler.flush(onEpoch);
     }
-    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
-    state.counters["sentences/s"] =
-            benchmark::Counter(static_cast<double>(sentences), benchmark::Counter::kIsRate);
-    state.counters["MB/s"] =
-            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                               benchmark::Counter::kIsRate);
+    reportBytes(state, log.size());
+    reportRate(state, "sentences/s", sentences);
     state.counters["log_MB"] = static_cast<double>(log.size()) / 1e6;
 }
 BENCHMARK(BM_FullDecode)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
@@ -66,12 +64,8 @@ void BM_FullDecodeAllCores(benchmark::State &state) {
         const gnss::LogScanResult r = gnss::scanLog(log, reg, {}, threads);
         sentences += r.framer.sentences;
     }
-    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
-    state.counters["sentences/s"] =
-            benchmark::Counter(static_cast<double>(sentences), benchmark::Counter::kIsRate);
-    state.counters["MB/s"] =
-            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                               benchmark::Counter::kIsRate);
+    reportBytes(state, log.size());
+    reportRate(state, "sentences/s", sentences);
     state.counters["threads"] = threads;
 }
 BENCHMARK(BM_FullDecodeAllCores)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
@@ -87,14 +81,10 @@ void BM_FrameAndParse(benchmark::State &state) {
             gnss::Sentence s;
             if (s.parse(line)) fields += s.fieldCount();
         };
-        for (std::size_t pos = 0; pos < log.size(); pos += kChunk)
-            framer.feed(std::string_view(log).substr(pos, kChunk), onLine);
+        feedInChunks(log, [&](std::string_view chunk) { framer.feed(chunk, onLine); });
     }
     benchmark::DoNotOptimize(fields);
-    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
-    state.counters["MB/s"] =
-            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                               benchmark::Counter::kIsRate);
+    reportBytes(state, log.size());
 }
 BENCHMARK(BM_FrameAndParse)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 
@@ -105,14 +95,10 @@ void BM_DecodeWithoutEpochs(benchmark::State &state) {
     for (auto _ : state) {
         gnss::StreamDecoder dec(reg);
         auto onSentence = [&](const gnss::SentenceEvent &ev) { decoded += ev.message != nullptr; };
-        for (std::size_t pos = 0; pos < log.size(); pos += kChunk)
-            dec.feed(std::string_view(log).substr(pos, kChunk), onSentence);
+        feedInChunks(log, [&](std::string_view chunk) { dec.feed(chunk, onSentence); });
     }
     benchmark::DoNotOptimize(decoded);
-    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
-    state.counters["MB/s"] =
-            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                               benchmark::Counter::kIsRate);
+    reportBytes(state, log.size());
 }
 BENCHMARK(BM_DecodeWithoutEpochs)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 
@@ -127,16 +113,11 @@ void BM_ChecksumOnly(benchmark::State &state) {
             if (star != std::string_view::npos && gnss::nmeaChecksum(line.substr(1, star - 1)) != 0)
                 ++ok;
         };
-        for (std::size_t pos = 0; pos < log.size(); pos += kChunk)
-            framer.feed(std::string_view(log).substr(pos, kChunk), onLine);
+        feedInChunks(log, [&](std::string_view chunk) { framer.feed(chunk, onLine); });
     }
     benchmark::DoNotOptimize(ok);
-    state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * log.size()));
-    state.counters["sentences/s"] =
-            benchmark::Counter(static_cast<double>(sentences), benchmark::Counter::kIsRate);
-    state.counters["MB/s"] =
-            benchmark::Counter(static_cast<double>(state.iterations() * log.size()) / 1e6,
-                               benchmark::Counter::kIsRate);
+    reportBytes(state, log.size());
+    reportRate(state, "sentences/s", sentences);
 }
 BENCHMARK(BM_ChecksumOnly)->Unit(benchmark::kMillisecond)->MinTime(2.0)->UseRealTime();
 

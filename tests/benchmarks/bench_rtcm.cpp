@@ -2,6 +2,7 @@
 // GLONASS, Galileo and BeiDou; 1005, 1033 and 1230 every 10 s; ephemerides now and then): framing
 // alone, framing + decoding, and framing + decoding + JSON (what `gnss-cli rtcm` does). Prints
 // MB/s.
+#include "bench_throughput.h"
 #include "rtcm/rtcm_encoder.h"
 #include "rtcm/rtcm_json.h"
 #include "rtcm/rtcm_stream_decoder.h"
@@ -98,14 +99,11 @@ const std::string &stream50MB() {
     return s;
 }
 
-constexpr std::size_t kChunk = 1 << 20;
+using gnss::bench::feedInChunks;
 
 void report(benchmark::State &state, std::size_t bytes, std::uint64_t frames) {
-    const double total = static_cast<double>(state.iterations()) * static_cast<double>(bytes);
-    state.SetBytesProcessed(static_cast<std::int64_t>(total));
-    state.counters["MB/s"] = benchmark::Counter(total / 1e6, benchmark::Counter::kIsRate);
-    state.counters["frames/s"] =
-            benchmark::Counter(static_cast<double>(frames), benchmark::Counter::kIsRate);
+    gnss::bench::reportBytes(state, bytes);
+    gnss::bench::reportRate(state, "frames/s", frames);
     state.counters["stream_MB"] = static_cast<double>(bytes) / 1e6;
 }
 
@@ -114,9 +112,9 @@ void BM_RtcmFrameOnly(benchmark::State &state) {
     std::uint64_t frames = 0;
     for (auto _ : state) {
         RtcmFramer f;
-        for (std::size_t pos = 0; pos < s.size(); pos += kChunk)
-            f.feed(std::string_view(s).substr(pos, kChunk), [&](const RtcmFrame &) { ++frames; });
-        f.finish([&](const RtcmFrame &) { ++frames; });
+        auto onFrame = [&](const RtcmFrame &) { ++frames; };
+        feedInChunks(s, [&](std::string_view chunk) { f.feed(chunk, onFrame); });
+        f.finish(onFrame);
     }
     report(state, s.size(), frames);
 }
@@ -131,8 +129,7 @@ void BM_RtcmFrameAndDecode(benchmark::State &state) {
             ++frames;
             if (const auto *h = std::get_if<MsmHeader>(&m.body)) satellites += h->satelliteCount;
         };
-        for (std::size_t pos = 0; pos < s.size(); pos += kChunk)
-            dec.feed(std::string_view(s).substr(pos, kChunk), onMessage);
+        feedInChunks(s, [&](std::string_view chunk) { dec.feed(chunk, onMessage); });
         dec.finish(onMessage);
     }
     benchmark::DoNotOptimize(satellites);
@@ -156,8 +153,7 @@ void BM_RtcmFrameDecodeAndJson(benchmark::State &state) {
                 out.clear();
             }
         };
-        for (std::size_t pos = 0; pos < s.size(); pos += kChunk)
-            dec.feed(std::string_view(s).substr(pos, kChunk), onMessage);
+        feedInChunks(s, [&](std::string_view chunk) { dec.feed(chunk, onMessage); });
         dec.finish(onMessage);
     }
     benchmark::DoNotOptimize(jsonBytes);
