@@ -7,6 +7,7 @@
 // the source table. What the test pushes with send() goes to every streaming client, cut into
 // HTTP chunks of the configured sizes for NTRIP 2 clients. Every request and every byte a
 // client sends after its request (the GGA upload) is kept for the test to look at.
+#include "local_port.h"
 #include "ntrip/base64.h"
 #include "ntrip/gga_upload.h"
 
@@ -192,13 +193,6 @@ private:
     std::vector<std::shared_ptr<Client>> clients_;
 };
 
-// A TCP port on 127.0.0.1 with nobody listening.
-inline quint16 closedPort() {
-    QTcpServer probe;
-    probe.listen(QHostAddress::LocalHost);
-    const quint16 port = probe.serverPort();
-    probe.close();
-    return port;
-}
+using gnss::test::closedPort;
 
 } // namespace corrections_test

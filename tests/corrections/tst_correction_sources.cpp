@@ -5,14 +5,13 @@
 #include "file_correction_source.h"
 #include "rtcm_fixtures.h"
 #include "serial_correction_source.h"
-#include "sim_process.h"
+#include "sim_tcp_process.h"
 #include "source_watch.h"
 #include "tcp_correction_source.h"
 #include "test_caster.h"
 
 #include <QElapsedTimer>
 #include <QFile>
-#include <QProcess>
 #include <QTcpServer>
 #include <QTemporaryDir>
 #include <QTest>
@@ -24,25 +23,24 @@ using State = CorrectionSource::State;
 
 namespace {
 
-// gnss-sim --rtcm-base with the given transport; its first line of output is where it is.
-struct SimBase {
-    QProcess proc;
-    QString where;
-    explicit SimBase(const QStringList &transport) {
-        proc.start(gnss::link::test::simPath(),
-                   QStringList{"--rtcm-base", "--seed", "3"} + transport);
-        if (!proc.waitForStarted(5000)) return;
-        QElapsedTimer t;
-        t.start();
-        while (!proc.canReadLine() && t.elapsed() < 5000 && proc.state() == QProcess::Running)
-            proc.waitForReadyRead(100);
-        where = QString::fromLocal8Bit(proc.readLine()).trimmed();
-    }
-    ~SimBase() {
-        proc.terminate();
-        if (!proc.waitForFinished(3000)) proc.kill();
-    }
-};
+// gnss-sim's RTCM base station.
+const QStringList kSimBase{"--rtcm-base", "--seed", "3"};
+
+// Writes `content` to `name` below `dir`; the file's path, empty when it could not be written.
+QString writeFile(const QTemporaryDir &dir, const QString &name, const QByteArray &content) {
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) return {};
+    f.write(content);
+    return path;
+}
+
+// `n` epochs of the simulated base station, one after the other: a recorded RTCM file.
+QByteArray baseFile(int n) {
+    QByteArray file;
+    for (const QByteArray &e : baseEpochs(n)) file += e;
+    return file;
+}
 
 } // namespace
 
@@ -88,10 +86,9 @@ private slots:
 
     void gnssSimBaseOverTcpGivesValidFrames() {
         if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
-        const quint16 port = closedPort();
-        SimBase sim({"--tcp", QString::number(port)});
-        QCOMPARE(sim.where, QString("127.0.0.1:%1").arg(port));
-        TcpCorrectionSource source(QStringLiteral("127.0.0.1"), port);
+        gnss::link::test::SimTcpProcess sim(kSimBase);
+        QCOMPARE(sim.address, QString("127.0.0.1:%1").arg(sim.port));
+        TcpCorrectionSource source(QStringLiteral("127.0.0.1"), sim.port);
         SourceWatch watch(source);
         source.start();
         QTRY_VERIFY_WITH_TIMEOUT(watch.sawBaseMessages(), 5000);
@@ -103,16 +100,16 @@ private slots:
 
     void aRadioModemOnASerialPortDeliversFrames() {
         if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
-        SimBase sim({"--pty", "--baud", "38400"});
-        if (!sim.where.startsWith("/dev/")) QSKIP("gnss-sim gave no pseudo-terminal");
-        SerialCorrectionSource source(sim.where, 38400);
+        gnss::link::test::SimProcess sim(kSimBase + QStringList{"--baud", "38400"});
+        if (!sim.ok()) QSKIP("gnss-sim gave no pseudo-terminal");
+        SerialCorrectionSource source(sim.device, 38400);
         SourceWatch watch(source);
         source.start();
         QCOMPARE(source.state(), State::Receiving);
         QVERIFY2(source.description().endsWith("at 38400 baud"), qPrintable(source.description()));
         QTRY_VERIFY_WITH_TIMEOUT(watch.monitor.messageType(1074, 0).has_value(), 5000);
         QCOMPARE(watch.monitor.crcErrors(), std::uint64_t(0));
-        QVERIFY(source.statusText().startsWith("Receiving RTCM from " + sim.where));
+        QVERIFY(source.statusText().startsWith("Receiving RTCM from " + sim.device));
     }
 
     void aMissingSerialPortIsSaidAndRetried() {
@@ -138,14 +135,9 @@ private slots:
         QFETCH(int, minMs);
         QFETCH(int, maxMs);
         QTemporaryDir dir;
-        const QString path = dir.filePath("base.rtcm");
-        QByteArray file;
-        for (const QByteArray &e : baseEpochs(4)) file += e;
-        {
-            QFile f(path);
-            QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write(file);
-        }
+        const QByteArray file = baseFile(4);
+        const QString path = writeFile(dir, "base.rtcm", file);
+        QVERIFY(!path.isEmpty());
         FileCorrectionSource source(path);
         source.setSpeed(speed);
         SourceWatch watch(source);
@@ -167,14 +159,9 @@ private slots:
 
     void aFileIsLoopedWhenAsked() {
         QTemporaryDir dir;
-        const QString path = dir.filePath("loop.rtcm");
-        QByteArray file;
-        for (const QByteArray &e : baseEpochs(2)) file += e;
-        {
-            QFile f(path);
-            QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write(file);
-        }
+        const QByteArray file = baseFile(2);
+        const QString path = writeFile(dir, "loop.rtcm", file);
+        QVERIFY(!path.isEmpty());
         FileCorrectionSource source(path);
         source.setSpeed(10);
         source.setLoop(true);
@@ -199,11 +186,7 @@ private slots:
         QFETCH(QString, words);
         QTemporaryDir dir;
         const QString path = dir.filePath("x.rtcm");
-        if (!content.isEmpty()) {
-            QFile f(path);
-            QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write(content);
-        }
+        if (!content.isEmpty()) QVERIFY(!writeFile(dir, "x.rtcm", content).isEmpty());
         FileCorrectionSource source(path);
         SourceWatch watch(source);
         source.start();

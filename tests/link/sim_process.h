@@ -15,29 +15,38 @@ inline QString simPath() {
 #endif
 }
 
+// The first line `proc` writes on its standard output (gnss-sim says there where it is), waited
+// for up to five seconds; empty when the program did not start or ended first.
+inline QString firstLine(QProcess &proc) {
+    if (!proc.waitForStarted(5000)) return {};
+    QElapsedTimer t;
+    t.start();
+    while (!proc.canReadLine() && t.elapsed() < 5000 && proc.state() == QProcess::Running)
+        proc.waitForReadyRead(100);
+    return QString::fromLocal8Bit(proc.readLine()).trimmed();
+}
+
+// Ends `proc`: asked first, killed after three seconds.
+inline void stopProcess(QProcess &proc) {
+    if (proc.state() == QProcess::NotRunning) return;
+    proc.terminate();
+    if (!proc.waitForFinished(3000)) proc.kill();
+}
+
 class SimProcess {
 public:
     explicit SimProcess(const QStringList &args) {
         proc.setProgram(simPath());
         proc.setArguments(QStringList{"--pty"} + args);
         proc.start();
-        if (!proc.waitForStarted(5000)) return;
-        QElapsedTimer t;
-        t.start();
-        while (!proc.canReadLine() && t.elapsed() < 5000 && proc.state() == QProcess::Running)
-            proc.waitForReadyRead(100);
-        device = QString::fromLocal8Bit(proc.readLine()).trimmed();
+        device = firstLine(proc);
         if (!device.startsWith("/dev/")) {
             error = QString::fromLocal8Bit(proc.readAllStandardError());
             device.clear();
         }
     }
     ~SimProcess() { stop(); }
-    void stop() {
-        if (proc.state() == QProcess::NotRunning) return;
-        proc.terminate();
-        if (!proc.waitForFinished(3000)) proc.kill();
-    }
+    void stop() { stopProcess(proc); }
     bool ok() const { return !device.isEmpty(); }
 
     QProcess proc;
