@@ -1,9 +1,9 @@
 // gnss-cli's link commands end to end against gnss-sim on pseudo-terminals: probe finds each
 // simulated receiver at a baud it is not told, send reports outcomes (and refuses a malformed
 // sentence before sending anything), record + monitor --replay give back what was received,
-// also after the recorder was killed with SIGKILL.
+// also after the recorder was killed with SIGKILL; config get reads gnss-sim --tcp.
 #include "cli_run.h"
-#include "sim_process.h"
+#include "sim_tcp_process.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -15,6 +15,7 @@
 #include <QTest>
 
 using gnss::link::test::SimProcess;
+using gnss::link::test::SimTcpProcess;
 
 namespace {
 
@@ -48,6 +49,29 @@ private slots:
         QCOMPARE(o.value("baud").toInt(), baud);
         QCOMPARE(o.value("dialect").toString(), dialect);
         if (dialect != "nmea") QVERIFY2(!o.value("firmware").toString().isEmpty(), r.out);
+    }
+
+    // config over TCP: gnss-sim --tcp listens on 127.0.0.1, the dialect is found on the link.
+    void configGetReadsAReceiverOverTcp_data() {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<QString>("value");
+        QTest::newRow("nvs") << "nvs"
+                             << "rtk.MODE"
+                             << "2";
+    }
+    void configGetReadsAReceiverOverTcp() {
+        QFETCH(QString, dialect);
+        QFETCH(QString, key);
+        QFETCH(QString, value);
+        if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        SimTcpProcess sim({"--dialect", dialect});
+        QVERIFY2(sim.ok(), qPrintable(sim.error));
+        const Run r = cli({"config", "--tcp", sim.address, "get", key});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(o.value("dialect").toString(), dialect);
+        QCOMPARE(o.value("values").toObject().value(key).toString(), value);
     }
 
     void malformedSentenceIsRefusedBeforeAnythingIsSent() {
