@@ -3,8 +3,8 @@
 #include "baud_detector.h"
 #include "core/sentence_builder.h"
 #include "fake_transport.h"
+#include "run_to_finish.h"
 
-#include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
 
@@ -36,6 +36,30 @@ private:
     QTimer timer_;
 };
 
+// A fake line at 9600 baud with `FakeReceiver(link, rightBaud, silent)` on it, and a baud
+// detector on the line listening `listenMs` at each rate of `candidates` (its own list when
+// empty).
+struct Detection {
+    FakeTransport link{9600};
+    FakeReceiver rx;
+    SentenceStream stream{&link, gnss::test::builtinRegistry()};
+    BaudDetector d{&stream};
+
+    Detection(int rightBaud, bool silent, const QList<int> &candidates, int listenMs)
+        : rx(openedFirst(link), rightBaud, silent) {
+        if (!candidates.isEmpty()) d.setCandidates(candidates);
+        d.setListenMs(listenMs);
+    }
+    // Runs the detection; whether it finished within `ms`.
+    bool run(int ms) { return gnss::test::runToFinish(d, ms); }
+
+private:
+    static FakeTransport &openedFirst(FakeTransport &t) {
+        t.open();
+        return t;
+    }
+};
+
 } // namespace
 
 class TstBaudDetector : public QObject {
@@ -48,15 +72,10 @@ private slots:
     }
     void settlesOnTheRateThatGivesValidSentences() {
         QFETCH(int, rate);
-        FakeTransport link(9600);
-        link.open();
-        FakeReceiver rx(link, rate);
-        SentenceStream stream(&link, gnss::test::builtinRegistry());
-        BaudDetector d(&stream);
-        d.setListenMs(200);
-        QSignalSpy finished(&d, &BaudDetector::finished);
-        d.start();
-        QVERIFY(finished.wait(10000));
+        Detection detection(rate, false, {}, 200);
+        QVERIFY(detection.run(10000));
+        const BaudDetector &d = detection.d;
+        const FakeTransport &link = detection.link;
         QVERIFY2(d.result().found, qPrintable(d.result().error));
         QCOMPARE(d.result().baud, rate);
         QCOMPARE(link.baud(), rate);
@@ -64,16 +83,10 @@ private slots:
     }
 
     void silenceSaysNoDataAtAnyRate() {
-        FakeTransport link(9600);
-        link.open();
-        FakeReceiver rx(link, 0, true);
-        SentenceStream stream(&link, gnss::test::builtinRegistry());
-        BaudDetector d(&stream);
-        d.setCandidates({9600, 115200});
-        d.setListenMs(100);
-        QSignalSpy finished(&d, &BaudDetector::finished);
-        d.start();
-        QVERIFY(finished.wait(5000));
+        Detection detection(0, true, {9600, 115200}, 100);
+        QVERIFY(detection.run(5000));
+        const BaudDetector &d = detection.d;
+        const FakeTransport &link = detection.link;
         QVERIFY(!d.result().found);
         QVERIFY2(d.result().error.startsWith("No data at any rate (tried 9600, 115200 baud)"),
                  qPrintable(d.result().error));
@@ -81,16 +94,9 @@ private slots:
     }
 
     void garbageSaysWrongFraming() {
-        FakeTransport link(9600);
-        link.open();
-        FakeReceiver rx(link, 1); // no rate works
-        SentenceStream stream(&link, gnss::test::builtinRegistry());
-        BaudDetector d(&stream);
-        d.setCandidates({9600, 4800});
-        d.setListenMs(150);
-        QSignalSpy finished(&d, &BaudDetector::finished);
-        d.start();
-        QVERIFY(finished.wait(5000));
+        Detection detection(1, false, {9600, 4800}, 150); // no rate works
+        QVERIFY(detection.run(5000));
+        const BaudDetector &d = detection.d;
         QVERIFY(!d.result().found);
         QVERIFY2(d.result().error.contains("wrong framing"), qPrintable(d.result().error));
         QVERIFY(d.result().tried[0].bytes > 0);
@@ -105,9 +111,7 @@ private slots:
         d.setCandidates({9600, 4800});
         d.setListenMs(50);
         d.setProbe("$PNVGVER*4E");
-        QSignalSpy finished(&d, &BaudDetector::finished);
-        d.start();
-        QVERIFY(finished.wait(5000));
+        QVERIFY(gnss::test::runToFinish(d, 5000));
         QCOMPARE(link.written.size(), 2);
     }
 };

@@ -10,6 +10,7 @@
 #include "dialects.h"
 #include "queue_checks.h"
 #include "recording.h"
+#include "run_to_finish.h"
 #include "sentence_stream.h"
 #include "serial_transport.h"
 #include "sim_process.h"
@@ -23,6 +24,21 @@
 using namespace gnss;
 using namespace gnss::link;
 using gnss::link::test::SimProcess;
+
+namespace {
+
+// The real serial port on an NV08C-RTK's device at its 115200 baud, read as sentences, with a
+// command queue that speaks nvs.
+struct NvsCommandLink {
+    SerialTransport port;
+    SentenceStream stream{&port, gnss::test::builtinRegistry()};
+    CommandQueue commands{&port, &stream};
+    explicit NvsCommandLink(const QString &device) : port(SerialSettings{device, 115200}) {
+        commands.setDialect(gnss::test::builtinRegistry().find("nvs"));
+    }
+};
+
+} // namespace
 
 class TstLinkPty : public QObject {
     Q_OBJECT
@@ -41,9 +57,7 @@ private slots:
         SentenceStream stream(&port, gnss::test::builtinRegistry());
         BaudDetector d(&stream);
         d.setListenMs(500); // NVS: 5 Hz
-        QSignalSpy finished(&d, &BaudDetector::finished);
-        d.start();
-        QVERIFY(finished.wait(20000));
+        QVERIFY(gnss::test::runToFinish(d, 20000));
         QVERIFY2(d.result().found, qPrintable(d.result().error));
         QCOMPARE(d.result().baud, rate);
         QCOMPARE(port.baud(), rate);
@@ -61,9 +75,7 @@ private slots:
         QVERIFY2(port.open(), qPrintable(port.errorString()));
         SentenceStream stream(&port, gnss::test::builtinRegistry());
         VendorDetector v(&stream);
-        QSignalSpy finished(&v, &VendorDetector::finished);
-        v.start();
-        QVERIFY(finished.wait(10000));
+        QVERIFY(gnss::test::runToFinish(v, 10000));
         const VendorIdentity &id = v.result();
         QVERIFY2(id.found, qPrintable(id.error));
         QCOMPARE(id.dialect, dialect);
@@ -76,11 +88,9 @@ private slots:
     void commandOutcomesThroughTheSimulator() {
         SimProcess sim({"--dialect", "nvs", "--faults", "noreply=PNVGCFG"});
         REQUIRE_SIM(sim);
-        SerialTransport port(SerialSettings{sim.device, 115200});
-        QVERIFY2(port.open(), qPrintable(port.errorString()));
-        SentenceStream stream(&port, gnss::test::builtinRegistry());
-        CommandQueue q(&port, &stream);
-        q.setDialect(gnss::test::builtinRegistry().find("nvs"));
+        NvsCommandLink link(sim.device);
+        QVERIFY2(link.port.open(), qPrintable(link.port.errorString()));
+        CommandQueue &q = link.commands;
         q.enqueue("PNVGVER");
         q.enqueue("PNVGRTK,PVTRATE,99"); // out of range: the reply carries the rate in force
         CommandOptions quick;
@@ -99,23 +109,21 @@ private slots:
     void baudChangeRoundTrip() {
         SimProcess sim({"--dialect", "nvs"});
         REQUIRE_SIM(sim);
-        SerialTransport port(SerialSettings{sim.device, 115200});
-        QVERIFY2(port.open(), qPrintable(port.errorString()));
-        SentenceStream stream(&port, gnss::test::builtinRegistry());
-        CommandQueue q(&port, &stream);
-        q.setDialect(gnss::test::builtinRegistry().find("nvs"));
+        NvsCommandLink link(sim.device);
+        QVERIFY2(link.port.open(), qPrintable(link.port.errorString()));
+        CommandQueue &q = link.commands;
         q.enqueue("PNVGRZA,1,38400,1");
         QVERIFY(waitForHistory(q, 1, 10000));
         QCOMPARE(q.history()[0].outcome, CommandOutcome::Accepted);
         QCOMPARE(q.history()[0].baudAfter, 38400);
-        QCOMPARE(port.baud(), 38400);
+        QCOMPARE(link.port.baud(), 38400);
         // Commands work at the new speed, and the way back works too.
         q.enqueue("PNVGVER");
         q.enqueue("PNVGRZA,1,115200,1");
         QVERIFY(waitForHistory(q, 3, 10000));
         QCOMPARE(q.history()[1].outcome, CommandOutcome::Accepted);
         QCOMPARE(q.history()[2].outcome, CommandOutcome::Accepted);
-        QCOMPARE(port.baud(), 115200);
+        QCOMPARE(link.port.baud(), 115200);
     }
 
     void reconnectAfterTheSimulatorHangsUpAndComesBack() {

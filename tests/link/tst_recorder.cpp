@@ -17,6 +17,18 @@ using gnss::link::test::FakeTransport;
 
 namespace {
 
+// A recording as a recorder leaves it: `data` in `name` below `dir`, `index` in its .idx. The
+// data file's path; empty when either file could not be written.
+QString writeRecording(const QTemporaryDir &dir, const QString &name, const QByteArray &data,
+                       const QByteArray &index) {
+    const QString path = dir.filePath(name);
+    QFile d(path), i(path + ".idx");
+    if (!d.open(QIODevice::WriteOnly) || !i.open(QIODevice::WriteOnly)) return {};
+    d.write(data);
+    i.write(index);
+    return path;
+}
+
 QByteArray readAll(const QString &path) {
     QFile f(path);
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
@@ -105,13 +117,9 @@ private slots:
 
     void bytesPastTheIndexAndATornLastLineAreKept() {
         QTemporaryDir dir;
-        const QString path = dir.filePath("torn.nmea");
-        QFile d(path), i(path + ".idx");
-        QVERIFY(d.open(QIODevice::WriteOnly) && i.open(QIODevice::WriteOnly));
-        d.write("$A*41\r\n$B*42\r\n");
-        i.write("R 5000 0 7\nR 6000 7 7"); // the recorder died mid-line
-        d.close();
-        i.close();
+        const QString path = writeRecording(dir, "torn.nmea", "$A*41\r\n$B*42\r\n",
+                                            "R 5000 0 7\nR 6000 7 7"); // the recorder died mid-line
+        QVERIFY(!path.isEmpty());
         Recording r;
         QString error;
         QVERIFY2(loadRecording(path, r, error), qPrintable(error));
@@ -122,13 +130,8 @@ private slots:
 
     void indexThatContradictsTheDataIsAnError() {
         QTemporaryDir dir;
-        const QString path = dir.filePath("bad.nmea");
-        QFile d(path), i(path + ".idx");
-        QVERIFY(d.open(QIODevice::WriteOnly) && i.open(QIODevice::WriteOnly));
-        d.write("$A*41\r\n");
-        i.write("R 5000 0 70\n");
-        d.close();
-        i.close();
+        const QString path = writeRecording(dir, "bad.nmea", "$A*41\r\n", "R 5000 0 70\n");
+        QVERIFY(!path.isEmpty());
         Recording r;
         QString error;
         QVERIFY(!loadRecording(path, r, error));
@@ -162,13 +165,8 @@ private slots:
         QFETCH(QByteArray, index);
         QFETCH(QString, why);
         QTemporaryDir dir;
-        const QString path = dir.filePath("bad.nmea");
-        QFile d(path), i(path + ".idx");
-        QVERIFY(d.open(QIODevice::WriteOnly) && i.open(QIODevice::WriteOnly));
-        d.write("$A*41\r\n$B*42\r\n");
-        i.write(index);
-        d.close();
-        i.close();
+        const QString path = writeRecording(dir, "bad.nmea", "$A*41\r\n$B*42\r\n", index);
+        QVERIFY(!path.isEmpty());
         Recording r;
         QString error;
         QVERIFY(!loadRecording(path, r, error));
@@ -177,14 +175,11 @@ private slots:
 
     void anIndexWithCrLfLineEndsLoads() {
         QTemporaryDir dir;
-        const QString path = dir.filePath("crlf.nmea");
-        QFile d(path), i(path + ".idx");
-        QVERIFY(d.open(QIODevice::WriteOnly) && i.open(QIODevice::WriteOnly));
-        d.write("$A*41\r\n$B*42\r\n");
-        i.write("# gnss-workbench recording index 1\r\nR 5000 0 7\r\n\r\nG 5500 7 link lost: x\r\n"
+        const QString path = writeRecording(
+                dir, "crlf.nmea", "$A*41\r\n$B*42\r\n",
+                "# gnss-workbench recording index 1\r\nR 5000 0 7\r\n\r\nG 5500 7 link lost: x\r\n"
                 "R 6000 7 7\r\n");
-        d.close();
-        i.close();
+        QVERIFY(!path.isEmpty());
         Recording r;
         QString error;
         QVERIFY2(loadRecording(path, r, error), qPrintable(error));

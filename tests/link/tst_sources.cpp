@@ -5,9 +5,11 @@
 #include "command_queue.h"
 #include "connection.h"
 #include "dialects.h"
+#include "local_port.h"
 #include "loop_watch.h"
+#include "run_to_finish.h"
 #include "sentence_stream.h"
-#include "sim_process.h"
+#include "sim_tcp_process.h"
 #include "simulator_transport.h"
 #include "tcp_transport.h"
 #include "vendor_detector.h"
@@ -19,7 +21,6 @@
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
-#include <QTcpServer>
 #include <QTest>
 #include <QTimer>
 
@@ -28,14 +29,7 @@ using namespace gnss::link;
 
 namespace {
 
-// A TCP port on 127.0.0.1 with nobody listening.
-quint16 closedPort() {
-    QTcpServer probe;
-    probe.listen(QHostAddress::LocalHost);
-    const quint16 port = probe.serverPort();
-    probe.close();
-    return port;
-}
+using gnss::test::closedPort;
 
 // A TCP port on 127.0.0.1 that takes no new connection: it listens with a backlog of one and
 // that one place is taken, so further connection attempts get no answer at all.
@@ -78,16 +72,12 @@ private slots:
         SentenceStream stream(&sim, gnss::test::builtinRegistry());
         BaudDetector baud(&stream);
         baud.setListenMs(500);
-        QSignalSpy baudDone(&baud, &BaudDetector::finished);
-        baud.start();
-        QVERIFY(baudDone.wait(15000));
+        QVERIFY(gnss::test::runToFinish(baud, 15000));
         QVERIFY2(baud.result().found, qPrintable(baud.result().error));
         QCOMPARE(baud.result().baud, 115200);
 
         VendorDetector vendor(&stream);
-        QSignalSpy vendorDone(&vendor, &VendorDetector::finished);
-        vendor.start();
-        QVERIFY(vendorDone.wait(10000));
+        QVERIFY(gnss::test::runToFinish(vendor, 10000));
         QCOMPARE(vendor.result().dialect, QStringLiteral("nvs"));
         QVERIFY(!vendor.result().firmware.isEmpty());
 
@@ -100,21 +90,15 @@ private slots:
 
     void tcpClientReadsGnssSimAndNoticesItLeaving() {
         if (link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
-        QTcpServer probe; // a free port for the simulator
-        QVERIFY(probe.listen(QHostAddress::LocalHost));
-        const quint16 port = probe.serverPort();
-        probe.close();
-        QProcess sim;
-        sim.start(link::test::simPath(), {"--dialect", "nmea", "--tcp", QString::number(port)});
-        QVERIFY(sim.waitForReadyRead(5000)); // it prints its address once listening
-        TcpTransport tcp(QStringLiteral("127.0.0.1"), port);
+        link::test::SimTcpProcess sim({"--dialect", "nmea"});
+        QVERIFY2(sim.ok(), qPrintable(sim.error));
+        TcpTransport tcp(QStringLiteral("127.0.0.1"), sim.port);
         QVERIFY2(tcp.open(), qPrintable(tcp.errorString()));
         QByteArray got;
         connect(&tcp, &Transport::bytesReceived, [&](const QByteArray &b) { got += b; });
         QTRY_VERIFY_WITH_TIMEOUT(got.contains("GGA,"), 5000);
         QSignalSpy state(&tcp, &Transport::stateChanged);
-        sim.terminate();
-        sim.waitForFinished(3000);
+        sim.stop();
         QTRY_COMPARE_WITH_TIMEOUT(tcp.state(), Transport::State::Lost, 5000);
         QVERIFY(!tcp.errorString().isEmpty());
     }
@@ -174,19 +158,15 @@ private slots:
 
     void commandsQueuedWhileConnectingWaitForTheLink() {
         if (link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
-        const quint16 port = closedPort();
-        QProcess sim;
-        sim.start(link::test::simPath(), {"--dialect", "nvs", "--tcp", QString::number(port)});
-        QVERIFY(sim.waitForReadyRead(5000));
-        Connection conn(std::make_unique<TcpTransport>(QStringLiteral("127.0.0.1"), port),
+        link::test::SimTcpProcess sim({"--dialect", "nvs"});
+        QVERIFY2(sim.ok(), qPrintable(sim.error));
+        Connection conn(std::make_unique<TcpTransport>(QStringLiteral("127.0.0.1"), sim.port),
                         gnss::test::builtinRegistry());
         QVERIFY(conn.open());
         conn.commands()->setDialect(gnss::test::builtinRegistry().find("nvs"));
         conn.commands()->enqueue("PNVGVER"); // before the socket has connected
         QTRY_COMPARE_WITH_TIMEOUT(conn.commands()->history().size(), 1, 5000);
         QCOMPARE(int(conn.commands()->history().first().outcome), int(CommandOutcome::Accepted));
-        sim.terminate();
-        sim.waitForFinished(3000);
     }
 
     void hostPortIsParsed() {
