@@ -2,6 +2,7 @@
 // lines with distances, a mountpoint's RTCM as JSON and byte-exact in a file, the nearest
 // mountpoint chosen, refusals ending with exit code 1 and the reason, the password taken from
 // the environment and never printed.
+#include "cli_run.h"
 #include "rtcm_fixtures.h"
 #include "sim_process.h"
 #include "test_caster.h"
@@ -20,10 +21,8 @@ using namespace corrections_test;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out, err;
-};
+using gnss::test::jsonLines;
+using gnss::test::Run;
 
 // Runs gnss-cli while the test's event loop keeps serving the caster; `feed` is called every
 // 100 ms to push data.
@@ -42,15 +41,19 @@ Run cli(const QStringList &args, const std::function<void()> &feed = {},
     p.start(QStringLiteral(GNSS_CLI_PATH), args);
     done.wait(20000);
     if (p.state() != QProcess::NotRunning) p.kill();
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
+    Run r;
+    r.status = p.exitStatus();
+    r.exitCode = r.status == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
 }
 
-QList<QJsonObject> jsonLines(const QByteArray &out) {
-    QList<QJsonObject> l;
-    for (const QByteArray &line : out.split('\n'))
-        if (!line.trimmed().isEmpty()) l.append(QJsonDocument::fromJson(line).object());
-    return l;
+// The protocol versions gnss-cli ntrip is asked for, a row each; `second` names the NTRIP 2 row.
+void versionRows(const char *second = "NTRIP 2") {
+    QTest::addColumn<QString>("version");
+    QTest::newRow("NTRIP 1") << "1";
+    QTest::newRow(second) << "2";
 }
 
 QString casterArg(const TestCaster &c) {
@@ -62,11 +65,7 @@ QString casterArg(const TestCaster &c) {
 class TstNtripCli : public QObject {
     Q_OBJECT
 private slots:
-    void theSourceTableIsPrintedWithDistances_data() {
-        QTest::addColumn<QString>("version");
-        QTest::newRow("NTRIP 1") << "1";
-        QTest::newRow("NTRIP 2") << "2";
-    }
+    void theSourceTableIsPrintedWithDistances_data() { versionRows(); }
     void theSourceTableIsPrintedWithDistances() {
         QFETCH(QString, version);
         TestCaster caster;
@@ -88,11 +87,7 @@ private slots:
                  r.err.constData());
     }
 
-    void aMountpointsRtcmIsPrintedAndWrittenByteExact_data() {
-        QTest::addColumn<QString>("version");
-        QTest::newRow("NTRIP 1") << "1";
-        QTest::newRow("NTRIP 2, chunked") << "2";
-    }
+    void aMountpointsRtcmIsPrintedAndWrittenByteExact_data() { versionRows("NTRIP 2, chunked"); }
     void aMountpointsRtcmIsPrintedAndWrittenByteExact() {
         QFETCH(QString, version);
         TestCaster caster;

@@ -9,6 +9,8 @@
 
 using namespace gnss::ntrip;
 
+Q_DECLARE_METATYPE(gnss::ntrip::RequestTarget)
+
 class TstNtripRequest : public QObject {
     Q_OBJECT
 private slots:
@@ -54,37 +56,32 @@ private slots:
         QVERIFY(!base64Decode(text.toStdString()));
     }
 
-    void ntrip1RequestIsWhatRtklibExpects() {
-        RequestTarget t;
-        t.host = "127.0.0.1";
-        t.port = 2101;
-        t.mountpoint = "MOUNT";
-        t.version = NtripVersion::V1;
-        t.user = "user";
-        t.password = "pass";
-        std::string error;
-        QCOMPARE(buildRequest(t, error), std::string("GET /MOUNT HTTP/1.0\r\n"
-                                                     "User-Agent: NTRIP GNSSWorkbench/0.1\r\n"
-                                                     "Authorization: Basic dXNlcjpwYXNz\r\n"
-                                                     "\r\n"));
-        QVERIFY(error.empty());
+    // NTRIP 1 as RTKLIB's caster expects it; NTRIP 2 with its Host, version and Connection: close.
+    void mountpointRequestIsByteForByte_data() {
+        QTest::addColumn<RequestTarget>("target");
+        QTest::addColumn<QByteArray>("request");
+        QTest::newRow("NTRIP 1") << RequestTarget{"127.0.0.1",      2101,   "MOUNT",
+                                                  NtripVersion::V1, "user", "pass"}
+                                 << QByteArray("GET /MOUNT HTTP/1.0\r\n"
+                                               "User-Agent: NTRIP GNSSWorkbench/0.1\r\n"
+                                               "Authorization: Basic dXNlcjpwYXNz\r\n"
+                                               "\r\n");
+        QTest::newRow("NTRIP 2") << RequestTarget{"caster.example.org", 2102,    "VRS_RTCM3",
+                                                  NtripVersion::V2,     "rover", "p:w"}
+                                 << QByteArray("GET /VRS_RTCM3 HTTP/1.1\r\n"
+                                               "Host: caster.example.org:2102\r\n"
+                                               "Ntrip-Version: Ntrip/2.0\r\n"
+                                               "User-Agent: NTRIP GNSSWorkbench/0.1\r\n"
+                                               "Authorization: Basic cm92ZXI6cDp3\r\n"
+                                               "Connection: close\r\n"
+                                               "\r\n");
     }
-
-    void ntrip2RequestHasHostVersionAndClose() {
-        RequestTarget t;
-        t.host = "caster.example.org";
-        t.port = 2102;
-        t.mountpoint = "VRS_RTCM3";
-        t.user = "rover";
-        t.password = "p:w";
+    void mountpointRequestIsByteForByte() {
+        QFETCH(RequestTarget, target);
+        QFETCH(QByteArray, request);
         std::string error;
-        QCOMPARE(buildRequest(t, error), std::string("GET /VRS_RTCM3 HTTP/1.1\r\n"
-                                                     "Host: caster.example.org:2102\r\n"
-                                                     "Ntrip-Version: Ntrip/2.0\r\n"
-                                                     "User-Agent: NTRIP GNSSWorkbench/0.1\r\n"
-                                                     "Authorization: Basic cm92ZXI6cDp3\r\n"
-                                                     "Connection: close\r\n"
-                                                     "\r\n"));
+        QCOMPARE(QByteArray::fromStdString(buildRequest(target, error)), request);
+        QVERIFY(error.empty());
     }
 
     void sourceTableRequestAsksForTheRoot_data() {
