@@ -1,5 +1,6 @@
 // gnss-cli export, summary and play end to end: the real executable on generated logs.
 #include "cli_run.h"
+#include "raw_pty.h"
 #include "scenario_log.h"
 
 #include <QFile>
@@ -12,7 +13,6 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <termios.h>
 #include <unistd.h>
 
 using namespace gnss::test;
@@ -90,12 +90,8 @@ private slots:
         QVERIFY(p.waitForReadyRead(30000));
         const QByteArray path = p.readLine().trimmed();
         QVERIFY(path.startsWith("/dev/pts/"));
-        const int fd = ::open(path.constData(), O_RDONLY | O_NOCTTY);
+        const int fd = gnss::test::openRawPty(path.constData());
         QVERIFY(fd >= 0);
-        termios t{};
-        ::tcgetattr(fd, &t);
-        ::cfmakeraw(&t);
-        ::tcsetattr(fd, TCSANOW, &t);
         QByteArray got;
         char buf[65536];
         QElapsedTimer timer;

@@ -10,6 +10,8 @@
 #include <QRegularExpression>
 #include <QStandardPaths>
 
+#include <optional>
+
 using namespace gnss;
 using namespace gnss::logview;
 
@@ -31,6 +33,17 @@ QList<QPair<double, double>> epochPositions(const QString &file) {
         if (o["lat"].isDouble() && o["lon"].isDouble())
             out.append({o["lat"].toDouble(), o["lon"].toDouble()});
     }
+    return out;
+}
+
+// Epochs `first`..`last` of `view` exported as `format`; nothing when the export failed.
+std::optional<std::string> exported(LogView &view, ExportFormat format, int first, int last) {
+    std::string out;
+    if (!view.exportRange(format, first, last, [&](std::string_view b) {
+            out += b;
+            return true;
+        }))
+        return std::nullopt;
     return out;
 }
 
@@ -86,12 +99,9 @@ private slots:
         QVERIFY(test::writeFile(p, text));
         LogView view(registry_);
         QVERIFY(test::openAndWait(view, p));
-        std::string csv;
-        QVERIFY(view.exportRange(ExportFormat::Csv, 0, 599, [&](std::string_view b) {
-            csv += b;
-            return true;
-        }));
-        const QStringList lines = QString::fromStdString(csv).split("\r\n", Qt::SkipEmptyParts);
+        const auto csv = exported(view, ExportFormat::Csv, 0, 599);
+        QVERIFY(csv);
+        const QStringList lines = QString::fromStdString(*csv).split("\r\n", Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 601);
         QCOMPARE(lines[0], QString("epoch,time,host_time,fix,lat,lon,alt_msl,sats_used,hdop,"
                                    "mean_snr,speed_mps,station,offset,length,flags"));
@@ -120,11 +130,9 @@ private slots:
         QVERIFY(test::writeFile(p, text));
         LogView view(registry_);
         QVERIFY(test::openAndWait(view, p));
-        std::string out;
-        QVERIFY(view.exportRange(ExportFormat::Nmea, first, last, [&](std::string_view b) {
-            out += b;
-            return true;
-        }));
+        const auto nmea = exported(view, ExportFormat::Nmea, first, last);
+        QVERIFY(nmea);
+        const std::string &out = *nmea;
         const std::uint64_t from = view.epoch(first)->offset, to = view.epochEnd(last);
         QCOMPARE(out, text.substr(from, to - from));
         // The range decodes to its epochs (the first one's sky may be partial, not its count).

@@ -32,6 +32,19 @@ bool sameRecords(const std::vector<EpochRecord> &a, const std::vector<EpochRecor
            (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(EpochRecord)) == 0);
 }
 
+// The scenario log as a followed file is indexed (a checkpoint every 16 epochs), and its index
+// built from the whole file at once, to compare with.
+struct FollowedScenario {
+    DialectRegistry reg = makeBuiltinRegistry();
+    std::string text = test::namedLog("scenario");
+    IndexOptions options = [] {
+        IndexOptions o;
+        o.checkpointEvery = 16;
+        return o;
+    }();
+    LogIndex whole = indexOf(text, reg, 1, std::size_t(1) << 40, 16);
+};
+
 } // namespace
 
 class TestLogviewIndex : public QObject {
@@ -110,11 +123,8 @@ private slots:
 
     // A file that grows line by line (and mid-line) indexes to what the whole file gives.
     void followingAGrowingLogGivesTheSameIndex() {
-        const DialectRegistry reg = makeBuiltinRegistry();
-        const std::string text = test::namedLog("scenario");
-        IndexOptions o;
-        o.checkpointEvery = 16;
-        const LogIndex whole = indexOf(text, reg, 1, std::size_t(1) << 40, 16);
+        const FollowedScenario scenario;
+        const auto &[reg, text, o, whole] = scenario;
         LogIndex grown;
         std::size_t end = 5000;
         buildIndex(text.data(), std::string_view(text).substr(0, end),
@@ -143,11 +153,8 @@ private slots:
     // epoch once (tests/fuzz fuzz_log_index found the first one kept twice: only the open
     // record was dropped when the line was decoded again).
     void aFileCutBetweenCrAndLfIsFollowedWithEachEpochOnce() {
-        const DialectRegistry reg = makeBuiltinRegistry();
-        const std::string text = test::namedLog("scenario");
-        IndexOptions o;
-        o.checkpointEvery = 16;
-        const LogIndex whole = indexOf(text, reg, 1, std::size_t(1) << 40, 16);
+        const FollowedScenario scenario;
+        const auto &[reg, text, o, whole] = scenario;
         QVERIFY(whole.records.size() > 6);
         const std::size_t cr = text.find('\r', whole.records[5].offset);
         QVERIFY(cr != std::string::npos && text[cr + 1] == '\n');

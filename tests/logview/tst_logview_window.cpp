@@ -16,6 +16,7 @@
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
 #include "play_out_dialog.h"
+#include "raw_pty.h"
 #include "scenario_log.h"
 #include "startup_options.h"
 #include "timeline_panel.h"
@@ -40,7 +41,6 @@
 #include <random>
 
 #include <fcntl.h>
-#include <termios.h>
 #include <unistd.h>
 
 using namespace gnss;
@@ -362,13 +362,8 @@ private slots:
                  qPrintable(why));
         const QString device = player->ptyPath();
         QVERIFY(device.startsWith("/dev/pts/"));
-        const int fd =
-                ::open(QFile::encodeName(device).constData(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
+        const int fd = test::openRawPty(QFile::encodeName(device).constData(), O_NONBLOCK);
         QVERIFY(fd >= 0);
-        termios t{};
-        ::tcgetattr(fd, &t);
-        ::cfmakeraw(&t);
-        ::tcsetattr(fd, TCSANOW, &t);
         QByteArray viaPty;
         QTRY_VERIFY_WITH_TIMEOUT(([&] {
                                      char buf[4096];
