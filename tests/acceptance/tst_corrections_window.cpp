@@ -4,11 +4,9 @@
 // to RTK fixed, the dock lists every message type with its rate and age, the base position and
 // the distance, the frames forwarded, and the receiver's own RTCM counts; the caster got the
 // receiver's fix as GGA. A refused request is said in the dock before anything starts.
-#include "app_transports.h"
 #include "connection_controller.h"
 #include "corrections_controller.h"
-#include "dialects.h"
-#include "main_window.h"
+#include "laptop_window.h"
 #include "models/receiver_state_model.h"
 #include "rtcm_fixtures.h"
 #include "sim_process.h"
@@ -20,10 +18,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
-#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
@@ -34,10 +30,6 @@ using gnss::link::test::SimProcess;
 
 class TstCorrectionsWindow : public QObject {
     Q_OBJECT
-    QTemporaryDir dir_;
-    DialectRegistry registry_ = makeBuiltinRegistry();
-    link::TransportFactory transports_ = app::makeTransportFactory(registry_);
-
 private slots:
     void aCastersCorrectionsTakeTheRoverToRtkFixed() {
         if (link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
@@ -53,9 +45,8 @@ private slots:
         });
         pump.start(1000);
 
-        QSettings settings(dir_.filePath("settings.ini"), QSettings::IniFormat);
-        app::MainWindow w(registry_, transports_, &settings);
-        w.show();
+        gnss::test::LaptopWindow window;
+        app::MainWindow &w = window.w;
         w.connectAtStart(SourceSpec{SourceSpec::Kind::Serial, rover.device, 460800});
         QTRY_COMPARE_WITH_TIMEOUT(w.controller()->state(), ConnectionController::State::Connected,
                                   15000);
@@ -112,11 +103,12 @@ private slots:
         QVERIFY(caster.uploads.contains("$GPGGA,")); // the receiver's fix went up
 
         // Remembered for next time, but never the password.
-        QCOMPARE(settings.value("corrections/host").toString(), QString("127.0.0.1"));
-        QCOMPARE(settings.value("corrections/mountpoint").toString(), QString("MOUNT"));
-        QCOMPARE(settings.value("corrections/rememberPassword").toBool(), remember->isVisible());
-        settings.sync();
-        QFile ini(dir_.filePath("settings.ini"));
+        QCOMPARE(window.settings.value("corrections/host").toString(), QString("127.0.0.1"));
+        QCOMPARE(window.settings.value("corrections/mountpoint").toString(), QString("MOUNT"));
+        QCOMPARE(window.settings.value("corrections/rememberPassword").toBool(),
+                 remember->isVisible());
+        window.settings.sync();
+        QFile ini(window.settingsFile());
         QVERIFY(ini.open(QIODevice::ReadOnly));
         QVERIFY(!ini.readAll().contains("s3cret-pw"));
 

@@ -4,13 +4,11 @@
 // plot), the connection bar names the gpsd source, and the two places that send commands say
 // why they cannot: the console's send box is off with "gpsd owns the port" beside it, and the
 // settings dock says the same above its disabled buttons. Skipped when gpsd is not installed.
-#include "app_transports.h"
 #include "connection_controller.h"
-#include "dialects.h"
 #include "gpsd_process.h"
+#include "laptop_window.h"
 #include "link/command_queue.h"
 #include "link/connection.h"
-#include "main_window.h"
 #include "models/receiver_session.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
@@ -21,9 +19,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSettings>
 #include <QStatusBar>
-#include <QTemporaryDir>
 #include <QTest>
 
 using namespace gnss;
@@ -34,10 +30,6 @@ using gnss::link::test::SimProcess;
 
 class TstGpsdWindow : public QObject {
     Q_OBJECT
-    QTemporaryDir dir_;
-    DialectRegistry registry_ = makeBuiltinRegistry();
-    link::TransportFactory transports_ = app::makeTransportFactory(registry_);
-
 private slots:
     void aGpsdSourceFillsTheViewsAndSaysWhyNothingIsSent() {
         if (link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
@@ -47,9 +39,8 @@ private slots:
         GpsdProcess gpsd(sim.device, 115200);
         QVERIFY2(gpsd.ok(), qPrintable(gpsd.error));
 
-        QSettings settings(dir_.filePath("settings.ini"), QSettings::IniFormat);
-        app::MainWindow w(registry_, transports_, &settings);
-        w.show();
+        gnss::test::LaptopWindow window;
+        app::MainWindow &w = window.w;
         const SourceSpec spec{SourceSpec::Kind::Gpsd,
                               QStringLiteral("127.0.0.1:%1").arg(gpsd.port)};
         w.connectAtStart(spec);
