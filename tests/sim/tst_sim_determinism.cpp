@@ -29,16 +29,19 @@ std::string run(std::string_view dialect, std::uint32_t seed, int baud = 0) {
     return out;
 }
 
+// A row for each dialect the registry can simulate, in a column "dialect".
+void dialectRows() {
+    QTest::addColumn<QString>("dialect");
+    for (std::string_view d : simulatedDialects(builtinRegistry()))
+        QTest::newRow(std::string(d).c_str()) << QString::fromUtf8(d.data(), d.size());
+}
+
 } // namespace
 
 class TstSimDeterminism : public QObject {
     Q_OBJECT
 private slots:
-    void sameSeedSameBytes_data() {
-        QTest::addColumn<QString>("dialect");
-        for (std::string_view d : simulatedDialects(builtinRegistry()))
-            QTest::newRow(std::string(d).c_str()) << QString::fromUtf8(d.data(), d.size());
-    }
+    void sameSeedSameBytes_data() { dialectRows(); }
     void sameSeedSameBytes() {
         QFETCH(QString, dialect);
         const std::string d = dialect.toStdString();
@@ -50,11 +53,7 @@ private slots:
         QCOMPARE(s.checksumErrors, 0);
         QCOMPARE(s.decodeErrors, 0);
     }
-    void outputIsLimitedByTheLineSpeed_data() {
-        QTest::addColumn<QString>("dialect");
-        for (std::string_view d : simulatedDialects(builtinRegistry()))
-            QTest::newRow(std::string(d).c_str()) << QString::fromUtf8(d.data(), d.size());
-    }
+    void outputIsLimitedByTheLineSpeed_data() { dialectRows(); }
     void outputIsLimitedByTheLineSpeed() {
         QFETCH(QString, dialect);
         SimOptions o;

@@ -31,12 +31,18 @@ Counts count(const std::string &bytes) {
     return c;
 }
 
-std::string run(const std::string &faults, double seconds, std::string_view dialect = "nmea") {
+// A simulated receiver of `dialect` with `faults` (as --faults takes them), from `seed`.
+std::unique_ptr<Receiver> faultyReceiver(std::string_view faults, std::string_view dialect = "nmea",
+                                         std::uint32_t seed = 1) {
     std::string error;
     SimOptions o;
-    o.seed = 9;
+    o.seed = seed;
     o.faults = *parseFaults(faults, error);
-    auto rx = makeReceiver(dialect, o);
+    return makeReceiver(dialect, o);
+}
+
+std::string run(const std::string &faults, double seconds, std::string_view dialect = "nmea") {
+    auto rx = faultyReceiver(faults, dialect, 9);
     rx->advance(seconds);
     return rx->takeOutput();
 }
@@ -120,10 +126,7 @@ private slots:
         QCOMPARE(crc24q("123456789"), 0xCDE703u); // CRC-24Q check value
     }
     void silenceStopsOutputForItsDuration() {
-        std::string error;
-        SimOptions o;
-        o.faults = *parseFaults("silence=3@5", error);
-        auto rx = makeReceiver("nmea", o);
+        auto rx = faultyReceiver("silence=3@5");
         rx->advance(4.5);
         QVERIFY(!rx->takeOutput().empty());
         rx->advance(3.0); // 4.5 .. 7.5: silent from 5 to 8
@@ -132,10 +135,7 @@ private slots:
         QVERIFY(!rx->takeOutput().empty());
     }
     void hangupFiresAfterItsTime() {
-        std::string error;
-        SimOptions o;
-        o.faults = *parseFaults("hangup=5", error);
-        auto rx = makeReceiver("nmea", o);
+        auto rx = faultyReceiver("hangup=5");
         rx->advance(4.9);
         QVERIFY(!rx->hungUp());
         rx->takeOutput();

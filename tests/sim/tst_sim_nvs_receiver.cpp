@@ -56,6 +56,15 @@ ReplyVerdict verdict(const std::string &body, const std::string &output) {
     return v;
 }
 
+// The verdict on what `rx` answers to `body`, sent `after` seconds on (what it said before that
+// is dropped).
+ReplyVerdict answer(Receiver &rx, double after, const std::string &body) {
+    rx.advance(after);
+    rx.takeOutput();
+    command(rx, body);
+    return verdict(body, rx.takeOutput());
+}
+
 // The dialect's encoder of a proprietary sentence the receiver sends, applied to its decoding
 // (PNVGTMC at the default position decimals, 4.2); nullopt when the address has none.
 std::optional<std::string> reencoded(const std::string &line) {
@@ -220,11 +229,7 @@ private slots:
     }
     void pvtRateChangesTheOutputRate() {
         auto rx = makeNvs();
-        rx->advance(0.5);
-        rx->takeOutput();
-        command(*rx, "PNVGRTK,PVTRATE,1");
-        const std::string reply = rx->takeOutput();
-        QCOMPARE(int(verdict("PNVGRTK,PVTRATE,1", reply)), int(ReplyVerdict::Accepted));
+        QCOMPARE(int(answer(*rx, 0.5, "PNVGRTK,PVTRATE,1")), int(ReplyVerdict::Accepted));
         rx->advance(10.0);
         QCOMPARE(summarize(rx->takeOutput(), "nvs").byType.at("GGA"), 10);
         QCOMPARE(static_cast<NvsReceiver &>(*rx).settings().value("rtk.PVTRATE"), std::string("1"));
@@ -243,10 +248,7 @@ private slots:
     void outOfRangeValuesAreNotTakenAndTheReplySaysSo() {
         QFETCH(QString, body);
         auto rx = makeNvs();
-        rx->advance(0.1);
-        rx->takeOutput();
-        command(*rx, body.toStdString());
-        QCOMPARE(int(verdict(body.toStdString(), rx->takeOutput())), int(ReplyVerdict::Refused));
+        QCOMPARE(int(answer(*rx, 0.1, body.toStdString())), int(ReplyVerdict::Refused));
         QCOMPARE(rx->baud(), 115200);
         QCOMPARE(rx->epochInterval(), 0.2);
     }
@@ -264,10 +266,7 @@ private slots:
     void everyCommandIsAnsweredAsItsReplyRuleExpects() {
         QFETCH(QString, body);
         auto rx = makeNvs();
-        rx->advance(4.1);
-        rx->takeOutput();
-        command(*rx, body.toStdString());
-        QCOMPARE(int(verdict(body.toStdString(), rx->takeOutput())), int(ReplyVerdict::Accepted));
+        QCOMPARE(int(answer(*rx, 4.1, body.toStdString())), int(ReplyVerdict::Accepted));
     }
     void stationListAddShowRemove() {
         auto rx = makeNvs();
@@ -363,11 +362,7 @@ private slots:
     void rzaAnswersAtTheOldSpeedThenSwitches() {
         auto rx = makeNvs();
         rx->setLineBaud(115200);
-        rx->advance(0.3);
-        rx->takeOutput();
-        command(*rx, "PNVGRZA,0,9600,1");
-        const std::string reply = rx->takeOutput();
-        QCOMPARE(int(verdict("PNVGRZA,0,9600,1", reply)), int(ReplyVerdict::Accepted));
+        QCOMPARE(int(answer(*rx, 0.3, "PNVGRZA,0,9600,1")), int(ReplyVerdict::Accepted));
         QCOMPARE(rx->baud(), 9600);
         rx->advance(1);
         const std::string garbage = rx->takeOutput();
