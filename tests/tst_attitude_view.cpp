@@ -5,6 +5,7 @@
 #include "dialects.h"
 #include "label_text.h"
 #include "models/receiver_state_model.h"
+#include "screenshot.h"
 #include "state/state_tracker.h"
 #include "track_state.h"
 #include "views/attitude_view.h"
@@ -121,8 +122,7 @@ private slots:
         view.resize(820, 480);
         const QImage img = view.grab().toImage();
         QVERIFY(!img.isNull());
-        const QByteArray dir = qgetenv("GNSS_SCREENSHOT_DIR");
-        if (!dir.isEmpty()) QVERIFY(img.save(QString::fromLocal8Bit(dir) + "/attitude_view.png"));
+        QVERIFY(test::saveScreenshot(img, "attitude_view.png"));
     }
 };
 

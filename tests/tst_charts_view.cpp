@@ -2,6 +2,7 @@
 // and the capacity bound, gaps for missing values, series picking, and redraw on the timer only.
 #include "models/receiver_state_model.h"
 #include "models/time_series_model.h"
+#include "screenshot.h"
 #include "views/charts_view.h"
 
 #include <QCategoryAxis>
@@ -206,10 +207,7 @@ private slots:
         QCOMPARE(cat->categoriesLabels(), QStringList({"DGNSS", "RTK float", "RTK fixed"}));
         QCOMPARE(cat->min(), 3.5);
         QCOMPARE(cat->max(), 6.5);
-        const QByteArray dir = qgetenv("GNSS_SCREENSHOT_DIR");
-        if (!dir.isEmpty())
-            QVERIFY(view.grab().toImage().save(QString::fromLocal8Bit(dir) +
-                                               "/charts_view_dark.png"));
+        QVERIFY(test::saveScreenshot(view.grab().toImage(), "charts_view_dark.png"));
     }
 
     void screenshotReadsWell() {
@@ -229,8 +227,7 @@ private slots:
         view.redraw();
         const QImage img = view.grab().toImage();
         QVERIFY(!img.isNull());
-        const QByteArray dir = qgetenv("GNSS_SCREENSHOT_DIR");
-        if (!dir.isEmpty()) QVERIFY(img.save(QString::fromLocal8Bit(dir) + "/charts_view.png"));
+        QVERIFY(test::saveScreenshot(img, "charts_view.png"));
     }
 };
 

@@ -3,6 +3,7 @@
 // typed reference, and the figures shown by the view.
 #include "models/position_scatter.h"
 #include "models/receiver_state_model.h"
+#include "screenshot.h"
 #include "views/deviation_view.h"
 
 #include <QLabel>
@@ -171,8 +172,7 @@ private slots:
         view.refresh();
         const QImage img = view.grab().toImage();
         QVERIFY(!img.isNull());
-        const QByteArray dir = qgetenv("GNSS_SCREENSHOT_DIR");
-        if (!dir.isEmpty()) QVERIFY(img.save(QString::fromLocal8Bit(dir) + "/deviation_view.png"));
+        QVERIFY(test::saveScreenshot(img, "deviation_view.png"));
     }
 };
 

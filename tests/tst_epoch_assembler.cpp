@@ -26,6 +26,11 @@ std::vector<Epoch> epochsOf(const std::vector<std::string> &bodies, const char *
     return out;
 }
 
+// A 3D fix at `time` (hhmmss.ss) with four satellites, 545.4 m above the geoid.
+std::string gga(const std::string &time, const std::string &talker = "GP") {
+    return talker + "GGA," + time + ",4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,";
+}
+
 const SatelliteInView *find(const Epoch &e, Constellation c, int prn, int signal = 0) {
     for (const auto &s : e.satellites)
         if (s.sat.system == c && s.sat.prn == prn && s.signalId == signal) return &s;
@@ -40,12 +45,12 @@ private slots:
     void sentencesOfOneFixTimeMakeOneEpoch() {
         const auto epochs = epochsOf({
                 "GPRMC,120000.00,A,4807.038,N,01131.000,E,1.0,90.0,230394,,,A",
-                "GPGGA,120000.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                gga("120000.00"),
                 "GPGSA,A,3,01,02,03,04,,,,,,,,,1.8,0.9,1.5",
                 "GPGSV,2,1,05,01,40,083,46,02,17,308,41,03,07,344,39,04,22,228,45",
                 "GPGSV,2,2,05,05,10,010,",
                 "GPRMC,120001.00,A,4807.038,N,01131.000,E,1.0,90.0,230394,,,A",
-                "GPGGA,120001.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                gga("120001.00"),
         });
         QCOMPARE(epochs.size(), std::size_t(2));
         const Epoch &e = epochs[0];
@@ -64,12 +69,12 @@ private slots:
 
     void incompleteGsvGroupIsNotApplied() {
         const auto epochs = epochsOf({
-                "GPGGA,120000.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                gga("120000.00"),
                 "GPGSV,2,1,05,01,40,083,46,02,17,308,41,03,07,344,39,04,22,228,45",
                 // part 2 lost
-                "GPGGA,120001.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                gga("120001.00"),
                 "GPGSV,2,2,05,05,10,010,",
-                "GPGGA,120002.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                gga("120002.00"),
         });
         QCOMPARE(epochs.size(), std::size_t(3));
         for (const auto &e : epochs) QVERIFY(e.satellites.empty());
@@ -77,7 +82,7 @@ private slots:
 
     void satelliteOnSeveralSignalsKeepsOneEntryPerSignal() {
         const auto epochs = epochsOf({
-                "GNGGA,120000.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                gga("120000.00", "GN"),
                 "GPGSV,1,1,02,05,40,083,46,07,20,100,40,1",
                 "GPGSV,1,1,01,05,40,083,38,8",
                 "GNGSA,A,3,05,07,,,,,,,,,,,1.8,0.9,1.5,1",
@@ -144,10 +149,10 @@ private slots:
 
     void dopsOfASlowerGsaHoldUntilTheNext() {
         const auto epochs = epochsOf({
-                "GPGGA,120000.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                gga("120000.00"),
                 "GPGSA,A,3,01,02,03,04,,,,,,,,,1.8,0.9,1.5",
-                "GPGGA,120001.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
-                "GPGGA,120002.00,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,",
+                gga("120001.00"),
+                gga("120002.00"),
         });
         QCOMPARE(epochs.size(), std::size_t(3));
         QCOMPARE(*epochs[2].pdop, 1.8);
@@ -155,8 +160,7 @@ private slots:
     }
 
     void timeWithoutDateStaysTimeOfDay() {
-        const auto epochs =
-                epochsOf({"GPGGA,235959.50,4807.038,N,01131.000,E,1,04,0.9,545.4,M,46.9,M,,"});
+        const auto epochs = epochsOf({gga("235959.50")});
         QCOMPARE(QString::fromStdString(epochs[0].timeText()), QString("23:59:59.500"));
     }
 };
