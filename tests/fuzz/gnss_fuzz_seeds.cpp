@@ -29,7 +29,6 @@
 #include <QFile>
 #include <QTemporaryDir>
 
-#include <bit>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -60,30 +59,21 @@ void writeRtcm(const std::string &name, const std::string &frames) {
 }
 
 MsmHeader msm(System s, unsigned type) {
-    MsmHeader h;
-    h.system = s;
-    h.msmType = type;
+    MsmHeader h = rtcm_test::msmHeader(s, type, satMask({2, 5, 13, 24}), sigMask({2, 9, 16}));
     h.station = 2003;
-    h.satelliteMask = satMask({2, 5, 13, 24});
-    h.signalMask = sigMask({2, 9, 16});
     if (s == System::Glonass) h.gloDayOfWeek = 5;
-    const unsigned cells = unsigned(std::popcount(h.satelliteMask) * std::popcount(h.signalMask));
-    for (unsigned i = 0; i < cells; ++i)
-        if (i % 3 != 1) h.cellMask |= std::uint64_t(1) << i;
     h.epochMs = 345600000u + type;
-    h.multipleMessage = type % 2 == 0;
-    h.iods = type;
-    h.smoothing = type > 4;
     return h;
 }
 
 void rtcmSeeds() {
-    StationArp arp;
-    arp.station = 2003;
-    arp.gps = arp.glonass = arp.galileo = true;
-    arp.x = 1114104.5999;
-    arp.y = -4850729.7108;
-    arp.z = 3975521.4643;
+    StationArp arp{.station = 2003,
+                   .gps = true,
+                   .glonass = true,
+                   .galileo = true,
+                   .x = 1114104.5999,
+                   .y = -4850729.7108,
+                   .z = 3975521.4643};
     const std::string s1005 = encodeStationArp(arp);
     writeRtcm("1005", s1005);
     arp.antennaHeight = 1.234;
@@ -115,19 +105,8 @@ void rtcmSeeds() {
 
     std::string ephemerides;
     for (unsigned number : {1019u, 1020u, 1042u, 1044u, 1045u, 1046u}) {
-        Ephemeris e;
-        e.satellite = 7;
-        e.week = 250;
-        e.iode = 42;
-        e.iodc = 42;
-        e.tocSeconds = 7200;
-        e.toeSeconds = 7200;
-        e.health = 0;
-        if (number == 1020) {
-            e.frequencyChannel = -3;
-            e.tkSeconds = 3600;
-            e.tbMinutes = 60;
-        }
+        Ephemeris e = rtcm_test::ephemeris(7, 250, 42, 42, 7200, 7200, 0);
+        if (number == 1020) e.frequencyChannel = -3, e.tkSeconds = 3600, e.tbMinutes = 60;
         const std::string f = encodeEphemeris(number, e);
         writeRtcm(std::to_string(number), f);
         ephemerides += f;
@@ -222,13 +201,12 @@ std::string httpChunks(std::string_view data, std::initializer_list<std::size_t>
 }
 
 void ntripSeeds() {
-    StationArp arp;
-    arp.station = 7;
-    arp.gps = arp.glonass = true;
-    arp.x = 2845455.0;
-    arp.y = 2160465.0;
-    arp.z = 5265313.0;
-    std::string rtcm = encodeStationArp(arp);
+    std::string rtcm = encodeStationArp({.station = 7,
+                                         .gps = true,
+                                         .glonass = true,
+                                         .x = 2845455.0,
+                                         .y = 2160465.0,
+                                         .z = 5265313.0});
     rtcm += encodeMsm(msm(System::Gps, 4));
     rtcm += encodeMsm(msm(System::Glonass, 4));
 

@@ -1,12 +1,14 @@
 #pragma once
-// Small helpers shared by the RTCM suites (and the fuzz seeds): hex fixtures, MSM masks,
-// frames ↔ payloads.
+// Small helpers shared by the RTCM suites (and the fuzz seeds): hex fixtures, MSM masks and
+// headers, ephemerides, frames ↔ payloads.
 #include "rtcm/rtcm_framer.h"
 #include "rtcm/rtcm_messages.h"
 
+#include <bit>
 #include <cctype>
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -45,6 +47,41 @@ inline std::uint32_t sigMask(std::initializer_list<unsigned> ids) {
     std::uint32_t m = 0;
     for (const unsigned id : ids) m |= std::uint32_t(1) << (32 - id);
     return m;
+}
+
+// An MSM header of `type` with these masks and not every satellite on every signal (every third
+// cell dropped); what follows from the type: a multiple message on even types, IODS = type,
+// smoothing above MSM4. Station, epoch and the rest are the caller's.
+inline gnss::rtcm::MsmHeader msmHeader(gnss::rtcm::System s, unsigned type,
+                                       std::uint64_t satelliteMask, std::uint32_t signalMask) {
+    gnss::rtcm::MsmHeader h;
+    h.system = s;
+    h.msmType = type;
+    h.satelliteMask = satelliteMask;
+    h.signalMask = signalMask;
+    const unsigned cells = unsigned(std::popcount(satelliteMask) * std::popcount(signalMask));
+    for (unsigned i = 0; i < cells; ++i)
+        if (i % 3 != 1) h.cellMask |= std::uint64_t(1) << i;
+    h.multipleMessage = type % 2 == 0;
+    h.iods = type;
+    h.smoothing = type > 4;
+    return h;
+}
+
+// An ephemeris's identifying fields, in Ephemeris's order (GPS, QZSS and BeiDou send them all,
+// Galileo no IODC or health); GLONASS's and Galileo's own fields are the caller's.
+inline gnss::rtcm::Ephemeris ephemeris(unsigned satellite, std::optional<unsigned> week,
+                                       std::optional<unsigned> iode, std::optional<unsigned> iodc,
+                                       std::optional<std::uint32_t> toc,
+                                       std::optional<std::uint32_t> toe,
+                                       std::optional<unsigned> health) {
+    return {.satellite = satellite,
+            .week = week,
+            .iode = iode,
+            .iodc = iodc,
+            .tocSeconds = toc,
+            .toeSeconds = toe,
+            .health = health};
 }
 
 inline std::span<const std::uint8_t> bytesOf(std::string_view s) {

@@ -13,62 +13,27 @@ Q_DECLARE_METATYPE(Ephemeris)
 
 namespace {
 
+// Each message's fields at or near their limits; ephemeris(satellite, week, IODE, IODC, toc, toe,
+// health).
 Ephemeris sample(unsigned number) {
     Ephemeris e;
     switch (number) {
-    case 1019:
-        e.satellite = 31;
-        e.week = 1023;
-        e.iode = 255;
-        e.iodc = 1023;
-        e.tocSeconds = 604784; // 16 s units: 37799 × 16
-        e.toeSeconds = 7200;
-        e.health = 63;
-        break;
-    case 1020:
-        e.satellite = 24;
-        e.frequencyChannel = -7;
-        e.tkSeconds = 23 * 3600 + 59 * 60 + 30;
-        e.health = 1;
-        e.tbMinutes = 96 * 15 - 15;
-        break;
-    case 1042:
-        e.satellite = 63;
-        e.week = 8191;
-        e.iode = 31;
-        e.iodc = 17;
-        e.tocSeconds = 604792; // 8 s units
-        e.toeSeconds = 8;
-        e.health = 1;
-        break;
-    case 1044:
-        e.satellite = 10;
-        e.week = 2;
-        e.iode = 77;
-        e.iodc = 589;
-        e.tocSeconds = 16;
-        e.toeSeconds = 604784;
-        e.health = 33;
-        break;
+    case 1019: return ephemeris(31, 1023, 255, 1023, 604784, 7200, 63); // toc 37799 × 16 s
+    case 1042: return ephemeris(63, 8191, 31, 17, 604792, 8, 1);        // toc in 8 s units
+    case 1044: return ephemeris(10, 2, 77, 589, 16, 604784, 33);
     case 1045:
-        e.satellite = 36;
-        e.week = 4095;
-        e.iode = 1023;
-        e.tocSeconds = 604740; // 60 s units
-        e.toeSeconds = 600;
-        e.e5aHealth = 3;
-        e.e5aValidity = 1;
+        e = ephemeris(36, 4095, 1023, std::nullopt, 604740, 600, std::nullopt); // 60 s units
+        e.e5aHealth = 3, e.e5aValidity = 1;
         break;
     case 1046:
-        e.satellite = 1;
-        e.week = 1234;
-        e.iode = 99;
-        e.tocSeconds = 60;
-        e.toeSeconds = 120;
-        e.e5bHealth = 2;
-        e.e5bValidity = 0;
-        e.e1bHealth = 1;
-        e.e1bValidity = 1;
+        e = ephemeris(1, 1234, 99, std::nullopt, 60, 120, std::nullopt);
+        e.e5bHealth = 2, e.e5bValidity = 0, e.e1bHealth = 1, e.e1bValidity = 1;
+        break;
+    case 1020:
+        e.satellite = 24, e.health = 1;
+        e.frequencyChannel = -7;
+        e.tkSeconds = 23 * 3600 + 59 * 60 + 30;
+        e.tbMinutes = 96 * 15 - 15;
         break;
     }
     return e;

@@ -81,12 +81,11 @@ private slots:
     }
 
     void qzssMsmJsonAlsoGivesPrns() {
-        MsmHeader h;
-        h.system = System::Qzss;
-        h.msmType = 4;
-        h.satelliteMask = std::uint64_t(1) << 63;
-        h.signalMask = 1u << 30;
-        h.cellMask = 1;
+        const MsmHeader h{.system = System::Qzss,
+                          .msmType = 4,
+                          .satelliteMask = std::uint64_t(1) << 63,
+                          .signalMask = 1u << 30,
+                          .cellMask = 1};
         const QJsonObject o = objectOf(jsonOf(encodeMsm(h)));
         QCOMPARE(o["tow_ms"].toInt(), 0);
         QCOMPARE(o["satellites"].toArray(), (QJsonArray{1}));
@@ -143,13 +142,11 @@ private slots:
     }
 
     void theSummaryCountsFramesGarbageAndTypes() {
-        MsmHeader h;
-        h.system = System::Gps;
-        h.msmType = 7;
-        h.satelliteMask = std::uint64_t(1) << 60;
-        h.signalMask = 1u << 30;
-        h.cellMask = 1;
-        const std::string msm = encodeMsm(h);
+        const std::string msm = encodeMsm({.system = System::Gps,
+                                           .msmType = 7,
+                                           .satelliteMask = std::uint64_t(1) << 60,
+                                           .signalMask = 1u << 30,
+                                           .cellMask = 1});
         std::string bad = msm;
         bad[10] ^= 1;
         const std::string stream = "junk" + kExample1005 + msm + bad + msm + "$GPGGA\r\n" +

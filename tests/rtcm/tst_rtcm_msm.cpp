@@ -15,53 +15,34 @@ Q_DECLARE_METATYPE(System)
 
 namespace {
 
+// The satellites and signals of a plausible header for each system.
+struct Masks {
+    std::uint64_t satellite;
+    std::uint32_t signal;
+};
+
+Masks masksFor(System s) {
+    switch (s) {
+    case System::Gps: return {satMask({2, 5, 13, 32}), sigMask({2, 15, 22})};
+    case System::Glonass: return {satMask({1, 8, 24}), sigMask({2, 8})};
+    case System::Galileo: return {satMask({4, 36}), sigMask({2, 14, 18, 22})};
+    case System::Sbas: return {satMask({4, 7}), sigMask({2})};
+    case System::Qzss: return {satMask({1, 2, 3, 7}), sigMask({2, 16})};
+    case System::BeiDou: return {satMask({6, 19, 46, 63}), sigMask({2, 8, 14, 22})};
+    case System::NavIC: return {satMask({1, 9}), sigMask({8, 22})};
+    }
+    return {};
+}
+
 // A plausible header for each system: its own satellites and signals.
 MsmHeader headerFor(System s, unsigned type) {
-    MsmHeader h;
-    h.system = s;
-    h.msmType = type;
+    const Masks masks = masksFor(s);
+    MsmHeader h = msmHeader(s, type, masks.satellite, masks.signal);
     h.station = 100 * static_cast<unsigned>(s) + type;
-    switch (s) {
-    case System::Gps:
-        h.satelliteMask = satMask({2, 5, 13, 32});
-        h.signalMask = sigMask({2, 15, 22});
-        break;
-    case System::Glonass:
-        h.satelliteMask = satMask({1, 8, 24});
-        h.signalMask = sigMask({2, 8});
-        h.gloDayOfWeek = 3;
-        break;
-    case System::Galileo:
-        h.satelliteMask = satMask({4, 36});
-        h.signalMask = sigMask({2, 14, 18, 22});
-        break;
-    case System::Sbas:
-        h.satelliteMask = satMask({4, 7});
-        h.signalMask = sigMask({2});
-        break;
-    case System::Qzss:
-        h.satelliteMask = satMask({1, 2, 3, 7});
-        h.signalMask = sigMask({2, 16});
-        break;
-    case System::BeiDou:
-        h.satelliteMask = satMask({6, 19, 46, 63});
-        h.signalMask = sigMask({2, 8, 14, 22});
-        break;
-    case System::NavIC:
-        h.satelliteMask = satMask({1, 9});
-        h.signalMask = sigMask({8, 22});
-        break;
-    }
-    const unsigned cells = unsigned(std::popcount(h.satelliteMask) * std::popcount(h.signalMask));
-    // Not every satellite on every signal: drop every third cell.
-    for (unsigned i = 0; i < cells; ++i)
-        if (i % 3 != 1) h.cellMask |= std::uint64_t(1) << i;
+    if (s == System::Glonass) h.gloDayOfWeek = 3;
     h.epochMs = h.gloDayOfWeek ? 86399999u - type : 604799000u + type;
-    h.multipleMessage = type % 2 == 0;
-    h.iods = type;
     h.clockSteering = type % 4;
     h.externalClock = (type + 1) % 4;
-    h.smoothing = type > 4;
     h.smoothingInterval = 7 - type;
     return h;
 }
