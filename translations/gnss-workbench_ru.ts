@@ -52,7 +52,7 @@
 <context>
     <name>Hemisphere</name>
     <message>
-        <location filename="../ui/views/value_format.cpp" line="+106"/>
+        <location filename="../ui/models/value_format.cpp" line="+114"/>
         <source>N</source>
         <translation>с. ш.</translation>
     </message>
@@ -93,7 +93,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/cli/cmd_config.cpp" line="+104"/>
+        <location filename="../app/cli/cmd_config.cpp" line="+85"/>
         <source>reading the settings failed: %1</source>
         <translation>не удалось прочитать настройки: %1</translation>
     </message>
@@ -220,11 +220,23 @@
     <name>Refusal</name>
     <message>
         <location filename="../protocol/core/settings_schema.cpp" line="+77"/>
+        <location filename="../protocol/geostar/geostar_encode_util.cpp" line="+11"/>
+        <location filename="../protocol/geostar/geostar_status_words.cpp" line="+61"/>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+76"/>
+        <location line="+61"/>
+        <location line="+6"/>
+        <location filename="../protocol/nemerix/nemerix_hex.cpp" line="+83"/>
+        <location line="+33"/>
+        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="+63"/>
+        <location line="+91"/>
+        <location filename="../protocol/nemerix/nemerix_settings_report.cpp" line="+138"/>
+        <location filename="../protocol/nvs/nvs_output_fields.cpp" line="+26"/>
         <source>%1: %2 is out of range; accepted: %3</source>
         <translation>%1: %2 вне допустимого диапазона; допустимо: %3</translation>
     </message>
     <message>
         <location line="+3"/>
+        <location filename="../protocol/nemerix/nemerix_hex.cpp" line="-30"/>
         <source>%1: %2 is out of range; accepted: %3 %4</source>
         <translation>%1: %2 вне допустимого диапазона; допустимо: %3 %4</translation>
     </message>
@@ -235,11 +247,15 @@
     </message>
     <message>
         <location line="+13"/>
+        <location filename="../protocol/geostar/geostar_encode_util.cpp" line="+18"/>
         <source>%1: the value is %2 characters long; at most %3</source>
         <translation>%1: значение длиной %2 символов; допустимо не более %3</translation>
     </message>
     <message>
         <location line="+6"/>
+        <location filename="../protocol/geostar/geostar_encode_util.cpp" line="+6"/>
+        <location filename="../protocol/nemerix/nemerix_prefix.cpp" line="+45"/>
+        <location filename="../protocol/nvs/nvs_output_fields.cpp" line="+94"/>
         <source>%1: character not allowed in a value: &apos;%2&apos;</source>
         <translation>%1: недопустимый символ в значении: «%2»</translation>
     </message>
@@ -250,16 +266,26 @@
     </message>
     <message>
         <location line="+4"/>
+        <location filename="../protocol/nemerix/nemerix_settings_values.cpp" line="+179"/>
+        <location filename="../protocol/nvs/nvs_idl.cpp" line="+159"/>
+        <location filename="../protocol/nvs/nvs_tst.cpp" line="+57"/>
         <source>%1: expected an integer, got &apos;%2&apos;</source>
         <translation>%1: ожидается целое число, получено «%2»</translation>
     </message>
     <message>
         <location line="+7"/>
+        <location filename="../protocol/nemerix/nemerix_hex.cpp" line="-11"/>
+        <location filename="../protocol/nemerix/nemerix_settings_values.cpp" line="+6"/>
+        <location filename="../protocol/nvs/nvs_output_fields.cpp" line="-47"/>
         <source>%1: expected a number, got &apos;%2&apos;</source>
         <translation>%1: ожидается число, получено «%2»</translation>
     </message>
     <message>
         <location line="+11"/>
+        <location filename="../protocol/geostar/geostar_encode_util.cpp" line="-19"/>
+        <location filename="../protocol/nvs/nvs_idl.cpp" line="-13"/>
+        <location filename="../protocol/nvs/nvs_output_fields.cpp" line="+32"/>
+        <location filename="../protocol/nvs/nvs_timemark.cpp" line="+62"/>
         <source>%1: &apos;%2&apos; is not one of: %3</source>
         <translation>%1: «%2» не входит в список: %3</translation>
     </message>
@@ -274,49 +300,40 @@
         <translation>%1: символ «,» в этом значении недопустим</translation>
     </message>
     <message>
-        <location filename="../protocol/geostar/geostar_schema.cpp" line="+186"/>
-        <source>unknown setting &apos;%1&apos; (geostar settings: %2)</source>
-        <translation>неизвестная настройка «%1» (настройки geostar: %2)</translation>
-    </message>
-    <message>
-        <location line="+30"/>
+        <location filename="../protocol/geostar/geostar_schema.cpp" line="+60"/>
         <source>%1: &apos;%2&apos; is reported by the receiver but cannot be set with an NMEA command</source>
         <translation>%1: значение «%2» приёмник сообщает, но установить его командой NMEA нельзя</translation>
     </message>
     <message>
-        <location filename="../protocol/nemerix/nemerix_settings.cpp" line="+81"/>
-        <source>%1: unknown setting of the nemerix dialect</source>
-        <translation>%1: неизвестная настройка диалекта nemerix</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location filename="../protocol/nemerix/nemerix_settings.cpp" line="+90"/>
+        <location filename="../protocol/nemerix/nemerix_settings_values.cpp" line="+64"/>
         <source>fix.timeZone: &apos;%1&apos; is not accepted; accepted: h:m with hours -13..13 and minutes 0..59</source>
         <translation>fix.timeZone: «%1» недопустимо; допустимо: ч:м, часы -13..13, минуты 0..59</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+7"/>
         <source>fix.timeZone: &apos;%1&apos; is UTC itself: write 0:0</source>
         <translation>fix.timeZone: «%1» — это и есть UTC: пишите 0:0</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+10"/>
         <source>datum.mapDatum: %1 is out of range; accepted: 0..218 (internal table) or 500 (user defined)</source>
         <translation>datum.mapDatum: %1 вне допустимого диапазона; допустимо: 0..218 (встроенная таблица) или 500 (задаётся пользователем)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>datum.mapDatum: required with any datum.* setting; accepted: 0..218 or 500</source>
         <translation>datum.mapDatum: обязательна вместе с любой настройкой datum.*; допустимо: 0..218 или 500</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+40"/>
         <source>power.offPeriod: only used with power.mode=1 (LDCM1)</source>
         <translation>power.offPeriod: используется только при power.mode=1 (LDCM1)</translation>
     </message>
     <message>
-        <location line="+35"/>
-        <source>serial.baud: required with serial.protocol / serial.parity (PNMRX100 sends all three); accepted: 1200, 2400, 4800, 9600, 19200, 38400, 57600</source>
-        <translation>serial.baud: обязательна вместе с serial.protocol / serial.parity (PNMRX100 передаёт все три); допустимо: 1200, 2400, 4800, 9600, 19200, 38400, 57600</translation>
+        <location line="+44"/>
+        <source>serial.baud: required with serial.protocol / serial.parity (PNMRX100 sends all three); accepted: %1</source>
+        <translation>serial.baud: обязательна вместе с serial.protocol / serial.parity (PNMRX100 передаёт все три); допустимо: %1</translation>
     </message>
     <message>
         <location filename="../protocol/nvs/nvs_encode_util.cpp" line="+8"/>
@@ -334,7 +351,7 @@
         <translation>rtk.%1: нужно значение (пустое значение — это запрос)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+23"/>
         <source>a value before any parameter name</source>
         <translation>значение перед именем параметра</translation>
     </message>
@@ -344,12 +361,12 @@
         <translation>в PNVGRTK не назван ни один параметр</translation>
     </message>
     <message>
-        <location filename="../protocol/nvs/nvs_settings.cpp" line="+43"/>
+        <location filename="../protocol/nvs/nvs_settings.cpp" line="+42"/>
         <source>%1: &apos;%2&apos; is not ADDRESS:RATE (rate in PVT intervals, &gt;= 1)</source>
         <translation>%1: «%2» не в виде АДРЕС:ТЕМП (темп в интервалах PVT, &gt;= 1)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>idl.stations: &apos;%1&apos; is not ID:ICB</source>
         <translation>idl.stations: «%1» не в виде ID:ICB</translation>
     </message>
@@ -359,22 +376,18 @@
         <translation>idl.stations: число станций %1 вне допустимого диапазона; допустимо: 0..32</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>unknown setting &apos;%1&apos; (gnss-cli schema nvs lists them)</source>
-        <translation>неизвестная настройка «%1» (их список выводит gnss-cli schema nvs)</translation>
-    </message>
-    <message>
-        <location line="+57"/>
+        <location line="+103"/>
         <source>PNVGNME sets time and position decimals together: give %1 too</source>
         <translation>PNVGNME задаёт число знаков времени и координат вместе: укажите также %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+33"/>
         <source>PNVGRZA sets baud rate and protocol together: give %1 too</source>
         <translation>PNVGRZA задаёт скорость и протокол вместе: укажите также %1</translation>
     </message>
     <message>
-        <location filename="../protocol/core/field_reader.cpp" line="+9"/>
+        <location filename="../protocol/core/field_reader.cpp" line="+32"/>
+        <location filename="../protocol/geostar/geostar_encode_util.cpp" line="+6"/>
         <source>field %1 (%2): %3: &apos;%4&apos;</source>
         <translation>поле %1 (%2): %3: «%4»</translation>
     </message>
@@ -384,35 +397,35 @@
         <translation>ожидается не менее %1 полей, получено %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+6"/>
         <source>not an integer</source>
         <translation>не целое число</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+7"/>
         <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="+119"/>
         <location filename="../protocol/nemerix/nemerix_nav_init.cpp" line="+37"/>
         <location line="+2"/>
         <location filename="../protocol/nmea/gsv.cpp" line="+44"/>
         <location line="+2"/>
-        <location filename="../protocol/nmea/zda.cpp" line="+20"/>
+        <location filename="../protocol/nmea/zda.cpp" line="+18"/>
         <location line="+2"/>
         <source>out of range</source>
         <translation>вне допустимого диапазона</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <location filename="../protocol/nemerix/nemerix_hex.cpp" line="+15"/>
+        <location line="+7"/>
+        <location filename="../protocol/nemerix/nemerix_hex.cpp" line="-60"/>
         <source>not hexadecimal</source>
         <translation>не шестнадцатеричное число</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+5"/>
         <source>expected one character</source>
         <translation>ожидается один символ</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+10"/>
         <source>not a ddmm.mmmm coordinate</source>
         <translation>не координата вида ддмм.мммм</translation>
     </message>
@@ -422,12 +435,12 @@
         <translation>неверное полушарие</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+16"/>
         <source>not an hhmmss.ss time</source>
         <translation>не время вида ччммсс.сс</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+5"/>
         <source>not a ddmmyy date</source>
         <translation>не дата вида ддммгг</translation>
     </message>
@@ -437,7 +450,7 @@
         <translation>не число</translation>
     </message>
     <message>
-        <location filename="../protocol/core/sentence.cpp" line="+68"/>
+        <location filename="../protocol/core/sentence.cpp" line="+59"/>
         <source>not a sentence</source>
         <translation>не сообщение NMEA</translation>
     </message>
@@ -448,8 +461,8 @@
     </message>
     <message>
         <location line="+62"/>
-        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="+105"/>
-        <location filename="../protocol/nemerix/nemerix_version.cpp" line="+29"/>
+        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="-39"/>
+        <location filename="../protocol/nemerix/nemerix_version.cpp" line="+31"/>
         <source>too many fields</source>
         <translation>слишком много полей</translation>
     </message>
@@ -479,7 +492,7 @@
         <translation>искажённое сообщение</translation>
     </message>
     <message>
-        <location filename="../protocol/geostar/geostar_nquery.cpp" line="+38"/>
+        <location filename="../protocol/geostar/geostar_nquery.cpp" line="+40"/>
         <source>not 0-3</source>
         <translation>не 0-3</translation>
     </message>
@@ -494,37 +507,40 @@
         <translation>в ответе NQUERY больше 10 кодов сообщений</translation>
     </message>
     <message>
-        <location filename="../protocol/geostar/geostar_rlm.cpp" line="+33"/>
+        <location filename="../protocol/geostar/geostar_rlm.cpp" line="+26"/>
+        <location line="+18"/>
         <source>not 15 hex digits</source>
         <translation>не 15 шестнадцатеричных цифр</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-14"/>
+        <location line="+19"/>
         <source>not one hex digit</source>
         <translation>не одна шестнадцатеричная цифра</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-14"/>
+        <location line="+18"/>
         <source>not 4 or 24 hex digits</source>
         <translation>не 4 и не 24 шестнадцатеричные цифры</translation>
     </message>
     <message>
-        <location filename="../protocol/geostar/geostar_rquery.cpp" line="+21"/>
+        <location filename="../protocol/geostar/geostar_rquery.cpp" line="+25"/>
         <source>longer than 8 hex digits</source>
         <translation>длиннее 8 шестнадцатеричных цифр</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+39"/>
         <source>RQUERY reply needs three hex words</source>
         <translation>в ответе RQUERY должно быть три шестнадцатеричных слова</translation>
     </message>
     <message>
-        <location filename="../protocol/geostar/geostar_sgg.cpp" line="+29"/>
+        <location filename="../protocol/geostar/geostar_sgg.cpp" line="+31"/>
         <source>JAMDET: unexpected field %1</source>
         <translation>JAMDET: лишнее поле %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>unknown GPSGG message or command &apos;%1&apos;</source>
         <translation>неизвестное сообщение или команда GPSGG «%1»</translation>
     </message>
@@ -534,18 +550,19 @@
         <translation>GPSGG,%1 не принимает параметров</translation>
     </message>
     <message>
-        <location filename="../protocol/nemerix/nemerix_almanac.cpp" line="+54"/>
+        <location filename="../protocol/nemerix/nemerix_almanac.cpp" line="+49"/>
         <source>expected 12 (or 11) hex fields after the SV id, got %1</source>
         <translation>после номера спутника ожидается 12 (или 11) шестнадцатеричных полей, получено %1</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+80"/>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="-53"/>
         <source>out of range 1..32</source>
         <translation>вне диапазона 1..32</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../protocol/geostar/geostar_gns.cpp" line="+61"/>
+        <location filename="../protocol/nemerix/nemerix_almanac.cpp" line="+1"/>
         <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+20"/>
         <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="-21"/>
         <location line="+17"/>
@@ -627,6 +644,13 @@
         <translation>не помещается в разрядность поля</translation>
     </message>
     <message>
+        <location line="+85"/>
+        <location filename="../protocol/nemerix/nemerix_settings_report.cpp" line="+52"/>
+        <location filename="../protocol/nemerix/nemerix_version.cpp" line="+45"/>
+        <source>%1: missing</source>
+        <translation>%1: отсутствует</translation>
+    </message>
+    <message>
         <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="-38"/>
         <source>expected the SV id and 8 hex coefficients, got %1 fields</source>
         <translation>ожидаются номер спутника и 8 шестнадцатеричных коэффициентов, получено полей: %1</translation>
@@ -652,7 +676,7 @@
         <translation>широта, долгота и высота задаются вместе</translation>
     </message>
     <message>
-        <location filename="../protocol/nemerix/nemerix_output.cpp" line="+38"/>
+        <location filename="../protocol/nemerix/nemerix_output.cpp" line="+37"/>
         <location line="+66"/>
         <source>no message id given</source>
         <translation>не задан номер сообщения</translation>
@@ -714,7 +738,7 @@
         <translation>не 0, 1 или 2</translation>
     </message>
     <message>
-        <location filename="../protocol/nemerix/nemerix_settings_report.cpp" line="+36"/>
+        <location filename="../protocol/nemerix/nemerix_settings_report.cpp" line="-146"/>
         <source>not 0..4</source>
         <translation>не 0..4</translation>
     </message>
@@ -739,22 +763,52 @@
         <translation>номер сообщения вне диапазона 1..%1</translation>
     </message>
     <message>
-        <location filename="../protocol/nmea/query.cpp" line="+16"/>
-        <location filename="../protocol/nvs/nvs_cfg.cpp" line="+18"/>
+        <location filename="../protocol/nmea/query.cpp" line="+14"/>
+        <location filename="../protocol/nvs/nvs_cfg.cpp" line="+16"/>
         <location filename="../protocol/nvs/nvs_rzb.cpp" line="-4"/>
         <location line="+11"/>
         <source>empty</source>
         <translation>пусто</translation>
     </message>
     <message>
-        <location filename="../protocol/nvs/nvs_idl.cpp" line="+68"/>
+        <location filename="../protocol/nvs/nvs_idl.cpp" line="-79"/>
         <source>not MODE, ADD, REMOVE, CLEAR, SHOW or a list item</source>
         <translation>не MODE, ADD, REMOVE, CLEAR, SHOW и не элемент списка</translation>
     </message>
     <message>
-        <location filename="../protocol/nvs/nvs_rst.cpp" line="+17"/>
+        <location filename="../protocol/nvs/nvs_rst.cpp" line="+15"/>
         <source>not F or W</source>
         <translation>не F и не W</translation>
+    </message>
+    <message>
+        <location filename="../protocol/core/settings_plan.cpp" line="+11"/>
+        <source>unknown setting &apos;%1&apos; of the %2 dialect (gnss-cli schema %2 lists them)</source>
+        <translation>неизвестная настройка «%1» диалекта %2 (их список выводит gnss-cli schema %2)</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1 is read-only: the receiver reports it but no command sets it</source>
+        <translation>%1 только для чтения: приёмник сообщает её, но ни одна команда её не задаёт</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 is given twice</source>
+        <translation>%1 указана дважды</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>%1 is write-only: the receiver cannot report it</source>
+        <translation>%1 только для записи: приёмник не может её сообщить</translation>
+    </message>
+    <message>
+        <location filename="../protocol/nvs/nvs_tst.cpp" line="-8"/>
+        <source>%1: no test results</source>
+        <translation>%1: нет результатов тестов</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: a test result without its test name</source>
+        <translation>%1: результат теста без названия теста</translation>
     </message>
 </context>
 <context>
@@ -3723,7 +3777,7 @@
 <context>
     <name>Units</name>
     <message>
-        <location filename="../ui/views/value_format.cpp" line="+4"/>
+        <location filename="../ui/models/value_format.cpp" line="+4"/>
         <source>ft</source>
         <translation>фт</translation>
     </message>
@@ -4071,7 +4125,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::LogViewer</name>
     <message>
-        <location filename="../app/gui/log_viewer.cpp" line="+125"/>
+        <location filename="../app/gui/log_viewer.cpp" line="+135"/>
         <source>Log %1: unpacking, %2 %</source>
         <translation>Журнал %1: распаковка, %2 %</translation>
     </message>
@@ -4127,7 +4181,7 @@ Serial number: %3</source>
         <translation>экспорт уже идёт</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+47"/>
         <source>Exported epochs %1 to %2 to %3</source>
         <translation>Эпохи с %1 по %2 экспортированы в %3</translation>
     </message>
@@ -4146,7 +4200,7 @@ Serial number: %3</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+259"/>
+        <location line="+261"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
@@ -4343,7 +4397,12 @@ Serial number: %3</source>
         <translation>&amp;О программе GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
+        <source>&lt;b&gt;GNSS Workbench&lt;/b&gt; %1&lt;br&gt;Configure and monitor these receivers: %2.</source>
+        <translation>&lt;b&gt;GNSS Workbench&lt;/b&gt; %1&lt;br&gt;Настройка и наблюдение за приёмниками: %2.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>About &amp;Qt</source>
         <translation>О &amp;Qt</translation>
     </message>
@@ -4353,7 +4412,7 @@ Serial number: %3</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-287"/>
+        <location filename="../app/gui/main_window.cpp" line="-292"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -4469,12 +4528,12 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>&amp;Record...</source>
         <translation>&amp;Запись...</translation>
     </message>
@@ -4529,17 +4588,12 @@ Serial number: %3</source>
         <translation>Тёмное</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>About GNSS Workbench</source>
         <translation>О программе GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>&lt;b&gt;GNSS Workbench&lt;/b&gt; %1&lt;br&gt;Configure and monitor NVS NV08C-RTK, GeoStar GeoS-5, Nemerix and NMEA-0183 receivers.</source>
-        <translation>&lt;b&gt;GNSS Workbench&lt;/b&gt; %1&lt;br&gt;Настройка и мониторинг приёмников NVS NV08C-RTK, GeoStar GeoS-5, Nemerix и NMEA-0183.</translation>
-    </message>
-    <message>
-        <location line="+40"/>
+        <location line="+42"/>
         <source>NMEA-0183 (no vendor sentences)</source>
         <translation>NMEA-0183 (без фирменных сообщений)</translation>
     </message>
@@ -4804,7 +4858,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::config::SettingsEngine</name>
     <message>
-        <location filename="../protocol/config/settings_engine.cpp" line="+33"/>
+        <location filename="../protocol/config/settings_engine.cpp" line="+34"/>
         <source>verified</source>
         <translation>проверено</translation>
     </message>
@@ -4880,12 +4934,7 @@ Serial number: %3</source>
         <translation>%1 нельзя задать</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>the %1 dialect has no settings encoder</source>
-        <translation>у диалекта %1 нет кодировщика настроек</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>nothing was sent: %1</source>
         <translation>ничего не отправлено: %1</translation>
     </message>
@@ -4999,7 +5048,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::corrections::NtripSource</name>
     <message>
-        <location filename="../protocol/corrections/ntrip_source.cpp" line="+71"/>
+        <location filename="../protocol/corrections/ntrip_source.cpp" line="+82"/>
         <source>No mountpoint given for %1: pick one from its source table</source>
         <translation>Не указана точка подключения для %1: выберите её из таблицы источников</translation>
     </message>
@@ -5009,7 +5058,7 @@ Serial number: %3</source>
         <translation>Подключение к %1</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+17"/>
         <source>Cannot ask %1 for data: %2</source>
         <translation>Не удаётся запросить данные у %1: %2</translation>
     </message>
@@ -5092,7 +5141,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::corrections::SerialCorrectionSource</name>
     <message>
-        <location filename="../protocol/corrections/serial_correction_source.cpp" line="+11"/>
+        <location filename="../protocol/corrections/serial_correction_source.cpp" line="+13"/>
         <source>Receiving RTCM from %1</source>
         <translation>Приём RTCM от %1</translation>
     </message>
@@ -5130,12 +5179,12 @@ Serial number: %3</source>
 <context>
     <name>gnss::corrections::SourceTableRequest</name>
     <message>
-        <location filename="../protocol/corrections/source_table_request.cpp" line="+11"/>
+        <location filename="../protocol/corrections/source_table_request.cpp" line="+22"/>
         <source>No source table from %1 within %2 s</source>
         <translation>Таблица источников от %1 не получена за %2 с</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+8"/>
         <source>Cannot ask %1 for its source table: %2</source>
         <translation>Не удаётся запросить таблицу источников у %1: %2</translation>
     </message>
@@ -5178,7 +5227,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::corrections::TcpCorrectionSource</name>
     <message>
-        <location filename="../protocol/corrections/tcp_correction_source.cpp" line="+9"/>
+        <location filename="../protocol/corrections/tcp_correction_source.cpp" line="+11"/>
         <source>Connected to %1, waiting for RTCM</source>
         <translation>Подключено к %1, ожидание RTCM</translation>
     </message>
@@ -5201,7 +5250,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link</name>
     <message>
-        <location filename="../protocol/link/recording.cpp" line="+25"/>
+        <location filename="../protocol/link/recording.cpp" line="+38"/>
         <location line="+16"/>
         <source>Cannot read %1: %2</source>
         <translation>Не удаётся прочитать %1: %2</translation>
@@ -5212,12 +5261,12 @@ Serial number: %3</source>
         <translation>Не удаётся отобразить в память %1: %2</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <source>%1, line %2: %3</source>
         <translation>%1, строка %2: %3</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>not an index line</source>
         <translation>это не строка индекса</translation>
     </message>
@@ -5227,7 +5276,7 @@ Serial number: %3</source>
         <translation>неверное время хоста</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>offset %1 is before the previous record&apos;s %2</source>
         <translation>смещение %1 меньше смещения предыдущей записи (%2)</translation>
     </message>
@@ -5237,7 +5286,7 @@ Serial number: %3</source>
         <translation>смещение за концом файла данных</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>bad length</source>
         <translation>неверная длина</translation>
     </message>
@@ -5283,48 +5332,53 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::CommandQueue</name>
     <message>
-        <location filename="../protocol/link/command_queue.cpp" line="+47"/>
-        <location line="+199"/>
+        <location filename="../protocol/link/command_queue.cpp" line="+43"/>
+        <location line="+204"/>
         <source>accepted</source>
         <translation>принято</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-203"/>
         <source>refused</source>
         <translation>отклонено</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>timed out</source>
         <translation>тайм-аут</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>link lost</source>
         <translation>связь потеряна</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>cancelled</source>
         <translation>отменено</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>sent</source>
         <translation>отправлено</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>failed</source>
         <translation>ошибка</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+8"/>
+        <source>Too long: %1 characters with its line end; %2 takes at most %3</source>
+        <translation>Слишком длинное предложение: %1 символов вместе с концом строки; %2 принимает не более %3</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>Not a sentence: %1 (%2)</source>
         <translation>Некорректное сообщение: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+17"/>
         <source>cancelled before the receiver answered</source>
         <translation>отменено до ответа приёмника</translation>
     </message>
@@ -5411,7 +5465,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::GpsdTransport</name>
     <message>
-        <location filename="../protocol/link/gpsd_transport.cpp" line="+29"/>
+        <location filename="../protocol/link/gpsd_transport.cpp" line="+31"/>
         <location line="+3"/>
         <location line="+12"/>
         <source>a gpsd source is HOST[:PORT][/DEVICE], got &apos;%1&apos;</source>
@@ -5453,7 +5507,7 @@ Serial number: %3</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+37"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Не удаётся подключиться к %1: %2</translation>
     </message>
@@ -5610,7 +5664,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::SimulatorTransport</name>
     <message>
-        <location filename="../app/common/simulator_transport.cpp" line="+26"/>
+        <location filename="../app/common/simulator_transport.cpp" line="+27"/>
         <source>The simulator has no receiver of dialect &apos;%1&apos;</source>
         <translation>В имитаторе нет приёмника с диалектом «%1»</translation>
     </message>
@@ -5628,7 +5682,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::TcpTransport</name>
     <message>
-        <location filename="../protocol/link/tcp_transport.cpp" line="+16"/>
+        <location filename="../protocol/link/tcp_transport.cpp" line="+18"/>
         <source>Cannot connect to %1: no answer within %2 s</source>
         <translation>Не удаётся подключиться к %1: нет ответа за %2 с</translation>
     </message>
@@ -5682,12 +5736,12 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::AttitudeView</name>
     <message>
-        <location filename="../ui/views/attitude_view.cpp" line="+39"/>
+        <location filename="../ui/views/attitude_view.cpp" line="+28"/>
         <source>Attitude</source>
         <translation>Ориентация</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>Roll</source>
         <translation>Крен</translation>
     </message>
@@ -5712,7 +5766,7 @@ Serial number: %3</source>
         <translation>Ускорение</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>North</source>
         <translation>Север</translation>
     </message>
@@ -5732,7 +5786,7 @@ Serial number: %3</source>
         <translation>Метки времени (новые сверху)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+23"/>
         <source>UTC</source>
         <translation>UTC</translation>
     </message>
@@ -5804,7 +5858,7 @@ Serial number: %3</source>
         <translation> мин</translation>
     </message>
     <message>
-        <location line="+193"/>
+        <location line="+191"/>
         <source>minutes before the latest epoch</source>
         <translation>минуты до последней эпохи</translation>
     </message>
@@ -5842,7 +5896,7 @@ Serial number: %3</source>
         <translation>Очистить</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
         <source>Send</source>
         <translation>Отправить</translation>
     </message>
@@ -5867,7 +5921,7 @@ Serial number: %3</source>
         <translation>Команда для отправки, например %1 (контрольная сумма добавляется)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+37"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -5875,7 +5929,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CoordinateEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="+281"/>
+        <location filename="../ui/settings/setting_editors.cpp" line="+253"/>
         <location line="+1"/>
         <location line="+1"/>
         <location line="+8"/>
@@ -5941,7 +5995,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CorrectionsView</name>
     <message>
-        <location filename="../ui/views/corrections_view.cpp" line="+55"/>
+        <location filename="../ui/views/corrections_view.cpp" line="+56"/>
         <source>RTK fixed</source>
         <translation>RTK fixed</translation>
     </message>
@@ -6007,12 +6061,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+93"/>
+        <location line="+89"/>
         <source>not stored</source>
         <translation>не сохраняется</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-88"/>
         <source>Password</source>
         <translation>Пароль</translation>
     </message>
@@ -6038,12 +6092,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+145"/>
+        <location line="+141"/>
         <source>Start</source>
         <translation>Запустить</translation>
     </message>
     <message>
-        <location line="-141"/>
+        <location line="-137"/>
         <source>Not started</source>
         <translation>Не запущено</translation>
     </message>
@@ -6053,7 +6107,7 @@ Serial number: %3</source>
         <translation>Принято</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Message</source>
         <translation>Сообщение</translation>
     </message>
@@ -6078,7 +6132,7 @@ Serial number: %3</source>
         <translation>Описание</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
         <source>Correction age, s (last 10 min)</source>
         <translation>Возраст поправок, с (последние 10 мин)</translation>
     </message>
@@ -6265,7 +6319,7 @@ Serial number: %3</source>
         <translation>Среднее смещение:</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+92"/>
         <source>Reference not used: type degrees such as 55.75123456 N and 37.61812345 E (or signed, -33.9 for south). Centred on the mean.</source>
         <translation>Опорная точка не используется: введите градусы, например 55.75123456 N и 37.61812345 E (или со знаком: -33.9 для южной широты). Центр — по среднему положению.</translation>
     </message>
@@ -6363,7 +6417,7 @@ Serial number: %3</source>
         <translation>Базовая станция</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+35"/>
         <source>No data</source>
         <translation>Нет данных</translation>
     </message>
@@ -6376,7 +6430,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::LogChartsPanel</name>
     <message>
-        <location filename="../ui/logview/whole_log_panels.cpp" line="+26"/>
+        <location filename="../ui/logview/whole_log_panels.cpp" line="+24"/>
         <source>wheel: zoom · drag: pan · click: go there</source>
         <translation>колесо: масштаб · перетаскивание: сдвиг · щелчок: перейти</translation>
     </message>
@@ -6389,7 +6443,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::LogEventsView</name>
     <message>
-        <location filename="../ui/logview/log_events_view.cpp" line="+40"/>
+        <location filename="../ui/logview/log_events_view.cpp" line="+39"/>
         <source>Show:</source>
         <translation>Показать:</translation>
     </message>
@@ -6404,7 +6458,7 @@ Serial number: %3</source>
         <translation>Экспорт CSV…</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+7"/>
         <source>Time</source>
         <translation>Время</translation>
     </message>
@@ -6419,7 +6473,7 @@ Serial number: %3</source>
         <translation>Подробности</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
         <source>Fix change</source>
         <translation>Смена решения</translation>
     </message>
@@ -6552,7 +6606,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::LogPlot</name>
     <message>
-        <location filename="../ui/logview/log_plot.cpp" line="+49"/>
+        <location filename="../ui/logview/log_plot.cpp" line="+48"/>
         <source>Altitude</source>
         <translation>Высота</translation>
     </message>
@@ -6605,7 +6659,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::LogSummaryView</name>
     <message>
-        <location filename="../ui/logview/log_summary_view.cpp" line="+18"/>
+        <location filename="../ui/logview/log_summary_view.cpp" line="+19"/>
         <source>%1 s</source>
         <translation>%1 с</translation>
     </message>
@@ -6625,7 +6679,7 @@ Serial number: %3</source>
         <translation>Сохранить JSON…</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+44"/>
         <source>Indexing…</source>
         <translation>Индексация…</translation>
     </message>
@@ -6758,7 +6812,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::LogTrack</name>
     <message>
-        <location filename="../ui/logview/log_track.cpp" line="+166"/>
+        <location filename="../ui/logview/log_track.cpp" line="+165"/>
         <source>Indexing…</source>
         <translation>Индексация…</translation>
     </message>
@@ -6791,7 +6845,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::LogTrackPanel</name>
     <message>
-        <location filename="../ui/logview/whole_log_panels.cpp" line="+16"/>
+        <location filename="../ui/logview/whole_log_panels.cpp" line="+12"/>
         <source>Reference:</source>
         <translation>Опорная точка:</translation>
     </message>
@@ -6811,7 +6865,7 @@ Serial number: %3</source>
         <translation>Вписать</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+28"/>
         <source>Write the reference as latitude, longitude in degrees: 55.75, 37.62</source>
         <translation>Запишите опорную точку как широту, долготу в градусах: 55.75, 37.62</translation>
     </message>
@@ -6872,7 +6926,7 @@ Serial number: %3</source>
         <translation>Значение</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
         <source>Receiver: not identified yet</source>
         <translation>Приёмник: ещё не опознан</translation>
     </message>
@@ -6905,7 +6959,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::RtkView</name>
     <message>
-        <location filename="../ui/views/rtk_view.cpp" line="+47"/>
+        <location filename="../ui/views/rtk_view.cpp" line="+53"/>
         <source>This receiver has not reported RTK information.</source>
         <translation>Приёмник не сообщал сведений RTK.</translation>
     </message>
@@ -6925,7 +6979,7 @@ Serial number: %3</source>
         <translation> с</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Base station</source>
         <translation>Базовая станция</translation>
     </message>
@@ -6935,22 +6989,22 @@ Serial number: %3</source>
         <translation>Возраст поправок</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Distance to base</source>
         <translation>Расстояние до базы</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Base station id</source>
         <translation>Номер базовой станции</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>RTCM messages</source>
         <translation>Сообщения RTCM</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>RTCM good</source>
         <translation>RTCM без ошибок</translation>
     </message>
@@ -6960,58 +7014,58 @@ Serial number: %3</source>
         <translation>Ошибки RTCM</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Baseline base → rover</source>
         <translation>Базовая линия база → ровер</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+12"/>
+        <location line="+19"/>
         <source>North</source>
         <translation>Север</translation>
     </message>
     <message>
-        <location line="-11"/>
-        <location line="+12"/>
+        <location line="-17"/>
+        <location line="+19"/>
         <source>East</source>
         <translation>Восток</translation>
     </message>
     <message>
-        <location line="-11"/>
-        <location line="+12"/>
+        <location line="-17"/>
+        <location line="+19"/>
         <source>Vertical</source>
         <translation>Вертикаль</translation>
     </message>
     <message>
-        <location line="-11"/>
-        <location line="+8"/>
+        <location line="-17"/>
+        <location line="+11"/>
         <source>Length</source>
         <translation>Длина</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-9"/>
         <source>Course</source>
         <translation>Курс</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <location line="+5"/>
         <source>Pitch</source>
         <translation>Тангаж</translation>
     </message>
     <message>
-        <location line="-2"/>
+        <location line="-3"/>
         <source>Heading (antenna baseline)</source>
         <translation>Курс (линия антенн)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+15"/>
+        <location line="+22"/>
         <source>Heading</source>
         <translation>Курс</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-10"/>
         <source>Standard deviations</source>
         <translation>СКО</translation>
     </message>
@@ -7036,12 +7090,12 @@ Serial number: %3</source>
         <translation>Скорость на север</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Velocity east</source>
         <translation>Скорость на восток</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Velocity up</source>
         <translation>Скорость вверх</translation>
     </message>
@@ -7086,7 +7140,7 @@ Serial number: %3</source>
         <translation>EDOP</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+61"/>
         <source>Autonomous</source>
         <translation>Автономный</translation>
     </message>
@@ -7096,12 +7150,12 @@ Serial number: %3</source>
         <translation>Дифференциальный</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="-117"/>
         <source>s</source>
         <translation>с</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+151"/>
         <source>Correction age: %1</source>
         <translation>Возраст поправок: %1</translation>
     </message>
@@ -7514,7 +7568,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SignalLevelsView</name>
     <message>
-        <location filename="../ui/views/signal_levels_view.cpp" line="+120"/>
+        <location filename="../ui/views/signal_levels_view.cpp" line="+118"/>
         <source>No satellites in view</source>
         <translation>Нет видимых спутников</translation>
     </message>
@@ -7522,7 +7576,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SkyPlotView</name>
     <message>
-        <location filename="../ui/views/sky_plot_view.cpp" line="+112"/>
+        <location filename="../ui/views/sky_plot_view.cpp" line="+111"/>
         <source>%1: SNR %2 dB-Hz%3</source>
         <translation>%1: С/Ш %2 дБГц%3</translation>
     </message>
@@ -7577,7 +7631,7 @@ elevation %3°, azimuth %4°</source>
 <context>
     <name>gnss::ui::TextEditor</name>
     <message>
-        <location filename="../ui/settings/setting_editors.cpp" line="-60"/>
+        <location filename="../ui/settings/setting_editors.cpp" line="-56"/>
         <source>items separated by &apos;;&apos;</source>
         <translation>элементы через «;»</translation>
     </message>
@@ -7585,13 +7639,13 @@ elevation %3°, azimuth %4°</source>
 <context>
     <name>gnss::ui::TimeSeriesModel</name>
     <message>
-        <location filename="../ui/models/time_series_model.cpp" line="+145"/>
-        <location line="+37"/>
+        <location filename="../ui/models/time_series_model.cpp" line="+37"/>
+        <location line="+145"/>
         <source>Satellites used</source>
         <translation>Спутники в решении</translation>
     </message>
     <message>
-        <location line="-36"/>
+        <location line="-143"/>
         <source>HDOP</source>
         <translation>HDOP</translation>
     </message>
@@ -7602,47 +7656,47 @@ elevation %3°, azimuth %4°</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+36"/>
+        <location line="+143"/>
         <source>Fix type</source>
         <translation>Тип решения</translation>
     </message>
     <message>
-        <location line="-35"/>
+        <location line="-135"/>
         <source>Std. dev. latitude</source>
         <translation>СКО широты</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Std. dev. longitude</source>
         <translation>СКО долготы</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Std. dev. height</source>
         <translation>СКО высоты</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Baseline length</source>
         <translation>Длина базовой линии</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Altitude above sea level</source>
         <translation>Высота над уровнем моря</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+113"/>
         <source>Mean SNR %1</source>
         <translation>Среднее С/Ш %1</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+11"/>
         <source>DOP</source>
         <translation>DOP</translation>
     </message>
