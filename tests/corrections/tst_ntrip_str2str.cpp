@@ -86,6 +86,11 @@ struct Str2StrCaster {
 struct SimBaseCaster {
     gnss::link::test::SimTcpProcess base{{"--rtcm-base"}};
     Str2StrCaster caster{"tcpcli://" + base.address, closedPort()};
+    // Whether both run; if not, why.
+    bool ok() const { return base.ok() && caster.ok; }
+    QByteArray why() const {
+        return base.ok() ? "str2str did not start" : base.error.toLocal8Bit();
+    }
 };
 
 // The caster fed by the test: frames pushed into str2str's input port.
@@ -260,8 +265,7 @@ private slots:
         REQUIRE_STR2STR();
         if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
         SimBaseCaster chain;
-        QVERIFY2(chain.base.ok(), qPrintable(chain.base.error));
-        QVERIFY(chain.caster.ok);
+        QVERIFY2(chain.ok(), chain.why().constData());
         NtripSource source(settings(chain.caster.casterPort));
         SourceWatch watch(source);
         source.start();
@@ -277,8 +281,7 @@ private slots:
         REQUIRE_STR2STR();
         if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
         SimBaseCaster chain;
-        QVERIFY2(chain.base.ok(), qPrintable(chain.base.error));
-        QVERIFY(chain.caster.ok);
+        QVERIFY2(chain.ok(), chain.why().constData());
         gnss::link::test::SimProcess rover(
                 {"--dialect", "nvs", "--speed", "5", "--baud", "460800"});
         QVERIFY2(rover.ok(), qPrintable(rover.error));

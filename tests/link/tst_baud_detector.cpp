@@ -3,6 +3,7 @@
 #include "baud_detector.h"
 #include "core/sentence_builder.h"
 #include "fake_transport.h"
+#include "rate_rows.h"
 #include "run_to_finish.h"
 
 #include <QTest>
@@ -65,11 +66,7 @@ private:
 class TstBaudDetector : public QObject {
     Q_OBJECT
 private slots:
-    void settlesOnTheRateThatGivesValidSentences_data() {
-        QTest::addColumn<int>("rate");
-        for (int r : {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600})
-            QTest::newRow(qPrintable(QString::number(r))) << r;
-    }
+    void settlesOnTheRateThatGivesValidSentences_data() { gnss::link::test::everyRateRows(); }
     void settlesOnTheRateThatGivesValidSentences() {
         QFETCH(int, rate);
         Detection detection(rate, false, {}, 200);

@@ -9,6 +9,7 @@
 #include "connection.h"
 #include "dialects.h"
 #include "queue_checks.h"
+#include "rate_rows.h"
 #include "recording.h"
 #include "run_to_finish.h"
 #include "sentence_stream.h"
@@ -43,11 +44,7 @@ struct NvsCommandLink {
 class TstLinkPty : public QObject {
     Q_OBJECT
 private slots:
-    void baudDetectionFindsTheReceiverAtEveryRate_data() {
-        QTest::addColumn<int>("rate");
-        for (int r : {4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600})
-            QTest::newRow(qPrintable(QString::number(r))) << r;
-    }
+    void baudDetectionFindsTheReceiverAtEveryRate_data() { gnss::link::test::everyRateRows(); }
     void baudDetectionFindsTheReceiverAtEveryRate() {
         QFETCH(int, rate);
         SimProcess sim({"--dialect", "nvs", "--baud", QString::number(rate), "--seed", "2"});

@@ -3,6 +3,8 @@
 #include <QByteArray>
 #include <QImage>
 #include <QString>
+#include <QTest>
+#include <QWidget>
 
 namespace gnss::test {
 
@@ -11,6 +13,13 @@ namespace gnss::test {
 inline bool saveScreenshot(const QImage &image, const QString &fileName) {
     const QByteArray dir = qgetenv("GNSS_SCREENSHOT_DIR");
     return dir.isEmpty() || image.save(QString::fromLocal8Bit(dir) + "/" + fileName);
+}
+
+// Grabs `w` as it is painted now: an image, saved as `fileName` when screenshots are kept.
+inline void checkScreenshot(QWidget &w, const QString &fileName) {
+    const QImage img = w.grab().toImage();
+    QVERIFY(!img.isNull());
+    QVERIFY(saveScreenshot(img, fileName));
 }
 
 } // namespace gnss::test
