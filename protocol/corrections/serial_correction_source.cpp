@@ -5,17 +5,10 @@
 namespace gnss::corrections {
 
 SerialCorrectionSource::SerialCorrectionSource(QString portName, int baud, QObject *parent)
-    : CorrectionSource(parent), portName_(std::move(portName)), baud_(baud) {
-    connect(&port_, &QSerialPort::readyRead, this, [this] {
-        if (closing_) return;
-        const QByteArray bytes = port_.readAll();
-        if (bytes.isEmpty() || state() != State::Receiving) return;
-        if (bytesReceived() == 0) setStatus(tr("Receiving RTCM from %1").arg(description()));
-        deliver(bytes);
-    });
+    : RawCorrectionSource(parent), portName_(std::move(portName)), baud_(baud) {
+    deliverReadsOf(port_);
     connect(&port_, &QSerialPort::errorOccurred, this, [this](QSerialPort::SerialPortError e) {
-        if (closing_ || e == QSerialPort::NoError || e == QSerialPort::TimeoutError || !isActive())
-            return;
+        if (!listening() || e == QSerialPort::NoError || e == QSerialPort::TimeoutError) return;
         const QString why = port_.errorString();
         // A device that went away (unplugged) reports ResourceError: opened again later.
         failed(tr("%1: %2").arg(description(), why), true);

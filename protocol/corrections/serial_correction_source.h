@@ -2,13 +2,13 @@
 // SerialCorrectionSource: RTCM from a radio modem (or any device) on a second serial port,
 // beside the receiver's own. The port is opened read-only at the given speed; when it fails or
 // vanishes (USB unplugged) it is opened again after the backoff's wait.
-#include "correction_source.h"
+#include "raw_correction_source.h"
 
 #include <QSerialPort>
 
 namespace gnss::corrections {
 
-class SerialCorrectionSource : public CorrectionSource {
+class SerialCorrectionSource : public RawCorrectionSource {
     Q_OBJECT
 public:
     SerialCorrectionSource(QString portName, int baud, QObject *parent = nullptr);
@@ -25,7 +25,6 @@ private:
     QString portName_;
     int baud_;
     QSerialPort port_;
-    bool closing_ = false;
 };
 
 } // namespace gnss::corrections

@@ -5,25 +5,18 @@
 namespace gnss::corrections {
 
 TcpCorrectionSource::TcpCorrectionSource(QString host, quint16 port, QObject *parent)
-    : CorrectionSource(parent), host_(std::move(host)), port_(port) {
+    : RawCorrectionSource(parent), host_(std::move(host)), port_(port) {
     connect(&socket_, &QTcpSocket::connected, this, [this] {
-        if (closing_ || !isActive()) return;
+        if (!listening()) return;
         setReceiving(tr("Connected to %1, waiting for RTCM").arg(description()));
     });
-    connect(&socket_, &QTcpSocket::readyRead, this, [this] {
-        if (closing_) return;
-        const QByteArray bytes = socket_.readAll();
-        if (!bytes.isEmpty() && state() == State::Receiving) {
-            if (bytesReceived() == 0) setStatus(tr("Receiving RTCM from %1").arg(description()));
-            deliver(bytes);
-        }
-    });
+    deliverReadsOf(socket_);
     connect(&socket_, &QTcpSocket::disconnected, this, [this] {
-        if (closing_ || !isActive()) return;
+        if (!listening()) return;
         failed(tr("%1 closed the connection").arg(description()), true);
     });
     connect(&socket_, &QTcpSocket::errorOccurred, this, [this](QAbstractSocket::SocketError e) {
-        if (closing_ || !isActive() || e == QAbstractSocket::RemoteHostClosedError) return;
+        if (!listening() || e == QAbstractSocket::RemoteHostClosedError) return;
         failed(describeSocketError(e, description(), host_, socket_.errorString()), true);
     });
 }

@@ -2,13 +2,13 @@
 // TcpCorrectionSource: raw RTCM from a TCP server, e.g. a base receiver's port or a serial
 // server in front of a radio. Connects in the background; a drop, a refusal or a stall is
 // retried with the backoff.
-#include "correction_source.h"
+#include "raw_correction_source.h"
 
 #include <QTcpSocket>
 
 namespace gnss::corrections {
 
-class TcpCorrectionSource : public CorrectionSource {
+class TcpCorrectionSource : public RawCorrectionSource {
     Q_OBJECT
 public:
     TcpCorrectionSource(QString host, quint16 port, QObject *parent = nullptr);
@@ -24,7 +24,6 @@ private:
     QString host_;
     quint16 port_;
     QTcpSocket socket_;
-    bool closing_ = false;
 };
 
 } // namespace gnss::corrections
