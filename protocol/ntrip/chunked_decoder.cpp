@@ -18,10 +18,10 @@ std::string quoted(char c) {
 
 } // namespace
 
-void ChunkedDecoder::fail(std::string why, char c) {
+ChunkedDecoder::Status ChunkedDecoder::fail(std::string why, char c) {
     error_ = std::move(why) + " (got " + quoted(c) + ")";
     state_ = State::Failed;
-    status_ = Status::Error;
+    return status_ = Status::Error;
 }
 
 ChunkedDecoder::Status ChunkedDecoder::feed(std::string_view in, std::string &out) {
@@ -30,20 +30,14 @@ ChunkedDecoder::Status ChunkedDecoder::feed(std::string_view in, std::string &ou
         const char c = in[i];
         switch (state_) {
         case State::SizeStart:
-            if (hexDigitValue(c) < 0) {
-                fail("chunk size is not hexadecimal", c);
-                return status_;
-            }
-            size_ = static_cast<std::uint64_t>(hexDigitValue(c));
+            if (hexDigitValue(c) < 0) return fail("chunk size is not hexadecimal", c);
+            size_ = 0;
             state_ = State::Size;
-            break;
+            [[fallthrough]]; // the first digit is read as the others
         case State::Size:
-            if (hexDigitValue(c) >= 0) {
-                size_ = size_ * 16 + static_cast<std::uint64_t>(hexDigitValue(c));
-                if (size_ >= kMaxChunk) {
-                    fail("chunk size too large", c);
-                    return status_;
-                }
+            if (const int digit = hexDigitValue(c); digit >= 0) {
+                size_ = size_ * 16 + static_cast<std::uint64_t>(digit);
+                if (size_ >= kMaxChunk) return fail("chunk size too large", c);
                 break;
             }
             [[fallthrough]];
@@ -60,8 +54,7 @@ ChunkedDecoder::Status ChunkedDecoder::feed(std::string_view in, std::string &ou
                 state_ = State::SizeLf;
                 continue; // handled as the LF below
             } else {
-                fail("chunk size line has a stray character", c);
-                return status_;
+                return fail("chunk size line has a stray character", c);
             }
             break;
         case State::Extension:
@@ -69,15 +62,11 @@ ChunkedDecoder::Status ChunkedDecoder::feed(std::string_view in, std::string &ou
                 state_ = State::SizeLf;
                 if (c == '\n') continue;
             } else if (++lineLength_ > kMaxLine) {
-                fail("chunk extension too long", c);
-                return status_;
+                return fail("chunk extension too long", c);
             }
             break;
         case State::SizeLf:
-            if (c != '\n') {
-                fail("chunk size line not ended by CR LF", c);
-                return status_;
-            }
+            if (c != '\n') return fail("chunk size line not ended by CR LF", c);
             if (size_ == 0) {
                 state_ = State::TrailerStart;
                 status_ = Status::Finished;
@@ -99,18 +88,11 @@ ChunkedDecoder::Status ChunkedDecoder::feed(std::string_view in, std::string &ou
         case State::DataCr:
             if (c == '\r') {
                 state_ = State::DataLf;
-            } else if (c == '\n') {
-                state_ = State::SizeStart;
-            } else {
-                fail("chunk data not followed by CR LF", c);
-                return status_;
+                break;
             }
-            break;
+            [[fallthrough]]; // a bare LF ends the data as CR LF does
         case State::DataLf:
-            if (c != '\n') {
-                fail("chunk data not followed by CR LF", c);
-                return status_;
-            }
+            if (c != '\n') return fail("chunk data not followed by CR LF", c);
             state_ = State::SizeStart;
             break;
         case State::TrailerStart:

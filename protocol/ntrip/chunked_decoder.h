@@ -53,7 +53,8 @@ private:
         Done,
         Failed,
     };
-    void fail(std::string why, char c);
+    // Stops decoding with the reason and the byte that broke it; returns Status::Error.
+    Status fail(std::string why, char c);
 
     State state_ = State::SizeStart;
     Status status_ = Status::Ok;

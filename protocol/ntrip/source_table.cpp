@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <type_traits>
 
 namespace gnss::ntrip {
 
@@ -26,21 +27,15 @@ std::string text(const std::vector<std::string_view> &f, std::size_t i) {
     return i < f.size() ? std::string(trim(f[i])) : std::string();
 }
 
-std::optional<double> number(const std::vector<std::string_view> &f, std::size_t i) {
+// The whole field as an int or a (finite) double; none when it is anything more or less.
+template <class T> std::optional<T> numeric(const std::vector<std::string_view> &f, std::size_t i) {
     if (i >= f.size()) return std::nullopt;
     const std::string_view s = trim(f[i]);
-    double v = 0;
-    const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-    return v;
-}
-
-std::optional<int> integer(const std::vector<std::string_view> &f, std::size_t i) {
-    if (i >= f.size()) return std::nullopt;
-    const std::string_view s = trim(f[i]);
-    int v = 0;
+    T v = 0;
     const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
+    if constexpr (std::is_floating_point_v<T>)
+        if (!std::isfinite(v)) return std::nullopt;
     return v;
 }
 
@@ -53,11 +48,9 @@ bool yes(const std::vector<std::string_view> &f, std::size_t i) {
 void read(const std::vector<std::string_view> &f, std::size_t i, std::string &out) {
     out = text(f, i);
 }
-void read(const std::vector<std::string_view> &f, std::size_t i, std::optional<int> &out) {
-    out = integer(f, i);
-}
-void read(const std::vector<std::string_view> &f, std::size_t i, std::optional<double> &out) {
-    out = number(f, i);
+template <class T>
+void read(const std::vector<std::string_view> &f, std::size_t i, std::optional<T> &out) {
+    out = numeric<T>(f, i);
 }
 void read(const std::vector<std::string_view> &f, std::size_t i, bool &out) {
     out = yes(f, i);
