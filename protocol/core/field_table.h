@@ -8,8 +8,8 @@
 // (writeFieldsJson) and, where a dialect has an encoder, tell it how each field is printed
 // (decimals, range). A message that is nothing but its rows derives from FieldMessage and is
 // decoded by decodeMessage<M>.
+#include "decode_with.h"
 #include "field_reader.h"
-#include "finish_decode.h"
 #include "json_writer.h"
 #include "message.h"
 
@@ -103,10 +103,8 @@ template <class M> struct FieldMessage : Message {
 // The decoder of a FieldMessage, for a dialect's sentence table: at least kRequired fields, then
 // every row read in order; the message is delivered, or the first problem reported.
 template <class M> bool decodeMessage(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    M m;
-    if (r.require(M::kRequired)) readFields(r, m, M::kFields);
-    return finishDecode(r, ctx, m);
+    return decodeWith<M>(s, ctx, M::kRequired,
+                         [](FieldReader &r, M &m) { readFields(r, m, M::kFields); });
 }
 
 } // namespace gnss

@@ -11,9 +11,7 @@ namespace gnss::nmea {
 const MessageType Dtm::kType{"DTM"};
 
 bool decodeDtm(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Dtm m;
-    if (r.require(1)) {
+    return decodeWith<Dtm>(s, ctx, 1, [&](FieldReader &r, Dtm &m) {
         m.datum = r.text(0);
         m.subdivision = r.text(1);
         m.latOffset = r.real(2, "latitude offset");
@@ -22,8 +20,7 @@ bool decodeDtm(const Sentence &s, DecodeContext &ctx) {
         if (m.lonOffset && r.text(5) == "W") *m.lonOffset = -*m.lonOffset;
         m.altOffset = r.real(6, "altitude offset");
         m.referenceDatum = r.text(7);
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Dtm::writeJson(JsonWriter &w) const {

@@ -24,10 +24,7 @@ void readGgaFields(FieldReader &r, GgaFields &m) {
 }
 
 bool decodeGga(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Gga m;
-    if (r.require(6)) readGgaFields(r, m);
-    return finishDecode(r, ctx, m);
+    return decodeWith<Gga>(s, ctx, 6, readGgaFields);
 }
 
 void writeGgaFieldsJson(JsonWriter &w, const GgaFields &f) {

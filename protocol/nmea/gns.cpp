@@ -13,9 +13,7 @@ namespace gnss::nmea {
 const MessageType Gns::kType{"GNS"};
 
 bool decodeGns(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Gns m;
-    if (r.require(6)) {
+    return decodeWith<Gns>(s, ctx, 6, [&](FieldReader &r, Gns &m) {
         m.time = r.time(0, "time");
         m.lat = r.latitude(1, "latitude");
         m.lon = r.longitude(3, "longitude");
@@ -34,8 +32,7 @@ bool decodeGns(const Sentence &s, DecodeContext &ctx) {
         if (10 < end) m.dgpsAge = r.real(10, "DGPS age");
         if (11 < end) m.dgpsStation = r.integer(11, "DGPS station");
         if (statusLast) m.navStatus = last[0];
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Gns::writeJson(JsonWriter &w) const {

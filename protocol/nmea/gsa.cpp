@@ -25,9 +25,7 @@ bool looksLikeSystemId(std::string_view last, std::string_view beforeLast, std::
 } // namespace
 
 bool decodeGsa(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Gsa m;
-    if (r.require(5)) {
+    return decodeWith<Gsa>(s, ctx, 5, [&](FieldReader &r, Gsa &m) {
         m.mode = r.letter(0, "mode");
         m.fix = r.integer(1, "fix");
         std::size_t n = r.count();
@@ -48,8 +46,7 @@ bool decodeGsa(const Sentence &s, DecodeContext &ctx) {
             m.satellites[m.idCount] = ctx.mapSatellite(m.system, *id);
             ++m.idCount;
         }
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Gsa::writeJson(JsonWriter &w) const {

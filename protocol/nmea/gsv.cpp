@@ -15,9 +15,7 @@ namespace gnss::nmea {
 const MessageType Gsv::kType{"GSV"};
 
 bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Gsv m;
-    if (r.require(3)) {
+    return decodeWith<Gsv>(s, ctx, 3, [&](FieldReader &r, Gsv &m) {
         m.total = r.integer(0, "total sentences");
         m.index = r.integer(1, "sentence number");
         m.inView = r.integer(2, "satellites in view");
@@ -50,8 +48,7 @@ bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
         if (m.total && m.index && (*m.index < 1 || *m.index > *m.total))
             r.failSentence(refusal(QT_TRANSLATE_NOOP("Refusal", "sentence number outside 1..%1"),
                                    {std::to_string(*m.total)}));
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Gsv::writeJson(JsonWriter &w) const {

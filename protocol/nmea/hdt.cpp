@@ -9,10 +9,8 @@ namespace gnss::nmea {
 const MessageType Hdt::kType{"HDT"};
 
 bool decodeHdt(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Hdt m;
-    if (r.require(1)) m.heading = r.real(0, "heading");
-    return finishDecode(r, ctx, m);
+    return decodeWith<Hdt>(s, ctx, 1,
+                           [](FieldReader &r, Hdt &m) { m.heading = r.real(0, "heading"); });
 }
 
 void Hdt::writeJson(JsonWriter &w) const {

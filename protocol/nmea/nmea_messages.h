@@ -3,6 +3,7 @@
 // std::nullopt. Each struct's decoder and field diagram live in <type>.cpp; a sentence that is a
 // plain list of fields is a FieldMessage (core/field_table.h), its rows there decode it and
 // write its JSON.
+#include "core/decode_with.h"
 #include "core/dialect.h"
 #include "core/field_reader.h"
 #include "core/field_table.h"

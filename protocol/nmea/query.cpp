@@ -7,15 +7,12 @@ namespace gnss::nmea {
 const MessageType Query::kType{"query"};
 
 bool decodeQuery(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Query m;
-    if (r.require(1)) {
+    return decodeWith<Query>(s, ctx, 1, [&](FieldReader &r, Query &m) {
         m.requester = s.address().substr(0, 2);
         m.listener = s.address().substr(2, 2);
         m.address = r.text(0);
         if (m.address.empty()) r.fail(0, "address", QT_TRANSLATE_NOOP("Refusal", "empty"));
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Query::writeJson(JsonWriter &w) const {

@@ -10,9 +10,7 @@ namespace gnss::nmea {
 const MessageType Rmc::kType{"RMC"};
 
 bool decodeRmc(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Rmc m;
-    if (r.require(9)) {
+    return decodeWith<Rmc>(s, ctx, 9, [&](FieldReader &r, Rmc &m) {
         m.time = r.time(0, "time");
         m.status = r.letter(1, "status");
         m.lat = r.latitude(2, "latitude");
@@ -34,8 +32,7 @@ bool decodeRmc(const Sentence &s, DecodeContext &ctx) {
         }
         m.mode = r.letter(11 + shift, "mode");
         m.navStatus = r.letter(12 + shift, "navigational status");
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Rmc::writeJson(JsonWriter &w) const {

@@ -9,9 +9,7 @@ namespace gnss::nmea {
 const MessageType Txt::kType{"TXT"};
 
 bool decodeTxt(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Txt m;
-    if (r.require(4)) {
+    return decodeWith<Txt>(s, ctx, 4, [&](FieldReader &r, Txt &m) {
         m.total = r.integer(0, "total");
         m.number = r.integer(1, "number");
         m.id = r.integer(2, "identifier");
@@ -21,8 +19,7 @@ bool decodeTxt(const Sentence &s, DecodeContext &ctx) {
         for (int commas = 0; commas < 4 && pos != std::string_view::npos; ++commas)
             pos = body.find(',', pos == 0 ? 0 : pos + 1);
         m.text = pos == std::string_view::npos ? r.text(3) : body.substr(pos + 1);
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Txt::writeJson(JsonWriter &w) const {

@@ -10,9 +10,7 @@ namespace gnss::nmea {
 const MessageType Vtg::kType{"VTG"};
 
 bool decodeVtg(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Vtg m;
-    if (r.require(4)) {
+    return decodeWith<Vtg>(s, ctx, 4, [&](FieldReader &r, Vtg &m) {
         if (r.text(1) == "T") {
             // Each value is followed by its unit letter; find values by their units, since
             // receivers drop the empty ones (GeoS-5 prints no 'M' after an empty magnetic course).
@@ -37,8 +35,7 @@ bool decodeVtg(const Sentence &s, DecodeContext &ctx) {
             m.sogKnots = r.real(2, "speed knots");
             m.sogKmh = r.real(3, "speed km/h");
         }
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Vtg::writeJson(JsonWriter &w) const {

@@ -9,9 +9,7 @@ namespace gnss::nmea {
 const MessageType Zda::kType{"ZDA"};
 
 bool decodeZda(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Zda m;
-    if (r.require(4)) {
+    return decodeWith<Zda>(s, ctx, 4, [&](FieldReader &r, Zda &m) {
         m.time = r.time(0, "time");
         auto d = r.integer(1, "day");
         auto mo = r.integer(2, "month");
@@ -24,8 +22,7 @@ bool decodeZda(const Sentence &s, DecodeContext &ctx) {
         }
         m.tzHours = r.integer(4, "zone hours");
         m.tzMinutes = r.integer(5, "zone minutes");
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Zda::writeJson(JsonWriter &w) const {

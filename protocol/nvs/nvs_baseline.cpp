@@ -34,11 +34,10 @@ constexpr std::span<const FieldRow<Baseline>> baselineFields(bool timed) {
     return std::span(kBaselineFields).subspan(timed ? 0 : 1);
 }
 
-bool decodeBaseline(const Sentence &s, DecodeContext &ctx, Baseline &m, bool timeOptional) {
-    FieldReader r(s);
-    if (r.require(timeOptional ? 7 : 8))
+template <class B> bool decodeBaseline(const Sentence &s, DecodeContext &ctx, bool timeOptional) {
+    return decodeWith<B>(s, ctx, timeOptional ? 7 : 8, [&](FieldReader &r, Baseline &m) {
         readFields(r, m, baselineFields(!timeOptional || s.fieldCount() >= 8));
-    return finishDecode(r, ctx, m);
+    });
 }
 
 // Without a time, PNVGBLS takes the form of firmware before 1.5 (no time field).
@@ -49,13 +48,11 @@ EncodeResult encodeBaseline(const Baseline &m, bool timeOptional) {
 } // namespace
 
 bool decodeBrs(const Sentence &s, DecodeContext &ctx) {
-    Brs m;
-    return decodeBaseline(s, ctx, m, false);
+    return decodeBaseline<Brs>(s, ctx, false);
 }
 
 bool decodeBls(const Sentence &s, DecodeContext &ctx) {
-    Bls m;
-    return decodeBaseline(s, ctx, m, true);
+    return decodeBaseline<Bls>(s, ctx, true);
 }
 
 void Baseline::writeJson(JsonWriter &w) const {

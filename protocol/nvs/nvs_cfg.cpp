@@ -11,14 +11,11 @@ namespace gnss::nvs {
 const MessageType Cfg::kType{"PNVGCFG"};
 
 bool decodeCfg(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Cfg m;
-    if (r.require(1)) {
+    return decodeWith<Cfg>(s, ctx, 1, [&](FieldReader &r, Cfg &m) {
         m.action = r.text(0);
         if (m.action.empty()) r.fail(0, "action", QT_TRANSLATE_NOOP("Refusal", "empty"));
         for (std::size_t i = 1; i < s.fieldCount(); ++i) m.extra.push_back(r.text(i));
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Cfg::writeJson(JsonWriter &w) const {

@@ -31,9 +31,7 @@ std::string_view toString(IdlKind k) {
 }
 
 bool decodeIdl(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Idl m;
-    if (r.require(1)) {
+    return decodeWith<Idl>(s, ctx, 1, [&](FieldReader &r, Idl &m) {
         const auto sub = r.text(0);
         std::int64_t n;
         if (sub == "MODE") {
@@ -69,8 +67,7 @@ bool decodeIdl(const Sentence &s, DecodeContext &ctx) {
                    QT_TRANSLATE_NOOP("Refusal",
                                      "not MODE, ADD, REMOVE, CLEAR, SHOW or a list item"));
         }
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Idl::writeJson(JsonWriter &w) const {

@@ -36,10 +36,9 @@ std::span<const FieldRow<Imu>> imuFields(bool timed) {
 } // namespace
 
 bool decodeImu(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Imu m;
-    if (r.require(6)) readFields(r, m, imuFields(s.fieldCount() >= 7));
-    return finishDecode(r, ctx, m);
+    return decodeWith<Imu>(s, ctx, 6, [&](FieldReader &r, Imu &m) {
+        readFields(r, m, imuFields(s.fieldCount() >= 7));
+    });
 }
 
 // Without a time, the form of firmware before 1.5 (no time field).

@@ -5,6 +5,7 @@
 // decode it, write its JSON and, for what the receiver sends, encode it); sentences that are both
 // command and reply decode into one struct (the console shows what was sent, the simulator reads
 // what it receives).
+#include "core/decode_with.h"
 #include "core/dialect.h"
 #include "core/field_reader.h"
 #include "core/field_table.h"

@@ -9,14 +9,11 @@ namespace gnss::nvs {
 const MessageType Rst::kType{"PNVGRST"};
 
 bool decodeRst(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Rst m;
-    if (r.require(1)) {
+    return decodeWith<Rst>(s, ctx, 1, [&](FieldReader &r, Rst &m) {
         m.type = r.letter(0, "reset type");
         if (m.type && *m.type != 'F' && *m.type != 'W')
             r.fail(0, "reset type", QT_TRANSLATE_NOOP("Refusal", "not F or W"));
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Rst::writeJson(JsonWriter &w) const {

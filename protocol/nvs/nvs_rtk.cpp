@@ -116,9 +116,7 @@ const RtkParam *Rtk::find(std::string_view name) const {
 }
 
 bool decodeRtk(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Rtk m;
-    if (r.require(1)) {
+    return decodeWith<Rtk>(s, ctx, 1, [&](FieldReader &r, Rtk &m) {
         for (std::size_t i = 0; i < s.fieldCount(); ++i) {
             const auto t = r.text(i);
             if (t.empty()) continue; // "MODE,,PVTRATE": an empty value is no value
@@ -134,8 +132,7 @@ bool decodeRtk(const Sentence &s, DecodeContext &ctx) {
         }
         if (r.ok() && m.params.empty())
             r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "PNVGRTK names no parameter")));
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Rtk::writeJson(JsonWriter &w) const {

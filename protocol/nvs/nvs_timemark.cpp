@@ -29,10 +29,7 @@ const FieldRow<Tmu> Tmu::kFields[] = {
 };
 
 bool decodeTmc(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Tmc m;
-    if (r.require(6)) nmea::readGgaFields(r, m);
-    return finishDecode(r, ctx, m);
+    return decodeWith<Tmc>(s, ctx, 6, nmea::readGgaFields);
 }
 
 EncodeResult encodeTme(const Tme &m) {

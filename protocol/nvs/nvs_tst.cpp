@@ -13,9 +13,7 @@ namespace gnss::nvs {
 const MessageType Tst::kType{"PNVGTST"};
 
 bool decodeTst(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Tst m;
-    if (r.require(2)) {
+    return decodeWith<Tst>(s, ctx, 2, [&](FieldReader &r, Tst &m) {
         for (std::size_t i = 0; i < s.fieldCount(); i += 2) {
             const auto name = r.text(i);
             const auto result = r.text(i + 1);
@@ -24,8 +22,7 @@ bool decodeTst(const Sentence &s, DecodeContext &ctx) {
             if (name == "ID") m.deviceId = r.integer64(i + 1, "device ID");
             if (name == "ANT") m.antenna = r.integer(i + 1, "antenna test");
         }
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 void Tst::writeJson(JsonWriter &w) const {
