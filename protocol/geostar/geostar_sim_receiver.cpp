@@ -88,7 +88,7 @@ char modeOf(FixKind k) {
 } // namespace
 
 GeoStarReceiver::GeoStarReceiver(const SimOptions &options)
-    : Receiver(geostar::dialect(), options), store_(geostar::dialect()) {
+    : DialectReceiver(geostar::dialect(), {.baud = "port.BDR", .rate = "output.RATE"}, options) {
     seedPowerOn(store_, baud());
     almanacSince_ = kAlmanacAfter;
 }
@@ -116,9 +116,8 @@ FixKind GeoStarReceiver::fixAfter(double seconds) const {
 void GeoStarReceiver::onReset(ResetKind kind) {
     almanacValid_ = almanacValid_ || time() >= almanacSince_; // collected before the reset
     if (kind == ResetKind::PowerCycle) {
-        store_.restore();
+        restoreFromFlash();
         loadedFromFlash_ = flashWritten_;
-        setBaudNow(static_cast<int>(store_.integer("port.BDR", baud())));
         binary_ = false;
         announce_ = true;
         almanacValid_ = almanacInFlash_;
@@ -156,7 +155,7 @@ void GeoStarReceiver::onCommand(const Sentence &s, const Message *decoded, std::
         reset(ResetKind::Hot);
     } else if (d.settingKey == "port.BDR") {
         // No answer; the port switches at once.
-        reply(s, std::string(), static_cast<int>(store_.integer("port.BDR", baud())));
+        reply(s, std::string(), portSpeed());
     } else if (d.settingKey == "output.RATE") {
         rescheduleEpochs();
     }
@@ -302,17 +301,7 @@ std::vector<std::string> GeoStarReceiver::sentencesOf(std::string_view name,
         return {nmea::encodeGll(talker(), m, f)};
     }
     if (name == "RMC") {
-        nmea::Rmc m;
-        m.time = nmea::timeOfDay(t.utcSecondOfDay, 2);
-        m.status = valid ? 'A' : 'V';
-        if (valid) {
-            m.lat = snap.lat;
-            m.lon = snap.lon;
-            m.sogKnots = speedKnots(snap);
-            m.cog = courseDegrees(snap);
-        }
-        m.date = t.date;
-        m.mode = modeOf(snap.fix);
+        nmea::Rmc m = rmcOf(snap, t, 2);
         if (nmeaVersion() == 4) m.navStatus = 'V'; // "not formed by the receiver"
         return {nmea::encodeRmc(talker(), m, f)};
     }

@@ -28,8 +28,7 @@
 // GSV per system with the signal id (Galileo 7), GNS with per-system subsidiary sentences.
 #include "core/dialect_hooks.h"
 #include "geostar/geostar_messages.h"
-#include "sim/receiver.h"
-#include "sim/settings_store.h"
+#include "sim/dialect_receiver.h"
 #include "sim/standard_output.h"
 
 #include <cstdint>
@@ -37,13 +36,9 @@
 
 namespace gnss::sim {
 
-class GeoStarReceiver : public Receiver {
+class GeoStarReceiver : public DialectReceiver {
 public:
     explicit GeoStarReceiver(const SimOptions &options = {});
-
-    // The settings in force (and the copy in flash).
-    const SettingsStore &settings() const { return store_; }
-    double epochInterval() const override { return 1.0 / double(store_.integer("output.RATE", 1)); }
 
     // The RQUERY and NQUERY replies (3.11, 3.12) of the current state.
     geostar::Rquery rquery() const;
@@ -72,7 +67,6 @@ private:
     std::string dtm() const;
     std::string rlm() const;
 
-    SettingsStore store_;
     bool flashWritten_ = false;    // SAVEFL done at least once
     bool loadedFromFlash_ = false; // settings came from flash at the last power-on
     bool almanacInFlash_ = false;

@@ -57,7 +57,7 @@ bool listed(const std::vector<std::string_view> &ids, std::string_view id) {
 } // namespace
 
 NemerixReceiver::NemerixReceiver(const SimOptions &options)
-    : Receiver(nemerix::dialect(), options), store_(nemerix::dialect()) {
+    : DialectReceiver(nemerix::dialect(), {.baud = "serial.baud"}, options) {
     for (const auto &[key, value] : kFactoryValues) store_.seed(key, std::string(value));
     if (options.baud > 0) store_.set("serial.baud", std::to_string(options.baud));
 }
@@ -79,9 +79,8 @@ FixKind NemerixReceiver::fixAfter(double seconds) const {
 
 void NemerixReceiver::onReset(ResetKind kind) {
     if (kind == ResetKind::PowerCycle) {
-        store_.restore(); // no save command: the factory settings come back
+        restoreFromFlash(); // no save command: the factory settings come back
         fixProcedure_ = 0;
-        setBaudNow(static_cast<int>(store_.integer("serial.baud")));
         isp_ = false;
     }
     coreStopped_ = false;
@@ -116,7 +115,7 @@ void NemerixReceiver::onCommand(const Sentence &s, const Message *decoded, std::
         keepRatedInSequence(static_cast<const RateList &>(m));
     } else if (const auto *p = message_cast<SerialPort>(m)) {
         // No answer; the port switches (a command without a baud sets nothing).
-        if (p->baud) reply(s, std::string(), static_cast<int>(store_.integer("serial.baud")));
+        if (p->baud) reply(s, std::string(), portSpeed());
     } else if (const auto *n = message_cast<NavInit>(m)) {
         if (n->fixProcedure == 8) {
             softwareReset(std::nullopt, "FACTORY");

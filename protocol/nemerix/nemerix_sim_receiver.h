@@ -23,8 +23,7 @@
 // The VT002 has no "save" command: a power cycle returns to the factory settings.
 #include "core/dialect_hooks.h"
 #include "nemerix/nemerix_messages.h"
-#include "sim/receiver.h"
-#include "sim/settings_store.h"
+#include "sim/dialect_receiver.h"
 #include "sim/standard_output.h"
 
 #include <deque>
@@ -33,12 +32,11 @@
 
 namespace gnss::sim {
 
-class NemerixReceiver : public Receiver {
+// Its settings (settings()) by the schema's keys: "rate.GGA", "fix.minSnr", "serial.baud".
+class NemerixReceiver : public DialectReceiver {
 public:
     explicit NemerixReceiver(const SimOptions &options = {});
 
-    // The settings in force, by the schema's keys ("rate.GGA", "fix.minSnr", "serial.baud").
-    const SettingsStore &settings() const { return store_; }
     bool coreStopped() const { return coreStopped_; }
     bool ispMode() const { return isp_; }
     int uploadedAlmanacs() const { return static_cast<int>(uploaded_.size()); }
@@ -66,7 +64,6 @@ private:
     std::vector<std::string_view> outputOrder() const;
     int reportMode(std::size_t index) const;
 
-    SettingsStore store_;
     int fixProcedure_ = 0; // PNMRX101's code for a PNMRX111 without parameter: 0 hot, 4 cold
     bool coreStopped_ = false;
     bool isp_ = false;

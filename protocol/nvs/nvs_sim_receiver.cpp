@@ -31,7 +31,8 @@ constexpr std::string_view kStationsKey = "idl.stations";
 } // namespace
 
 NvsReceiver::NvsReceiver(const SimOptions &options)
-    : Receiver(nvs::dialect(), options), store_(nvs::dialect()) {
+    : DialectReceiver(nvs::dialect(), {.baud = baudKey(kCurrentPort), .rate = "rtk.PVTRATE"},
+                      options) {
     // What the schema leaves to the receiver. The base station the rover hears: its coordinates
     // are the values of BASEXYZ/BASEBLH.
     const Observer &o = options.observer;
@@ -64,11 +65,6 @@ NvsReceiver::NvsReceiver(const SimOptions &options)
 
 int NvsReceiver::mode() const {
     return static_cast<int>(store_.integer("rtk.MODE"));
-}
-
-double NvsReceiver::epochInterval() const {
-    const long long hz = store_.integer("rtk.PVTRATE");
-    return hz > 0 ? 1.0 / static_cast<double>(hz) : Receiver::epochInterval();
 }
 
 UseMask NvsReceiver::useMask() const {
@@ -124,10 +120,7 @@ void NvsReceiver::onHostBytes(std::string_view bytes) {
 }
 
 void NvsReceiver::onReset(ResetKind kind) {
-    if (kind == ResetKind::PowerCycle) {
-        store_.restore();
-        setBaudNow(static_cast<int>(store_.integer(baudKey(kCurrentPort))));
-    }
+    if (kind == ResetKind::PowerCycle) restoreFromFlash();
     epochIndex_ = 0;
     sendTestResults_ = true;
     rtcmTotal_ = rtcmErrors_ = 0;
@@ -295,8 +288,7 @@ void NvsReceiver::handleRza(const Sentence &s, const nvs::Rza &m) {
     // The answer carries the settings now in force (other values than asked = refused), then
     // the port switches (spec 2.1: within 100 ms after the reply).
     const std::string answer = reportOf(baudKey(*port));
-    const int baud = static_cast<int>(store_.integer(baudKey(*port)));
-    if (!answer.empty()) reply(s, answer, *port == kCurrentPort ? baud : 0);
+    if (!answer.empty()) reply(s, answer, *port == kCurrentPort ? portSpeed() : 0);
 }
 
 void NvsReceiver::handleNme(const Sentence &s, const nvs::Nme &m) {

@@ -15,8 +15,7 @@
 // PNVGCFG,W saves to the simulated flash; a power cycle (Receiver::powerCycle(), SIGHUP to
 // gnss-sim) and PNVGCFG,R restore from it; PNVGRST keeps the settings in force (spec table 4.3).
 #include "core/dialect_hooks.h"
-#include "sim/receiver.h"
-#include "sim/settings_store.h"
+#include "sim/dialect_receiver.h"
 #include "sim/standard_output.h"
 
 #include "nvs/nvs_messages.h"
@@ -27,15 +26,12 @@
 
 namespace gnss::sim {
 
-class NvsReceiver : public Receiver {
+// Its settings (settings()): everything PNVGCFG saves (spec 4.8) and PNVGNME's settings, under
+// the schema's keys ("rtk.PVTRATE", "nmea.time_decimals", "port.COM1.baud", "output.COM1",
+// "pps.type", "idl.stations", ...).
+class NvsReceiver : public DialectReceiver {
 public:
     explicit NvsReceiver(const SimOptions &options = {});
-
-    // Everything PNVGCFG saves (spec 4.8) and PNVGNME's settings, under the schema's keys
-    // ("rtk.PVTRATE", "nmea.time_decimals", "port.COM1.baud", "output.COM1", "pps.type",
-    // "idl.stations", ...), with the copy in flash (settings().saved()).
-    const SettingsStore &settings() const { return store_; }
-    double epochInterval() const override;
 
     static constexpr int kCurrentPort = 1; // the simulated host is on COM1
     static constexpr int kBaseStation = 2; // the simulated base's id (PNVGRTK BASEID default)
@@ -73,7 +69,6 @@ private:
     void handlePps(const Sentence &s, const nvs::Pps &m);
     void handleIdl(const Sentence &s, const nvs::Idl &m);
 
-    SettingsStore store_;
     std::int64_t epochIndex_ = 0;
     bool sendTestResults_ = true;
     // Base station link (RTK rover).

@@ -1,8 +1,7 @@
 #include "acme_sim_receiver.h"
 
 #include "acme_dialect.h"
-#include "sim/receiver.h"
-#include "sim/settings_store.h"
+#include "sim/dialect_receiver.h"
 #include "sim/standard_output.h"
 
 namespace gnss::acme {
@@ -11,16 +10,11 @@ namespace {
 constexpr const char *kModel = "AX-1";
 constexpr const char *kFirmware = "4.2.0";
 
-class AcmeReceiver : public sim::Receiver {
+class AcmeReceiver : public sim::DialectReceiver {
 public:
     explicit AcmeReceiver(const sim::SimOptions &options)
-        : Receiver(acme::dialect(), options), store_(acme::dialect()) {
+        : DialectReceiver(acme::dialect(), {.baud = "acme.BAUD", .rate = "acme.RATE"}, options) {
         style_.numbering = sim::Numbering::Nmea41;
-    }
-
-    double epochInterval() const override {
-        const double hz = store_.real("acme.RATE", 1);
-        return hz > 0 ? 1.0 / hz : 1.0;
     }
 
 protected:
@@ -52,9 +46,7 @@ protected:
     }
 
     void onReset(sim::ResetKind kind) override {
-        if (kind != sim::ResetKind::PowerCycle) return;
-        store_.restore();
-        setBaudNow(static_cast<int>(store_.integer("acme.BAUD", dialect().defaultBaud)));
+        if (kind == sim::ResetKind::PowerCycle) restoreFromFlash();
     }
 
     sim::UseMask useMask() const override {
@@ -78,7 +70,7 @@ private:
         const EncodeResult r = store_.report(keys);
         if (!r.ok()) return;
         const bool baud = key == "acme.BAUD" && m.kind == 'C';
-        reply(s, r.sentences.front(), baud ? static_cast<int>(store_.integer(key)) : 0);
+        reply(s, r.sentences.front(), baud ? portSpeed() : 0);
         if (epochInterval() != interval) rescheduleEpochs();
     }
 
@@ -98,7 +90,6 @@ private:
         if (what == "HOT") reset(sim::ResetKind::Hot);
     }
 
-    sim::SettingsStore store_;
     sim::StandardStyle style_;
 };
 
