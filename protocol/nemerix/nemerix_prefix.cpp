@@ -5,10 +5,7 @@
 namespace gnss::nemerix {
 
 std::string checkPrefix(std::string_view prefix) {
-    bool ok = prefix.size() >= 2 && prefix.size() <= 9 && prefix.front() == 'P';
-    for (char c : prefix)
-        if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) ok = false;
-    if (ok) return {};
+    if (checkAddressPrefix(prefix).empty()) return {};
     return "prefix: '" + std::string(prefix) +
            "' is not usable; accepted: 'P' followed by 1 to 8 upper-case letters or digits "
            "(default PNMRX)";
@@ -16,13 +13,8 @@ std::string checkPrefix(std::string_view prefix) {
 
 std::string applyPrefix(std::string_view sentence, std::string_view prefix) {
     if (!checkPrefix(prefix).empty()) return {};
-    if (sentence.size() < 6 || sentence.substr(0, 6) != "$PNMRX") return std::string(sentence);
-    std::string_view body = sentence.substr(6);
-    const auto star = body.rfind('*');
-    if (star != std::string_view::npos) body = body.substr(0, star);
-    std::string renamed(prefix);
-    renamed.append(body);
-    return buildSentence(renamed);
+    if (!sentence.starts_with('$')) return std::string(sentence);
+    return renameAddressPrefix(sentence, "PNMRX", prefix);
 }
 
 EncodeResult buildCommand(std::string_view number, std::string_view fields,
