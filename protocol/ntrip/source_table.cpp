@@ -191,16 +191,12 @@ void SourceTableParser::line(std::string_view l) {
     const std::size_t records =
             table_.streams.size() + table_.casters.size() + table_.networks.size();
     const std::string_view tag = l.substr(0, 4);
-    if (records >= kMaxRecords || (tag != "STR;" && tag != "CAS;" && tag != "NET;")) {
-        ++table_.badLines;
-        return;
+    if (records < kMaxRecords) {
+        if (tag == "STR;") return addRecord(l, streamFields(), table_.streams, table_);
+        if (tag == "CAS;") return addRecord(l, casterFields(), table_.casters, table_);
+        if (tag == "NET;") return addRecord(l, networkFields(), table_.networks, table_);
     }
-    if (tag == "STR;")
-        addRecord(l, streamFields(), table_.streams, table_);
-    else if (tag == "CAS;")
-        addRecord(l, casterFields(), table_.casters, table_);
-    else
-        addRecord(l, networkFields(), table_.networks, table_);
+    ++table_.badLines; // no record, or one too many
 }
 
 SourceTable parseSourceTable(std::string_view text) {
