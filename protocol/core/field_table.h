@@ -21,7 +21,8 @@
 
 namespace gnss {
 
-// How an encoder prints a number: the decimals of a real, the range a value must lie in.
+// How an encoder prints a number: the decimals of a real, and the range a value must lie in
+// where the encoder checks one (the NVS output encoders do).
 struct FieldLayout {
     int decimals = 0;
     double min = 0, max = 0;

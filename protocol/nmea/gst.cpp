@@ -9,15 +9,16 @@ namespace gnss::nmea {
 
 const MessageType Gst::kType{"GST"};
 
+// Metres with 3 decimals, the orientation (degrees) with 1, as the encoder prints them.
 const FieldRow<Gst> Gst::kFields[] = {
         {&Gst::time, "time", "time"},
-        {&Gst::rms, "rms", "rms"},
-        {&Gst::sdMajor, "semi-major", "sd_major"},
-        {&Gst::sdMinor, "semi-minor", "sd_minor"},
-        {&Gst::orientation, "orientation", "orientation"},
-        {&Gst::sdLat, "sd latitude", "sd_lat"},
-        {&Gst::sdLon, "sd longitude", "sd_lon"},
-        {&Gst::sdAlt, "sd altitude", "sd_alt"},
+        {&Gst::rms, "rms", "rms", {3}},
+        {&Gst::sdMajor, "semi-major", "sd_major", {3}},
+        {&Gst::sdMinor, "semi-minor", "sd_minor", {3}},
+        {&Gst::orientation, "orientation", "orientation", {1}},
+        {&Gst::sdLat, "sd latitude", "sd_lat", {3}},
+        {&Gst::sdLon, "sd longitude", "sd_lon", {3}},
+        {&Gst::sdAlt, "sd altitude", "sd_alt", {3}},
 };
 
 } // namespace gnss::nmea

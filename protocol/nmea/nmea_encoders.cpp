@@ -54,9 +54,42 @@ public:
         if (heightUnits) text(m.geoidSep ? "M" : "");
         return real(m.dgpsAge, 1).integer(m.dgpsStation, 4);
     }
+    // Each row's field of `m` (core/field_table.h): a time or a position with the format's
+    // decimals, a real with the row's, a letter, a number, text.
+    template <class M, class Rows>
+    Body &rows(const M &m, const Rows &table, const EncodeFormat &f) {
+        for (const auto &row : table)
+            std::visit([&](auto p) { add(m.*p, row.layout, row.form, f); }, row.member);
+        return *this;
+    }
     std::string build() const { return buildSentence(s_); }
 
 private:
+    void add(const std::optional<TimeOfDay> &t, const FieldLayout &, FieldForm,
+             const EncodeFormat &f) {
+        time(t, f.timeDecimals);
+    }
+    void add(std::optional<double> v, const FieldLayout &l, FieldForm form, const EncodeFormat &f) {
+        if (form == FieldForm::Latitude)
+            raw(formatLatitude(v, f.positionDecimals));
+        else if (form == FieldForm::Longitude)
+            raw(formatLongitude(v, f.positionDecimals));
+        else
+            real(v, l.decimals);
+    }
+    void add(std::optional<char> v, const FieldLayout &, FieldForm, const EncodeFormat &) {
+        letter(v);
+    }
+    void add(std::optional<int> v, const FieldLayout &, FieldForm, const EncodeFormat &) {
+        integer(v);
+    }
+    void add(std::optional<std::int64_t> v, const FieldLayout &, FieldForm, const EncodeFormat &) {
+        text(v ? std::to_string(*v) : std::string());
+    }
+    void add(std::optional<std::string_view> v, const FieldLayout &, FieldForm,
+             const EncodeFormat &) {
+        text(v.value_or(std::string_view()));
+    }
     std::string s_;
 };
 
@@ -135,9 +168,7 @@ std::string encodeGga(std::string_view talker, const Gga &m, const EncodeFormat 
 
 // $--GLL,llll.ll,a,yyyyy.yy,a,hhmmss.ss,A,a
 std::string encodeGll(std::string_view talker, const Gll &m, const EncodeFormat &f) {
-    Body b(talker, "GLL");
-    b.position(m.lat, m.lon, f).time(m.time, f.timeDecimals).letter(m.status).letter(m.mode);
-    return b.build();
+    return Body(talker, "GLL").rows(m, Gll::kFields, f).build();
 }
 
 // $--GNS,hhmmss.ss,llll.ll,a,yyyyy.yy,a,c--c,xx,x.x,x.x,x.x,x.x,x.x,a
@@ -244,16 +275,7 @@ std::string encodeHdt(std::string_view talker, const Hdt &m) {
 
 // $--GST,hhmmss.ss,x.x,x.x,x.x,x.x,x.x,x.x,x.x
 std::string encodeGst(std::string_view talker, const Gst &m, const EncodeFormat &f) {
-    Body b(talker, "GST");
-    b.time(m.time, f.timeDecimals)
-            .real(m.rms, 3)
-            .real(m.sdMajor, 3)
-            .real(m.sdMinor, 3)
-            .real(m.orientation, 1)
-            .real(m.sdLat, 3)
-            .real(m.sdLon, 3)
-            .real(m.sdAlt, 3);
-    return b.build();
+    return Body(talker, "GST").rows(m, Gst::kFields, f).build();
 }
 
 // $--TXT,xx,xx,xx,c--c
