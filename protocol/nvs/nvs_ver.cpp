@@ -22,12 +22,13 @@ const FieldRow<Ver> Ver::kFields[] = {
         {&Ver::csmFw, "CSM firmware", "csm_fw"},
 };
 
+// The request has no fields, the reply all five.
 bool decodeVer(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Ver m;
-    m.request = s.fieldCount() == 0;
-    if (!m.request && r.require(5)) readFields(r, m, Ver::kFields);
-    return finishDecode(r, ctx, m);
+    const bool request = s.fieldCount() == 0;
+    return decodeWith<Ver>(s, ctx, request ? 0 : 5, [&](FieldReader &r, Ver &m) {
+        m.request = request;
+        if (!request) readFields(r, m, Ver::kFields);
+    });
 }
 
 EncodeResult encodeVersionRequest() {
