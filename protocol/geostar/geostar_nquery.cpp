@@ -9,6 +9,7 @@
 // example ("port 1, 1 Hz, NMEA v2, outputs GGA, GSA, GSV, ZDA, DTM"); the 7th code's message is
 // unknown and shown as such.
 //   $GPSGG,NQUERY,1,3,2,R,0,R,1,0,0,0,1,1,0*71
+#include "core/decode_with.h"
 #include "geostar_encode_util.h"
 #include "geostar_encoders.h"
 #include "geostar_messages.h"
@@ -30,9 +31,7 @@ std::string_view nqueryCodeMeaning(char code) {
 }
 
 bool decodeNquery(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Nquery m;
-    if (r.require(4)) {
+    return decodeWith<Nquery>(s, ctx, 4, [](FieldReader &r, Nquery &m) {
         m.port = r.integer(1, "port");
         m.rateCode = r.integer(2, "rate code");
         m.nmeaVersion = r.integer(3, "NMEA version");
@@ -49,8 +48,7 @@ bool decodeNquery(const Sentence &s, DecodeContext &ctx) {
         if (r.count() > 4 + Nquery::kMessages)
             r.failSentence(std::string(
                     QT_TRANSLATE_NOOP("Refusal", "NQUERY reply has more than 10 message codes")));
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 EncodeResult encodeNquery(const Nquery &m) {

@@ -6,6 +6,7 @@
 //          3 parameters: 4 hex digits (16 bits, short message) or 24 (96 bits, long message)
 //   $GPRLM,123456789ABCD12,000128.00,3,333344445555666677778888*64
 // Message codes: 0 reserved, 1 acknowledgement, 2 command, 3 message, 4-E reserved, F test.
+#include "core/decode_with.h"
 #include "geostar_encode_util.h"
 #include "geostar_encoders.h"
 #include "geostar_messages.h"
@@ -18,9 +19,7 @@ const MessageType Rlm::kType{"RLM"};
 using detail::isHex;
 
 bool decodeRlm(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Rlm m;
-    if (r.require(4)) {
+    return decodeWith<Rlm>(s, ctx, 4, [](FieldReader &r, Rlm &m) {
         m.beaconId = r.text(0);
         if (m.beaconId.size() != 15 || !isHex(m.beaconId))
             r.fail(0, "beacon id", QT_TRANSLATE_NOOP("Refusal", "not 15 hex digits"));
@@ -33,8 +32,7 @@ bool decodeRlm(const Sentence &s, DecodeContext &ctx) {
         m.parameters = r.text(3);
         if ((m.parameters.size() != 4 && m.parameters.size() != 24) || !isHex(m.parameters))
             r.fail(3, "parameters", QT_TRANSLATE_NOOP("Refusal", "not 4 or 24 hex digits"));
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 EncodeResult encodeRlm(const Rlm &m) {

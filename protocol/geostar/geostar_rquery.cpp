@@ -7,6 +7,7 @@
 //                                                            6 configuration register #2 (table 9)
 // Example (docs/spec-notes.md, "RQUERY"; the spec prints the address as $GPGSGG):
 //   $GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C
+#include "core/decode_with.h"
 #include "geostar_encode_util.h"
 #include "geostar_encoders.h"
 #include "geostar_messages.h"
@@ -46,9 +47,7 @@ bool appendWord(std::string &body, const EncodedWord &w) {
 } // namespace
 
 bool decodeRquery(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Rquery m;
-    if (r.require(7)) {
+    return decodeWith<Rquery>(s, ctx, 7, [](FieldReader &r, Rquery &m) {
         m.receiverName = r.text(1);
         m.firmware = r.text(2);
         m.firmwareVersion = m.firmware;
@@ -67,8 +66,7 @@ bool decodeRquery(const Sentence &s, DecodeContext &ctx) {
             m.config1 = ConfigRegister1::decode(*cfg1);
             m.config2 = ConfigRegister2::decode(*cfg2);
         }
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 EncodeResult encodeRquery(const Rquery &m) {

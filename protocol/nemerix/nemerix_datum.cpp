@@ -7,6 +7,8 @@
 //             [6000000, 9000000]
 //   $PNMRX106, 1, 216,*46                                           WGS 84
 //   $PNMRX106, 0,500, -2000,-2000,-2000, 8257224, 8137000*69        user datum (spec prints *00)
+#include "core/decode_with.h"
+#include "core/field_table.h"
 #include "core/sentence_builder.h"
 #include "nemerix_commands.h"
 
@@ -25,16 +27,19 @@ std::optional<double> DatumSetting::semiMajorAxis() const {
     return 6370000.0 + static_cast<double>(*majorARaw) / 1000.0;
 }
 
-bool decodeDatum(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    DatumSetting m;
-    m.correction = r.integer(0, "correction mode");
-    m.datum = r.integer(1, "map datum");
-    m.dx = r.integer(2, "dx");
-    m.dy = r.integer(3, "dy");
-    m.dz = r.integer(4, "dz");
-    m.iflatRaw = r.integer64(5, "inverse flatness");
-    m.majorARaw = r.integer64(6, "semi-major axis");
+namespace {
+const FieldRow<DatumSetting> kFields[] = {
+        {&DatumSetting::correction, "correction mode", "correction"},
+        {&DatumSetting::datum, "map datum", "datum"},
+        {&DatumSetting::dx, "dx", "dx"},
+        {&DatumSetting::dy, "dy", "dy"},
+        {&DatumSetting::dz, "dz", "dz"},
+        {&DatumSetting::iflatRaw, "inverse flatness", "iflat_raw"},
+        {&DatumSetting::majorARaw, "semi-major axis", "major_axis_raw"},
+};
+
+// The ranges the rows' values must lie in.
+void checkDatum(FieldReader &r, const DatumSetting &m) {
     if (m.correction && (*m.correction < 0 || *m.correction > 1))
         r.fail(0, "correction mode", QT_TRANSLATE_NOOP("Refusal", "not 0 or 1"));
     if (m.datum && !((*m.datum >= 0 && *m.datum <= 218) || *m.datum == 500))
@@ -48,7 +53,14 @@ bool decodeDatum(const Sentence &s, DecodeContext &ctx) {
                QT_TRANSLATE_NOOP("Refusal", "out of range 6000000..12000000"));
     if (m.majorARaw && (*m.majorARaw < 6000000 || *m.majorARaw > 9000000))
         r.fail(6, "semi-major axis", QT_TRANSLATE_NOOP("Refusal", "out of range 6000000..9000000"));
-    return finishDecode(r, ctx, m);
+}
+} // namespace
+
+bool decodeDatum(const Sentence &s, DecodeContext &ctx) {
+    return decodeWith<DatumSetting>(s, ctx, 0, [](FieldReader &r, DatumSetting &m) {
+        readFields(r, m, kFields);
+        checkDatum(r, m);
+    });
 }
 
 void DatumSetting::writeJson(JsonWriter &w) const {

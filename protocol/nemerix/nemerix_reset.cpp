@@ -10,6 +10,8 @@
 #include "core/field_parse.h"
 #include "nemerix_commands.h"
 
+#include <algorithm>
+
 namespace gnss::nemerix {
 
 const MessageType SoftwareReset::kType{"PNMRX111"};
@@ -22,9 +24,7 @@ constexpr const char *kBitNames[] = {
 constexpr std::string_view kNamed[] = {"FACTORY", "COLD", "WARM", "HOT"};
 
 bool isNamed(std::string_view s) {
-    for (auto n : kNamed)
-        if (n == s) return true;
-    return false;
+    return std::ranges::find(kNamed, s) != std::end(kNamed);
 }
 } // namespace
 

@@ -4,8 +4,12 @@
 //             0 protocol (0 NMEA, 1 Nemerix binary), 1 baud, 2 parity (0 none, 1 odd, 2 even)
 //   $PNMRX100,0,4800,0*48   4800 bps, no parity
 #include "core/baud_rates.h"
+#include "core/decode_with.h"
+#include "core/field_table.h"
 #include "nemerix_actions.h"
 #include "nemerix_commands.h"
+
+#include <algorithm>
 
 namespace gnss::nemerix {
 
@@ -13,25 +17,31 @@ const MessageType SerialPort::kType{"PNMRX100"};
 
 namespace {
 bool knownBaud(int b) {
-    for (int k : kSupportedBauds)
-        if (k == b) return true;
-    return false;
+    return std::ranges::find(kSupportedBauds, b) != std::end(kSupportedBauds);
 }
-} // namespace
 
-bool decodeSerialPort(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    SerialPort m;
-    m.protocol = r.integer(0, "protocol");
-    m.baud = r.integer(1, "baud");
-    m.parity = r.integer(2, "parity");
+const FieldRow<SerialPort> kFields[] = {
+        {&SerialPort::protocol, "protocol", "protocol"},
+        {&SerialPort::baud, "baud", "baud"},
+        {&SerialPort::parity, "parity", "parity"},
+};
+
+// The values the rows' fields may take.
+void checkSerialPort(FieldReader &r, const SerialPort &m) {
     if (m.protocol && (*m.protocol < 0 || *m.protocol > 1))
         r.fail(0, "protocol", QT_TRANSLATE_NOOP("Refusal", "not 0 or 1"));
     if (m.baud && !knownBaud(*m.baud))
         r.fail(1, "baud", QT_TRANSLATE_NOOP("Refusal", "not a supported speed"));
     if (m.parity && (*m.parity < 0 || *m.parity > 2))
         r.fail(2, "parity", QT_TRANSLATE_NOOP("Refusal", "not 0, 1 or 2"));
-    return finishDecode(r, ctx, m);
+}
+} // namespace
+
+bool decodeSerialPort(const Sentence &s, DecodeContext &ctx) {
+    return decodeWith<SerialPort>(s, ctx, 0, [](FieldReader &r, SerialPort &m) {
+        readFields(r, m, kFields);
+        checkSerialPort(r, m);
+    });
 }
 
 void SerialPort::writeJson(JsonWriter &w) const {

@@ -3,7 +3,7 @@
 #include "acme_dialect.h"
 
 #include "acme_sim_receiver.h"
-#include "core/finish_decode.h"
+#include "core/decode_with.h"
 #include "core/sentence_builder.h"
 #include "core/setting_command.h"
 #include "state/receiver_state.h"
@@ -16,13 +16,11 @@ const MessageType Version::kType{"PACMV"};
 const MessageType Setting::kType{"PACMC"};
 const MessageType Action::kType{"PACMA"};
 
-void Status::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("fix", fix)
-            .field("used", used)
-            .field("temperature", temperature)
-            .endObject();
-}
+const FieldRow<Status> Status::kFields[] = {
+        {&Status::fix, "fix", "fix"},
+        {&Status::used, "used", "used"},
+        {&Status::temperature, "temperature", "temperature"},
+};
 
 void Version::writeJson(JsonWriter &w) const {
     w.beginObject().field("model", model).field("firmware", firmware).endObject();
@@ -65,17 +63,6 @@ namespace {
 
 // ---- Decoders -------------------------------------------------------------------------------
 
-bool decodeStatus(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Status m;
-    if (r.require(3)) {
-        m.fix = r.integer(0, "fix");
-        m.used = r.integer(1, "used");
-        m.temperature = r.real(2, "temperature");
-    }
-    return finishDecode(r, ctx, m);
-}
-
 bool decodeVersion(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     Version m;
@@ -88,28 +75,22 @@ bool decodeVersion(const Sentence &s, DecodeContext &ctx) {
 }
 
 bool decodeSetting(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Setting m;
-    m.kind = s.address().back();
-    if (r.require(1)) {
+    return decodeWith<Setting>(s, ctx, 1, [&s](FieldReader &r, Setting &m) {
+        m.kind = s.address().back();
         m.name = r.text(0);
         if (m.kind == 'C' && r.require(2)) m.value = r.text(1);
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 bool decodeAction(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    Action m;
-    if (r.require(1)) {
+    return decodeWith<Action>(s, ctx, 1, [](FieldReader &r, Action &m) {
         m.what = r.text(0);
         m.ok = r.text(1) == "OK";
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 constexpr SentenceRule kRules[] = {
-        {"PACMS", AddressMatch::Whole, decodeStatus, "ACME status"},
+        {"PACMS", AddressMatch::Whole, decodeMessage<Status>, "ACME status"},
         {"PACMV", AddressMatch::Whole, decodeVersion, "ACME identity (request and reply)"},
         {"PACMC", AddressMatch::Whole, decodeSetting, "ACME setting: set, or its value"},
         {"PACMQ", AddressMatch::Whole, decodeSetting, "ACME setting read"},

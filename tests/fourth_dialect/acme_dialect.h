@@ -13,6 +13,7 @@
 //   $PACMN,<NAME>*hh                                        the receiver refuses a PACMC
 //   $PACMA,<SAVE|DEFAULTS|COLD|HOT>*hh                      actions, answered by PACMA,<x>,OK
 #include "core/dialect.h"
+#include "core/field_table.h"
 #include "core/message.h"
 
 #include <optional>
@@ -21,12 +22,13 @@
 
 namespace gnss::acme {
 
-struct Status : Message {
+// A plain list of fields: its rows (acme_dialect.cpp) decode it and write its JSON.
+struct Status : FieldMessage<Status> {
     static const MessageType kType;
-    Status() : Message(kType) {}
+    static const FieldRow<Status> kFields[3];
+    static constexpr std::size_t kRequired = 3;
     std::optional<int> fix, used;
     std::optional<double> temperature;
-    void writeJson(JsonWriter &w) const override;
 };
 
 struct Version : Message {
