@@ -13,6 +13,7 @@
 //     as-is); one with 11 hex fields is read without it. Encoding writes the table's 12 fields,
 //     "Mean" = M0 unless set.
 #include "nemerix_commands.h"
+#include "nemerix_fields.h"
 
 namespace gnss::nemerix {
 
@@ -43,8 +44,7 @@ std::span<const HexFieldDef> Almanac::fields() {
 bool decodeAlmanac(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     Almanac m;
-    std::size_t n = r.count();
-    while (n > 1 && r.empty(n - 1)) --n;
+    const std::size_t n = usedFields(r);
     if (n != 1 + Almanac::kFieldCount && n != Almanac::kFieldCount)
         r.failSentence(refusal(QT_TRANSLATE_NOOP("Refusal", "expected 12 (or 11) hex fields "
                                                             "after the SV id, got %1"),

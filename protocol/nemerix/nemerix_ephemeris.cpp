@@ -15,7 +15,9 @@
 // encodeEphemerisSubframe writes one message as the receiver sends it (each word in its
 // field's width: "$PNMRX301,5,1,3FC,00,0,00,0A4,0E10,00,0000,000000*hh").
 #include "nemerix_ephemeris.h"
+#include "core/decode_with.h"
 #include "nemerix_commands.h"
+#include "nemerix_fields.h"
 
 namespace gnss::nemerix {
 
@@ -81,9 +83,7 @@ Refusal EphemerisSubframe::setValue(int field, double v) {
 }
 
 bool decodeEphemeris(const Sentence &s, DecodeContext &ctx) {
-    FieldReader r(s);
-    EphemerisSubframe m;
-    if (r.require(2)) {
+    return decodeWith<EphemerisSubframe>(s, ctx, 2, [](FieldReader &r, EphemerisSubframe &m) {
         const auto sv = r.integer(0, "SV id");
         const auto sf = r.integer(1, "subframe");
         if (sv && (*sv < 1 || *sv > 32))
@@ -97,8 +97,7 @@ bool decodeEphemeris(const Sentence &s, DecodeContext &ctx) {
             m.sv = *sv;
             m.subframe = *sf;
             const auto defs = EphemerisSubframe::fields(m.subframe);
-            std::size_t n = r.count();
-            while (n > 2 && r.empty(n - 1)) --n;
+            const std::size_t n = usedFields(r);
             if (n != 2 + defs.size())
                 r.failSentence(refusal(QT_TRANSLATE_NOOP("Refusal", "subframe %1: expected %2 "
                                                                     "hex fields, got %3"),
@@ -110,8 +109,7 @@ bool decodeEphemeris(const Sentence &s, DecodeContext &ctx) {
                     r.fail(2 + f, defs[f].key.data(), QT_TRANSLATE_NOOP("Refusal", "missing"));
             }
         }
-    }
-    return finishDecode(r, ctx, m);
+    });
 }
 
 namespace {

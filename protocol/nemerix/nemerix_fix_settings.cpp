@@ -15,6 +15,7 @@
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"
 #include "nemerix_commands.h"
+#include "nemerix_fields.h"
 
 #include <cmath>
 
@@ -81,12 +82,9 @@ std::optional<int> parseTimeZone(std::string_view text) {
 bool decodeFixSettings(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     FixSettings m;
-    std::size_t n = r.count();
-    while (n > 0 && r.empty(n - 1)) --n;
-    if (n == 0) r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "no mask given")));
-    if (n % 2 != 0)
-        r.failSentence(std::string(
-                QT_TRANSLATE_NOOP("Refusal", "mask ids and values must come in pairs")));
+    const std::size_t n =
+            pairedFields(r, QT_TRANSLATE_NOOP("Refusal", "no mask given"),
+                         QT_TRANSLATE_NOOP("Refusal", "mask ids and values must come in pairs"));
     for (std::size_t i = 0; r.ok() && i + 1 < n; i += 2) {
         if (m.count == FixSettings::kMax) {
             r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many masks")));

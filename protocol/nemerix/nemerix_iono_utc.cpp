@@ -17,6 +17,7 @@
 // The encoders write what the receiver sends: each hex word in its field's width (IS-GPS-200),
 // the SV id in decimal, the health codes as given.
 #include "nemerix_commands.h"
+#include "nemerix_fields.h"
 
 namespace gnss::nemerix {
 
@@ -43,12 +44,6 @@ constexpr HexFieldDef kUtc[] = {
         {"num_blocks", 32, false, 0, ""}, {"time_offset", 32, false, 0, ""},
 };
 static_assert(std::size(kUtc) == UtcParameters::kFieldCount);
-
-std::size_t usedFields(const FieldReader &r) {
-    std::size_t n = r.count();
-    while (n > 0 && r.empty(n - 1)) --n;
-    return n;
-}
 } // namespace
 
 std::span<const HexFieldDef> Ionosphere::fields() {
@@ -82,12 +77,6 @@ bool decodeIonosphere(const Sentence &s, DecodeContext &ctx) {
     return finishDecode(r, ctx, m);
 }
 
-void Ionosphere::writeJson(JsonWriter &w) const {
-    w.beginObject().field("sv", sv);
-    writeHexFields(w, kIono, raw);
-    w.endObject();
-}
-
 bool decodeUtc(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     UtcParameters m;
@@ -99,12 +88,6 @@ bool decodeUtc(const Sentence &s, DecodeContext &ctx) {
     for (std::size_t f = 0; f < UtcParameters::kFieldCount && r.ok(); ++f)
         m.raw[f] = readHex(r, 1 + f, kUtc[f]);
     return finishDecode(r, ctx, m);
-}
-
-void UtcParameters::writeJson(JsonWriter &w) const {
-    w.beginObject().field("sv", sv);
-    writeHexFields(w, kUtc, raw);
-    w.endObject();
 }
 
 bool decodeHealth(const Sentence &s, DecodeContext &ctx) {

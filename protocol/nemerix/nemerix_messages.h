@@ -36,15 +36,19 @@ struct SerialPort : Message {
     void writeJson(JsonWriter &w) const override;
 };
 
+// The fields PNMRX101 and PNMRX104 end with.
+struct NavInitTail {
+    std::optional<int> clockOffset; // Hz x 100 w.r.t. L1
+    std::optional<int> timeOfWeek;  // s
+    std::optional<int> week;
+    std::optional<int> channels; // maximum number of tracking modules, 12..16
+};
+
 // PNMRX101: navigation initialisation (ECEF).
-struct NavInit : Message {
+struct NavInit : Message, NavInitTail {
     static const MessageType kType;
     NavInit() : Message(kType) {}
     std::optional<std::int64_t> x, y, z; // ECEF metres
-    std::optional<int> clockOffset;      // Hz x 100 w.r.t. L1
-    std::optional<int> timeOfWeek;       // s
-    std::optional<int> week;
-    std::optional<int> channels; // maximum number of tracking modules, 12..16
     // Fix procedure code: not in the field table, only in the examples ("$PNMRX101, 4," cold
     // start; "$PNMRX101,,,,,,,,,8," factory reset).
     std::optional<int> fixProcedure;
@@ -52,12 +56,11 @@ struct NavInit : Message {
 };
 
 // PNMRX104: navigation initialisation (latitude, longitude, altitude).
-struct LlaInit : Message {
+struct LlaInit : Message, NavInitTail {
     static const MessageType kType;
     LlaInit() : Message(kType) {}
     std::optional<double> lat, lon; // signed degrees
     std::optional<int> altitude;    // metres above MSL
-    std::optional<int> clockOffset, timeOfWeek, week, channels;
     void writeJson(JsonWriter &w) const override;
 };
 
@@ -197,13 +200,23 @@ struct EphemerisSubframe : Message {
     void writeJson(JsonWriter &w) const override;
 };
 
+// PNMRX302 and PNMRX303: the satellite's id (optional) and the N packed words of M::fields();
+// the JSON is the id, then every word (writeHexFields).
+template <class M, std::size_t N> struct SvHexWords : Message {
+    SvHexWords() : Message(M::kType) {}
+    std::optional<int> sv;
+    std::array<std::optional<std::int64_t>, N> raw{};
+    void writeJson(JsonWriter &w) const override {
+        w.beginObject().field("sv", sv);
+        writeHexFields(w, M::fields(), raw);
+        w.endObject();
+    }
+};
+
 // PNMRX302: ionospheric (Klobuchar) coefficients.
-struct Ionosphere : Message {
+struct Ionosphere : SvHexWords<Ionosphere, 8> {
     static const MessageType kType;
     static std::span<const HexFieldDef> fields(); // alpha0-3, beta0-3
-    Ionosphere() : Message(kType) {}
-    std::optional<int> sv;
-    std::array<std::optional<std::int64_t>, 8> raw{};
     std::optional<double> value(int field) const {
         return valueOf(fields(), raw, static_cast<std::size_t>(field));
     }
@@ -211,21 +224,17 @@ struct Ionosphere : Message {
     Refusal setValue(int field, double v) {
         return setValueOf(fields(), raw, static_cast<std::size_t>(field), v);
     }
-    void writeJson(JsonWriter &w) const override;
 };
 
 // PNMRX303: GPS-UTC parameters.
-struct UtcParameters : Message {
+struct UtcParameters : SvHexWords<UtcParameters, 10> {
     static const MessageType kType;
     enum Field { A0, A1, DtLs, Tot, WnT, WnLsf, Dn, DtLsf, NumBlocks, TimeOffset, kFieldCount };
+    static_assert(std::tuple_size_v<decltype(raw)> == kFieldCount);
     static std::span<const HexFieldDef> fields();
-    UtcParameters() : Message(kType) {}
-    std::optional<int> sv;
-    std::array<std::optional<std::int64_t>, kFieldCount> raw{};
     std::optional<double> value(Field f) const { return valueOf(fields(), raw, f); }
     // The inverse of value(), as Almanac::setValue.
     Refusal setValue(Field f, double v) { return setValueOf(fields(), raw, f, v); }
-    void writeJson(JsonWriter &w) const override;
 };
 
 // PNMRX304: constellation health; the spec leaves the fields "TBD": kept raw.

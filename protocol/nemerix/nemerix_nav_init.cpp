@@ -31,14 +31,27 @@ const char *fixProcedureName(const std::optional<int> &code) {
     }
 }
 
-void checkCommon(FieldReader &r, std::size_t first, const std::optional<int> &tow,
-                 const std::optional<int> &week, const std::optional<int> &channels) {
-    if (tow && (*tow < 0 || *tow > 604799))
-        r.fail(first, "time of week", QT_TRANSLATE_NOOP("Refusal", "out of range"));
-    if (week && (*week < 0 || *week > 9999))
-        r.fail(first + 1, "week number", QT_TRANSLATE_NOOP("Refusal", "out of range"));
-    if (channels && (*channels < 12 || *channels > 16))
-        r.fail(first + 2, "channel count", QT_TRANSLATE_NOOP("Refusal", "out of range 12..16"));
+// The tail's fields from field `first` (the clock offset), and their ranges.
+void readTail(FieldReader &r, std::size_t first, NavInitTail &t) {
+    t.clockOffset = r.integer(first, "clock offset");
+    t.timeOfWeek = r.integer(first + 1, "time of week");
+    t.week = r.integer(first + 2, "week number");
+    t.channels = r.integer(first + 3, "channel count");
+}
+void checkTail(FieldReader &r, std::size_t first, const NavInitTail &t) {
+    if (t.timeOfWeek && (*t.timeOfWeek < 0 || *t.timeOfWeek > 604799))
+        r.fail(first + 1, "time of week", QT_TRANSLATE_NOOP("Refusal", "out of range"));
+    if (t.week && (*t.week < 0 || *t.week > 9999))
+        r.fail(first + 2, "week number", QT_TRANSLATE_NOOP("Refusal", "out of range"));
+    if (t.channels && (*t.channels < 12 || *t.channels > 16))
+        r.fail(first + 3, "channel count", QT_TRANSLATE_NOOP("Refusal", "out of range 12..16"));
+}
+
+void writeTail(JsonWriter &w, const NavInitTail &t) {
+    w.field("clock_offset", t.clockOffset)
+            .field("time_of_week", t.timeOfWeek)
+            .field("week", t.week)
+            .field("channels", t.channels);
 }
 
 } // namespace
@@ -57,29 +70,19 @@ bool decodeNavInit(const Sentence &s, DecodeContext &ctx) {
     m.x = r.integer64(0, "ECEF x");
     m.y = r.integer64(1, "ECEF y");
     m.z = r.integer64(2, "ECEF z");
-    m.clockOffset = r.integer(3, "clock offset");
-    m.timeOfWeek = r.integer(4, "time of week");
-    m.week = r.integer(5, "week number");
-    m.channels = r.integer(6, "channel count");
+    readTail(r, 3, m);
     m.fixProcedure = r.integer(8, "fix procedure");
     if (r.ok() && (m.x.has_value() != m.y.has_value() || m.x.has_value() != m.z.has_value()))
         r.failSentence(std::string(
                 QT_TRANSLATE_NOOP("Refusal", "ECEF x, y and z must be given together")));
-    checkCommon(r, 4, m.timeOfWeek, m.week, m.channels);
+    checkTail(r, 3, m);
     return finishDecode(r, ctx, m);
 }
 
 void NavInit::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("ecef_x", x)
-            .field("ecef_y", y)
-            .field("ecef_z", z)
-            .field("clock_offset", clockOffset)
-            .field("time_of_week", timeOfWeek)
-            .field("week", week)
-            .field("channels", channels)
-            .field("fix_procedure", fixProcedure)
-            .key("fix_procedure_name");
+    w.beginObject().field("ecef_x", x).field("ecef_y", y).field("ecef_z", z);
+    writeTail(w, *this);
+    w.field("fix_procedure", fixProcedure).key("fix_procedure_name");
     if (const char *n = fixProcedureName(fixProcedure))
         w.value(n);
     else
@@ -93,29 +96,19 @@ bool decodeLlaInit(const Sentence &s, DecodeContext &ctx) {
     m.lat = r.latitude(0, "latitude");
     m.lon = r.longitude(2, "longitude");
     m.altitude = r.integer(4, "altitude");
-    m.clockOffset = r.integer(5, "clock offset");
-    m.timeOfWeek = r.integer(6, "time of week");
-    m.week = r.integer(7, "week number");
-    m.channels = r.integer(8, "channel count");
+    readTail(r, 5, m);
     if (r.ok() &&
         (m.lat.has_value() != m.lon.has_value() || m.lat.has_value() != m.altitude.has_value()))
         r.failSentence(std::string(QT_TRANSLATE_NOOP(
                 "Refusal", "latitude, longitude and altitude must be given together")));
-    checkCommon(r, 6, m.timeOfWeek, m.week, m.channels);
+    checkTail(r, 5, m);
     return finishDecode(r, ctx, m);
 }
 
 void LlaInit::writeJson(JsonWriter &w) const {
-    w.beginObject()
-            .field("lat", lat)
-            .field("lon", lon)
-            .field("altitude", altitude)
-            .field("clock_offset", clockOffset)
-            .field("time_of_week", timeOfWeek)
-            .field("week", week)
-            .field("channels", channels)
-            .field("resets_receiver", lat.has_value())
-            .endObject();
+    w.beginObject().field("lat", lat).field("lon", lon).field("altitude", altitude);
+    writeTail(w, *this);
+    w.field("resets_receiver", lat.has_value()).endObject();
 }
 
 namespace {

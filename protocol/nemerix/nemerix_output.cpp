@@ -7,6 +7,7 @@
 //   $PNMRX107,code,mode,...*hh   code: 300..304 ALL; mode: 0 off, 1 now, 2 on change, 3 both
 //   $PNMRX108,id,id,...*hh       the listed messages in this order, every second; others off
 #include "nemerix_commands.h"
+#include "nemerix_fields.h"
 
 #include <array>
 
@@ -32,12 +33,10 @@ bool oneOf(std::string_view id, const std::array<std::string_view, N> &ids, bool
 bool decodeRates(const Sentence &s, DecodeContext &ctx, const MessageType &type, bool nemerix) {
     FieldReader r(s);
     RateList m(type);
-    std::size_t n = r.count();
-    while (n > 0 && r.empty(n - 1)) --n; // fixed-length form: trailing empty field
-    if (n == 0) r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "no message id given")));
-    if (n % 2 != 0)
-        r.failSentence(std::string(
-                QT_TRANSLATE_NOOP("Refusal", "message ids and values must come in pairs")));
+    // The fixed-length form ends with an empty field.
+    const std::size_t n =
+            pairedFields(r, QT_TRANSLATE_NOOP("Refusal", "no message id given"),
+                         QT_TRANSLATE_NOOP("Refusal", "message ids and values must come in pairs"));
     for (std::size_t i = 0; r.ok() && i + 1 < n; i += 2) {
         if (m.count == RateList::kMax) {
             r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many entries")));
@@ -98,8 +97,7 @@ void RateList::writeJson(JsonWriter &w) const {
 bool decodeNmeaSequence(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     NmeaSequence m;
-    std::size_t n = r.count();
-    while (n > 0 && r.empty(n - 1)) --n;
+    const std::size_t n = usedFields(r);
     if (n == 0) r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "no message id given")));
     for (std::size_t i = 0; r.ok() && i < n; ++i) {
         if (m.count == NmeaSequence::kMax) {

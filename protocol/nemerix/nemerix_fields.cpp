@@ -1,0 +1,20 @@
+#include "nemerix_fields.h"
+
+#include <string>
+
+namespace gnss::nemerix {
+
+std::size_t usedFields(const FieldReader &r) {
+    std::size_t n = r.count();
+    while (n > 0 && r.empty(n - 1)) --n;
+    return n;
+}
+
+std::size_t pairedFields(FieldReader &r, const char *none, const char *unpaired) {
+    const std::size_t n = usedFields(r);
+    if (n == 0) r.failSentence(std::string(none));
+    if (n % 2 != 0) r.failSentence(std::string(unpaired));
+    return n;
+}
+
+} // namespace gnss::nemerix

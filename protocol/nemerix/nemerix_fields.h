@@ -1,0 +1,18 @@
+#pragma once
+// How the PNMRX decoders count a sentence's fields: the fixed-length forms end with empty fields,
+// and the list commands (PNMRX103, 107, 110) are (id, value) pairs.
+#include "core/field_reader.h"
+
+#include <cstddef>
+
+namespace gnss::nemerix {
+
+// The fields up to the last one that is not empty.
+std::size_t usedFields(const FieldReader &r);
+
+// The used fields of a list of (id, value) pairs; the sentence is refused with `none` when it
+// has none, with `unpaired` when they do not come in pairs (both texts are the refusal's, given
+// through QT_TRANSLATE_NOOP by the caller).
+std::size_t pairedFields(FieldReader &r, const char *none, const char *unpaired);
+
+} // namespace gnss::nemerix
