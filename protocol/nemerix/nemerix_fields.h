@@ -4,6 +4,8 @@
 #include "core/field_reader.h"
 
 #include <cstddef>
+#include <span>
+#include <string_view>
 
 namespace gnss::nemerix {
 
@@ -14,5 +16,9 @@ std::size_t usedFields(const FieldReader &r);
 // has none, with `unpaired` when they do not come in pairs (both texts are the refusal's, given
 // through QT_TRANSLATE_NOOP by the caller).
 std::size_t pairedFields(FieldReader &r, const char *none, const char *unpaired);
+
+// Every field's text as sent, into texts[count...] (PNMRX304, PNMRX600/602: fields the spec does
+// not lay out); the sentence is refused once they do not fit.
+void readTexts(FieldReader &r, std::span<std::string_view> texts, std::size_t &count);
 
 } // namespace gnss::nemerix

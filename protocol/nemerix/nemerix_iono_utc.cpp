@@ -93,13 +93,7 @@ bool decodeUtc(const Sentence &s, DecodeContext &ctx) {
 bool decodeHealth(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     ConstellationHealth m;
-    for (std::size_t i = 0; i < r.count(); ++i) {
-        if (m.count == ConstellationHealth::kMax) {
-            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many fields")));
-            break;
-        }
-        m.codes[m.count++] = r.text(i);
-    }
+    readTexts(r, m.codes, m.count);
     return finishDecode(r, ctx, m);
 }
 

@@ -17,6 +17,7 @@
 // the spec's table gives its field. The spec prints no example of a report.
 #include "core/sentence_builder.h"
 #include "nemerix_commands.h"
+#include "nemerix_fields.h"
 
 #include <cmath>
 
@@ -31,10 +32,7 @@ const HexFieldDef kWord{"word", 32, false, 0, ""};
 
 bool decodeSettingsReport(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
-    bool any = false;
-    for (std::size_t i = 0; i < r.count(); ++i)
-        if (!r.empty(i)) any = true;
-    if (!any) {
+    if (usedFields(r) == 0) {
         PlainCommand m(PlainCommand::kSettingsQueryType);
         return finishDecode(r, ctx, m);
     }

@@ -7,6 +7,7 @@
 //
 // encodeVersionReport writes a report's fields back as they were given.
 #include "nemerix_commands.h"
+#include "nemerix_fields.h"
 
 namespace gnss::nemerix {
 
@@ -18,21 +19,13 @@ const MessageType VersionReport::kFlashType{"PNMRX602"};
 namespace {
 
 bool hasFields(const Sentence &s) {
-    for (std::size_t i = 0; i < s.fieldCount(); ++i)
-        if (!s.field(i).empty()) return true;
-    return false;
+    return usedFields(FieldReader(s)) > 0;
 }
 
 bool decodeReport(const Sentence &s, DecodeContext &ctx, const MessageType &type) {
     FieldReader r(s);
     VersionReport m(type);
-    for (std::size_t i = 0; i < r.count(); ++i) {
-        if (m.count == VersionReport::kMax) {
-            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many fields")));
-            break;
-        }
-        m.fieldsText[m.count++] = r.text(i);
-    }
+    readTexts(r, m.fieldsText, m.count);
     return finishDecode(r, ctx, m);
 }
 
