@@ -88,20 +88,19 @@ char modeOf(FixKind k) {
 } // namespace
 
 GeoStarReceiver::GeoStarReceiver(const SimOptions &options)
-    : DialectReceiver(geostar::dialect(), {.baud = "port.BDR", .rate = "output.RATE"}, options) {
+    : DialectReceiver(geostar::dialect(), options) {
     seedPowerOn(store_, baud());
     almanacSince_ = kAlmanacAfter;
 }
 
 UseMask GeoStarReceiver::useMask() const {
-    UseMask m;
+    UseMask m = DialectReceiver::useMask();
     m.gps = gnssMode() != "GLN";
     m.glonass = gnssMode() != "GPS";
     m.galileo = gnssMode() == "MIX";
     m.beidou = false;
     m.beidouHardware = false; // GeoS-5: GPS, GLONASS, Galileo, QZSS, SBAS
     m.sbas = m.gps;
-    m.elevationMask = static_cast<int>(store_.integer("nav.ELEV"));
     return m;
 }
 

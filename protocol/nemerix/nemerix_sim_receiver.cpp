@@ -57,18 +57,15 @@ bool listed(const std::vector<std::string_view> &ids, std::string_view id) {
 } // namespace
 
 NemerixReceiver::NemerixReceiver(const SimOptions &options)
-    : DialectReceiver(nemerix::dialect(), {.baud = "serial.baud"}, options) {
+    : DialectReceiver(nemerix::dialect(), options) {
     for (const auto &[key, value] : kFactoryValues) store_.seed(key, std::string(value));
     if (options.baud > 0) store_.set("serial.baud", std::to_string(options.baud));
 }
 
 UseMask NemerixReceiver::useMask() const {
-    UseMask m;
-    m.gps = true;
-    m.glonass = m.galileo = m.beidou = m.sbas = false;
+    UseMask m = DialectReceiver::useMask();
+    m.glonass = m.galileo = m.beidou = m.sbas = false; // GPS only
     m.galileoHardware = m.beidouHardware = false;
-    m.elevationMask = static_cast<int>(store_.integer("fix.minElevation"));
-    m.snrMask = static_cast<int>(store_.integer("fix.minSnr"));
     return m;
 }
 

@@ -30,9 +30,7 @@ constexpr std::string_view kStationsKey = "idl.stations";
 
 } // namespace
 
-NvsReceiver::NvsReceiver(const SimOptions &options)
-    : DialectReceiver(nvs::dialect(), {.baud = baudKey(kCurrentPort), .rate = "rtk.PVTRATE"},
-                      options) {
+NvsReceiver::NvsReceiver(const SimOptions &options) : DialectReceiver(nvs::dialect(), options) {
     // What the schema leaves to the receiver. The base station the rover hears: its coordinates
     // are the values of BASEXYZ/BASEBLH.
     const Observer &o = options.observer;

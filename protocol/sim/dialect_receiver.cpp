@@ -1,19 +1,32 @@
 #include "dialect_receiver.h"
 
-#include <utility>
-
 namespace gnss::sim {
 
-DialectReceiver::DialectReceiver(const Dialect &dialect, RunKeys keys, const SimOptions &options)
-    : Receiver(dialect, options), store_(dialect), keys_(std::move(keys)) {}
+DialectReceiver::DialectReceiver(const Dialect &dialect, const SimOptions &options)
+    : Receiver(dialect, options), store_(dialect) {}
+
+std::string_view DialectReceiver::keyOf(SettingRole role) const {
+    const SettingDef *def = findSettingByRole(dialect().settings, role);
+    return def ? def->key : std::string_view();
+}
 
 double DialectReceiver::epochInterval() const {
-    const double hz = keys_.rate.empty() ? 1.0 : store_.real(keys_.rate, 1.0);
+    const std::string_view rate = keyOf(SettingRole::OutputRate);
+    const double hz = rate.empty() ? 1.0 : store_.real(rate, 1.0);
     return hz > 0 ? 1.0 / hz : Receiver::epochInterval();
 }
 
+UseMask DialectReceiver::useMask() const {
+    UseMask m;
+    if (const auto key = keyOf(SettingRole::ElevationMask); !key.empty())
+        m.elevationMask = store_.real(key, m.elevationMask);
+    if (const auto key = keyOf(SettingRole::SnrMask); !key.empty())
+        m.snrMask = store_.real(key, m.snrMask);
+    return m;
+}
+
 int DialectReceiver::portSpeed() const {
-    return static_cast<int>(store_.integer(keys_.baud, baud()));
+    return static_cast<int>(store_.integer(keyOf(SettingRole::PortSpeed), baud()));
 }
 
 void DialectReceiver::restoreFromFlash() {

@@ -1,31 +1,30 @@
 #pragma once
 // DialectReceiver: the simulated receiver of a family whose settings are its dialect's schema.
 // It owns them (a SettingsStore seeded from the schema's defaults, with the copy in flash) and
-// runs on two of them itself: the host port's speed (a power cycle brings it back from flash, a
-// command that changes it switches the port) and the navigation rate (the epoch interval). The
-// family's subclass holds the rest: what it sends, how it answers, what a reset clears.
+// runs on those the schema gives a role (SettingRole): the host port's speed (a power cycle
+// brings it back from flash; a command that changes it switches the port), the output rate (the
+// epoch interval) and the elevation and SNR masks (the satellites used). The family's subclass
+// holds the rest: what it sends, how it answers, what a reset clears.
 #include "receiver.h"
 #include "settings_store.h"
 
-#include <string>
+#include <string_view>
 
 namespace gnss::sim {
-
-// The schema keys of the settings the receiver runs on.
-struct RunKeys {
-    std::string baud; // the host port's speed, bit/s
-    std::string rate; // navigation epochs a second; empty: one epoch a second
-};
 
 class DialectReceiver : public Receiver {
 public:
     // The settings in force, by the schema's keys, with the copy in flash (settings().saved()).
     const SettingsStore &settings() const { return store_; }
+    // 1 / the output rate in force (Hz); a second where the schema has no output rate.
     double epochInterval() const override;
 
 protected:
-    DialectReceiver(const Dialect &dialect, RunKeys keys, const SimOptions &options);
+    DialectReceiver(const Dialect &dialect, const SimOptions &options);
 
+    // Every system, with the elevation and SNR masks in force (the defaults of UseMask where the
+    // schema has no such setting).
+    UseMask useMask() const override;
     // The port's speed in force (the current one while the store has none).
     int portSpeed() const;
     // A power cycle's settings: the copy in flash in force again, the port at its speed.
@@ -34,7 +33,8 @@ protected:
     SettingsStore store_;
 
 private:
-    RunKeys keys_;
+    // The key of the schema's setting of `role`; empty when it has none.
+    std::string_view keyOf(SettingRole role) const;
 };
 
 } // namespace gnss::sim

@@ -13,7 +13,7 @@ constexpr const char *kFirmware = "4.2.0";
 class AcmeReceiver : public sim::DialectReceiver {
 public:
     explicit AcmeReceiver(const sim::SimOptions &options)
-        : DialectReceiver(acme::dialect(), {.baud = "acme.BAUD", .rate = "acme.RATE"}, options) {
+        : DialectReceiver(acme::dialect(), options) {
         style_.numbering = sim::Numbering::Nmea41;
     }
 
@@ -47,12 +47,6 @@ protected:
 
     void onReset(sim::ResetKind kind) override {
         if (kind == sim::ResetKind::PowerCycle) restoreFromFlash();
-    }
-
-    sim::UseMask useMask() const override {
-        sim::UseMask m;
-        m.elevationMask = store_.real("acme.ELEV");
-        return m;
     }
 
 private:
