@@ -442,9 +442,7 @@ void MainWindow::updateStatus() {
     const bool any = (live || log) && stateModel_->epochCount() > 0;
     const FixType fix = any ? stateModel_->state().epoch.fix : FixType::None;
     fixLabel_->setText(any ? style::fixTypeLabel(fix) : tr("No fix"));
-    fixLabel_->setStyleSheet(
-            QStringLiteral("background: %1; color: white; border-radius: 4px; padding: 1px 6px;")
-                    .arg(style::fixTypeColor(fix).name()));
+    fixLabel_->setStyleSheet(style::badgeCss(style::fixTypeColor(fix), 4, "1px 6px"));
 }
 
 void MainWindow::toggleRecording(bool on) {

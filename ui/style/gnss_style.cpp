@@ -100,4 +100,15 @@ QString textColorCss(const QColor &c) {
     return QStringLiteral("color: %1;").arg(c.name());
 }
 
+QColor badgeTextColor() {
+    return QColor(Qt::white);
+}
+
+QString badgeCss(const QColor &background, int radius, const char *padding) {
+    return QStringLiteral("background: %1; %2 border-radius: %3px; padding: %4;")
+            .arg(background.name(), textColorCss(badgeTextColor()))
+            .arg(radius)
+            .arg(QLatin1String(padding));
+}
+
 } // namespace gnss::style

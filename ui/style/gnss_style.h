@@ -32,5 +32,10 @@ enum class LineTone { Blue, Vermillion, BluishGreen, ReddishPurple };
 QColor lineColor(LineTone t);
 // For widgets coloured by a style sheet: "color: #rrggbb;".
 QString textColorCss(const QColor &c);
+// Text on a coloured badge (the fix badges of the status bar, the Fix and RTK docks).
+QColor badgeTextColor();
+// A badge's style sheet declarations: badge text on `background`, corners rounded by `radius`
+// px, `padding` as CSS ("1px 6px").
+QString badgeCss(const QColor &background, int radius, const char *padding);
 
 } // namespace gnss::style

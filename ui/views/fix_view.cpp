@@ -90,9 +90,7 @@ void FixView::refresh() {
     if (!e.fixNote.empty()) text += QStringLiteral(" · ") + QString::fromStdString(e.fixNote);
     badge_->setText(text);
     const QColor c = style::fixTypeColor(fix);
-    badge_->setStyleSheet(QStringLiteral("QLabel { background: %1; color: white; border-radius: "
-                                         "6px; padding: 4px 10px; }")
-                                  .arg(c.name()));
+    badge_->setStyleSheet(QStringLiteral("QLabel { %1 }").arg(style::badgeCss(c, 6, "4px 10px")));
     const UnitSystem units = prefs_.units;
     lat_->setText(fmt::latitude(e.lat, prefs_.coordinates));
     lon_->setText(fmt::longitude(e.lon, prefs_.coordinates));

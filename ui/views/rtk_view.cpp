@@ -223,7 +223,7 @@ void RtkView::refresh() {
         mode_->setText(word);
         QPalette p;
         p.setColor(QPalette::Window, style::fixTypeColor(fixTypeFromModeIndicator(*r.mode)));
-        p.setColor(QPalette::WindowText, Qt::white);
+        p.setColor(QPalette::WindowText, style::badgeTextColor());
         mode_->setPalette(p);
     } else {
         mode_->setText(fmt::dash());
