@@ -79,44 +79,45 @@ std::optional<int> parseTimeZone(std::string_view text) {
     return negative ? -total : total;
 }
 
+namespace {
+// One PNMRX110 pair, the id in field i; a problem ends the list (the reader is failed).
+void readMask(FieldReader &r, FixMask &f, std::size_t i) {
+    const auto id = r.integer(i, "mask id");
+    if (!id) {
+        if (r.ok()) r.fail(i, "mask id", QT_TRANSLATE_NOOP("Refusal", "missing"));
+        return;
+    }
+    if (*id < 0 || *id >= kMaskCount) {
+        r.fail(i, "mask id", QT_TRANSLATE_NOOP("Refusal", "unknown mask (0..10)"));
+        return;
+    }
+    f.id = *id;
+    f.text = r.text(i + 1);
+    if (f.id == 0) {
+        f.tzMinutes = parseTimeZone(f.text);
+        if (!f.tzMinutes)
+            r.fail(i + 1, "local time zone", QT_TRANSLATE_NOOP("Refusal", "expected h:m"));
+        return;
+    }
+    const auto v = r.integer64(i + 1, kMasks[f.id].name);
+    if (!v) {
+        if (r.ok()) r.fail(i + 1, kMasks[f.id].name, QT_TRANSLATE_NOOP("Refusal", "missing"));
+        return;
+    }
+    if (!validValue(f.id, *v))
+        r.fail(i + 1, kMasks[f.id].name, QT_TRANSLATE_NOOP("Refusal", "out of range"));
+    f.value = static_cast<double>(*v) / kMasks[f.id].divisor;
+}
+} // namespace
+
 bool decodeFixSettings(const Sentence &s, DecodeContext &ctx) {
     FieldReader r(s);
     FixSettings m;
     const std::size_t n =
             pairedFields(r, QT_TRANSLATE_NOOP("Refusal", "no mask given"),
                          QT_TRANSLATE_NOOP("Refusal", "mask ids and values must come in pairs"));
-    for (std::size_t i = 0; r.ok() && i + 1 < n; i += 2) {
-        if (m.count == FixSettings::kMax) {
-            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many masks")));
-            break;
-        }
-        FixMask &f = m.masks[m.count++];
-        const auto id = r.integer(i, "mask id");
-        if (!id) {
-            if (r.ok()) r.fail(i, "mask id", QT_TRANSLATE_NOOP("Refusal", "missing"));
-            break;
-        }
-        if (*id < 0 || *id >= kMaskCount) {
-            r.fail(i, "mask id", QT_TRANSLATE_NOOP("Refusal", "unknown mask (0..10)"));
-            break;
-        }
-        f.id = *id;
-        f.text = r.text(i + 1);
-        if (f.id == 0) {
-            f.tzMinutes = parseTimeZone(f.text);
-            if (!f.tzMinutes)
-                r.fail(i + 1, "local time zone", QT_TRANSLATE_NOOP("Refusal", "expected h:m"));
-            continue;
-        }
-        const auto v = r.integer64(i + 1, kMasks[f.id].name);
-        if (!v) {
-            if (r.ok()) r.fail(i + 1, kMasks[f.id].name, QT_TRANSLATE_NOOP("Refusal", "missing"));
-            break;
-        }
-        if (!validValue(f.id, *v))
-            r.fail(i + 1, kMasks[f.id].name, QT_TRANSLATE_NOOP("Refusal", "out of range"));
-        f.value = static_cast<double>(*v) / kMasks[f.id].divisor;
-    }
+    readPairs(r, n, m.masks, m.count, QT_TRANSLATE_NOOP("Refusal", "too many masks"),
+              [&r](FixMask &f, std::size_t i) { readMask(r, f, i); });
     return finishDecode(r, ctx, m);
 }
 

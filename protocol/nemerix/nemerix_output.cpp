@@ -30,6 +30,18 @@ bool oneOf(std::string_view id, const std::array<std::string_view, N> &ids, bool
     return false;
 }
 
+// One PNMRX103 (rate) or PNMRX107 (mode) pair, the id in field i.
+void readRate(FieldReader &r, RateEntry &e, std::size_t i, bool nemerix) {
+    e.id = r.text(i);
+    const bool known = nemerix ? oneOf(e.id, kNemerixIds, true) : oneOf(e.id, kNmeaIds, true);
+    if (!known) r.fail(i, "message id", QT_TRANSLATE_NOOP("Refusal", "unknown message"));
+    e.value = r.integer(i + 1, nemerix ? "mode" : "rate");
+    if (e.value && (*e.value < 0 || *e.value > (nemerix ? 3 : 9)))
+        r.fail(i + 1, nemerix ? "mode" : "rate",
+               nemerix ? QT_TRANSLATE_NOOP("Refusal", "not 0..3")
+                       : QT_TRANSLATE_NOOP("Refusal", "not 0..9"));
+}
+
 bool decodeRates(const Sentence &s, DecodeContext &ctx, const MessageType &type, bool nemerix) {
     FieldReader r(s);
     RateList m(type);
@@ -37,21 +49,8 @@ bool decodeRates(const Sentence &s, DecodeContext &ctx, const MessageType &type,
     const std::size_t n =
             pairedFields(r, QT_TRANSLATE_NOOP("Refusal", "no message id given"),
                          QT_TRANSLATE_NOOP("Refusal", "message ids and values must come in pairs"));
-    for (std::size_t i = 0; r.ok() && i + 1 < n; i += 2) {
-        if (m.count == RateList::kMax) {
-            r.failSentence(std::string(QT_TRANSLATE_NOOP("Refusal", "too many entries")));
-            break;
-        }
-        RateEntry &e = m.entries[m.count++];
-        e.id = r.text(i);
-        const bool known = nemerix ? oneOf(e.id, kNemerixIds, true) : oneOf(e.id, kNmeaIds, true);
-        if (!known) r.fail(i, "message id", QT_TRANSLATE_NOOP("Refusal", "unknown message"));
-        e.value = r.integer(i + 1, nemerix ? "mode" : "rate");
-        if (e.value && (*e.value < 0 || *e.value > (nemerix ? 3 : 9)))
-            r.fail(i + 1, nemerix ? "mode" : "rate",
-                   nemerix ? QT_TRANSLATE_NOOP("Refusal", "not 0..3")
-                           : QT_TRANSLATE_NOOP("Refusal", "not 0..9"));
-    }
+    readPairs(r, n, m.entries, m.count, QT_TRANSLATE_NOOP("Refusal", "too many entries"),
+              [&r, nemerix](RateEntry &e, std::size_t i) { readRate(r, e, i, nemerix); });
     return finishDecode(r, ctx, m);
 }
 
