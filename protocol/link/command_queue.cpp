@@ -112,8 +112,7 @@ bool CommandQueue::cancel(int id) {
         r.outcome = CommandOutcome::Cancelled;
         r.detail = tr("cancelled before it was sent");
         queue_.erase(it);
-        history_.append(r);
-        emit commandFinished(r);
+        conclude(r);
         return true;
     }
     return false;
@@ -344,9 +343,14 @@ void CommandQueue::onLinkDown() {
         r.outcome = CommandOutcome::LinkLost;
         r.detail = tr("not sent: the link was lost");
         queue_.pop_front();
-        history_.append(r);
-        emit commandFinished(r);
+        conclude(r);
     }
+}
+
+void CommandQueue::conclude(const CommandResult &r) {
+    history_.append(r);
+    if (history_.size() > kHistoryLimit) history_.removeFirst();
+    emit commandFinished(r);
 }
 
 void CommandQueue::finish(CommandOutcome outcome, const QString &detail) {
@@ -359,8 +363,7 @@ void CommandQueue::finish(CommandOutcome outcome, const QString &detail) {
     current_.reset();
     rule_ = nullptr;
     phase_ = Phase::Waiting;
-    history_.append(r);
-    emit commandFinished(r);
+    conclude(r);
     if (!queue_.empty())
         QMetaObject::invokeMethod(this, &CommandQueue::startNext, Qt::QueuedConnection);
     else if (!current_)

@@ -86,6 +86,9 @@ public:
 
     bool isBusy() const { return current_.has_value(); }
     int pendingCount() const { return static_cast<int>(queue_.size()) + (isBusy() ? 1 : 0); }
+    // The results of the last kHistoryLimit commands, oldest first: a tool left running for days
+    // next to a receiver (a poll every second) keeps the recent ones, not every one.
+    static constexpr qsizetype kHistoryLimit = 1000;
     const QList<CommandResult> &history() const { return history_; }
 
     // The reply rule for a command, among `rules` (a rule naming the first field wins).
@@ -134,6 +137,8 @@ private:
     QTimer timer_;
     QElapsedTimer elapsed_;
     QList<CommandResult> history_;
+    // Keeps `r` in the history (the oldest dropped past kHistoryLimit) and says it is finished.
+    void conclude(const CommandResult &r);
     int nextId_ = 1;
 };
 

@@ -285,6 +285,21 @@ private slots:
         QCOMPARE(rig.q.history().first().outcome, CommandOutcome::LinkLost);
         QCOMPARE(rig.link.baud(), 115200);
     }
+
+    // A session polling for days keeps the last results, not all of them; every command is still
+    // reported as it finishes.
+    void historyKeepsTheLastCommands() {
+        QueueRig rig;
+        QSignalSpy finished(&rig.q, &CommandQueue::commandFinished);
+        const int n = int(CommandQueue::kHistoryLimit) + 5;
+        int last = -1;
+        for (int i = 0; i < n; ++i) last = rig.q.enqueue("PNVGRST,W");
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), n, 20000);
+        QCOMPARE(rig.q.history().size(), CommandQueue::kHistoryLimit);
+        QCOMPARE(rig.q.history().last().id, last);
+        QCOMPARE(rig.q.history().first().id, last - int(CommandQueue::kHistoryLimit) + 1);
+        QCOMPARE(rig.link.written.size(), n);
+    }
 };
 
 QTEST_GUILESS_MAIN(TstCommandQueue)
