@@ -4,10 +4,12 @@
 // with a test dialect whose decoder counts its calls.
 #include "baud_detector.h"
 #include "command_queue.h"
+#include "config/settings_engine.h"
 #include "connection.h"
 #include "core/sentence_builder.h"
 #include "dialects.h"
 #include "fake_transport.h"
+#include "models/receiver_session.h"
 #include "nmea/nmea_rules.h"
 #include "vendor_detector.h"
 
@@ -54,6 +56,22 @@ private slots:
         // recorder among them), and two more of the kind a view adds.
         BaudDetector baud(conn.stream());
         VendorDetector vendor(conn.stream());
+        // The settings engine on the connection, and the views' session fed as the application's
+        // connection controller feeds it (its counts from the link's decoder).
+        config::SettingsEngine engine;
+        engine.attach(&conn, registry.find("counting"));
+        ui::ReceiverStateModel stateModel;
+        ui::SatelliteModel satellites;
+        ui::MessageStatsModel messages;
+        ui::ConsoleModel console;
+        ui::ReceiverSession session(registry, {&stateModel, &satellites, &messages, &console});
+        session.setCounterSource(&conn.decoder());
+        int consumed = 0;
+        connect(conn.stream(), &SentenceStream::sentenceDecoded, &session,
+                [&](const SentenceEvent &ev) {
+                    session.consume(ev, conn.stream()->dialect());
+                    ++consumed;
+                });
         int heard[2] = {0, 0};
         for (int &n : heard)
             connect(conn.stream(), &SentenceStream::sentenceDecoded, this,
@@ -83,6 +101,10 @@ private slots:
         QCOMPARE(conn.bytesReceived(), quint64(all.size()));
         QCOMPARE(conn.decoder().framerStats().bytesIn, std::uint64_t(all.size()));
         QCOMPARE(conn.decoder().framerStats().sentences, std::uint64_t(kSentences));
+        QCOMPARE(consumed, kSentences);
+        session.refresh();
+        QCOMPARE(session.counters().bytes, quint64(all.size()));
+        QCOMPARE(session.counters().sentences, quint64(kSentences));
     }
 };
 
