@@ -289,8 +289,20 @@ int cmdConfig(const CliContext &ctx) {
         say(error);
         return 2;
     }
+    // The profile's form, dialect and keys were checked when it was read, before the port was
+    // written to. The receiver's model is known once it is read: nothing is written to a
+    // receiver of another model; and the values that differ are all checked before the first
+    // is sent (the engine's apply).
     if (!reportRead(run(engine, [&] { return engine.read(); }))) return 1;
-    if (action == "apply") return applyValues(engine, [&] { return engine.applyProfile(profile); });
+    if (action == "apply") {
+        if (const QString why =
+                    config::profileMismatch(profile, l.dialect, engine.identity().model);
+            !why.isEmpty()) {
+            say(why);
+            return 2;
+        }
+        return applyValues(engine, [&] { return engine.applyProfile(profile); });
+    }
     // diff
     const auto entries = engine.diff(profile);
     for (const auto &d : entries) {

@@ -557,10 +557,9 @@ std::vector<DiffEntry> SettingsEngine::diff(const Profile &p) const {
 }
 
 bool SettingsEngine::applyProfile(const Profile &p) {
-    if (dialect_ && p.dialect != dialect_->id) {
+    if (const QString why = profileMismatch(p, dialect_, identity().model); !why.isEmpty()) {
         if (!begin(Operation::Apply, tr("Apply profile"))) return false;
-        report_.error = tr("the profile is for dialect '%1', the receiver speaks '%2'")
-                                .arg(qs(p.dialect), qs(dialect_->id));
+        report_.error = why;
         end();
         return false;
     }

@@ -1,6 +1,9 @@
 #include "settings_profile.h"
 
+#include "refusal_text.h"
 #include "setting_values.h"
+
+#include "core/settings_plan.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -60,9 +63,7 @@ bool profileFromJson(const QByteArray &json, Profile &out, QString *error, const
     p.model = o["model"].toString().toStdString();
     p.firmware = o["firmware"].toString().toStdString();
     p.created = o["created"].toString().toStdString();
-    if (dialect && p.dialect != dialect->id)
-        return fail(QObject::tr("the profile is for dialect '%1', the receiver speaks '%2'")
-                            .arg(qs(p.dialect), qs(dialect->id)));
+    if (const QString why = profileMismatch(p, dialect, {}); !why.isEmpty()) return fail(why);
     const QJsonObject values = o["values"].toObject();
     QStringList unknown, invalid;
     for (auto it = values.begin(); it != values.end(); ++it) {
@@ -106,6 +107,27 @@ bool profileFromJson(const QByteArray &json, Profile &out, QString *error, const
     if (!invalid.isEmpty()) return fail(invalid.join("; "));
     out = std::move(p);
     return true;
+}
+
+QString profileMismatch(const Profile &p, const Dialect *dialect, std::string_view receiverModel) {
+    if (dialect && p.dialect != dialect->id)
+        return QObject::tr("the profile is for dialect '%1', the receiver speaks '%2'")
+                .arg(qs(p.dialect), qs(dialect->id));
+    if (!p.model.empty() && !receiverModel.empty() && p.model != receiverModel)
+        return QObject::tr("the profile is for the %1, the receiver is a %2: export a profile "
+                           "from a %2, or edit the file's \"model\" if the settings suit it")
+                .arg(qs(p.model), qs(receiverModel));
+    return {};
+}
+
+QStringList refusedValues(const Dialect &dialect, const std::vector<KeyValue> &values) {
+    QStringList out;
+    for (const KeyValue &kv : values) {
+        std::vector<PlannedCommand> plan;
+        if (const Refusal why = planWrites(dialect, {&kv, 1}, plan); !why.empty())
+            out << refusalText(why, dialect.id);
+    }
+    return out;
 }
 
 bool saveProfile(const QString &path, const Profile &p, QString *error) {

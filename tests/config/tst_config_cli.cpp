@@ -1,6 +1,9 @@
 // gnss-cli config end to end: against gnss-sim on a pseudo-terminal (get, set, export, diff,
-// apply, a refused value), and against the in-process simulator (--sim).
+// apply, a refused value), against the in-process simulator (--sim), and bad input (profiles
+// that cannot be applied, sources that cannot be opened) refused with nothing sent.
+#include "bad_input_files.h"
 #include "cli_run.h"
+#include "listening_pty.h"
 #include "sim_process.h"
 
 #include <QJsonArray>
@@ -22,6 +25,12 @@ Run cli(const QStringList &args) {
 
 QByteArray why(const Run &r) {
     return "rc " + QByteArray::number(r.exitCode) + "\n" + r.out + "\n" + r.err;
+}
+
+QByteArray nvsProfile(const QByteArray &values, const QByteArray &model = "NV08C-RTA") {
+    return "{\"format\":\"gnss-workbench-settings\",\"version\":1,\"dialect\":\"nvs\","
+           "\"model\":\"" +
+           model + "\",\"values\":{" + values + "}}";
 }
 
 } // namespace
@@ -77,6 +86,113 @@ private slots:
         r = cli({"--port", sim.device, "get", "rtk.PVTRATE"});
         QVERIFY2(r.exitCode == 0, why(r));
         QVERIFY2(r.out.contains("\"rtk.PVTRATE\":\"5\""), why(r));
+    }
+
+    // A profile that cannot be applied is refused before the port is written to at all (not
+    // even a query): the port is a pseudo-terminal the test reads.
+    void aBadProfileIsRefusedBeforeAnythingIsSent_data() {
+        QTest::addColumn<QString>("action");
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("words");
+        const QByteArray geostar = R"({"format":"gnss-workbench-settings","version":1,)"
+                                   R"("dialect":"geostar","values":{"nav.ELEV":"5"}})";
+        for (const QString action : {"apply", "diff"}) {
+            auto row = [&](const char *name) -> QTestData & {
+                return QTest::addRow("%s: %s", qPrintable(action), name) << action;
+            };
+            row("not JSON") << QByteArray("rtk.ELGPS=12\n") << "not a settings profile";
+            row("cut short") << nvsProfile(R"("rtk.ELGPS":"12")").left(50)
+                             << "not a settings profile";
+            row("a newer version") << nvsProfile({}).replace(R"("version":1)", R"("version":9)")
+                                   << "profile version 9 is not supported";
+            row("another dialect")
+                    << geostar << "the profile is for dialect 'geostar', the receiver speaks 'nvs'";
+            row("an unknown key") << nvsProfile(R"("rtk.ELGPS":"12","rtk.WARP":"9")")
+                                  << "cannot set: rtk.WARP";
+        }
+    }
+    void aBadProfileIsRefusedBeforeAnythingIsSent() {
+        QFETCH(QString, action);
+        QFETCH(QByteArray, json);
+        QFETCH(QString, words);
+        gnss::test::ListeningPty pty;
+        if (!pty.ok()) QSKIP("no pseudo-terminal");
+        QTemporaryDir dir;
+        const QString file = gnss::test::writeUserFile(dir, "bad.json", json);
+        QVERIFY(!file.isEmpty());
+        const Run r =
+                cli({"--port", pty.device(), "--baud", "115200", "--dialect", "nvs", action, file});
+        QVERIFY2(r.exitCode == 2, why(r)); // a usage error: the profile is not for this receiver
+        QVERIFY2(r.err.contains(words.toUtf8()), why(r));
+        QVERIFY2(r.out.isEmpty(), why(r));
+        QCOMPARE(pty.written(), QByteArray());
+    }
+
+    // A profile of another model, or with a value out of range: the receiver is read (which
+    // tells its model and what differs), nothing is written to it, and its settings are as
+    // they were.
+    void aProfileThatDoesNotSuitTheReceiverChangesNothing_data() {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("words");
+        QTest::newRow("another model")
+                << nvsProfile(R"("rtk.ELGPS":"33")", "NV08C-CSM") << 2
+                << "the profile is for the NV08C-CSM, the receiver is a NV08C-RTA";
+        QTest::newRow("a value out of range")
+                << nvsProfile(R"("rtk.ELGPS":"33","rtk.ELGLO":"91")") << 1
+                << "nothing was sent: rtk.ELGLO: 91 is out of range; accepted: 0..90";
+    }
+    void aProfileThatDoesNotSuitTheReceiverChangesNothing() {
+        QFETCH(QByteArray, json);
+        QFETCH(int, exitCode);
+        QFETCH(QString, words);
+        if (gnss::link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
+        SimProcess sim({"--dialect", "nvs"});
+        if (!sim.ok()) QSKIP(qPrintable("no pseudo-terminal: " + sim.error));
+        const QStringList port{"--port", sim.device, "--baud", "115200", "--dialect", "nvs"};
+        QTemporaryDir dir;
+        const QString file = gnss::test::writeUserFile(dir, "profile.json", json);
+        QVERIFY(!file.isEmpty());
+        Run r = cli(port + QStringList{"apply", file});
+        QVERIFY2(r.exitCode == exitCode, why(r));
+        QVERIFY2(r.err.contains(words.toUtf8()), why(r));
+        QVERIFY2(!r.out.contains("\"sentence\""), why(r)); // no command went out
+        r = cli(port + QStringList{"get", "rtk.ELGPS", "rtk.ELGLO"});
+        QVERIFY2(r.exitCode == 0, why(r));
+        QVERIFY2(!r.out.contains("\"rtk.ELGPS\":\"33\""), why(r));
+        QVERIFY2(!r.out.contains("\"rtk.ELGLO\":\"91\""), why(r));
+    }
+
+    // A source that cannot be opened: said so, and how it is spelled when it is malformed.
+    void aSourceThatCannotBeOpenedIsSaidSo_data() {
+        QTest::addColumn<QStringList>("source");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("words");
+        QTest::newRow("a misspelled port")
+                << QStringList{"--port", "/dev/ttyUSB-no-such"} << 1
+                << "Cannot open /dev/ttyUSB-no-such: No such file or directory";
+        QTest::newRow("a port name without /dev")
+                << QStringList{"--port", "ttyNOSUCH9"} << 1 << "Cannot open ttyNOSUCH9";
+        QTest::newRow("a closed TCP port") << QStringList{"--tcp", "127.0.0.1:1"} << 1
+                                           << "Cannot connect to 127.0.0.1:1: Connection refused";
+        QTest::newRow("TCP without a port")
+                << QStringList{"--tcp", "127.0.0.1"} << 2 << "--tcp takes HOST:PORT";
+        QTest::newRow("TCP port out of range")
+                << QStringList{"--tcp", "localhost:70000"} << 2 << "--tcp takes HOST:PORT";
+        QTest::newRow("a simulator of no dialect")
+                << QStringList{"--sim", "garmin"} << 2 << "garmin";
+        QTest::newRow("a speed that is none")
+                << QStringList{"--port", "/dev/null", "--baud", "fast"} << 2
+                << "--baud expects a speed";
+    }
+    void aSourceThatCannotBeOpenedIsSaidSo() {
+        QFETCH(QStringList, source);
+        QFETCH(int, exitCode);
+        QFETCH(QString, words);
+        const Run r = cli(source + QStringList{"get"});
+        QVERIFY2(r.exitCode == exitCode, why(r));
+        QVERIFY2(r.err.contains(words.toUtf8()), why(r));
+        QVERIFY2(r.out.isEmpty(), why(r));
     }
 
     void configOnTheInProcessSimulatorRefusesBadValuesBeforeSending() {

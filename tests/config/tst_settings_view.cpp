@@ -11,6 +11,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -209,6 +210,50 @@ private slots:
         QVERIFY(view.isEdited("rtk.ELSBAS"));
         QVERIFY(waitFor(rig.engine, [&] { view.applyEdits(); }).ok());
         QVERIFY(rig.engine.diff(p).empty());
+    }
+
+    // Profile > Import of a profile that cannot be applied: its error, no edit loaded (so Apply
+    // has nothing to send), nothing sent.
+    void aProfileThatCannotBeAppliedLoadsNothing_data() {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("why");
+        auto profile = [](const QByteArray &dialect, const QByteArray &model,
+                          const QByteArray &values) {
+            return "{\"format\":\"gnss-workbench-settings\",\"version\":1,\"dialect\":\"" +
+                   dialect + "\",\"model\":\"" + model + "\",\"values\":{" + values + "}}";
+        };
+        QTest::newRow("not a profile") << QByteArray("<html>") << "not a settings profile";
+        QTest::newRow("another dialect")
+                << profile("geostar", "GeoS-5M", R"("nav.ELEV":"5")")
+                << "the profile is for dialect 'geostar', the receiver speaks 'nvs'";
+        QTest::newRow("another model") << profile("nvs", "NV08C-CSM", R"("rtk.ELSBAS":"25")")
+                                       << "the profile is for the NV08C-CSM, the receiver is a";
+        QTest::newRow("out of range") << profile("nvs", "", R"("rtk.ELSBAS":"25","rtk.SNR":"150")")
+                                      << "rtk.SNR: 150 is out of range";
+        QTest::newRow("an unknown key")
+                << profile("nvs", "", R"("rtk.ELSBAS":"25","nav.ELEV":"5")") << "nav.ELEV";
+    }
+    void aProfileThatCannotBeAppliedLoadsNothing() {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, why);
+        EngineRig rig("nvs");
+        SettingsView view(&rig.engine);
+        QVERIFY(waitFor(rig.engine, [&] { view.readAll(); }).ok());
+        QVERIFY(!rig.engine.identity().model.empty()); // known, so another one is seen
+        const auto sent = rig.queue.history().size();
+        QTemporaryDir dir;
+        const QString path = dir.filePath("bad.json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly) && f.write(json) == json.size());
+        f.close();
+        QString error;
+        QVERIFY(!view.importProfile(path, &error));
+        QVERIFY2(error.contains(why), qPrintable(error));
+        QVERIFY(!view.isEdited("rtk.ELSBAS"));
+        QCOMPARE(view.findChild<QTreeWidget *>("profileDiff")->topLevelItemCount(), 0);
+        view.applyEdits(); // nothing to apply
+        QTest::qWait(50);
+        QCOMPARE(rig.queue.history().size(), sent);
     }
 };
 

@@ -88,7 +88,8 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
         const QString path = QFileDialog::getOpenFileName(this, tr("Import settings profile"), {},
                                                           tr("Settings profiles (*.json)"));
         QString error;
-        if (!path.isEmpty() && !importProfile(path, &error)) status(error);
+        if (!path.isEmpty() && !importProfile(path, &error))
+            status(tr("%1 was not imported: %2").arg(path, error));
     });
     profileMenu->addAction(tr("Export..."), this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export settings profile"), {},
@@ -595,8 +596,26 @@ void SettingsView::loadPreset(const QString &name) {
 bool SettingsView::importProfile(const QString &path, QString *error) {
     config::Profile p;
     if (!config::loadProfile(path, p, error, engine_->dialect())) return false;
-    diff_->clear();
+    // A profile of another model is not loaded as edits, so Apply cannot send it.
+    if (const QString why =
+                config::profileMismatch(p, engine_->dialect(), engine_->identity().model);
+        !why.isEmpty()) {
+        if (error) *error = why;
+        return false;
+    }
+    // What differs is what Apply would send: a value its command would not take is refused
+    // here, before an editor could clamp it to its range and send another value.
     const auto entries = engine_->diff(p);
+    std::vector<KeyValue> changes;
+    for (const auto &e : entries) changes.push_back({e.key, e.profileValue});
+    if (const QStringList refused = engine_->dialect()
+                                            ? config::refusedValues(*engine_->dialect(), changes)
+                                            : QStringList();
+        !refused.isEmpty()) {
+        if (error) *error = refused.join(QStringLiteral("; "));
+        return false;
+    }
+    diff_->clear();
     for (const auto &e : entries) {
         auto *item = new QTreeWidgetItem(
                 diff_, {QString::fromStdString(e.key), QString::fromStdString(e.profileValue),
