@@ -4,6 +4,7 @@
 #include "core/json_writer.h"
 #include "gpsd_transport.h"
 #include "link_opener.h"
+#include "tcp_transport.h"
 #include "transport_factory.h"
 
 #include <QCoreApplication>
@@ -81,6 +82,16 @@ sourceFromArgs(const Args &args, std::initializer_list<Kind> allowed, std::strin
         found->name = found->name.trimmed();
         if (found->name.startsWith(QLatin1String("gpsd://"), Qt::CaseInsensitive))
             found->name = found->name.mid(7);
+    }
+    if (found->kind == Kind::Tcp) {
+        // A malformed HOST:PORT is a usage error too (a misspelled one is a failure to connect).
+        QString host;
+        quint16 port = 0;
+        if (!link::TcpTransport::parseHostPort(found->name, host, port)) {
+            error = "--tcp takes HOST:PORT (a port from 1 to 65535), got '" +
+                    found->name.toStdString() + "'";
+            return std::nullopt;
+        }
     }
     if (const auto b = args.option("baud")) {
         bool ok = false;

@@ -27,6 +27,11 @@ int cmdExport(const CliContext &ctx) {
     }
     OpenedLog log;
     if (const int rc = openLogForCommand(ctx, log)) return rc;
+    if (log.view->epochCount() == 0) {
+        // Not NMEA, or no fix in it: said so (the warnings above), and no OUT written.
+        std::fprintf(stderr, "gnss-cli: nothing to export, %s was not written\n", outPath->c_str());
+        return 1;
+    }
     const bool toStdout = *outPath == "-";
     std::FILE *f = toStdout ? stdout : std::fopen(outPath->c_str(), "wb");
     if (!f) {

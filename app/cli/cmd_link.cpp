@@ -53,8 +53,12 @@ std::unique_ptr<link::Connection> open(const CliContext &ctx, const Args &args,
         rc = 2;
         return nullptr;
     }
+    // A log that cannot be replayed (missing, or an index that contradicts it) stays so: it is
+    // not retried, the command ends saying why.
+    OpenOptions o = options;
+    if (spec->kind == Kind::Replay) o.autoReconnect = false;
     QString why;
-    auto conn = openConnection(ctx, *spec, options, why);
+    auto conn = openConnection(ctx, *spec, o, why);
     if (!conn) {
         std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
         rc = 1;
@@ -183,8 +187,10 @@ int cmdMonitor(const CliContext &ctx) {
     EpochAssembler assembler(conn->stream()->dialect());
     auto onEpoch = [](const Epoch &e) { printJson([&](JsonWriter &w) { e.writeJson(w); }); };
     link::Connection *c = conn.get();
+    std::size_t sentences = 0; // decoded ones
     QObject::connect(c->stream(), &link::SentenceStream::sentenceDecoded,
                      [&, c](const SentenceEvent &ev) {
+                         if (ev.message) ++sentences;
                          if (epochs) {
                              if (!ev.message) return;
                              assembler.setDialect(c->stream()->dialect());
@@ -194,12 +200,20 @@ int cmdMonitor(const CliContext &ctx) {
                          printJson([&](JsonWriter &w) { writeSentenceEventJson(w, ev); });
                      });
     reportLinkEvents(*c, "");
+    bool replayed = false; // to its end
     if (replay)
-        QObject::connect(replay, &link::ReplayTransport::finished,
-                         [] { QCoreApplication::exit(0); });
+        QObject::connect(replay, &link::ReplayTransport::finished, [&replayed] {
+            replayed = true;
+            QCoreApplication::exit(0);
+        });
     loop.stopAfter(duration);
     rc = loop.exec();
     if (epochs) assembler.flush(onEpoch);
+    if (replayed && rc == 0 && sentences == 0) {
+        // A file that is not NMEA (or is empty) played to its end: said so, as `play` does.
+        std::fprintf(stderr, "gnss-cli: %s: no NMEA found\n", utf8(replay->description()).c_str());
+        return 1;
+    }
     return rc;
 }
 

@@ -2,9 +2,11 @@
 // simulated receiver at a baud it is not told, send reports outcomes (and refuses a malformed
 // sentence before sending anything), record + monitor --replay give back what was received,
 // also after the recorder was killed with SIGKILL; config get reads gnss-sim --tcp.
+#include "bad_input_files.h"
 #include "cli_run.h"
 #include "sim_tcp_process.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -117,6 +119,38 @@ private slots:
         QCOMPARE(replayed.out, decoded.out);
         const Run epochs = cli({"monitor", "--replay", log, "--fast", "--epochs"});
         QVERIFY(epochs.out.count('\n') >= 1);
+    }
+
+    // monitor --replay of a file that cannot be replayed ends at once with status 1 and says
+    // why: a broken index is not retried (it would not mend), a file that is not NMEA is named.
+    void aReplayThatCannotBeReadEndsSayingWhy_data() {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<QByteArray>("index");
+        QTest::addColumn<QString>("words");
+        const QByteArray gga = gnss::test::kOneGga;
+        QTest::newRow("no such file") << QByteArray("-") << QByteArray() << "Cannot read";
+        QTest::newRow("a foreign index")
+                << gga << QByteArray("<xml>\n") << ".idx, line 1: not an index line";
+        QTest::newRow("an index past the data")
+                << gga << QByteArray("R 5000 0 9000\n")
+                << "line 1: chunk ends past the end of the data file";
+        QTest::newRow("not NMEA") << QByteArray("hello world\nno NMEA here\n") << QByteArray()
+                                  << "replay of input.log: no NMEA found";
+    }
+    void aReplayThatCannotBeReadEndsSayingWhy() {
+        QFETCH(QByteArray, bytes);
+        QFETCH(QByteArray, index);
+        QFETCH(QString, words);
+        QTemporaryDir dir;
+        const QString in = gnss::test::writeUserFile(dir, "input.log", bytes, index);
+        QVERIFY(!in.isEmpty());
+        QElapsedTimer t;
+        t.start();
+        const Run r = cli({"monitor", "--replay", in, "--fast"});
+        QVERIFY2(r.exitCode == 1, r.err.constData());
+        QVERIFY2(r.err.contains(words.toUtf8()), r.err.constData());
+        QVERIFY2(!r.err.contains("trying again"), r.err.constData());
+        QVERIFY2(t.elapsed() < 10000, QByteArray::number(t.elapsed()));
     }
 
     // kill -9 in the middle of a recording: what arrived up to the kill is on disk (the data

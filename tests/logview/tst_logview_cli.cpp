@@ -1,4 +1,5 @@
 // gnss-cli export, summary and play end to end: the real executable on generated logs.
+#include "bad_input_files.h"
 #include "cli_run.h"
 #include "raw_pty.h"
 #include "scenario_log.h"
@@ -110,6 +111,57 @@ private slots:
         QVERIFY(got == text_);
         // At 200 times a 630 s log: about 3 s, not instantly.
         QVERIFY(timer.elapsed() > 1500);
+    }
+
+    // A file that is no usable log: said so on standard error, and export writes no file.
+    void aFileThatIsNotALogIsSaidSo_data() {
+        QTest::addColumn<QStringList>("command");
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<QByteArray>("index"); // FILE.idx beside it, when not empty
+        QTest::addColumn<int>("code");
+        QTest::addColumn<QString>("words");
+        QByteArray noise(20000, '\0');
+        for (int i = 0; i < noise.size(); ++i) noise[i] = char((i * 7919 + 13) % 251);
+        const QByteArray text("hello world\nthis is not NMEA\n");
+        const QByteArray gga = kOneGga;
+        const QStringList gpx{"export", "--format", "gpx"}, nmea{"export", "--format", "nmea"};
+        QTest::newRow("export: binary noise")
+                << gpx << noise << QByteArray() << 1 << "no NMEA found in";
+        QTest::newRow("export: a text file")
+                << nmea << text << QByteArray() << 1 << "nothing to export";
+        QTest::newRow("export: an empty file")
+                << gpx << QByteArray() << QByteArray() << 1 << "is empty";
+        QTest::newRow("export: no such file")
+                << gpx << QByteArray("-") << QByteArray() << 1 << "No such file";
+        QTest::newRow("summary: a text file")
+                << QStringList{"summary"} << text << QByteArray() << 0 << "no NMEA found in";
+        QTest::newRow("play: a text file")
+                << QStringList{"play", "--pty"} << text << QByteArray() << 1 << "nothing to play";
+        // A recording's index that is someone else's file, or cut: the log is read without
+        // its host times, and says so.
+        QTest::newRow("summary: a foreign index")
+                << QStringList{"summary"} << gga << QByteArray("<xml>\n") << 0
+                << ".idx, line 1: not an index line (host times not used)";
+        QTest::newRow("summary: an index past the data")
+                << QStringList{"summary"} << gga << QByteArray("R 5000 0 9000\n") << 0
+                << "line 1: chunk ends past the end of the data file";
+    }
+    void aFileThatIsNotALogIsSaidSo() {
+        QFETCH(QStringList, command);
+        QFETCH(QByteArray, bytes);
+        QFETCH(QByteArray, index);
+        QFETCH(int, code);
+        QFETCH(QString, words);
+        QTemporaryDir dir;
+        const QString in = writeUserFile(dir, "input.log", bytes, index);
+        const QString out = dir.filePath("out.gpx");
+        QVERIFY(!in.isEmpty());
+        QStringList args = command + QStringList{in};
+        if (command.first() == "export") args << "-o" << out;
+        const Run r = runCli(args, {}, 30000);
+        QVERIFY2(r.exitCode == code, r.err.constData());
+        QVERIFY2(r.err.contains(words.toUtf8()), r.err.constData());
+        QVERIFY(!QFile::exists(out));
     }
 
     void playNeedsOneOutput() {
