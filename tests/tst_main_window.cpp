@@ -1,6 +1,7 @@
 // The main window: menus and docks present, start-up options, layout saved and restored, and the
 // built-in simulated receiver reaching every model through the real connection path.
 #include "app_transports.h"
+#include "bad_input_files.h"
 #include "config/settings_engine.h"
 #include "connection_controller.h"
 #include "dialects.h"
@@ -141,6 +142,44 @@ private slots:
         QCOMPARE(w.controller()->state(), gnss::app::ConnectionController::State::Connected);
         const auto *fixLabel = w.findChild<QLabel *>("statusFix");
         QVERIFY(fixLabel);
+    }
+
+    // The connection bar's source that cannot be opened: the state line says what and why
+    // (a misspelled port, a TCP source without its port, a log to replay that is missing or
+    // whose index is someone else's file); none is retried: a log would not mend, a port that is
+    // not there is chosen again when it is plugged in.
+    void aSourceThatCannotBeOpenedIsSaidSo_data() {
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QString>("words");
+        using Kind = SourceSpec::Kind;
+        QTest::newRow("a misspelled port") << int(Kind::Serial) << "/dev/ttyUSB-no-such"
+                                           << "/dev/ttyUSB-no-such: No such file";
+        QTest::newRow("TCP without a port") << int(Kind::Tcp) << "127.0.0.1"
+                                            << "a TCP source is HOST:PORT";
+        QTest::newRow("a missing log")
+                << int(Kind::Replay) << dir_.filePath("missing.nmea") << "missing.nmea";
+        QTest::newRow("a foreign index") << int(Kind::Replay) << dir_.filePath("foreign.nmea")
+                                         << "line 1: not an index line";
+    }
+    void aSourceThatCannotBeOpenedIsSaidSo() {
+        QFETCH(int, kind);
+        QFETCH(QString, name);
+        QFETCH(QString, words);
+        QVERIFY(!gnss::test::writeUserFile(dir_, "foreign.nmea", gnss::test::kOneGga, "<xml>\n")
+                         .isEmpty());
+        auto s = settings();
+        gnss::app::MainWindow w(registry_, transports_, s.get());
+        SourceSpec spec{SourceSpec::Kind(kind), name};
+        spec.baud = 9600;
+        w.controller()->connectTo(spec);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->stateText().contains(words), 10000);
+        QTest::qWait(200);
+        const QString text = w.controller()->stateText();
+        QVERIFY2(text.contains(words), qPrintable(text));
+        QVERIFY2(!text.contains("trying again"), qPrintable(text));
+        QCOMPARE(w.controller()->state(), gnss::app::ConnectionController::State::Failed);
+        w.controller()->disconnectFromSource();
     }
 
     void skyPlotDrawsTheReceiversElevationMask() {

@@ -86,6 +86,8 @@ void ConnectionController::onOpenerReady() {
     session_->reset();
     session_->setCounterSource(&c->decoder());
     wire(c);
+    // A log that cannot be replayed (an index that contradicts it) stays so: not retried.
+    if (spec_.kind == SourceSpec::Kind::Replay) c->setAutoReconnect(false);
     if (!c->open()) {
         setState(State::Failed,
                  tr("Cannot open %1: %2").arg(spec_.displayName(), c->transport()->errorString()));
@@ -106,8 +108,11 @@ void ConnectionController::wire(link::Connection *c) {
             [this, c](const SentenceEvent &ev) { session_->consume(ev, c->stream()->dialect()); });
     connect(c, &link::Connection::opened, this, [this](const QString &d) { setConnected(d); });
     connect(c, &link::Connection::openFailed, this, [this](const QString &why, int retryMs) {
-        setState(State::Reconnecting,
-                 retryMs > 0 ? tr("%1 — trying again in %2 s").arg(why, seconds(retryMs)) : why);
+        if (retryMs > 0)
+            setState(State::Reconnecting,
+                     tr("%1 — trying again in %2 s").arg(why, seconds(retryMs)));
+        else
+            setState(State::Failed, tr("Cannot open %1: %2").arg(spec_.displayName(), why));
     });
     connect(c, &link::Connection::linkLost, this, [this](const QString &why, int retryMs) {
         setState(State::Reconnecting,

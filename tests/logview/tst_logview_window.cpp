@@ -427,6 +427,8 @@ private slots:
         std::mt19937 rng(3);
         for (auto &c : noise) c = char(rng() % 256);
         QTest::newRow("random bytes") << noise << "no NMEA found";
+        QTest::newRow("a text file")
+                << QByteArray("Dear user,\nthis is no log.\n") << "no NMEA found";
         QByteArray longLine = "$GPGGA," + QByteArray(4096, '1') + "*00\r\n";
         QTest::newRow("4096-byte line") << longLine << "";
     }
