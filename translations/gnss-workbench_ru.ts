@@ -171,7 +171,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../protocol/config/settings_profile.cpp" line="+46"/>
+        <location filename="../protocol/config/settings_profile.cpp" line="+49"/>
         <source>not a settings profile: %1</source>
         <translation>это не профиль настроек: %1</translation>
     </message>
@@ -186,12 +186,12 @@
         <translation>версия профиля %1 не поддерживается (программа читает версии от 1 до %2)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+58"/>
         <source>the profile is for dialect &apos;%1&apos;, the receiver speaks &apos;%2&apos;</source>
         <translation>профиль предназначен для диалекта «%1», а приёмник использует «%2»</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-43"/>
         <source>%1: the value must be a string</source>
         <translation>%1: значение должно быть строкой</translation>
     </message>
@@ -206,7 +206,12 @@
         <translation>профиль содержит настройки, которые диалект %1 не может задать: %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
+        <source>the profile is for the %1, the receiver is a %2: export a profile from a %2, or edit the file&apos;s &quot;model&quot; if the settings suit it</source>
+        <translation>профиль для %1, а приёмник — %2: экспортируйте профиль из %2 или исправьте «model» в файле, если настройки ему подходят</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>cannot write %1: %2</source>
         <translation>не удаётся записать %1: %2</translation>
     </message>
@@ -222,14 +227,14 @@
         <location filename="../protocol/core/settings_schema.cpp" line="+77"/>
         <location filename="../protocol/geostar/geostar_encode_util.cpp" line="+11"/>
         <location filename="../protocol/geostar/geostar_status_words.cpp" line="+61"/>
-        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+76"/>
-        <location line="+61"/>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+78"/>
+        <location line="+57"/>
         <location line="+6"/>
         <location filename="../protocol/nemerix/nemerix_hex.cpp" line="+83"/>
         <location line="+33"/>
-        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="+63"/>
-        <location line="+91"/>
-        <location filename="../protocol/nemerix/nemerix_settings_report.cpp" line="+138"/>
+        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="+58"/>
+        <location line="+73"/>
+        <location filename="../protocol/nemerix/nemerix_settings_report.cpp" line="+136"/>
         <location filename="../protocol/nvs/nvs_output_fields.cpp" line="+26"/>
         <source>%1: %2 is out of range; accepted: %3</source>
         <translation>%1: %2 вне допустимого диапазона; допустимо: %3</translation>
@@ -254,7 +259,7 @@
     <message>
         <location line="+6"/>
         <location filename="../protocol/geostar/geostar_encode_util.cpp" line="+6"/>
-        <location filename="../protocol/nemerix/nemerix_prefix.cpp" line="+45"/>
+        <location filename="../protocol/nemerix/nemerix_prefix.cpp" line="+37"/>
         <location filename="../protocol/nvs/nvs_output_fields.cpp" line="+94"/>
         <source>%1: character not allowed in a value: &apos;%2&apos;</source>
         <translation>%1: недопустимый символ в значении: «%2»</translation>
@@ -403,8 +408,8 @@
     </message>
     <message>
         <location line="+7"/>
-        <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="+119"/>
-        <location filename="../protocol/nemerix/nemerix_nav_init.cpp" line="+37"/>
+        <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="+108"/>
+        <location filename="../protocol/nemerix/nemerix_nav_init.cpp" line="+43"/>
         <location line="+2"/>
         <location filename="../protocol/nmea/gsv.cpp" line="+44"/>
         <location line="+2"/>
@@ -461,8 +466,7 @@
     </message>
     <message>
         <location line="+62"/>
-        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="-39"/>
-        <location filename="../protocol/nemerix/nemerix_version.cpp" line="+31"/>
+        <location filename="../protocol/nemerix/nemerix_fields.cpp" line="+25"/>
         <source>too many fields</source>
         <translation>слишком много полей</translation>
     </message>
@@ -492,7 +496,7 @@
         <translation>искажённое сообщение</translation>
     </message>
     <message>
-        <location filename="../protocol/geostar/geostar_nquery.cpp" line="+40"/>
+        <location filename="../protocol/geostar/geostar_nquery.cpp" line="+39"/>
         <source>not 0-3</source>
         <translation>не 0-3</translation>
     </message>
@@ -507,30 +511,30 @@
         <translation>в ответе NQUERY больше 10 кодов сообщений</translation>
     </message>
     <message>
-        <location filename="../protocol/geostar/geostar_rlm.cpp" line="+26"/>
-        <location line="+18"/>
+        <location filename="../protocol/geostar/geostar_rlm.cpp" line="+25"/>
+        <location line="+17"/>
         <source>not 15 hex digits</source>
         <translation>не 15 шестнадцатеричных цифр</translation>
     </message>
     <message>
-        <location line="-14"/>
-        <location line="+19"/>
+        <location line="-13"/>
+        <location line="+18"/>
         <source>not one hex digit</source>
         <translation>не одна шестнадцатеричная цифра</translation>
     </message>
     <message>
-        <location line="-14"/>
-        <location line="+18"/>
+        <location line="-13"/>
+        <location line="+17"/>
         <source>not 4 or 24 hex digits</source>
         <translation>не 4 и не 24 шестнадцатеричные цифры</translation>
     </message>
     <message>
-        <location filename="../protocol/geostar/geostar_rquery.cpp" line="+25"/>
+        <location filename="../protocol/geostar/geostar_rquery.cpp" line="+26"/>
         <source>longer than 8 hex digits</source>
         <translation>длиннее 8 шестнадцатеричных цифр</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+37"/>
         <source>RQUERY reply needs three hex words</source>
         <translation>в ответе RQUERY должно быть три шестнадцатеричных слова</translation>
     </message>
@@ -556,14 +560,14 @@
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="-53"/>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="-51"/>
         <source>out of range 1..32</source>
         <translation>вне диапазона 1..32</translation>
     </message>
     <message>
         <location filename="../protocol/geostar/geostar_gns.cpp" line="+61"/>
         <location filename="../protocol/nemerix/nemerix_almanac.cpp" line="+1"/>
-        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+20"/>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+19"/>
         <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="-21"/>
         <location line="+17"/>
         <location filename="../protocol/nemerix/nemerix_power.cpp" line="+16"/>
@@ -572,9 +576,9 @@
         <translation>отсутствует</translation>
     </message>
     <message>
-        <location filename="../protocol/nemerix/nemerix_datum.cpp" line="+39"/>
+        <location filename="../protocol/nemerix/nemerix_datum.cpp" line="+44"/>
         <location filename="../protocol/nemerix/nemerix_power.cpp" line="+2"/>
-        <location filename="../protocol/nemerix/nemerix_serial.cpp" line="+29"/>
+        <location filename="../protocol/nemerix/nemerix_serial.cpp" line="+32"/>
         <source>not 0 or 1</source>
         <translation>не 0 и не 1</translation>
     </message>
@@ -599,7 +603,7 @@
         <translation>вне диапазона 6000000..9000000</translation>
     </message>
     <message>
-        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="-18"/>
+        <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="-17"/>
         <source>not 1, 2 or 3</source>
         <translation>не 1, 2 или 3</translation>
     </message>
@@ -609,27 +613,27 @@
         <translation>нужны номер спутника и подкадр</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>subframe %1: expected %2 hex fields, got %3</source>
         <translation>подкадр %1: ожидается %2 шестнадцатеричных полей, получено %3</translation>
     </message>
     <message>
-        <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="-29"/>
+        <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="+13"/>
         <source>no mask given</source>
         <translation>маска не задана</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>mask ids and values must come in pairs</source>
         <translation>номера масок и значения должны идти парами</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>too many masks</source>
         <translation>слишком много масок</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-28"/>
         <source>unknown mask (0..10)</source>
         <translation>неизвестная маска (0..10)</translation>
     </message>
@@ -646,17 +650,17 @@
     <message>
         <location line="+85"/>
         <location filename="../protocol/nemerix/nemerix_settings_report.cpp" line="+52"/>
-        <location filename="../protocol/nemerix/nemerix_version.cpp" line="+45"/>
+        <location filename="../protocol/nemerix/nemerix_version.cpp" line="+69"/>
         <source>%1: missing</source>
         <translation>%1: отсутствует</translation>
     </message>
     <message>
-        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="-38"/>
+        <location filename="../protocol/nemerix/nemerix_iono_utc.cpp" line="-59"/>
         <source>expected the SV id and 8 hex coefficients, got %1 fields</source>
         <translation>ожидаются номер спутника и 8 шестнадцатеричных коэффициентов, получено полей: %1</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+14"/>
         <source>expected the SV id and at least 8 hex fields</source>
         <translation>ожидаются номер спутника и не менее 8 шестнадцатеричных полей</translation>
     </message>
@@ -666,39 +670,39 @@
         <translation>вне диапазона 12..16</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+30"/>
         <source>ECEF x, y and z must be given together</source>
         <translation>ECEF x, y и z задаются вместе</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+25"/>
         <source>latitude, longitude and altitude must be given together</source>
         <translation>широта, долгота и высота задаются вместе</translation>
     </message>
     <message>
-        <location filename="../protocol/nemerix/nemerix_output.cpp" line="+37"/>
-        <location line="+66"/>
+        <location filename="../protocol/nemerix/nemerix_output.cpp" line="+50"/>
+        <location line="+50"/>
         <source>no message id given</source>
         <translation>не задан номер сообщения</translation>
     </message>
     <message>
-        <location line="-63"/>
+        <location line="-49"/>
         <source>message ids and values must come in pairs</source>
         <translation>номера сообщений и значения должны идти парами</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>too many entries</source>
         <translation>слишком много записей</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <location line="+62"/>
+        <location line="-15"/>
+        <location line="+71"/>
         <source>unknown message</source>
         <translation>неизвестное сообщение</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-67"/>
         <source>not 0..3</source>
         <translation>не 0..3</translation>
     </message>
@@ -708,7 +712,7 @@
         <translation>не 0..9</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+61"/>
         <source>too many message ids</source>
         <translation>слишком много номеров сообщений</translation>
     </message>
@@ -3919,34 +3923,35 @@ Serial number: %3</source>
     <name>gnss::app::ConnectionController</name>
     <message>
         <location filename="../app/gui/connection_controller.cpp" line="+24"/>
-        <location line="+166"/>
+        <location line="+171"/>
         <source>Not connected</source>
         <translation>Нет подключения</translation>
     </message>
     <message>
-        <location line="-133"/>
+        <location line="-138"/>
         <source>No source chosen</source>
         <translation>Источник не выбран</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location line="+23"/>
+        <location line="+25"/>
+        <location line="+22"/>
         <source>Cannot open %1: %2</source>
         <translation>Не удаётся открыть %1: %2</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+40"/>
         <source>Connected: %1</source>
         <translation>Подключено: %1</translation>
     </message>
     <message>
-        <location line="-77"/>
-        <location line="+62"/>
+        <location line="-82"/>
+        <location line="+67"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-109"/>
         <source>%1: detecting the baud rate: trying %2…</source>
         <translation>%1: определение скорости: проверяется %2…</translation>
     </message>
@@ -3961,12 +3966,12 @@ Serial number: %3</source>
         <translation>%1: определение скорости…</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+160"/>
         <source>%1 cannot take commands</source>
         <translation>%1 не принимает команды</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-149"/>
         <source>Baud rate not found: %1</source>
         <translation>Скорость не найдена: %1</translation>
     </message>
@@ -3976,12 +3981,12 @@ Serial number: %3</source>
         <translation>Скорость определена: %1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+33"/>
         <source>%1 — trying again in %2 s</source>
         <translation>%1 — повтор через %2 с</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Link lost: %1 — trying again in %2 s</source>
         <translation>Связь потеряна: %1 — повтор через %2 с</translation>
     </message>
@@ -3996,7 +4001,7 @@ Serial number: %3</source>
         <translation>Открытие %1… %2%</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-49"/>
         <source>Opening %1…</source>
         <translation>Открытие %1…</translation>
     </message>
@@ -4006,7 +4011,7 @@ Serial number: %3</source>
         <translation>Подключение к %1…</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+53"/>
         <source>Connected: %1 (detected)</source>
         <translation>Подключено: %1 (определено)</translation>
     </message>
@@ -4628,7 +4633,7 @@ Serial number: %3</source>
         <translation>Нет решения</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
         <source>Record to</source>
         <translation>Записывать в</translation>
     </message>
@@ -4958,11 +4963,6 @@ Serial number: %3</source>
         <source>Apply profile</source>
         <translation>Применение профиля</translation>
     </message>
-    <message>
-        <location line="+1"/>
-        <source>the profile is for dialect &apos;%1&apos;, the receiver speaks &apos;%2&apos;</source>
-        <translation>профиль предназначен для диалекта «%1», а приёмник использует «%2»</translation>
-    </message>
 </context>
 <context>
     <name>gnss::corrections::CorrectionSource</name>
@@ -5139,14 +5139,17 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
-    <name>gnss::corrections::SerialCorrectionSource</name>
+    <name>gnss::corrections::RawCorrectionSource</name>
     <message>
-        <location filename="../protocol/corrections/serial_correction_source.cpp" line="+13"/>
+        <location filename="../protocol/corrections/raw_correction_source.cpp" line="+10"/>
         <source>Receiving RTCM from %1</source>
         <translation>Приём RTCM от %1</translation>
     </message>
+</context>
+<context>
+    <name>gnss::corrections::SerialCorrectionSource</name>
     <message>
-        <location line="+8"/>
+        <location filename="../protocol/corrections/serial_correction_source.cpp" line="+14"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -5232,12 +5235,7 @@ Serial number: %3</source>
         <translation>Подключено к %1, ожидание RTCM</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Receiving RTCM from %1</source>
-        <translation>Приём RTCM от %1</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>%1 closed the connection</source>
         <translation>%1: соединение закрыто другой стороной</translation>
     </message>
@@ -5333,12 +5331,12 @@ Serial number: %3</source>
     <name>gnss::link::CommandQueue</name>
     <message>
         <location filename="../protocol/link/command_queue.cpp" line="+43"/>
-        <location line="+204"/>
+        <location line="+203"/>
         <source>accepted</source>
         <translation>принято</translation>
     </message>
     <message>
-        <location line="-203"/>
+        <location line="-202"/>
         <source>refused</source>
         <translation>отклонено</translation>
     </message>
@@ -5388,7 +5386,7 @@ Serial number: %3</source>
         <translation>отменено до отправки</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+50"/>
         <source>not connected: the command was not sent</source>
         <translation>нет подключения: команда не отправлена</translation>
     </message>
@@ -6422,7 +6420,7 @@ Serial number: %3</source>
         <translation>Нет данных</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+30"/>
         <source>s</source>
         <translation>с</translation>
     </message>
@@ -7285,12 +7283,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>Profile</source>
         <translation>Профиль</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-67"/>
         <source>Import and compare...</source>
         <translation>Импортировать и сравнить...</translation>
     </message>
@@ -7301,12 +7299,17 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Settings profiles (*.json)</source>
         <translation>Профили настроек (*.json)</translation>
     </message>
     <message>
-        <location line="-2"/>
+        <location line="-4"/>
+        <source>%1 was not imported: %2</source>
+        <translation>%1 не импортирован: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Export...</source>
         <translation>Экспорт...</translation>
     </message>
@@ -7478,7 +7481,7 @@ Serial number: %3</source>
         </translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+45"/>
         <source>The receiver already has every setting of %1.</source>
         <translation>В приёмнике уже установлены все настройки из %1.</translation>
     </message>
