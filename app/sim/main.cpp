@@ -6,6 +6,8 @@
 // master sees with tcgetattr) is handed to the receiver: while it differs from the receiver's
 // baud the receiver sends garbage and ignores input, as a UART at the wrong speed would.
 // SIGHUP power-cycles the simulated receiver (settings come back from its flash).
+// The hang-up fault that comes back (hangup=T/DOWN) closes the pseudo-terminal and makes a new
+// one; --link keeps a symbolic link to whichever is current (a stable name, as udev gives).
 // With --rtcm-base the same loop carries an RTCM 3 base station's stream instead.
 #include "dialects.h"
 #include "sim_args.h"
@@ -76,6 +78,40 @@ void flushTo(int fd, std::string &buffer) {
     if (buffer.size() > 65536) buffer.erase(0, buffer.size() - 65536);
 }
 
+// A pseudo-terminal whose slave is a raw line at `baud` (until the other side sets its own);
+// its device path goes on standard output, and to a symbolic link at `link` when one is asked.
+// -1 (the reason on standard error) when none could be made.
+int openPty(int baud, const std::string &link) {
+    const int fd = posix_openpt(O_RDWR | O_NOCTTY);
+    if (fd < 0 || grantpt(fd) != 0 || unlockpt(fd) != 0) {
+        std::perror("gnss-sim: pseudo-terminal");
+        if (fd >= 0) ::close(fd);
+        return -1;
+    }
+    const char *name = ptsname(fd);
+    const int slave = ::open(name, O_RDWR | O_NOCTTY);
+    if (slave >= 0) {
+        termios t{};
+        tcgetattr(slave, &t);
+        cfmakeraw(&t);
+        const speed_t speed = posix::termiosSpeed(baud).value_or(B9600);
+        cfsetispeed(&t, speed);
+        cfsetospeed(&t, speed);
+        tcsetattr(slave, TCSANOW, &t);
+        ::close(slave);
+    }
+    setNonBlocking(fd);
+    if (!link.empty()) { // replaced in one step: a program opening it finds the old or the new
+        const std::string temporary = link + ".new";
+        ::unlink(temporary.c_str());
+        if (::symlink(name, temporary.c_str()) != 0 || ::rename(temporary.c_str(), link.c_str()))
+            std::perror("gnss-sim: --link");
+    }
+    std::printf("%s\n", name);
+    std::fflush(stdout);
+    return fd;
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -112,28 +148,9 @@ int main(int argc, char **argv) {
     int listenFd = -1; // TCP only
     bool isPty = false;
     if (args.transport == simapp::Transport::Pty) {
-        ioFd = posix_openpt(O_RDWR | O_NOCTTY);
-        if (ioFd < 0 || grantpt(ioFd) != 0 || unlockpt(ioFd) != 0) {
-            std::perror("gnss-sim: pseudo-terminal");
-            return 1;
-        }
-        const char *name = ptsname(ioFd);
-        // Raw line at the receiver's speed, until the other side sets its own.
-        const int slave = ::open(name, O_RDWR | O_NOCTTY);
-        if (slave >= 0) {
-            termios t{};
-            tcgetattr(slave, &t);
-            cfmakeraw(&t);
-            const speed_t speed = posix::termiosSpeed(deviceBaud).value_or(B9600);
-            cfsetispeed(&t, speed);
-            cfsetospeed(&t, speed);
-            tcsetattr(slave, TCSANOW, &t);
-            ::close(slave);
-        }
-        setNonBlocking(ioFd);
+        ioFd = openPty(deviceBaud, args.link);
+        if (ioFd < 0) return 1;
         isPty = true;
-        std::printf("%s\n", name);
-        std::fflush(stdout);
     } else if (args.transport == simapp::Transport::Tcp) {
         listenFd = ::socket(AF_INET, SOCK_STREAM, 0);
         int one = 1;
@@ -162,6 +179,13 @@ int main(int argc, char **argv) {
     // slave open: polling it then would spin. While hung up the master is left out of the poll
     // and looked at again every kIdlePollMs (a program opening the device is heard within that).
     bool ptyIdle = false;
+    // The hang-up that comes back (hangup=T/DOWN[xCOUNT], on a pseudo-terminal): the line drops
+    // once a program has had it for T simulated seconds; DOWN seconds later there is a new one.
+    const sim::FaultSpec &faults = args.options.faults;
+    const bool unplugs = rx && isPty && faults.hangupRepeats();
+    double heldFor = 0, backAt = 0;
+    int outages = 0;
+    bool heldBefore = false; // a program had the line at the last turn (time since is held time)
     while (!g_stop) {
         pollfd fds[3];
         int n = 0;
@@ -170,7 +194,7 @@ int main(int argc, char **argv) {
         if (ioFd >= 0 && ioFd != STDOUT_FILENO && !ptyIdle) fds[ioIdx = n++] = {ioFd, POLLIN, 0};
         if (listenFd >= 0) fds[listenIdx = n++] = {listenFd, POLLIN, 0};
         ::poll(fds, static_cast<nfds_t>(n), ptyIdle ? kIdlePollMs : kActivePollMs);
-        if (ptyIdle) {
+        if (ptyIdle && ioFd >= 0) {
             pollfd probe{ioFd, POLLIN, 0};
             ::poll(&probe, 1, 0);
             ptyIdle = (probe.revents & POLLHUP) != 0;
@@ -219,12 +243,13 @@ int main(int argc, char **argv) {
             if (rx) rx->powerCycle();
         }
         const double now = monotonicSeconds();
+        const double elapsed = (now - last) * args.speed;
         std::string out;
         if (rx) {
-            rx->advance((now - last) * args.speed);
+            rx->advance(elapsed);
             out = rx->takeOutput();
         } else {
-            base->advance((now - last) * args.speed);
+            base->advance(elapsed);
             out = base->takeOutput();
         }
         last = now;
@@ -234,10 +259,27 @@ int main(int argc, char **argv) {
         } else {
             outBuffer.clear();
         }
-        if (rx && rx->hungUp()) break; // the hang-up fault: drop the line
+        if (rx && rx->hungUp()) break;                     // the hang-up fault: drop the line
+        if (unplugs && ioFd < 0 && rx->time() >= backAt) { // back, as a new device
+            ioFd = openPty(rx->baud(), args.link);
+            if (ioFd < 0) return 1;
+            ptyIdle = true; // until a program opens it
+            heldFor = 0;
+        } else if (unplugs && peerPresent &&
+                   (faults.hangupTimes == 0 || outages < faults.hangupTimes)) {
+            if (heldBefore) heldFor += elapsed;
+            if (heldFor >= faults.hangupAfter) { // unplugged: the program's line is gone
+                ::close(ioFd);
+                ioFd = -1;
+                backAt = rx->time() + faults.hangupDown;
+                ++outages;
+            }
+        }
+        heldBefore = peerPresent && ioFd >= 0;
     }
     if (ioFd >= 0 && ioFd != STDOUT_FILENO) ::close(ioFd);
     if (listenFd >= 0) ::close(listenFd);
+    if (!args.link.empty()) ::unlink(args.link.c_str());
     // Stopped by SIGINT/SIGTERM: the status a shell gives a program the signal ended (130, 143),
     // as gnss-cli does, so a script can tell it from standard input closing.
     return g_stop ? 128 + g_stop : 0;

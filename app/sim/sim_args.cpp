@@ -12,7 +12,7 @@ namespace {
 
 // The usage text around the dialect list, which comes from the records.
 const char *const kUsageHead =
-        "usage: gnss-sim --dialect D [--pty | --tcp PORT | --stdout]\n"
+        "usage: gnss-sim --dialect D [--pty [--link PATH] | --tcp PORT | --stdout]\n"
         "                [--seed N] [--speed X] [--baud B] [--faults SPEC] [--internal-base]\n"
         "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
         "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--baud B]\n"
@@ -24,6 +24,8 @@ const char *const kUsageHead =
 const char *const kUsageTail =
         "  --pty          create a pseudo-terminal (default); its device path is the first\n"
         "                 line of standard output\n"
+        "  --link PATH    keep a symbolic link at PATH to the pseudo-terminal (a new one after\n"
+        "                 each hang-up that comes back); removed at the end\n"
         "  --tcp PORT     listen on 127.0.0.1:PORT (one client at a time)\n"
         "  --stdout       write to standard output, read commands from standard input\n"
         "  --seed N       random seed (same seed, same sky and noise); default 1\n"
@@ -31,7 +33,12 @@ const char *const kUsageTail =
         "  --baud B       the receiver's starting baud; default: the receiver's own\n"
         "  --faults SPEC  comma-separated: badcs=P, truncate=P, binary=P (probabilities),\n"
         "                 silence=D@T[/EVERY], noreply=CMD[+CMD], slowreply=MS,\n"
-        "                 hangup=SECONDS\n"
+        "                 hangup=SECONDS (the line drops, gnss-sim ends),\n"
+        "                 hangup=T/DOWN[xCOUNT] (pseudo-terminal: the line drops after T s with\n"
+        "                 a program on it; DOWN s later a new one, its path on a new line of\n"
+        "                 standard output; COUNT times, default without end),\n"
+        "                 powercut=CMD[+CMD] (the first such command cuts the power before it\n"
+        "                 is carried out: off 2 s, then the settings of its flash)\n"
         "  --internal-base  an RTK rover (nvs) corrects itself from a base inside the simulator;\n"
         "                 without it, it stays autonomous until RTCM 3 frames arrive on its\n"
         "                 port (float after 3 s of corrections, fixed after 20 s)\n"
@@ -127,6 +134,8 @@ bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArg
             if (value(v)) out.dialect = std::string(v);
         } else if (a == "--pty") {
             if (flag()) out.transport = Transport::Pty;
+        } else if (a == "--link") {
+            if (value(v)) out.link = std::string(v);
         } else if (a == "--stdout") {
             if (flag()) out.transport = Transport::Stdout;
         } else if (a == "--tcp") {
@@ -171,6 +180,10 @@ bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArg
     if (out.help || out.version) return true;
     if (!error.empty()) return false;
     out.base.seed = out.options.seed;
+    if (out.transport != Transport::Pty && !out.link.empty()) {
+        error = "--link names a pseudo-terminal: it goes with --pty";
+        return false;
+    }
     if (out.rtcmBase) {
         if (!out.dialect.empty()) {
             error = "--rtcm-base is a base station, not a receiver: leave out --dialect";
@@ -180,6 +193,10 @@ bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArg
     }
     if (out.dialect.empty()) {
         error = "--dialect is required (or --rtcm-base)";
+        return false;
+    }
+    if (out.transport != Transport::Pty && out.options.faults.hangupRepeats()) {
+        error = "--faults: a hang-up that comes back (hangup=T/DOWN) needs --pty";
         return false;
     }
     bool known = false;

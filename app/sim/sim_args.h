@@ -14,6 +14,7 @@ struct SimArgs {
     std::string dialect;
     Transport transport = Transport::Pty;
     int tcpPort = 0;
+    std::string link; // --link PATH: a symbolic link to the pseudo-terminal in use
     double speed = 1.0;
     sim::SimOptions options;
     // --rtcm-base: an RTCM 3 base station's stream instead of a receiver (no --dialect).

@@ -14,11 +14,30 @@ bool parseNumber(std::string_view text, double &out) {
     return ec == std::errc() && p == end && std::isfinite(out);
 }
 
+// Whether a command of `address` whose first field is `firstField` is one of `names`.
+bool named(const std::vector<std::string> &names, std::string_view address,
+           std::string_view firstField) {
+    for (const std::string &n : names)
+        if (n == address || (!firstField.empty() && n == firstField)) return true;
+    return false;
+}
+
+// "A+B+C" → A, B, C (empty names left out); false when none is given.
+bool commandNames(std::string_view list, std::vector<std::string> &out) {
+    while (!list.empty()) {
+        const auto plus = list.find('+');
+        const auto name = list.substr(0, plus);
+        if (!name.empty()) out.emplace_back(name);
+        list = plus == std::string_view::npos ? std::string_view() : list.substr(plus + 1);
+    }
+    return !out.empty();
+}
+
 } // namespace
 
 bool FaultSpec::any() const {
     return badChecksum > 0 || truncate > 0 || binary > 0 || silenceAt >= 0 || !noReply.empty() ||
-           slowReplyMs > 0 || hangupAfter >= 0;
+           slowReplyMs > 0 || hangupAfter >= 0 || !powerCut.empty();
 }
 
 bool FaultSpec::silentAt(double time) const {
@@ -29,9 +48,11 @@ bool FaultSpec::silentAt(double time) const {
 }
 
 bool FaultSpec::replySuppressed(std::string_view address, std::string_view firstField) const {
-    for (const std::string &n : noReply)
-        if (n == address || (!firstField.empty() && n == firstField)) return true;
-    return false;
+    return named(noReply, address, firstField);
+}
+
+bool FaultSpec::cutsPower(std::string_view address, std::string_view firstField) const {
+    return named(powerCut, address, firstField);
 }
 
 std::optional<FaultSpec> parseFaults(std::string_view spec, std::string &error) {
@@ -88,25 +109,47 @@ std::optional<FaultSpec> parseFaults(std::string_view spec, std::string &error) 
                 error = "silence: the period must be longer than the silence";
                 return std::nullopt;
             }
-        } else if (key == "noreply") {
-            std::string_view list = value;
-            while (!list.empty()) {
-                const auto plus = list.find('+');
-                const auto name = list.substr(0, plus);
-                if (!name.empty()) f.noReply.emplace_back(name);
-                list = plus == std::string_view::npos ? std::string_view() : list.substr(plus + 1);
-            }
-            if (f.noReply.empty()) {
-                error = "noreply: expected command names joined with '+' (PNVGRTK+RQUERY)";
+        } else if (key == "noreply" || key == "powercut") {
+            if (!commandNames(value, key == "noreply" ? f.noReply : f.powerCut)) {
+                error = std::string(key) +
+                        ": expected command names joined with '+' (PNVGRTK+RQUERY)";
                 return std::nullopt;
             }
         } else if (key == "slowreply") {
             if (!seconds(value, f.slowReplyMs, "a delay in milliseconds")) return std::nullopt;
         } else if (key == "hangup") {
-            if (!seconds(value, f.hangupAfter, "a time in seconds")) return std::nullopt;
+            // T, or T/DOWN[xCOUNT]: down DOWN seconds after T with a program on the line.
+            std::string_view after = value, down, times;
+            bool counted = false;
+            double count = 0;
+            if (const auto slash = after.find('/'); slash != std::string_view::npos) {
+                down = after.substr(slash + 1);
+                after = after.substr(0, slash);
+                if (const auto x = down.find('x'); x != std::string_view::npos) {
+                    times = down.substr(x + 1);
+                    down = down.substr(0, x);
+                    counted = true;
+                }
+            }
+            if (!seconds(after, f.hangupAfter, "a time in seconds") ||
+                (!down.empty() && !seconds(down, f.hangupDown, "a time down in seconds")))
+                return std::nullopt;
+            if (value.find('/') != std::string_view::npos && f.hangupDown <= 0) {
+                error = "hangup: expected SECONDS[/DOWN[xCOUNT]] with DOWN > 0, got '" +
+                        std::string(value) + "'";
+                return std::nullopt;
+            }
+            if (counted && (!parseNumber(times, count) || count < 1 || count != std::floor(count) ||
+                            count > 1e6)) {
+                error = "hangup: expected a count 1..1000000 after 'x', got '" +
+                        std::string(times) + "'";
+                return std::nullopt;
+            }
+            f.hangupTimes = static_cast<int>(count);
         } else {
             error = "unknown fault '" + std::string(key) +
-                    "' (known: badcs, truncate, binary, silence, noreply, slowreply, hangup)";
+                    "' (known: badcs, truncate, binary, silence, noreply, slowreply, hangup, "
+                    "powercut)";
             return std::nullopt;
         }
     }

@@ -1,7 +1,7 @@
 #pragma once
 // Faults the simulator injects on request, for reliability tests of everything that reads a
 // receiver (`gnss-sim --faults badcs=0.05,truncate=0.01,binary=0.2,silence=3@10,
-// noreply=PNVGRTK,slowreply=800,hangup=30`).
+// noreply=PNVGRTK,slowreply=800,hangup=30,powercut=PNVGCFG`).
 #include <cstdint>
 #include <optional>
 #include <random>
@@ -23,10 +23,26 @@ struct FaultSpec {
     std::vector<std::string> noReply;
     double slowReplyMs = 0;  // replies come this late (simulated milliseconds)
     double hangupAfter = -1; // the line drops after this many simulated seconds (-1: never)
+    // hangup=T/DOWN[xCOUNT]: the line drops once a program has had it for T seconds and is back
+    // DOWN seconds later (gnss-sim: a new pseudo-terminal), COUNT times (0: without end); the
+    // receiver runs on meanwhile. Without /DOWN the line drops T seconds after the start, for
+    // good (Receiver::hungUp()). The coming-back kind is gnss-sim's, which owns the line.
+    double hangupDown = 0;
+    int hangupTimes = 0;
+    // powercut=CMD[+CMD]: the power fails when the first of these commands arrives, before it is
+    // carried out or answered: the receiver is off (deaf and silent) for kPowerCutSeconds, then
+    // boots from its flash. A save to flash it interrupts is not made (a flash write either
+    // completes or not; here: not), so the receiver comes back with what its flash held before.
+    // Names as noreply takes them; once per run.
+    std::vector<std::string> powerCut;
+    static constexpr double kPowerCutSeconds = 2.0;
 
     bool any() const;
     bool silentAt(double time) const;
     bool replySuppressed(std::string_view address, std::string_view firstField) const;
+    bool cutsPower(std::string_view address, std::string_view firstField) const;
+    // The hang-up comes back (hangup=T/DOWN), rather than ending the line.
+    bool hangupRepeats() const { return hangupAfter >= 0 && hangupDown > 0; }
 };
 
 // Parses "key=value,key=value". Empty text → no faults. On error returns nullopt and sets

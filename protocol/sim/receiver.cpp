@@ -43,27 +43,49 @@ Receiver::Receiver(const Dialect &dialect, int defaultBaud, const SimOptions &op
 Receiver::~Receiver() = default;
 
 void Receiver::receive(std::string_view bytes) {
-    if (hungUp_ || baudMismatch()) return;
+    if (hungUp_ || baudMismatch() || poweredOff()) return;
     onHostBytes(bytes);
     decoder_.feed(bytes, [this](const SentenceEvent &ev) {
+        // What follows the command that cut the power is not heard.
+        if (poweredOff() || cutPowerAt(ev.sentence)) return;
         onCommand(ev.sentence, ev.message, ev.error);
     });
+}
+
+bool Receiver::cutPowerAt(const Sentence &command) {
+    const FaultSpec &f = options_.faults;
+    if (powerCutDone_ || !f.cutsPower(command.address(), command.field(0))) return false;
+    powerCutDone_ = true;
+    offUntil_ = now_ + FaultSpec::kPowerCutSeconds;
+    pending_.clear(); // replies not yet out, a baud switch to come: gone with the power
+    return true;
 }
 
 void Receiver::advance(double seconds) {
     const double end = now_ + std::max(0.0, seconds);
     while (!hungUp_) {
-        double next = nextEpoch_;
+        // Off (powercut): nothing happens until it boots, from its flash.
+        const bool off = poweredOff();
+        double next = off ? offUntil_ : nextEpoch_;
         for (const Pending &p : pending_) next = std::min(next, p.at);
         if (next > end + 1e-9) break; // (epoch grids are sums of 0.1, 0.2: allow rounding)
         now_ = std::max(now_, next);
-        if (options_.faults.hangupAfter >= 0 && now_ >= options_.faults.hangupAfter) break;
+        if (hangsUp()) break;
+        if (off) {
+            reset(ResetKind::PowerCycle);
+            continue;
+        }
         flushDue();
         if (nextEpoch_ <= now_) runEpoch();
     }
     now_ = end;
-    if (options_.faults.hangupAfter >= 0 && now_ >= options_.faults.hangupAfter) hungUp_ = true;
+    if (hangsUp()) hungUp_ = true;
     flushDue();
+}
+
+bool Receiver::hangsUp() const {
+    const FaultSpec &f = options_.faults;
+    return f.hangupAfter >= 0 && !f.hangupRepeats() && now_ >= f.hangupAfter;
 }
 
 std::string Receiver::takeOutput() {

@@ -53,7 +53,7 @@ public:
     Receiver &operator=(const Receiver &) = delete;
 
     // Bytes from the host. Ignored while the line speed differs from the receiver's (a UART at
-    // the wrong speed reads garbage) and after a hang-up.
+    // the wrong speed reads garbage), after a hang-up and while the power is off (powercut).
     void receive(std::string_view bytes);
     // Runs the receiver for `seconds` of simulated time (epochs, delayed replies, baud switches).
     void advance(double seconds);
@@ -81,6 +81,8 @@ public:
     double time() const { return now_; }
     // Simulated power cycle: settings come back from flash, the fix sequence restarts.
     void powerCycle() { reset(ResetKind::PowerCycle); }
+    // The powercut fault fired and the receiver has not booted again yet: deaf and silent.
+    bool poweredOff() const { return now_ < offUntil_; }
 
     const Dialect &dialect() const { return dialect_; }
     // Seconds between navigation epochs (PVT rate).
@@ -147,6 +149,10 @@ private:
     };
     void runEpoch();
     void flushDue();
+    // The powercut fault, when `command` is one it names: true when the power went.
+    bool cutPowerAt(const Sentence &command);
+    // The hang-up fault for good (hangup=T) is due.
+    bool hangsUp() const;
     void write(std::string bytes);
     // Takes the line time of `bytes`; false (nothing taken) when `mayDrop` and it does not fit.
     bool takeLineTime(std::size_t bytes, bool mayDrop);
@@ -168,6 +174,8 @@ private:
     double trackingSince_ = 0;
     double ttff_ = 0;
     bool hungUp_ = false;
+    double offUntil_ = -1;      // the powercut fault: off until then, then a power cycle
+    bool powerCutDone_ = false; // (once per run)
     FixKind lastFix_ = FixKind::None;
     SkySnapshot last_;
     std::vector<Pending> pending_;

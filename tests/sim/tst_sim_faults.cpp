@@ -87,6 +87,16 @@ private slots:
                                          << "hangup";
         QTest::newRow("empty noreply") << "noreply="
                                        << "noreply";
+        QTest::newRow("hangup back at once") << "hangup=2/0"
+                                             << "DOWN > 0";
+        QTest::newRow("hangup negative down") << "hangup=2/-1"
+                                              << "hangup";
+        QTest::newRow("hangup no times") << "hangup=2/1x0"
+                                         << "count";
+        QTest::newRow("hangup count missing") << "hangup=2/1x"
+                                              << "count";
+        QTest::newRow("empty powercut") << "powercut=+"
+                                        << "powercut";
     }
     void badSpecsAreRefusedWithTheReason() {
         QFETCH(QString, spec);
