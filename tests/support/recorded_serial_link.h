@@ -1,0 +1,36 @@
+#pragma once
+// For the end-to-end suites that record a serial link: a Connection on a device (the built-in
+// dialects) recording to a file, with every byte its transport delivered kept to hold the
+// recording against. (tst_link_pty's hang-up and recording tests build the same by hand.)
+#include "builtin_registry.h"
+#include "connection.h"
+#include "recording.h"
+#include "serial_transport.h"
+
+#include <memory>
+
+namespace gnss::link::test {
+
+struct RecordedSerialLink {
+    RecordedSerialLink(const QString &device, int baud, const QString &logPath)
+        : conn(std::make_unique<SerialTransport>(SerialSettings{device, baud}),
+               gnss::test::builtinRegistry()),
+          log(logPath) {
+        recording = conn.startRecording(log);
+        QObject::connect(conn.transport(), &Transport::bytesReceived, &conn,
+                         [this](const QByteArray &b) { received += b; });
+    }
+    // Closes the link and the recording and reads it back (false with `error` set).
+    bool finish(Recording &r, QString &error) {
+        conn.close();
+        conn.stopRecording();
+        return loadRecording(log, r, error);
+    }
+
+    Connection conn;
+    QString log;
+    bool recording = false; // whether the recording could be started
+    QByteArray received;    // every byte the transport delivered
+};
+
+} // namespace gnss::link::test
