@@ -111,9 +111,9 @@ private slots:
         constexpr int kOutages = 100;
         QTemporaryDir dir;
         const QString link = dir.filePath("ttyGNSS"); // kept by gnss-sim at its current device
-        // At 20x, held 2 s is 0.1 s of real time and down 1 s is 50 ms.
+        // At 20x, held 3 s is 0.15 s of real time and down 1 s is 50 ms.
         SimProcess sim({"--dialect", "nmea", "--speed", "20", "--link", link, "--faults",
-                        QString("hangup=2/1x%1").arg(kOutages)});
+                        QString("hangup=3/1x%1").arg(kOutages)});
         REQUIRE_SIM(sim);
         RecordedSerialLink recorded(link, 9600, dir.filePath("unplugs.nmea"));
         QVERIFY(recorded.recording);
