@@ -5654,7 +5654,12 @@ Serial number: %3</source>
         <translation>%1 на скорости %2 бод</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+35"/>
+        <source>%1: the device went away (unplugged, powered off or hung up: %2)</source>
+        <translation>%1: устройство пропало (отключено, обесточено или линия оборвана: %2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -162,7 +162,7 @@ void SerialTransport::discardInput() {
 
 void SerialTransport::onError(QSerialPort::SerialPortError error) {
     if (error == QSerialPort::NoError) return;
-    const QString message = tr("%1: %2").arg(settings_.portName, port_.errorString());
+    const QString qtWords = port_.errorString();
     if (!port_.isOpen()) return; // open() reports its own failure
     port_.clearError();
     // A device that went away: ResourceError, or a read/write error with its node gone. A read
@@ -177,6 +177,12 @@ void SerialTransport::onError(QSerialPort::SerialPortError error) {
                                                    ? port_.portName()
                                                    : QStringLiteral("/dev/") + port_.portName()));
     if (ioError && !gone) return;
+    // Qt's words for a device that went away are the system's errno ("Invalid argument" for a
+    // pseudo-terminal hung up): say what happened first, keep them after it.
+    const QString message =
+            gone ? tr("%1: the device went away (unplugged, powered off or hung up: %2)")
+                            .arg(settings_.portName, qtWords)
+                 : tr("%1: %2").arg(settings_.portName, qtWords);
     if (gone) {
         // Close at once: a vanished device's file descriptor keeps signalling otherwise.
         // (Queued: not inside QSerialPort's own notifier; skipped when reopened meanwhile.)
