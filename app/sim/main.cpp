@@ -269,6 +269,10 @@ int main(int argc, char **argv) {
                    (faults.hangupTimes == 0 || outages < faults.hangupTimes)) {
             if (heldBefore) heldFor += elapsed;
             if (heldFor >= faults.hangupAfter) { // unplugged: the program's line is gone
+                // The name goes first, as a USB device's node does: a program retrying it meets
+                // "no such file" until the device is back, never a pseudo-terminal of another
+                // program that got the freed number meanwhile.
+                if (!args.link.empty()) ::unlink(args.link.c_str());
                 ::close(ioFd);
                 ioFd = -1;
                 backAt = rx->time() + faults.hangupDown;
