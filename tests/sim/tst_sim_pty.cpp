@@ -201,7 +201,8 @@ private slots:
     void hangupFaultDropsTheLine() {
         QFETCH(QString, transport);
         if (transport == "pty") {
-            SimPort sim({"--dialect", "nemerix", "--faults", "hangup=1.5"});
+            // 2.5 s: room for a loaded machine between the device printed and the port opened.
+            SimPort sim({"--dialect", "nemerix", "--faults", "hangup=2.5"});
             QVERIFY(sim.open(9600));
             QVERIFY(summarize(sim.read(1200), "nemerix").byType.count("GGA"));
             QVERIFY(sim.proc.waitForFinished(3000)); // the simulator closes the line and ends
