@@ -8,6 +8,8 @@
 // SIGHUP power-cycles the simulated receiver (settings come back from its flash).
 // The hang-up fault that comes back (hangup=T/DOWN) closes the pseudo-terminal and makes a new
 // one; --link keeps a symbolic link to whichever is current (a stable name, as udev gives).
+// hangupon=CMD/DOWN does the same the moment the receiver hears CMD (the line goes before its
+// answer is written).
 // With --rtcm-base the same loop carries an RTCM 3 base station's stream instead.
 #include "dialects.h"
 #include "sim_args.h"
@@ -182,10 +184,20 @@ int main(int argc, char **argv) {
     // The hang-up that comes back (hangup=T/DOWN[xCOUNT], on a pseudo-terminal): the line drops
     // once a program has had it for T simulated seconds; DOWN seconds later there is a new one.
     const sim::FaultSpec &faults = args.options.faults;
-    const bool unplugs = rx && isPty && faults.hangupRepeats();
+    const bool unplugs = rx && isPty && (faults.hangupRepeats() || !faults.hangupOn.empty());
     double heldFor = 0, backAt = 0;
     int outages = 0;
     bool heldBefore = false; // a program had the line at the last turn (time since is held time)
+    // Unplugged: the program's line is gone, a new one comes `down` simulated seconds later. The
+    // name goes first, as a USB device's node does: a program retrying it meets "no such file"
+    // until the device is back, never a pseudo-terminal of another program that got the freed
+    // number meanwhile.
+    auto unplug = [&](double down) {
+        if (!args.link.empty()) ::unlink(args.link.c_str());
+        ::close(ioFd);
+        ioFd = -1;
+        backAt = rx->time() + down;
+    };
     while (!g_stop) {
         pollfd fds[3];
         int n = 0;
@@ -232,6 +244,11 @@ int main(int argc, char **argv) {
             if (isPty && (fds[ioIdx].revents & POLLHUP)) ptyIdle = true;
         }
         if (ptyIdle) peerPresent = false;
+        // hangupon: the receiver heard the command; the line goes before its answer is out.
+        if (unplugs && ioFd >= 0 && rx->takeLineDrop()) {
+            unplug(faults.hangupOnDown);
+            peerPresent = false;
+        }
         if (isPty && rx) {
             termios t{};
             if (tcgetattr(ioFd, &t) == 0)
@@ -265,17 +282,11 @@ int main(int argc, char **argv) {
             if (ioFd < 0) return 1;
             ptyIdle = true; // until a program opens it
             heldFor = 0;
-        } else if (unplugs && peerPresent &&
+        } else if (unplugs && faults.hangupRepeats() && peerPresent &&
                    (faults.hangupTimes == 0 || outages < faults.hangupTimes)) {
             if (heldBefore) heldFor += elapsed;
-            if (heldFor >= faults.hangupAfter) { // unplugged: the program's line is gone
-                // The name goes first, as a USB device's node does: a program retrying it meets
-                // "no such file" until the device is back, never a pseudo-terminal of another
-                // program that got the freed number meanwhile.
-                if (!args.link.empty()) ::unlink(args.link.c_str());
-                ::close(ioFd);
-                ioFd = -1;
-                backAt = rx->time() + faults.hangupDown;
+            if (heldFor >= faults.hangupAfter) {
+                unplug(faults.hangupDown);
                 ++outages;
             }
         }

@@ -38,7 +38,10 @@ const char *const kUsageTail =
         "                 a program on it; DOWN s later a new one, its path on a new line of\n"
         "                 standard output; COUNT times, default without end),\n"
         "                 powercut=CMD[+CMD] (the first such command cuts the power before it\n"
-        "                 is carried out: off 2 s, then the settings of its flash)\n"
+        "                 is carried out: off 2 s, then the settings of its flash),\n"
+        "                 hangupon=CMD[+CMD][/DOWN] (pseudo-terminal: the line drops as the\n"
+        "                 first such command arrives, which is carried out but not answered;\n"
+        "                 DOWN s later, default 1, a new one; once)\n"
         "  --internal-base  an RTK rover (nvs) corrects itself from a base inside the simulator;\n"
         "                 without it, it stays autonomous until RTCM 3 frames arrive on its\n"
         "                 port (float after 3 s of corrections, fixed after 20 s)\n"
@@ -197,6 +200,10 @@ bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArg
     }
     if (out.transport != Transport::Pty && out.options.faults.hangupRepeats()) {
         error = "--faults: a hang-up that comes back (hangup=T/DOWN) needs --pty";
+        return false;
+    }
+    if (out.transport != Transport::Pty && !out.options.faults.hangupOn.empty()) {
+        error = "--faults: hangupon (the line drops and comes back) needs --pty";
         return false;
     }
     bool known = false;

@@ -37,7 +37,7 @@ bool commandNames(std::string_view list, std::vector<std::string> &out) {
 
 bool FaultSpec::any() const {
     return badChecksum > 0 || truncate > 0 || binary > 0 || silenceAt >= 0 || !noReply.empty() ||
-           slowReplyMs > 0 || hangupAfter >= 0 || !powerCut.empty();
+           slowReplyMs > 0 || hangupAfter >= 0 || !powerCut.empty() || !hangupOn.empty();
 }
 
 bool FaultSpec::silentAt(double time) const {
@@ -53,6 +53,10 @@ bool FaultSpec::replySuppressed(std::string_view address, std::string_view first
 
 bool FaultSpec::cutsPower(std::string_view address, std::string_view firstField) const {
     return named(powerCut, address, firstField);
+}
+
+bool FaultSpec::hangsUpOn(std::string_view address, std::string_view firstField) const {
+    return named(hangupOn, address, firstField);
 }
 
 std::optional<FaultSpec> parseFaults(std::string_view spec, std::string &error) {
@@ -113,6 +117,23 @@ std::optional<FaultSpec> parseFaults(std::string_view spec, std::string &error) 
             if (!commandNames(value, key == "noreply" ? f.noReply : f.powerCut)) {
                 error = std::string(key) +
                         ": expected command names joined with '+' (PNVGRTK+RQUERY)";
+                return std::nullopt;
+            }
+        } else if (key == "hangupon") {
+            // CMD[+CMD][/DOWN]: the line drops when the first of them arrives, back DOWN s later.
+            std::string_view names = value;
+            if (const auto slash = value.find('/'); slash != std::string_view::npos) {
+                names = value.substr(0, slash);
+                if (!seconds(value.substr(slash + 1), f.hangupOnDown, "a time down in seconds"))
+                    return std::nullopt;
+                if (f.hangupOnDown <= 0) {
+                    error = "hangupon: the time down must be > 0";
+                    return std::nullopt;
+                }
+            }
+            if (!commandNames(names, f.hangupOn)) {
+                error = "hangupon: expected command names joined with '+' and an optional "
+                        "/SECONDS down (PNVGPPS/1)";
                 return std::nullopt;
             }
         } else if (key == "slowreply") {

@@ -1,7 +1,7 @@
 #pragma once
 // Faults the simulator injects on request, for reliability tests of everything that reads a
 // receiver (`gnss-sim --faults badcs=0.05,truncate=0.01,binary=0.2,silence=3@10,
-// noreply=PNVGRTK,slowreply=800,hangup=30,powercut=PNVGCFG`).
+// noreply=PNVGRTK,slowreply=800,hangup=30,powercut=PNVGCFG,hangupon=PNVGPPS/1`).
 #include <cstdint>
 #include <optional>
 #include <random>
@@ -36,11 +36,20 @@ struct FaultSpec {
     // Names as noreply takes them; once per run.
     std::vector<std::string> powerCut;
     static constexpr double kPowerCutSeconds = 2.0;
+    // hangupon=CMD[+CMD][/DOWN]: the line drops the moment the first of these commands arrives
+    // (a cable pulled in the middle of a settings apply): the receiver carries the command out,
+    // its answer is lost with the line, and what the host sent after it is not heard. DOWN
+    // seconds later (default 1) the line is back (gnss-sim: a new pseudo-terminal); the receiver
+    // runs on meanwhile. Names as noreply takes them; once per run; gnss-sim's, which owns the
+    // line (Receiver::takeLineDrop()).
+    std::vector<std::string> hangupOn;
+    double hangupOnDown = 1.0;
 
     bool any() const;
     bool silentAt(double time) const;
     bool replySuppressed(std::string_view address, std::string_view firstField) const;
     bool cutsPower(std::string_view address, std::string_view firstField) const;
+    bool hangsUpOn(std::string_view address, std::string_view firstField) const;
     // The hang-up comes back (hangup=T/DOWN), rather than ending the line.
     bool hangupRepeats() const { return hangupAfter >= 0 && hangupDown > 0; }
 };

@@ -43,13 +43,20 @@ Receiver::Receiver(const Dialect &dialect, int defaultBaud, const SimOptions &op
 Receiver::~Receiver() = default;
 
 void Receiver::receive(std::string_view bytes) {
-    if (hungUp_ || baudMismatch() || poweredOff()) return;
+    if (hungUp_ || baudMismatch() || poweredOff() || lineDropDue_) return;
     onHostBytes(bytes);
     decoder_.feed(bytes, [this](const SentenceEvent &ev) {
-        // What follows the command that cut the power is not heard.
-        if (poweredOff() || cutPowerAt(ev.sentence)) return;
+        // What follows the command that cut the power, or the line, is not heard.
+        if (poweredOff() || lineDropDue_ || cutPowerAt(ev.sentence)) return;
+        dropLineAt(ev.sentence);
         onCommand(ev.sentence, ev.message, ev.error);
     });
+}
+
+void Receiver::dropLineAt(const Sentence &command) {
+    if (lineDropDone_ || !options_.faults.hangsUpOn(command.address(), command.field(0))) return;
+    lineDropDone_ = true;
+    lineDropDue_ = true;
 }
 
 bool Receiver::cutPowerAt(const Sentence &command) {

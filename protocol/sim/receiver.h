@@ -77,6 +77,14 @@ public:
 
     // The hang-up fault fired: the transport should close the line.
     bool hungUp() const { return hungUp_; }
+    // The hangupon fault fired since the last call: the transport drops the line now (before
+    // anything more is written to it) and brings it back faults.hangupOnDown seconds later; the
+    // receiver runs on. Until then what the host sends is not heard.
+    bool takeLineDrop() {
+        const bool due = lineDropDue_;
+        lineDropDue_ = false;
+        return due;
+    }
     // Simulated seconds since start.
     double time() const { return now_; }
     // Simulated power cycle: settings come back from flash, the fix sequence restarts.
@@ -151,6 +159,8 @@ private:
     void flushDue();
     // The powercut fault, when `command` is one it names: true when the power went.
     bool cutPowerAt(const Sentence &command);
+    // The hangupon fault, when `command` is one it names (the command is still carried out).
+    void dropLineAt(const Sentence &command);
     // The hang-up fault for good (hangup=T) is due.
     bool hangsUp() const;
     void write(std::string bytes);
@@ -176,6 +186,8 @@ private:
     bool hungUp_ = false;
     double offUntil_ = -1;      // the powercut fault: off until then, then a power cycle
     bool powerCutDone_ = false; // (once per run)
+    bool lineDropDue_ = false;  // the hangupon fault fired, the transport has not taken it yet
+    bool lineDropDone_ = false; // (once per run)
     FixKind lastFix_ = FixKind::None;
     SkySnapshot last_;
     std::vector<Pending> pending_;
