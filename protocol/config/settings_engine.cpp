@@ -1,5 +1,6 @@
 // Before any Qt header: core headers have members named emit, which Qt defines as a macro.
 #include "core/dialect_registry.h"
+#include "core/sentence_builder.h"
 #include "core/settings_plan.h"
 #include "core/stream_decoder.h"
 
@@ -27,6 +28,42 @@ bool succeeded(const link::CommandResult &r) {
     return r.outcome == link::CommandOutcome::Accepted || r.outcome == link::CommandOutcome::Sent;
 }
 
+bool anyLinkLost(const QList<link::CommandResult> &commands) {
+    return std::any_of(commands.begin(), commands.end(), [](const link::CommandResult &c) {
+        return c.outcome == link::CommandOutcome::LinkLost;
+    });
+}
+
+// What became of one command of settings (its sentences) in an apply the link dropped in.
+enum class Fate {
+    Taken,       // every sentence answered yes (or sent, for those without an answer)
+    Unconfirmed, // one went out and its answer was lost, or only some went
+    NotSent,     // none went out, or the receiver refused or did not answer
+};
+
+Fate fateOf(const std::vector<std::string> &sentences, const QList<link::CommandResult> &commands) {
+    bool all = !sentences.empty(), anyGone = false, inFlight = false, lostUnsent = false;
+    for (const std::string &s : sentences) {
+        std::string why;
+        std::string line = completeSentence(s, why);
+        if (line.empty()) line = s;
+        const QString sentence = QString::fromStdString(line);
+        const auto r =
+                std::find_if(commands.begin(), commands.end(),
+                             [&](const link::CommandResult &c) { return c.sentence == sentence; });
+        const bool ok = r != commands.end() && succeeded(*r);
+        all = all && ok;
+        anyGone = anyGone || ok;
+        if (r == commands.end()) continue;
+        const bool lost = r->outcome == link::CommandOutcome::LinkLost;
+        inFlight = inFlight || (lost && r->attempts > 0);
+        lostUnsent = lostUnsent || (lost && r->attempts == 0);
+    }
+    if (all) return Fate::Taken;
+    if (inFlight || (anyGone && lostUnsent)) return Fate::Unconfirmed;
+    return Fate::NotSent;
+}
+
 } // namespace
 
 QString verdictName(Verdict v) {
@@ -36,6 +73,12 @@ QString verdictName(Verdict v) {
     case Verdict::NotReported: return SettingsEngine::tr("not reported");
     case Verdict::WrittenUnverified: return SettingsEngine::tr("sent (write-only, not verifiable)");
     case Verdict::NotSent: return SettingsEngine::tr("not applied (command failed)");
+    case Verdict::NotReadBack:
+        return SettingsEngine::tr("taken, not read back: the link was lost (read back when it "
+                                  "returns)");
+    case Verdict::Unconfirmed:
+        return SettingsEngine::tr("unconfirmed: the link was lost before the answer (read back "
+                                  "when it returns)");
     }
     return {};
 }
@@ -76,6 +119,13 @@ void SettingsEngine::attach(link::CommandQueue *queue, const Dialect *dialect,
         pending_.clear();
         end();
     }
+    if (transport != transport_) {
+        QObject::disconnect(transportConnection_);
+        transportConnection_ = {};
+        if (transport)
+            transportConnection_ = connect(transport, &link::Transport::stateChanged, this,
+                                           &SettingsEngine::onTransportState);
+    }
     transport_ = transport;
     const bool newQueue = queue != queue_;
     if (newQueue) {
@@ -94,11 +144,14 @@ void SettingsEngine::attach(link::CommandQueue *queue, const Dialect *dialect,
         dialect_ = dialect;
         reported_.clear();
         written_.clear();
+        interrupted_.clear();
+        readBackDue_ = false;
         identity_ = {};
         emit dialectChanged(dialect);
         emit valuesChanged();
     }
     if (newQueue) emit queueChanged();
+    if (newQueue && queue) onTransportState(); // a new link to the same receiver: read back
 }
 
 bool SettingsEngine::canSend() const {
@@ -114,7 +167,53 @@ QString SettingsEngine::sendRefusal() const {
 void SettingsEngine::forget() {
     reported_.clear();
     written_.clear();
+    interrupted_.clear();
     emit valuesChanged();
+}
+
+std::vector<std::string> SettingsEngine::pendingReadBack() const {
+    std::vector<std::string> keys;
+    for (const auto &c : interrupted_) keys.push_back(c.key);
+    return keys;
+}
+
+void SettingsEngine::onTransportState() {
+    // The link is (back) up after an apply it dropped in: its settings are read back as soon
+    // as nothing else runs.
+    if (interrupted_.empty() || !transport_ || !transport_->isOpen()) return;
+    readBackDue_ = true;
+    QMetaObject::invokeMethod(this, &SettingsEngine::readBackIfDue, Qt::QueuedConnection);
+}
+
+void SettingsEngine::readBackIfDue() {
+    if (!readBackDue_ || isBusy() || interrupted_.empty() || !dialect_) return;
+    if (!canSend() || (transport_ && !transport_->isOpen())) return; // at the next return
+    readBackDue_ = false;
+    if (!begin(Operation::ReadBack, tr("Read back after the link returned"))) return;
+    phase_ = Phase::Verify;
+    std::vector<std::string> keys;
+    for (const auto &c : interrupted_) {
+        applying_.push_back({c.key, c.wanted});
+        const SettingDef *def = findSetting(dialect_->settings, c.key);
+        if (def && isReadable(*def)) keys.push_back(c.key);
+    }
+    const EncodeResult q = keys.empty() ? EncodeResult{} : encodeQueries(*dialect_, keys);
+    if (!q.ok()) report_.error = tr("could not read back: %1").arg(refusalText(q, dialect_->id));
+    if (!q.ok() || q.sentences.empty()) {
+        finishReadBack();
+        end();
+        return;
+    }
+    for (const auto &k : keys) reported_.erase(k);
+    if (!enqueue(q.sentences)) {
+        const std::set<int> ids = pending_;
+        for (int id : ids)
+            if (queue_ && !queue_->cancel(id)) pending_.erase(id);
+        if (pending_.empty() && isBusy()) {
+            finishReadBack();
+            end();
+        }
+    }
 }
 
 // ---- Values ---------------------------------------------------------------------------------
@@ -441,6 +540,11 @@ void SettingsEngine::absorb(const link::CommandResult &r) {
 }
 
 void SettingsEngine::phaseDone() {
+    if (op_ == Operation::ReadBack) {
+        finishReadBack();
+        end();
+        return;
+    }
     if (op_ == Operation::Apply && phase_ == Phase::Commands && !cancelled_) {
         startVerify();
         return;
@@ -453,10 +557,7 @@ void SettingsEngine::phaseDone() {
 }
 
 void SettingsEngine::startVerify() {
-    phase_ = Phase::Verify;
-    bool linkLost = false;
-    for (const auto &c : report_.commands)
-        linkLost = linkLost || c.outcome == link::CommandOutcome::LinkLost;
+    const bool linkLost = anyLinkLost(report_.commands);
     std::vector<std::string> keys;
     for (const auto &kv : applying_) {
         const SettingDef *def = findSetting(dialect_->settings, kv.key);
@@ -467,6 +568,7 @@ void SettingsEngine::startVerify() {
         end();
         return;
     }
+    phase_ = Phase::Verify;
     const EncodeResult q = encodeQueries(*dialect_, keys);
     for (const auto &k : keys) reported_.erase(k);
     if (!q.ok() || q.sentences.empty() || !enqueue(q.sentences)) {
@@ -481,6 +583,10 @@ void SettingsEngine::startVerify() {
 
 void SettingsEngine::finishVerify() {
     if (!report_.checks.empty()) return;
+    if (anyLinkLost(report_.commands)) {
+        finishLinkLost();
+        return;
+    }
     // Commands of the set itself (not the read-back) that failed.
     bool anyFailed = false;
     for (const auto &c : report_.commands) anyFailed = anyFailed || !succeeded(c);
@@ -514,6 +620,90 @@ void SettingsEngine::finishVerify() {
     emit valuesChanged();
 }
 
+void SettingsEngine::finishLinkLost() {
+    // The link went in the middle of the apply (or of its read-back). A setting is verified by
+    // a read-back only: values the receiver reported before the read-back (its old ones, or the
+    // echo of the set) are not taken for it.
+    const bool readBackRan = phase_ == Phase::Verify;
+    std::map<std::string, Fate, std::less<>> fates;
+    std::vector<PlannedCommand> plan;
+    if (planWrites(*dialect_, applying_, plan).empty())
+        for (const PlannedCommand &p : plan) {
+            const Fate f = fateOf(p.command->write(p.values).sentences, report_.commands);
+            for (const auto &kv : p.values) fates[kv.key] = f;
+        }
+    bool readable = false;
+    for (const auto &kv : applying_) {
+        const SettingDef *def = findSetting(dialect_->settings, kv.key);
+        if (!def) continue;
+        const auto found = fates.find(kv.key);
+        const Fate fate = found == fates.end() ? Fate::Unconfirmed : found->second;
+        SettingCheck c{kv.key, kv.value, {}, Verdict::NotSent};
+        if (isReadable(*def)) {
+            readable = true;
+            const auto it = reported_.find(kv.key);
+            if (readBackRan && it != reported_.end()) {
+                c.reported = it->second;
+                c.verdict = sameValue(*def, kv.value, it->second) ? Verdict::Verified
+                                                                  : Verdict::NotTaken;
+            } else {
+                c.verdict = fate == Fate::Taken         ? Verdict::NotReadBack
+                            : fate == Fate::Unconfirmed ? Verdict::Unconfirmed
+                                                        : Verdict::NotSent;
+                // What the receiver has now is not known until the read-back.
+                if (fate != Fate::NotSent) reported_.erase(kv.key);
+            }
+        } else if (auto it = written_.find(kv.key); it != written_.end()) {
+            c.reported = it->second; // its echo in this apply (PNVGRZA), as in finishVerify()
+            c.verdict =
+                    sameValue(*def, kv.value, it->second) ? Verdict::Verified : Verdict::NotTaken;
+        } else if (fate == Fate::Taken) {
+            c.verdict = Verdict::WrittenUnverified;
+            written_[kv.key] = kv.value;
+        } else {
+            c.verdict = fate == Fate::Unconfirmed ? Verdict::Unconfirmed : Verdict::NotSent;
+        }
+        report_.checks.push_back(std::move(c));
+    }
+    if (readable) {
+        // An earlier apply still waiting for its read-back keeps its other settings.
+        std::vector<SettingCheck> earlier = std::move(interrupted_);
+        interrupted_ = report_.checks;
+        for (auto &e : earlier)
+            if (std::none_of(interrupted_.begin(), interrupted_.end(),
+                             [&](const SettingCheck &c) { return c.key == e.key; }))
+                interrupted_.push_back(std::move(e));
+        report_.readBackOnReturn = true;
+        readBackDue_ = false; // the link is to come back first
+    }
+    emit valuesChanged();
+}
+
+void SettingsEngine::finishReadBack() {
+    const bool linkLost = anyLinkLost(report_.commands);
+    for (SettingCheck c : interrupted_) {
+        const SettingDef *def = findSetting(dialect_->settings, c.key);
+        if (def && isReadable(*def)) {
+            if (auto it = reported_.find(c.key); it != reported_.end()) {
+                c.reported = it->second;
+                if (sameValue(*def, c.wanted, it->second))
+                    c.verdict = Verdict::Verified;
+                else if (c.verdict != Verdict::NotSent)
+                    c.verdict = Verdict::NotTaken;
+            } else if (!linkLost && c.verdict != Verdict::NotSent) {
+                c.verdict = Verdict::NotReported;
+            }
+        }
+        report_.checks.push_back(std::move(c));
+    }
+    // Lost again: read back at the next return. Done, or cancelled by the user: no more.
+    if (linkLost && !cancelled_)
+        report_.readBackOnReturn = true;
+    else
+        interrupted_.clear();
+    emit valuesChanged();
+}
+
 void SettingsEngine::end() {
     if (op_ == Operation::None) {
         emit finished(report_);
@@ -523,6 +713,9 @@ void SettingsEngine::end() {
     pending_.clear();
     emit busyChanged(false);
     emit finished(report_);
+    // The link came back while something else ran.
+    if (readBackDue_)
+        QMetaObject::invokeMethod(this, &SettingsEngine::readBackIfDue, Qt::QueuedConnection);
 }
 
 // ---- Profiles -------------------------------------------------------------------------------

@@ -12,6 +12,12 @@
 //          so that restarts, speed and protocol changes come last; every command's outcome
 //          reported; then the changed readable settings are read back and each is marked
 //          verified, not taken, or not reported.
+//          The link lost in the middle (a cable pulled): every command still has its outcome
+//          (answered, sent with its answer lost, not sent); a setting is verified only by a
+//          read-back, so those whose commands went out are "not read back" or "unconfirmed",
+//          their old values forgotten; when the link is back the engine reads the apply's
+//          settings back by itself (Operation::ReadBack) and reports each against the value
+//          wanted.
 //   action save to flash / restore defaults / cold, warm, hot start, where the dialect has one.
 //
 // One operation at a time, with progress; cancel() stops it (queued commands are cancelled).
@@ -40,7 +46,7 @@ class Transport;
 
 namespace gnss::config {
 
-enum class Operation { None, Read, Apply, Action };
+enum class Operation { None, Read, Apply, Action, ReadBack };
 
 enum class Verdict {
     Verified,          // read back with the value set
@@ -48,6 +54,8 @@ enum class Verdict {
     NotReported,       // readable, but the receiver did not report it after the change
     WrittenUnverified, // write-only: the command went through, nothing can read it back
     NotSent,           // its command failed (refused, timed out, link lost, cancelled)
+    NotReadBack,       // its command was taken, then the link went before the read-back
+    Unconfirmed,       // its command went out, the link went before the answer: it may be set
 };
 QString verdictName(Verdict v);
 
@@ -65,6 +73,8 @@ struct OperationReport {
     QString error;                       // why nothing (more) was sent
     bool cancelled = false;
     bool nothingToDo = false; // apply: every value was already in force
+    // apply: the link went in the middle; its settings are read back when the link returns.
+    bool readBackOnReturn = false;
 
     // Commands that were neither accepted nor sent.
     int failedCommands() const;
@@ -107,6 +117,8 @@ public:
     QString sendRefusal() const;
     // Forgets what was read and written (the receiver restarted with other settings).
     void forget();
+    // The settings of an apply the link dropped in, to read back when it returns (empty: none).
+    std::vector<std::string> pendingReadBack() const;
 
     // ---- Values -------------------------------------------------------------------------
     ValueState state(std::string_view key) const;
@@ -158,13 +170,17 @@ private:
     void startVerify();
     void finishVerify();
     void end();
+    void finishLinkLost();
+    void finishReadBack();
+    void onTransportState();
+    void readBackIfDue();
     std::vector<KeyValue> withCompanions(std::vector<KeyValue> changes);
     link::CommandOptions optionsFor(const std::string &sentence) const;
     int effectRank(const std::string &sentence) const;
 
     QPointer<link::CommandQueue> queue_;
     QPointer<link::Transport> transport_;
-    QMetaObject::Connection queueConnection_, replyConnection_;
+    QMetaObject::Connection queueConnection_, replyConnection_, transportConnection_;
     const Dialect *dialect_ = nullptr;
     std::map<int, std::vector<KeyValue>> replyValues_; // per command, from its decoded replies
     std::map<std::string, std::string, std::less<>> reported_, written_;
@@ -177,6 +193,9 @@ private:
     bool cancelled_ = false;
     std::optional<Action> action_;
     std::vector<KeyValue> applying_; // changes + companions
+    // The checks of the apply the link dropped in, until its read-back after the return.
+    std::vector<SettingCheck> interrupted_;
+    bool readBackDue_ = false; // the link came back since: read them when idle
     OperationReport report_;
 };
 

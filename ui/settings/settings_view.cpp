@@ -690,6 +690,9 @@ void SettingsView::showReport(const config::OperationReport &r) {
     else
         text = tr("%1: done (%n command(s)).", nullptr, static_cast<int>(r.commands.size()))
                        .arg(r.title);
+    if (r.readBackOnReturn)
+        text += QLatin1Char(' ') +
+                tr("The link was lost: these settings are read back when it returns.");
     status(text);
     refreshValues();
 }
