@@ -6156,6 +6156,11 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
+        <source>Give only the host name or address here: the user name and the password have their own fields.</source>
+        <translation>Здесь укажите только имя или адрес хоста: для имени пользователя и пароля есть свои поля.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&apos;%1&apos; is not a host name or address.</source>
         <translation>«%1» — не имя хоста и не адрес.</translation>
     </message>

@@ -16,6 +16,7 @@
 #include "correction_forwarder.h"
 #include "event_loop.h"
 #include "ntrip/mountpoint_distance.h"
+#include "ntrip/redact.h"
 #include "ntrip_source.h"
 #include "rover_position.h"
 #include "sentence_stream.h"
@@ -163,6 +164,13 @@ bool readOptions(const Args &args, Options &o) {
         if (!o.receiver) return say("ntrip: " + error), false;
     }
     const auto caster = args.option("caster");
+    // "user:password@caster:2101" (or a URL with them): refused without being repeated, as the
+    // password would then be in the shell's history and in `ps` for everyone to read.
+    if (caster && ntrip::hasUserInfo(*caster))
+        return say("ntrip: --caster takes HOST:PORT only; give the user name with --user and the "
+                   "password with --password-env (what was given is not repeated: it holds a "
+                   "user name or password)"),
+               false;
     if (!caster ||
         !link::TcpTransport::parseHostPort(QString::fromStdString(*caster), o.host, o.port))
         return say("ntrip needs --caster HOST:PORT"), false;

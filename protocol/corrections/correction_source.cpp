@@ -46,7 +46,8 @@ void CorrectionSource::setState(State s) {
     emit stateChanged(s);
 }
 
-void CorrectionSource::setStatus(const QString &status) {
+void CorrectionSource::setStatus(const QString &text) {
+    const QString status = redacted(text);
     if (status == status_) return;
     status_ = status;
     emit statusChanged(status);
@@ -72,8 +73,9 @@ void CorrectionSource::deliver(const QByteArray &bytes) {
     emit dataReceived(bytes);
 }
 
-void CorrectionSource::failed(const QString &message, bool retry) {
+void CorrectionSource::failed(const QString &text, bool retry) {
     if (!isActive()) return; // a second report of the same failure
+    const QString message = redacted(text);
     stallTimer_.stop();
     closeConnection();
     error_ = message;

@@ -87,6 +87,9 @@ protected:
     virtual void closeConnection() = 0;
     // What a stall means for this source, in words (the default speaks of a connection).
     virtual QString stallText(bool receiving) const;
+    // Every status line and error passes here before it is kept or said: a source holding
+    // credentials masks them (NtripSource), whatever the text came from (a caster's answer).
+    virtual QString redacted(const QString &text) const { return text; }
 
     void setConnecting(const QString &status);
     void setReceiving(const QString &status);

@@ -43,10 +43,15 @@ NtripSource::~NtripSource() {
 }
 
 QString NtripSource::hostPort() const {
-    const bool ipv6 = settings_.host.contains(QLatin1Char(':'));
+    const QString host = displayHost(settings_.host);
+    const bool ipv6 = host.contains(QLatin1Char(':'));
     return (ipv6 ? QStringLiteral("[%1]:%2") : QStringLiteral("%1:%2"))
-            .arg(settings_.host)
+            .arg(host)
             .arg(settings_.port);
+}
+
+QString NtripSource::redacted(const QString &text) const {
+    return redactedText(text, settings_.user, settings_.password);
 }
 
 QString NtripSource::description() const {
@@ -210,7 +215,9 @@ void NtripSource::onDisconnected() {
 void NtripSource::onSocketError(QAbstractSocket::SocketError error) {
     if (closing_ || !isActive()) return;
     if (error == QAbstractSocket::RemoteHostClosedError) return; // onDisconnected says it
-    failed(describeSocketError(error, hostPort(), settings_.host, socket_.errorString()), true);
+    failed(describeSocketError(error, hostPort(), displayHost(settings_.host),
+                               socket_.errorString()),
+           true);
 }
 
 void NtripSource::sendGga() {

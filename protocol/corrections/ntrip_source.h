@@ -77,6 +77,8 @@ signals:
 protected:
     void openConnection() override;
     void closeConnection() override;
+    // The password, "user:password" and its Base64 masked as "***".
+    QString redacted(const QString &text) const override;
 
 private:
     QString hostPort() const;

@@ -1,6 +1,7 @@
 #include "source_table_request.h"
 
 #include "correction_source.h"
+#include "ntrip/redact.h"
 
 namespace gnss::corrections {
 
@@ -13,6 +14,16 @@ ntrip::RequestTarget requestTarget(const SourceTableQuery &query, const QString 
     t.user = query.user.toStdString();
     t.password = query.password.toStdString();
     return t;
+}
+
+QString redactedText(const QString &text, const QString &user, const QString &password) {
+    if (user.isEmpty() && password.isEmpty()) return text;
+    return QString::fromStdString(ntrip::redactCredentials(text.toStdString(), user.toStdString(),
+                                                           password.toStdString()));
+}
+
+QString displayHost(const QString &host) {
+    return QString::fromStdString(ntrip::hostForDisplay(host.toStdString()));
 }
 
 SourceTableRequest::SourceTableRequest(SourceTableQuery query, QObject *parent)
@@ -35,7 +46,7 @@ SourceTableRequest::SourceTableRequest(SourceTableQuery query, QObject *parent)
     connect(&socket_, &QTcpSocket::disconnected, this, &SourceTableRequest::onDisconnected);
     connect(&socket_, &QTcpSocket::errorOccurred, this, [this](QAbstractSocket::SocketError e) {
         if (done_ || e == QAbstractSocket::RemoteHostClosedError) return;
-        fail(CorrectionSource::describeSocketError(e, hostPort(), query_.host,
+        fail(CorrectionSource::describeSocketError(e, hostPort(), displayHost(query_.host),
                                                    socket_.errorString()));
     });
 }
@@ -46,7 +57,7 @@ SourceTableRequest::~SourceTableRequest() {
 }
 
 QString SourceTableRequest::hostPort() const {
-    return QStringLiteral("%1:%2").arg(query_.host).arg(query_.port);
+    return QStringLiteral("%1:%2").arg(displayHost(query_.host)).arg(query_.port);
 }
 
 void SourceTableRequest::start() {
@@ -64,7 +75,7 @@ void SourceTableRequest::abort() {
 void SourceTableRequest::fail(const QString &reason) {
     if (done_) return;
     abort();
-    emit failed(reason);
+    emit failed(redactedText(reason, query_.user, query_.password));
 }
 
 void SourceTableRequest::finish() {

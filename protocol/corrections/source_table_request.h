@@ -26,6 +26,11 @@ struct SourceTableQuery {
 // What is sent to ask the caster of `query` for `mountpoint` (empty: for its source table).
 ntrip::RequestTarget requestTarget(const SourceTableQuery &query, const QString &mountpoint = {});
 
+// `text` with the password, "user:password" and its Base64 masked (ntrip/redact.h).
+QString redactedText(const QString &text, const QString &user, const QString &password);
+// A host as it may be shown: user information ("user:password@") masked.
+QString displayHost(const QString &host);
+
 class SourceTableRequest : public QObject {
     Q_OBJECT
 public:

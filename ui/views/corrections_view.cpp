@@ -238,6 +238,10 @@ bool CorrectionsView::validate(const CorrectionsRequest &r, QString *why) {
         return false;
     };
     if (r.host.isEmpty()) return fail(tr("Give the host of the corrections."));
+    // "user:password@caster": not repeated (the password would show), nor remembered.
+    if (r.host.contains(QLatin1Char('@')))
+        return fail(tr("Give only the host name or address here: the user name and the password "
+                       "have their own fields."));
     if (r.host.contains(QLatin1Char(' ')) || r.host.contains(QLatin1Char('/')))
         return fail(tr("'%1' is not a host name or address.").arg(r.host));
     if (r.port < 1 || r.port > 65535) return fail(tr("The port is 1 to 65535."));
