@@ -193,7 +193,8 @@ private slots:
         c.stationId = 4095;
         RtcmBaseStation base(c);
         base.advance(0);
-        const Frame *f = find(framesOf(base.takeOutput()), 1005);
+        const std::vector<Frame> frames = framesOf(base.takeOutput()); // f points into it
+        const Frame *f = find(frames, 1005);
         QVERIFY(f);
         const auto &arp = std::get<rtcm::StationArp>(f->message.body);
         QCOMPARE(arp.station, 4095u);
