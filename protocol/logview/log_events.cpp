@@ -20,9 +20,14 @@ std::string seconds(double s) {
     return b;
 }
 
+// A text field, RFC 4180 quoted when needed. Texts come from the log (a recording's index says
+// why its link dropped): one a spreadsheet would take for a formula ('=', '+', '-', '@', a tab
+// or CR first) gets a "'" in front, so opening the file never runs what a log said.
 std::string csvField(std::string_view s) {
-    if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
-    std::string out = "\"";
+    const bool formula =
+            !s.empty() && std::string_view("=+-@\t\r").find(s.front()) != std::string_view::npos;
+    if (!formula && s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
+    std::string out = formula ? "\"'" : "\"";
     for (char c : s) {
         if (c == '"') out += '"';
         out += c;

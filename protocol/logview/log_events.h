@@ -55,7 +55,8 @@ void collectEvents(std::span<const EpochRecord> records, std::size_t from, std::
                    const DialectRegistry &registry, const HostTimes *host, EventState &state,
                    std::vector<LogEvent> &out);
 
-// CSV: epoch,time,host_time,kind,text (RFC 4180 quoting), with a header line.
+// CSV: epoch,time,host_time,kind,text (RFC 4180 quoting), with a header line. A text a
+// spreadsheet would read as a formula (=, +, -, @ first) starts with ' instead.
 std::string eventsCsv(std::span<const LogEvent> events);
 
 } // namespace gnss::logview

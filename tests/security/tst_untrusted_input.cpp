@@ -5,7 +5,10 @@
 // and a log whose every text field is a path ("../../escaped"), a shell command ("$(touch
 // MARKER)") or markup, applied, compared and exported: no file appears but the one asked for,
 // no marker is made, the text is escaped where it goes into a file.
+#include "builtin_registry.h"
 #include "cli_run.h"
+#include "log_events.h"
+#include "log_view.h"
 
 #include <QDir>
 #include <QDirIterator>
@@ -174,6 +177,60 @@ private slots:
             // The log's name, as it is (gnss-cli keeps the suffix, the window drops it).
             QVERIFY2(shownName.startsWith(QFileInfo(logPath).completeBaseName()),
                      qPrintable(shownName));
+        }
+    }
+
+    // A recording's index says why its link dropped, in words that end up in the events CSV:
+    // a text a spreadsheet would run as a formula is written so it cannot be one.
+    void aRecordingsGapTextIsNeverAFormula_data() {
+        QTest::addColumn<QByteArray>("text");
+        QTest::newRow("=") << QByteArray("=HYPERLINK(\"http://example.invalid\",\"x\")");
+        QTest::newRow("+") << QByteArray("+cmd|' /C calc'!A0");
+        QTest::newRow("-") << QByteArray("-2+3+cmd|' /C calc'!A0");
+        QTest::newRow("@") << QByteArray("@SUM(1+1)*cmd|' /C calc'!A0");
+        QTest::newRow("a tab first") << QByteArray("\t=1+1");
+        QTest::newRow("words") << QByteArray("link lost: /dev/ttyUSB0: No such device");
+    }
+    void aRecordingsGapTextIsNeverAFormula() {
+        QFETCH(QByteArray, text);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath("rec.nmea");
+        QByteArray log, index = "# gnss-workbench recording index 1\n";
+        qint64 ms = 1710496800000;
+        for (int s = 0; s < 10; ++s, ms += 1000) {
+            const QByteArray t = "1000" + QByteArray::number(s).rightJustified(2, '0') + ".00";
+            QByteArray chunk =
+                    sentence("GPGGA," + t + ",5545.0720,N,03737.1040,E,1,08,0.9,152.0,M,14.0,M,,") +
+                    sentence("GPRMC," + t + ",A,5545.0720,N,03737.1040,E,0.0,0.0,150324,,,A");
+            if (s == 5) { // the link dropped for three seconds before this epoch
+                index += "G " + QByteArray::number(ms - 3000) + ' ' +
+                         QByteArray::number(log.size()) + ' ' + text + '\n';
+                ms += 3000;
+            }
+            index += "R " + QByteArray::number(ms) + ' ' + QByteArray::number(log.size()) + ' ' +
+                     QByteArray::number(chunk.size()) + '\n';
+            log += chunk;
+        }
+        QFile f(path), idx(path + ".idx");
+        QVERIFY(f.open(QIODevice::WriteOnly) && idx.open(QIODevice::WriteOnly));
+        f.write(log);
+        idx.write(index);
+        f.close();
+        idx.close();
+        gnss::logview::LogView view(gnss::test::builtinRegistry());
+        view.open(QFile::encodeName(path).toStdString());
+        QVERIFY(view.waitUntilIndexed(60000));
+        const auto events = view.events();
+        const QByteArray csv = QByteArray::fromStdString(gnss::logview::eventsCsv(events));
+        QVERIFY2(csv.contains(",link,"), csv.constData()); // the gap is there, with its words
+        for (const QByteArray &line : csv.split('\n')) {
+            const QList<QByteArray> cells = line.trimmed().split(',');
+            if (cells.size() < 5 || cells[3] != "link") continue;
+            const QByteArray cell = line.mid(line.indexOf(",link,") + 6);
+            QVERIFY2(!QByteArray("=+-@\t").contains(cell.front()), cell.constData());
+            const QByteArray unquoted = cell.startsWith('"') ? cell.mid(1) : cell;
+            QVERIFY2(!QByteArray("=+-@\t").contains(unquoted.front()), cell.constData());
         }
     }
 };
