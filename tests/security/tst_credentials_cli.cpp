@@ -2,7 +2,8 @@
 // distinctive password, in every outcome (data, source table, nearest mountpoint, a refused
 // password, a caster that echoes the credentials back, a refused connection, credentials typed
 // into --caster or as an option), standard output, standard error and the --out file hold
-// neither the password, nor "user:password", nor their Base64 (the Authorization header's).
+// neither the password, nor "user:password", nor their Base64 (the Authorization header's), nor
+// the user name.
 #include "cli_run.h"
 #include "rtcm_fixtures.h"
 #include "secret_scan.h"
@@ -156,6 +157,8 @@ private slots:
             const QStringList files = s->filesHolding(dir.path());
             QVERIFY2(files.isEmpty(), qPrintable(files.join('\n')));
         }
+        // Nor the user name: gnss-cli has no reason to say it.
+        QVERIFY2(!r.out.contains(kSecretUser) && !r.err.contains(kSecretUser), r.err.constData());
         // What went to the caster did carry them, in the Authorization header and only there.
         if (exitCode != 2 && where == hostPort && rawReply.isEmpty() &&
             password == kSecretPassword) {
