@@ -524,9 +524,17 @@ void SettingsEngine::absorb(const link::CommandResult &r) {
     replyValues_.erase(found);
     // A list reported one item per sentence (NVS PNVGIDL SHOW) is joined with ';'.
     std::set<std::string> seen;
+    // The echo of a set (PNVGRTK, PNVGPPS) is no read-back of a readable setting being set: it
+    // stays as it was until the read-back (which the link may not let happen).
+    const bool setting = op_ == Operation::Apply && phase_ == Phase::Commands;
+    auto beingSet = [&](std::string_view key) {
+        return std::any_of(applying_.begin(), applying_.end(),
+                           [&](const KeyValue &a) { return a.key == key; });
+    };
     for (const auto &kv : out) {
         const SettingDef *def = findSetting(dialect_->settings, kv.key);
         if (!def) continue;
+        if (setting && def->access != SettingAccess::WriteOnly && beingSet(kv.key)) continue;
         auto &target = def->access == SettingAccess::WriteOnly ? written_ : reported_;
         if (def->type == SettingType::List && seen.count(kv.key)) {
             std::string &v = target[kv.key];
