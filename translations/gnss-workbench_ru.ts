@@ -4863,7 +4863,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::config::SettingsEngine</name>
     <message>
-        <location filename="../protocol/config/settings_engine.cpp" line="+34"/>
+        <location filename="../protocol/config/settings_engine.cpp" line="+71"/>
         <source>verified</source>
         <translation>проверено</translation>
     </message>
@@ -4888,17 +4888,32 @@ Serial number: %3</source>
         <translation>не применено (ошибка команды)</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+2"/>
+        <source>taken, not read back: the link was lost (read back when it returns)</source>
+        <translation>принято, обратно не прочитано: связь потеряна (будет прочитано, когда она вернётся)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>unconfirmed: the link was lost before the answer (read back when it returns)</source>
+        <translation>не подтверждено: связь потеряна до ответа (будет прочитано, когда она вернётся)</translation>
+    </message>
+    <message>
+        <location line="+38"/>
         <source>the link changed during the operation</source>
         <translation>подключение сменилось во время операции</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+46"/>
         <source>%1 cannot take commands</source>
         <translation>%1 не принимает команды</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+28"/>
+        <source>Read back after the link returned</source>
+        <translation>Чтение после восстановления связи</translation>
+    </message>
+    <message>
+        <location line="+47"/>
         <source>%1 (set here; write-only, not read back)</source>
         <translation>%1 (задано здесь; только запись, обратно не читается)</translation>
     </message>
@@ -4954,12 +4969,13 @@ Serial number: %3</source>
         <translation>у приёмника %1 нет команды «%2»</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="-270"/>
+        <location line="+383"/>
         <source>could not read back: %1</source>
         <translation>не удалось прочитать обратно: %1</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+178"/>
         <source>Apply profile</source>
         <translation>Применение профиля</translation>
     </message>
@@ -4977,7 +4993,7 @@ Serial number: %3</source>
         <translation>Остановлено</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+48"/>
         <source>%1; trying again in %2 s</source>
         <translation>%1; повтор через %2 с</translation>
     </message>
@@ -5048,7 +5064,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::corrections::NtripSource</name>
     <message>
-        <location filename="../protocol/corrections/ntrip_source.cpp" line="+82"/>
+        <location filename="../protocol/corrections/ntrip_source.cpp" line="+87"/>
         <source>No mountpoint given for %1: pick one from its source table</source>
         <translation>Не указана точка подключения для %1: выберите её из таблицы источников</translation>
     </message>
@@ -5182,7 +5198,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::corrections::SourceTableRequest</name>
     <message>
-        <location filename="../protocol/corrections/source_table_request.cpp" line="+22"/>
+        <location filename="../protocol/corrections/source_table_request.cpp" line="+33"/>
         <source>No source table from %1 within %2 s</source>
         <translation>Таблица источников от %1 не получена за %2 с</translation>
     </message>
@@ -6095,12 +6111,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+141"/>
+        <location line="+145"/>
         <source>Start</source>
         <translation>Запустить</translation>
     </message>
     <message>
-        <location line="-137"/>
+        <location line="-141"/>
         <source>Not started</source>
         <translation>Не запущено</translation>
     </message>
@@ -6155,12 +6171,12 @@ Serial number: %3</source>
         <translation>Укажите хост источника поправок.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Give only the host name or address here: the user name and the password have their own fields.</source>
         <translation>Здесь укажите только имя или адрес хоста: для имени пользователя и пароля есть свои поля.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&apos;%1&apos; is not a host name or address.</source>
         <translation>«%1» — не имя хоста и не адрес.</translation>
     </message>
@@ -7563,7 +7579,12 @@ Serial number: %3</source>
         </translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+4"/>
+        <source>The link was lost: these settings are read back when it returns.</source>
+        <translation>Связь потеряна: эти настройки будут прочитаны, когда она вернётся.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Write the settings in force to the receiver&apos;s flash</source>
         <translation>Записать действующие настройки во флэш-память приёмника</translation>
     </message>
