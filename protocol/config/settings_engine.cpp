@@ -178,9 +178,9 @@ std::vector<std::string> SettingsEngine::pendingReadBack() const {
 }
 
 void SettingsEngine::onTransportState() {
-    // The link is (back) up after an apply it dropped in: its settings are read back as soon
-    // as nothing else runs.
-    if (interrupted_.empty() || !transport_ || !transport_->isOpen()) return;
+    // The link is (back) up after an apply it dropped in (its transport open again, or a new
+    // queue attached): its settings are read back as soon as nothing else runs.
+    if (interrupted_.empty() || !queue_ || (transport_ && !transport_->isOpen())) return;
     readBackDue_ = true;
     QMetaObject::invokeMethod(this, &SettingsEngine::readBackIfDue, Qt::QueuedConnection);
 }
