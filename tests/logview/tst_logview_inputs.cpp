@@ -5,11 +5,11 @@
 #include "logview_files.h"
 #include "logview_reference.h"
 
-#include <QProcess>
 #include <random>
 
 #include <fcntl.h>
 #include <unistd.h>
+#include <zlib.h>
 
 using namespace gnss;
 using namespace gnss::logview;
@@ -97,10 +97,13 @@ private slots:
         const std::string text = test::scenarioLog({});
         const std::string p = path("log.nmea");
         QVERIFY(test::writeFile(p, text));
-        QProcess gz;
-        gz.start("gzip", {"-kf", QString::fromStdString(p)});
-        if (!gz.waitForFinished() || gz.exitCode() != 0) QSKIP("gzip is not available");
+        // Compressed here with zlib, as gzip would (no child process: under ThreadSanitizer a
+        // fork from this multi-threaded test is not allowed).
         std::string gzPath = p + ".gz";
+        gzFile gz = gzopen(gzPath.c_str(), "wb");
+        QVERIFY(gz);
+        QCOMPARE(gzwrite(gz, text.data(), unsigned(text.size())), int(text.size()));
+        QCOMPARE(gzclose(gz), Z_OK);
         if (cut) QVERIFY(::truncate(gzPath.c_str(), 3000) == 0);
         LogView view(registry_);
         QVERIFY(test::openAndWait(view, gzPath));
