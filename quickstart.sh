@@ -7,7 +7,8 @@
 #                         UBSan) and the whole suite, the tsan build (ThreadSanitizer) and the
 #                         suites of the threaded code (ctest label tsan). Fails when any stage
 #                         fails (a sanitizer finding fails its test); prints each stage's time.
-#                         (Not CI's default: on 2 cores the three stages take about an hour.)
+#                         With CI=true (.ci/run) the stages are "ci asan tsan": CI fails on any
+#                         sanitizer report. (On 2 cores the three take about an hour.)
 #   ./quickstart.sh fuzz SECONDS [HARNESS...]
 #                         install clang and libFuzzer too, run tests/fuzz/run.sh
 # Idempotent: packages already installed are not touched and the build is incremental.
@@ -79,7 +80,10 @@ case "$mode" in
     ;;
   test)
     export QT_QPA_PLATFORM=offscreen
-    stages=${GNSS_TEST_STAGES:-"$preset"}
+    # CI runs the sanitizer stages too: a finding fails it.
+    default_stages=$preset
+    [ "${CI:-}" = "true" ] && default_stages="ci asan tsan"
+    stages=${GNSS_TEST_STAGES:-$default_stages}
     summary=()
     failed=0
     for stage in $stages; do
