@@ -3,6 +3,7 @@
 // mountpoint chosen, refusals ending with exit code 1 and the reason, the password taken from
 // the environment and never printed.
 #include "cli_run.h"
+#include "ntrip_cli_run.h"
 #include "rtcm_fixtures.h"
 #include "sim_process.h"
 #include "test_caster.h"
@@ -28,25 +29,7 @@ using gnss::test::Run;
 // 100 ms to push data.
 Run cli(const QStringList &args, const std::function<void()> &feed = {},
         const QString &password = QStringLiteral("s3cret-pw")) {
-    QProcess p;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("TEST_NTRIP_PW"), password);
-    p.setProcessEnvironment(env);
-    QTimer pump;
-    if (feed) {
-        QObject::connect(&pump, &QTimer::timeout, feed);
-        pump.start(100);
-    }
-    QSignalSpy done(&p, &QProcess::finished);
-    p.start(QStringLiteral(GNSS_CLI_PATH), args);
-    done.wait(20000);
-    if (p.state() != QProcess::NotRunning) p.kill();
-    Run r;
-    r.status = p.exitStatus();
-    r.exitCode = r.status == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+    return gnss::test::runNtripCli(args, password, feed, {}, 20000);
 }
 
 // The protocol versions gnss-cli ntrip is asked for, a row each; `second` names the NTRIP 2 row.

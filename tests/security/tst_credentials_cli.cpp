@@ -5,6 +5,7 @@
 // neither the password, nor "user:password", nor their Base64 (the Authorization header's), nor
 // the user name.
 #include "cli_run.h"
+#include "ntrip_cli_run.h"
 #include "rtcm_fixtures.h"
 #include "secret_scan.h"
 #include "test_caster.h"
@@ -29,27 +30,7 @@ namespace {
 // the caster; `feed` is called every 100 ms.
 Run cli(const QStringList &args, const QByteArray &password, const QString &dir,
         const std::function<void()> &feed) {
-    QProcess p;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("TEST_NTRIP_PW"), QString::fromLatin1(password));
-    p.setProcessEnvironment(env);
-    p.setWorkingDirectory(dir);
-    QTimer pump;
-    QObject::connect(&pump, &QTimer::timeout, feed);
-    pump.start(100);
-    QSignalSpy done(&p, &QProcess::finished);
-    p.start(QStringLiteral(GNSS_CLI_PATH), args);
-    done.wait(60000);
-    if (p.state() != QProcess::NotRunning) {
-        p.kill();
-        p.waitForFinished();
-    }
-    Run r;
-    r.status = p.exitStatus();
-    r.exitCode = r.status == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+    return gnss::test::runNtripCli(args, QString::fromLatin1(password), feed, dir);
 }
 
 // What a caster that echoes the request's credentials back answers (some proxies and broken

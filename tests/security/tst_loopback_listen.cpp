@@ -4,6 +4,7 @@
 // no 0.0.0.0, no ::), and by connecting to the port through this machine's other addresses,
 // when it has any: refused. (RTKLIB's str2str binds 0.0.0.0; that is documented, not ours.)
 #include "builtin_registry.h"
+#include "core/sentence_builder.h"
 #include "gpsd_process.h"
 #include "listen_table.h"
 #include "local_port.h"
@@ -25,13 +26,9 @@ using gnss::test::outwardAddresses;
 
 namespace {
 
-// A sentence with its checksum.
+// A sentence with its checksum (the product's builder) and its line end.
 QByteArray sentence(const QByteArray &body) {
-    quint8 sum = 0;
-    for (char c : body) sum ^= quint8(c);
-    char tail[8];
-    std::snprintf(tail, sizeof tail, "*%02X\r\n", sum);
-    return '$' + body + tail;
+    return QByteArray::fromStdString(gnss::buildSentence(body.toStdString())) + "\r\n";
 }
 
 // A short NMEA log (GGA and RMC, one epoch a second) for the players.

@@ -7,6 +7,7 @@
 // no marker is made, the text is escaped where it goes into a file.
 #include "builtin_registry.h"
 #include "cli_run.h"
+#include "core/sentence_builder.h"
 #include "log_events.h"
 #include "log_view.h"
 
@@ -52,30 +53,12 @@ QStringList filesIn(const QString &dir) {
 
 // Runs gnss-cli in `dir`.
 Run cliIn(const QString &dir, const QStringList &args) {
-    QProcess p;
-    p.setWorkingDirectory(dir);
-    p.start(QStringLiteral(GNSS_CLI_PATH), args);
-    p.waitForStarted(20000);
-    p.closeWriteChannel();
-    const bool ended = p.waitForFinished(120000);
-    if (!ended) {
-        p.kill();
-        p.waitForFinished();
-    }
-    Run r;
-    r.status = ended ? p.exitStatus() : QProcess::CrashExit;
-    r.exitCode = r.status == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+    return gnss::test::runProgram(QStringLiteral(GNSS_CLI_PATH), args, {}, 120000,
+                                  QProcessEnvironment::systemEnvironment(), dir);
 }
 
 QByteArray sentence(const QByteArray &body) {
-    quint8 sum = 0;
-    for (char c : body) sum ^= quint8(c);
-    char tail[8];
-    std::snprintf(tail, sizeof tail, "*%02X\r\n", sum);
-    return '$' + body + tail;
+    return QByteArray::fromStdString(gnss::buildSentence(body.toStdString())) + "\r\n";
 }
 
 } // namespace

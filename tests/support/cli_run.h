@@ -21,11 +21,14 @@ struct Run {
 
 // Starts `program`, writes `input` (if any) to its standard input and closes it, and waits up to
 // `timeoutMs` for the program to end; one that has not by then is killed (and counts as crashed).
+// It runs in `workingDir` when one is given.
 inline Run runProgram(const QString &program, const QStringList &args, const QByteArray &input = {},
                       int timeoutMs = 120000,
-                      const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment()) {
+                      const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment(),
+                      const QString &workingDir = {}) {
     QProcess p;
     p.setProcessEnvironment(env);
+    if (!workingDir.isEmpty()) p.setWorkingDirectory(workingDir);
     p.start(program, args);
     p.waitForStarted();
     if (!input.isEmpty()) p.write(input);
