@@ -71,7 +71,11 @@ int main(int argc, char **argv) {
             seeks = std::atoi(argv[++i]);
         else if (a == "--keep")
             keep = true;
-        else
+        else if (a.empty() || a[0] == '-' || !path.empty()) {
+            std::fprintf(a == "--help" ? stdout : stderr,
+                         "usage: bench_logview [FILE] [--threads N] [--seeks N] [--keep]\n");
+            return a == "--help" ? 0 : 2;
+        } else
             path = a;
     }
     bool generated = false;
