@@ -10,6 +10,7 @@
 #include "track_state.h"
 #include "views/attitude_view.h"
 
+#include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
 #include <QTest>
@@ -101,6 +102,36 @@ private slots:
         model.publish(st);
         QTRY_COMPARE_WITH_TIMEOUT(table->item(0, 0)->text(), QString("4"), 2000);
         QCOMPARE(table->item(2, 0)->text(), QString("2"));
+    }
+
+    // The state keeps kMaxTimeMarks, the table the newest kMaxRows; after each rebuild (every
+    // new mark of a full buffer rewrites every row) the columns fit their widest cell again.
+    void aFullTableShowsTheNewestRowsWithColumnsFittingThem() {
+        ReceiverStateModel model;
+        AttitudeView view(&model);
+        view.show();
+        ReceiverState st;
+        for (std::size_t i = 1; i <= ReceiverState::kMaxTimeMarks + 5; ++i)
+            st.addTimeMark(mark(std::int64_t(i), 1000.0 + double(i)));
+        QCOMPARE(st.timeMarks.size(), ReceiverState::kMaxTimeMarks);
+        model.publish(st);
+        view.refresh();
+        auto *table = view.findChild<QTableWidget *>("timeMarkTable");
+        QCOMPARE(table->rowCount(), AttitudeView::kMaxRows);
+        QCOMPARE(table->item(0, 0)->text(), QString::number(ReceiverState::kMaxTimeMarks + 5));
+        st.addTimeMark(mark(123456789, 99999.123456)); // a wider counter and time of week
+        model.publish(st);
+        view.refresh();
+        QCOMPARE(table->rowCount(), AttitudeView::kMaxRows);
+        QCOMPARE(table->item(0, 0)->text(), QString("123456789"));
+        QCOMPARE(table->horizontalHeader()->sectionResizeMode(0), QHeaderView::ResizeToContents);
+        const QAbstractItemView *cells = table; // sizeHintForColumn is public here
+        for (int c : {int(AttitudeView::Counter), int(AttitudeView::Tow)})
+            QVERIFY2(table->columnWidth(c) >= cells->sizeHintForColumn(c),
+                     qPrintable(QString("column %1: %2 < %3")
+                                        .arg(c)
+                                        .arg(table->columnWidth(c))
+                                        .arg(cells->sizeHintForColumn(c))));
     }
 
     void screenshotReadsWell() {

@@ -103,6 +103,11 @@ void AttitudeView::refresh() {
     const int rows = std::min<int>(static_cast<int>(tm.size()), kMaxRows);
     const double k = fmt::lengthFactor(prefs_.units);
     marks_->setUpdatesEnabled(false);
+    // Columns sized to their contents once, after the rebuild: sized while the cells change,
+    // every cell's change measured every row again (500 rows x 6 columns, squared), and the GUI
+    // thread spent seconds per new time mark once the table filled (the soak found it).
+    QHeaderView *header = marks_->horizontalHeader();
+    header->setSectionResizeMode(QHeaderView::Interactive);
     marks_->setRowCount(rows);
     for (int row = 0; row < rows; ++row) {
         const TimeMarkEvent &e = tm[tm.size() - 1 - static_cast<std::size_t>(row)]; // newest first
@@ -122,6 +127,7 @@ void AttitudeView::refresh() {
             item->setText(cells[c]);
         }
     }
+    header->setSectionResizeMode(QHeaderView::ResizeToContents);
     marks_->setUpdatesEnabled(true);
 }
 
