@@ -145,6 +145,7 @@ void SettingsEngine::attach(link::CommandQueue *queue, const Dialect *dialect,
         reported_.clear();
         written_.clear();
         interrupted_.clear();
+        unread_.clear();
         readBackDue_ = false;
         identity_ = {};
         emit dialectChanged(dialect);
@@ -168,6 +169,7 @@ void SettingsEngine::forget() {
     reported_.clear();
     written_.clear();
     interrupted_.clear();
+    unread_.clear();
     emit valuesChanged();
 }
 
@@ -180,15 +182,23 @@ std::vector<std::string> SettingsEngine::pendingReadBack() const {
 void SettingsEngine::onTransportState() {
     // The link is (back) up after an apply it dropped in (its transport open again, or a new
     // queue attached): its settings are read back as soon as nothing else runs.
-    if (interrupted_.empty() || !queue_ || (transport_ && !transport_->isOpen())) return;
+    if ((interrupted_.empty() && unread_.empty()) || !queue_ ||
+        (transport_ && !transport_->isOpen()))
+        return;
     readBackDue_ = true;
     QMetaObject::invokeMethod(this, &SettingsEngine::readBackIfDue, Qt::QueuedConnection);
 }
 
 void SettingsEngine::readBackIfDue() {
-    if (!readBackDue_ || isBusy() || interrupted_.empty() || !dialect_) return;
+    if (!readBackDue_ || isBusy() || (interrupted_.empty() && unread_.empty()) || !dialect_) return;
     if (!canSend() || (transport_ && !transport_->isOpen())) return; // at the next return
     readBackDue_ = false;
+    if (interrupted_.empty()) { // a read the link dropped in: the same read again
+        const std::vector<std::string> keys = std::move(unread_);
+        unread_.clear();
+        read(keys);
+        return;
+    }
     if (!begin(Operation::ReadBack, tr("Read back after the link returned"))) return;
     phase_ = Phase::Verify;
     std::vector<std::string> keys;
@@ -374,6 +384,7 @@ bool SettingsEngine::read(const std::vector<std::string> &keys) {
         std::find(sentences.begin(), sentences.end(), dialect_->probeCommand) == sentences.end())
         sentences.insert(sentences.begin(), std::string(dialect_->probeCommand));
     for (const auto &k : wanted) reported_.erase(k);
+    reading_ = wanted;
     if (sentences.empty()) {
         end();
         return true;
@@ -558,6 +569,7 @@ void SettingsEngine::phaseDone() {
         return;
     }
     if (op_ == Operation::Apply) finishVerify();
+    if (op_ == Operation::Read) finishRead();
     if (op_ == Operation::Action && action_ == Action::RestoreDefaults && !cancelled_ &&
         report_.failedCommands() == 0)
         forget(); // the receiver restarts with its defaults: read them again
@@ -685,6 +697,18 @@ void SettingsEngine::finishLinkLost() {
         readBackDue_ = false; // the link is to come back first
     }
     emit valuesChanged();
+}
+
+void SettingsEngine::finishRead() {
+    // Dropped in by the link (not cancelled): the same settings are read again on its return.
+    if (anyLinkLost(report_.commands) && !cancelled_ && !reading_.empty()) {
+        unread_ = reading_;
+        report_.readBackOnReturn = true;
+        readBackDue_ = false; // the link is to come back first
+    } else {
+        unread_.clear();
+    }
+    reading_.clear();
 }
 
 void SettingsEngine::finishReadBack() {

@@ -73,7 +73,8 @@ struct OperationReport {
     QString error;                       // why nothing (more) was sent
     bool cancelled = false;
     bool nothingToDo = false; // apply: every value was already in force
-    // apply: the link went in the middle; its settings are read back when the link returns.
+    // apply or read: the link went in the middle; its settings are read (back) when the link
+    // returns.
     bool readBackOnReturn = false;
 
     // Commands that were neither accepted nor sent.
@@ -171,6 +172,7 @@ private:
     void finishVerify();
     void end();
     void finishLinkLost();
+    void finishRead();
     void finishReadBack();
     void onTransportState();
     void readBackIfDue();
@@ -196,6 +198,9 @@ private:
     // The checks of the apply the link dropped in, until its read-back after the return.
     std::vector<SettingCheck> interrupted_;
     bool readBackDue_ = false; // the link came back since: read them when idle
+    // A read the link dropped in: what it asked for (reading_), read again when the link returns
+    // (unread_), so the form does not keep showing half of what the receiver has.
+    std::vector<std::string> reading_, unread_;
     OperationReport report_;
 };
 

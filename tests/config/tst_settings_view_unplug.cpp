@@ -27,24 +27,39 @@ using namespace gnss::link;
 using gnss::link::test::SimProcess;
 using gnss::ui::SettingsView;
 
+namespace {
+
+// An NV08C in gnss-sim on a pseudo-terminal whose line drops when PNVGPPS arrives and comes back
+// 0.5 s later (by the --link name), with a settings engine on the real serial link to it.
+struct UnpluggedReceiver {
+    QTemporaryDir dir;
+    const QString link = dir.filePath("ttyGNSS");
+    SimProcess sim{{"--dialect", "nvs", "--link", link, "--faults", "hangupon=PNVGPPS/0.5"}};
+    const DialectRegistry &registry = gnss::test::builtinRegistry();
+    const Dialect *nvs = registry.find("nvs");
+    Connection conn{std::make_unique<SerialTransport>(SerialSettings{link, 115200}), registry};
+    SettingsEngine engine;
+    QSignalSpy finished{&engine, &SettingsEngine::finished};
+
+    UnpluggedReceiver() {
+        conn.commands()->setDialect(nvs);
+        conn.setReconnectDelays(50, 200);
+        engine.attach(&conn, nvs);
+    }
+};
+
+} // namespace
+
 class TstSettingsViewUnplug : public QObject {
     Q_OBJECT
 private slots:
     void theFormShowsOnlyWhatWasReadBack() {
-        QTemporaryDir dir;
-        const QString link = dir.filePath("ttyGNSS");
-        SimProcess sim({"--dialect", "nvs", "--link", link, "--faults", "hangupon=PNVGPPS/0.5"});
-        REQUIRE_SIM(sim);
-        const DialectRegistry &registry = gnss::test::builtinRegistry();
-        const Dialect *nvs = registry.find("nvs");
-        Connection conn(std::make_unique<SerialTransport>(SerialSettings{link, 115200}), registry);
-        conn.commands()->setDialect(nvs);
-        conn.setReconnectDelays(50, 200);
-        SettingsEngine engine;
-        engine.attach(&conn, nvs);
-        QSignalSpy finished(&engine, &SettingsEngine::finished);
-        QVERIFY(conn.open());
-        QTRY_VERIFY_WITH_TIMEOUT(conn.transport()->isOpen(), 20000);
+        UnpluggedReceiver rx;
+        REQUIRE_SIM(rx.sim);
+        SettingsEngine &engine = rx.engine;
+        QSignalSpy &finished = rx.finished;
+        QVERIFY(rx.conn.open());
+        QTRY_VERIFY_WITH_TIMEOUT(rx.conn.transport()->isOpen(), 20000);
         SettingsView view(&engine);
         auto *elevation = view.findChild<QLabel *>("receiver:rtk.ELGPS");
         auto *reference = view.findChild<QLabel *>("receiver:pps.reference");
@@ -78,6 +93,36 @@ private slots:
         QCOMPARE(last->text(0), QStringLiteral("Read back after the link returned"));
         QVERIFY2(status->text().startsWith("Read back after the link returned: done"),
                  qPrintable(status->text()));
+    }
+
+    // A read of every setting that the line drops in (its PNVGPPS query) is read again when the
+    // link returns: the form does not stay half read.
+    void aReadTheLineDropsInIsDoneAgainOnReturn() {
+        UnpluggedReceiver rx;
+        REQUIRE_SIM(rx.sim);
+        QVERIFY(rx.conn.open());
+        QTRY_VERIFY_WITH_TIMEOUT(rx.conn.transport()->isOpen(), 20000);
+        SettingsView view(&rx.engine);
+        auto *reference = view.findChild<QLabel *>("receiver:pps.reference");
+        auto *status = view.findChild<QLabel *>("settingsStatus");
+        QVERIFY(reference && status);
+        QVERIFY(rx.engine.read({}));
+        QTRY_VERIFY_WITH_TIMEOUT(rx.finished.count() == 1, 30000);
+        const OperationReport first = rx.engine.lastReport();
+        QCOMPARE(first.operation, Operation::Read);
+        QVERIFY(first.readBackOnReturn);
+        QVERIFY(first.failedCommands() > 0);
+        QCOMPARE(reference->text(), QStringLiteral("receiver: %1").arg(QStringLiteral("\u2014")));
+        QVERIFY2(status->text().contains("read back when it returns"), qPrintable(status->text()));
+
+        QTRY_VERIFY_WITH_TIMEOUT(rx.finished.count() == 2, 30000);
+        const OperationReport again = rx.engine.lastReport();
+        QCOMPARE(again.operation, Operation::Read);
+        QVERIFY(!again.readBackOnReturn);
+        QCOMPARE(again.failedCommands(), 0);
+        QVERIFY2(reference->text() != QStringLiteral("receiver: %1").arg(QStringLiteral("\u2014")),
+                 qPrintable(reference->text()));
+        QVERIFY(rx.engine.pendingReadBack().empty());
     }
 };
 
