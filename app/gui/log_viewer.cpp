@@ -84,7 +84,7 @@ void LogViewer::open(const QString &path, const QString &at) {
     path_ = path;
     startAt_ = at;
     view_ = std::make_shared<logview::LogView>(registry_);
-    firstShown_ = readyNoted_ = havePublished_ = false;
+    firstShown_ = readyNoted_ = havePublished_ = cancelling_ = false;
     if (models_.state) models_.state->clear();
     if (models_.satellites) models_.satellites->clear();
     if (models_.messages) models_.messages->clear();
@@ -111,6 +111,20 @@ void LogViewer::close() {
     emit statusChanged();
 }
 
+bool LogViewer::indexing() const {
+    if (!view_) return false;
+    using Phase = logview::LogView::Phase;
+    const auto phase = view_->progress().phase;
+    return phase == Phase::Idle || phase == Phase::Inflating || phase == Phase::Indexing;
+}
+
+void LogViewer::cancelIndexing() {
+    if (!indexing()) return;
+    view_->cancel(); // the worker stops within a megabyte; poll() sees it and says so
+    cancelling_ = true;
+    emit statusChanged();
+}
+
 const Dialect *LogViewer::dialectAtCursor() const {
     const auto r = view_ && !cursor_.empty() ? view_->epoch(cursor_.current()) : std::nullopt;
     const auto all = registry_.dialects();
@@ -132,13 +146,16 @@ QString LogViewer::statusText() const {
     switch (p.phase) {
     case Phase::Idle:
     case Phase::Inflating:
+        if (cancelling_) return tr("Log %1: cancelling…").arg(name);
         return tr("Log %1: unpacking, %2 %").arg(name).arg(qRound(p.fraction * 100));
     case Phase::Indexing:
+        if (cancelling_) return tr("Log %1: cancelling…").arg(name);
         return tr("Log %1: indexing, %2 % of %3 MB")
                 .arg(name)
                 .arg(qRound(p.fraction * 100))
                 .arg(double(p.bytesTotal) / 1e6, 0, 'f', 1);
-    case Phase::Cancelled: return tr("Log %1: indexing cancelled").arg(name);
+    case Phase::Cancelled:
+        return tr("Log %1: indexing cancelled (open it again to index it)").arg(name);
     case Phase::Failed: return tr("Log %1: %2").arg(name, QString::fromStdString(view_->error()));
     case Phase::Ready: break;
     }

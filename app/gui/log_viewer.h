@@ -32,6 +32,10 @@ public:
     // `at`: a time or epoch ("10:42:00", "#1200") the cursor goes to once indexed.
     void open(const QString &path, const QString &at = {});
     void close();
+    // Stops indexing the log being opened (the log stays open, cancelled: statusText() says so;
+    // opening it again indexes it afresh). Nothing when it is not being indexed.
+    void cancelIndexing();
+    bool indexing() const;
     bool isOpen() const { return view_ != nullptr; }
     // Indexed, and the cursor and views know it.
     bool ready() const { return view_ && readyNoted_; }
@@ -91,7 +95,7 @@ private:
     ui::LogCursor cursor_;
     QString path_, startAt_;
     QTimer pollTimer_, playTimer_, followTimer_;
-    bool firstShown_ = false, readyNoted_ = false;
+    bool firstShown_ = false, readyNoted_ = false, cancelling_ = false;
     std::size_t lastPublished_ = 0;
     bool havePublished_ = false, advancing_ = false;
     double speed_ = 1;

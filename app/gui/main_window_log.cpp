@@ -51,6 +51,8 @@ void MainWindow::createLogViewer() {
     connect(panel, &ui::TimelinePanel::speedChanged, logViewer_, &LogViewer::setSpeed);
     connect(panel, &ui::TimelinePanel::followRequested, logViewer_, &LogViewer::setFollowing);
     connect(logViewer_, &LogViewer::progress, panel->strip(), &ui::TimelineStrip::setProgress);
+    connect(logViewer_, &LogViewer::progress, panel, &ui::TimelinePanel::setIndexing);
+    connect(panel, &ui::TimelinePanel::cancelRequested, logViewer_, &LogViewer::cancelIndexing);
     connect(logViewer_, &LogViewer::statusChanged, this, &MainWindow::updateStatus);
     connect(logViewer_, &LogViewer::exportFinished, this,
             [this](bool, const QString &message) { statusBar()->showMessage(message, 10000); });

@@ -6,6 +6,7 @@
 #include "app_transports.h"
 #include "dialects.h"
 #include "log_events_view.h"
+#include "log_generator.h"
 #include "log_player.h"
 #include "log_summary_view.h"
 #include "log_viewer.h"
@@ -37,6 +38,7 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QToolBar>
+#include <QToolButton>
 #include <QTranslator>
 #include <random>
 
@@ -417,6 +419,65 @@ private slots:
         QCOMPARE(cursor->current(), cursor->epochCount() - 1);
         expectStateAt(*w, cursor->current());
         QVERIFY(w->findChild<QLabel *>("connectionState")->text().contains("following"));
+    }
+
+    // A big log being indexed can be cancelled from the timeline (its button, or Esc there): the
+    // status bar and the strip say so, and the window goes on working (another log opens).
+    void indexingCanBeCancelled_data() {
+        QTest::addColumn<bool>("byKey");
+        QTest::newRow("the Cancel button") << false;
+        QTest::newRow("Esc in the timeline") << true;
+    }
+    void indexingCanBeCancelled() {
+        QFETCH(bool, byKey);
+        const QString path = dir_.filePath("big.nmea");
+        if (!QFile::exists(path)) {
+            std::string log;
+            bench::generateLog(log, std::size_t(128) << 20);
+            QVERIFY(test::writeFile(path.toStdString(), log));
+        }
+        auto s = settings();
+        auto w = window(s.get());
+        auto *panel = w->findChild<ui::TimelinePanel *>("timelinePanel");
+        auto *button = panel->findChild<QToolButton *>("logCancelButton");
+        QVERIFY(button && !button->isVisible());
+        w->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(w.get()));
+        QElapsedTimer took;
+        took.start();
+        w->openLog(path);
+        // Cancelled at once (the 128 MB take far longer to index than this): deterministic.
+        QCOMPARE(w->logViewer()->indexing(), true);
+        QVERIFY(button->isVisible());
+        QVERIFY(panel->cancelAction()->isEnabled());
+        if (byKey) {
+            auto *strip = panel->strip();
+            strip->setFocus();
+            QVERIFY(strip->hasFocus());
+            QTest::keyClick(strip, Qt::Key_Escape);
+        } else {
+            QTest::mouseClick(button, Qt::LeftButton);
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(w->logViewer()->view()->progress().phase,
+                                  logview::LogView::Phase::Cancelled, 20000);
+        qInfo("cancelled %lld ms after the open", took.elapsed());
+        auto *status = w->findChild<QLabel *>("connectionState");
+        QTRY_VERIFY_WITH_TIMEOUT(status->text().contains("indexing cancelled"), 20000);
+        QVERIFY2(status->text().startsWith("Log big.nmea: "), qPrintable(status->text()));
+        QVERIFY(!w->logViewer()->indexing() && !w->logViewer()->failed());
+        QVERIFY(!button->isVisible());
+        QVERIFY(!panel->cancelAction()->isEnabled());
+        QVERIFY(w->logViewer()->cursor()->empty());
+        QVERIFY(!w->findChild<QAction *>("logStepForward")->isEnabled());
+        QVERIFY(!w->findChild<QAction *>("exportLogAction")->isEnabled());
+        // Esc again does nothing; the window goes on: another log opens and the docks follow.
+        QTest::keyClick(panel->strip(), Qt::Key_Escape);
+        QVERIFY(openScenario(*w, scenario_));
+        QVERIFY(!button->isVisible());
+        QVERIFY(status->text().contains("600 epochs"));
+        expectStateAt(*w, 0);
+        w->logViewer()->cursor()->seek(300, true);
+        expectStateAt(*w, 300);
     }
 
     void badFilesSaySoAndNothingBreaks_data() {

@@ -98,6 +98,21 @@ TimelinePanel::TimelinePanel(LogCursor *cursor, QWidget *parent)
                            "at its end"));
     connect(follow_, &QCheckBox::toggled, this, &TimelinePanel::followRequested);
     row->addWidget(follow_);
+    // Not one of actions(): it is enabled while indexing, when the transport is not.
+    cancel_ = new QAction(tr("Cancel"), this);
+    cancel_->setObjectName("logCancelIndexing");
+    cancel_->setShortcut(Qt::Key_Escape);
+    cancel_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    cancel_->setToolTip(tr("Stop indexing this log (Esc)"));
+    cancel_->setEnabled(false);
+    connect(cancel_, &QAction::triggered, this, &TimelinePanel::cancelRequested);
+    QWidget::addAction(cancel_);
+    cancelButton_ = new QToolButton(this);
+    cancelButton_->setObjectName("logCancelButton");
+    cancelButton_->setDefaultAction(cancel_);
+    cancelButton_->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    cancelButton_->setVisible(false);
+    row->addWidget(cancelButton_);
     message_ = new QLabel(this);
     message_->setObjectName("logMessage");
     message_->setStyleSheet(QStringLiteral("color: %1;").arg(style::errorColor().name()));
@@ -206,6 +221,14 @@ bool TimelinePanel::goTo(const QString &text) {
     message_->clear();
     cursor_->seek(*k, true);
     return true;
+}
+
+void TimelinePanel::setIndexing(double fraction, const QString &text) {
+    const bool indexing = fraction >= 0;
+    cancel_->setEnabled(indexing);
+    cancelButton_->setVisible(indexing);
+    cancel_->setToolTip(indexing ? tr("Stop indexing: %1 (Esc)").arg(text)
+                                 : tr("Stop indexing this log (Esc)"));
 }
 
 QString TimelinePanel::positionText() const {

@@ -4,6 +4,7 @@
 // speed (0.1x to 100x, or as fast as the views draw), step an epoch, jump to the previous or
 // next event, to the start or end, to a typed time, and to mark a range. It moves the cursor
 // itself; playing and following a growing file are the application's (it owns the timers).
+// While a log is being indexed it offers a Cancel button (Esc while the timeline has focus).
 #include "log_cursor.h"
 #include "transport_icons.h"
 
@@ -40,11 +41,15 @@ public:
     QList<QAction *> actions() const { return actions_; }
     // The words under the strip ("#1200 of 5000 · 10:42:00.000 · RTK fixed").
     QString positionText() const;
+    // Indexing progress (fraction < 0: not indexing): shows or hides the Cancel button.
+    void setIndexing(double fraction, const QString &text);
+    QAction *cancelAction() const { return cancel_; }
 
 signals:
     void playRequested(bool play);
     void speedChanged(double factor);
     void followRequested(bool follow);
+    void cancelRequested(); // stop indexing the log being opened
 
 protected:
     void changeEvent(QEvent *e) override;
@@ -61,6 +66,8 @@ private:
     TimelineStrip *strip_;
     QList<QAction *> actions_;
     QAction *play_ = nullptr;
+    QAction *cancel_ = nullptr;
+    QToolButton *cancelButton_ = nullptr;
     std::vector<std::pair<QAction *, TransportIcon>> icons_;
     QComboBox *speed_;
     QLineEdit *goTo_;

@@ -141,7 +141,7 @@ void TimelineStrip::paintEvent(QPaintEvent *) {
     if (cursor_->empty()) {
         p.setPen(pal.color(QPalette::PlaceholderText));
         p.drawText(r, Qt::AlignCenter,
-                   progress_ >= 0 ? progressText_ : tr("Open a log (File → Open Log…)"));
+                   !progressText_.isEmpty() ? progressText_ : tr("Open a log (File → Open Log…)"));
         return;
     }
     if (cursor_->hasRange()) {

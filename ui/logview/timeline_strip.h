@@ -16,7 +16,8 @@ class TimelineStrip : public QWidget {
 public:
     explicit TimelineStrip(LogCursor *cursor, QWidget *parent = nullptr);
 
-    // Indexing progress, 0..1, with a word ("Indexing…"); fraction < 0 hides it.
+    // Indexing progress, 0..1, with a word ("Indexing…"); fraction < 0 hides the bar (the word
+    // stays while no epoch is shown: "indexing cancelled", "no NMEA found").
     void setProgress(double fraction, const QString &text);
 
     // Pixel column of an epoch and the epoch of a pixel column (for tests and the mouse).
