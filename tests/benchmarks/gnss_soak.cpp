@@ -2,8 +2,9 @@
 //   gnss-soak [--hours H] [--every MIN] [--warm-up H] [--limit MB]
 //       the real main window offscreen, every dock shown, on a 20 Hz receiver with about 60
 //       satellites, in simulated time as fast as the GUI thread takes it (soak_gui.cpp);
-//   gnss-soak --cli monitor|record [--speed X] [--rate HZ] [--bin DIR] ...
-//       gnss-cli on gnss-sim --tcp at X times real time (soak_cli.cpp).
+//   gnss-soak --cli monitor|record [--speed X] [--rate HZ] [--sky sim|soak] [--bin DIR] ...
+//       gnss-cli on gnss-sim --tcp at X times real time, or on the soak's own 20 Hz sky served
+//       on a TCP port (soak_cli.cpp).
 // Prints simulated and real time, RSS, heap, CPU and every list's size at each sample; at the
 // end the growth from the end of the warm-up and PASS/FAIL (exit 1) against --limit and the caps.
 #include "soak_cli.h"
@@ -38,7 +39,12 @@ bool parse(const QStringList &arguments, gnss::soak::SoakOptions &o) {
                                   tr("The simulated NV08C-RTK's PVT rate for --cli: 1, 2, "
                                      "5 or 10 Hz (default 10)."),
                                   "HZ", "10");
-    p.addOptions({hours, every, warm, limit, cli, bin, speed, rate});
+    const QCommandLineOption sky(
+            "sky",
+            tr("For --cli: gnss-sim (sim, the default) or the soak's own 20 Hz, 60-satellite sky "
+               "on a TCP port (soak)."),
+            "sim|soak", "sim");
+    p.addOptions({hours, every, warm, limit, cli, bin, speed, rate, sky});
     if (!p.parse(arguments)) {
         std::fprintf(stderr, "gnss-soak: %s\n", qPrintable(p.errorText()));
         return false;
@@ -55,8 +61,10 @@ bool parse(const QStringList &arguments, gnss::soak::SoakOptions &o) {
     o.bin = p.value(bin);
     o.speed = p.value(speed).toDouble();
     o.rateHz = p.value(rate).toInt();
+    o.sky = p.value(sky);
     if (!(o.hours > 0) || !(o.everyMinutes > 0) || o.warmUpHours < 0 ||
-        (!o.cli.isEmpty() && o.cli != "monitor" && o.cli != "record")) {
+        (!o.cli.isEmpty() && o.cli != "monitor" && o.cli != "record") ||
+        (o.sky != "sim" && o.sky != "soak")) {
         std::fprintf(stderr, "gnss-soak: %s\n",
                      qPrintable(tr("--hours and --every take positive numbers, --cli monitor "
                                    "or record")));

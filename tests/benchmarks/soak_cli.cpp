@@ -8,6 +8,7 @@
 
 #include "core/sentence_builder.h"
 #include "soak_probe.h"
+#include "soak_sky_server.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -72,21 +73,32 @@ int runCliSoak(const SoakOptions &o) {
             std::fprintf(stderr, "gnss-soak: %s not found (--bin DIR)\n", qPrintable(b));
             return 2;
         }
-    const int port = freePort();
+    const bool soakSky = o.sky == QLatin1String("soak");
+    SkyServer server(o.speed);
     QProcess sim;
-    sim.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-    sim.start(simBin, {"--dialect", "nvs", "--internal-base", "--tcp", QString::number(port),
-                       "--speed", QString::number(o.speed)});
-    if (!sim.waitForStarted(20000)) {
-        std::fprintf(stderr, "gnss-soak: gnss-sim did not start\n");
-        return 2;
-    }
-    const std::string rate = "PNVGRTK,PVTRATE," + std::to_string(o.rateHz);
-    if (!configure(port, rate, "PVTRATE," + QByteArray::number(o.rateHz))) {
-        std::fprintf(stderr, "gnss-soak: gnss-sim did not take %s\n", rate.c_str());
-        sim.kill();
-        sim.waitForFinished(5000);
-        return 2;
+    int port = 0;
+    if (soakSky) {
+        if (!server.listen()) {
+            std::fprintf(stderr, "gnss-soak: no port on 127.0.0.1 for the sky\n");
+            return 2;
+        }
+        port = server.port();
+    } else {
+        port = freePort();
+        sim.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        sim.start(simBin, {"--dialect", "nvs", "--internal-base", "--tcp", QString::number(port),
+                           "--speed", QString::number(o.speed)});
+        if (!sim.waitForStarted(20000)) {
+            std::fprintf(stderr, "gnss-soak: gnss-sim did not start\n");
+            return 2;
+        }
+        const std::string rate = "PNVGRTK,PVTRATE," + std::to_string(o.rateHz);
+        if (!configure(port, rate, "PVTRATE," + QByteArray::number(o.rateHz))) {
+            std::fprintf(stderr, "gnss-soak: gnss-sim did not take %s\n", rate.c_str());
+            sim.kill();
+            sim.waitForFinished(5000);
+            return 2;
+        }
     }
 
     QTemporaryDir dir;
@@ -95,8 +107,7 @@ int runCliSoak(const SoakOptions &o) {
     if (o.cli == QLatin1String("record"))
         args << "--out" << out;
     else
-        args << "--dialect"
-             << "nvs";
+        args << "--dialect" << (soakSky ? "nmea" : "nvs");
     QProcess child;
     child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
     long long jsonLines = 0, ggaLines = 0, jsonBytes = 0;
@@ -118,11 +129,19 @@ int runCliSoak(const SoakOptions &o) {
         return 2;
     }
     const long long pid = child.processId();
-    std::printf("gnss-soak --cli %s: gnss-cli %s on gnss-sim --dialect nvs --speed %g, PVT rate "
-                "%d Hz (the NV08C-RTK's highest), %g simulated hours, a sample every %g "
-                "simulated minutes\n",
-                qPrintable(o.cli), qPrintable(args.join(' ')), o.speed, o.rateHz, o.hours,
-                o.everyMinutes);
+    const double rateHz = soakSky ? SoakSky::kRateHz : double(o.rateHz);
+    if (soakSky)
+        std::printf("gnss-soak --cli %s: gnss-cli %s on gnss-soak's own sky (20 Hz, about 60 "
+                    "satellites) at up to %gx, %g simulated hours, a sample every %g simulated "
+                    "minutes\n",
+                    qPrintable(o.cli), qPrintable(args.join(' ')), o.speed, o.hours,
+                    o.everyMinutes);
+    else
+        std::printf("gnss-soak --cli %s: gnss-cli %s on gnss-sim --dialect nvs --speed %g, PVT "
+                    "rate %d Hz (the NV08C-RTK's highest), %g simulated hours, a sample every %g "
+                    "simulated minutes\n",
+                    qPrintable(o.cli), qPrintable(args.join(' ')), o.speed, o.rateHz, o.hours,
+                    o.everyMinutes);
 
     const double endSeconds = o.hours * 3600.0;
     const double warmUpSeconds = std::min(o.warmUpHours, o.hours / 4) * 3600.0;
@@ -137,9 +156,11 @@ int runCliSoak(const SoakOptions &o) {
             l.push_back({QStringLiteral("json_lines"), jsonLines, -1});
             l.push_back({QStringLiteral("gga_epochs"), ggaLines, -1});
         }
-        const ProcessSample s = samplePid(sim.processId());
-        l.push_back({QStringLiteral("sim_rss_MB"), (long long)std::lround(s.rssMb), -1});
-        l.push_back({QStringLiteral("sim_cpu_s"), (long long)std::lround(s.cpuSeconds), -1});
+        if (!soakSky) {
+            const ProcessSample s = samplePid(sim.processId());
+            l.push_back({QStringLiteral("sim_rss_MB"), (long long)std::lround(s.rssMb), -1});
+            l.push_back({QStringLiteral("sim_cpu_s"), (long long)std::lround(s.cpuSeconds), -1});
+        }
         return l;
     };
     table.header(lists());
@@ -151,7 +172,8 @@ int runCliSoak(const SoakOptions &o) {
     QTimer sampler;
     sampler.setInterval(20);
     QObject::connect(&sampler, &QTimer::timeout, [&] {
-        const double t = double(real.elapsed()) / 1000.0 * o.speed;
+        const double t =
+                soakSky ? server.simulatedSeconds() : double(real.elapsed()) / 1000.0 * o.speed;
         if (child.state() != QProcess::Running) {
             std::printf("gnss-cli ended early (exit %d): FAIL\n", child.exitCode());
             sampler.stop();
@@ -169,12 +191,13 @@ int runCliSoak(const SoakOptions &o) {
         }
         if (t >= endSeconds) {
             sampler.stop();
-            std::printf("simulated %.2f h in %.1f s real (%gx); gnss-cli CPU %.1f s\n", t / 3600.0,
-                        double(real.elapsed()) / 1000.0, o.speed, last.cpuSeconds);
+            const double secs = double(real.elapsed()) / 1000.0;
+            std::printf("simulated %.2f h in %.1f s real (%.0fx); gnss-cli CPU %.1f s\n",
+                        t / 3600.0, secs, t / secs, last.cpuSeconds);
             if (o.cli == QLatin1String("monitor"))
-                std::printf("%lld epochs decoded: %.1f%% of %d Hz x the simulated time (gnss-sim "
-                            "drops what its client does not take)\n",
-                            ggaLines, 100.0 * double(ggaLines) / (t * o.rateHz), o.rateHz);
+                std::printf("%lld epochs decoded: %.1f%% of %g Hz x the simulated time (gnss-sim "
+                            "drops what its client does not take; the soak's sky waits)\n",
+                            ggaLines, 100.0 * double(ggaLines) / (t * rateHz), rateHz);
             pass = table.verdict(last, o.limitMb);
             QCoreApplication::exit(pass ? 0 : 1);
         }

@@ -14,6 +14,7 @@ struct SoakOptions {
     QString bin;              // --bin DIR: where gnss-cli and gnss-sim are (default: beside)
     double speed = 1000;      // --speed: gnss-sim's speed for --cli
     int rateHz = 10;          // --rate: the NVS simulator's PVT rate for --cli (1, 2, 5, 10)
+    QString sky = "sim";      // --sky sim|soak: for --cli, gnss-sim or the soak's 20 Hz sky
 };
 
 } // namespace gnss::soak
