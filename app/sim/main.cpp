@@ -9,7 +9,9 @@
 // The hang-up fault that comes back (hangup=T/DOWN) closes the pseudo-terminal and makes a new
 // one; --link keeps a symbolic link to whichever is current (a stable name, as udev gives).
 // hangupon=CMD/DOWN does the same the moment the receiver hears CMD (the line goes before its
-// answer is written).
+// answer is written). On TCP both close the client's connection and stop listening (a connection
+// attempt is refused, as by a serial-to-Ethernet server that is down); DOWN seconds later the
+// same port listens again, its address on a new line of standard output.
 // With --rtcm-base the same loop carries an RTCM 3 base station's stream instead.
 #include "dialects.h"
 #include "sim_args.h"
@@ -114,6 +116,40 @@ int openPty(int baud, const std::string &link) {
     return fd;
 }
 
+// A non-blocking socket listening on 127.0.0.1:`port`, its address on standard output; -1 (the
+// reason on standard error) when the port could not be had.
+int listenOn(int port) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0) {
+        std::perror("gnss-sim: socket");
+        return -1;
+    }
+    int one = 1; // listening again after a hang-up: the dropped connection is in TIME_WAIT
+    setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(static_cast<std::uint16_t>(port));
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::bind(fd, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 || ::listen(fd, 1) != 0) {
+        std::perror("gnss-sim: listen");
+        ::close(fd);
+        return -1;
+    }
+    setNonBlocking(fd);
+    std::printf("127.0.0.1:%d\n", port);
+    std::fflush(stdout);
+    return fd;
+}
+
+// Closes a TCP client's connection; what it sent and nobody read is read first, so the close is
+// an orderly one (FIN) and not a reset that could take the last bytes sent with it.
+void closeClient(int fd) {
+    char sink[4096];
+    while (::read(fd, sink, sizeof sink) > 0) {
+    }
+    ::close(fd);
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -148,27 +184,14 @@ int main(int argc, char **argv) {
 
     int ioFd = -1;     // where the receiver's bytes go and commands come from
     int listenFd = -1; // TCP only
-    bool isPty = false;
-    if (args.transport == simapp::Transport::Pty) {
+    const bool isPty = args.transport == simapp::Transport::Pty;
+    const bool isTcp = args.transport == simapp::Transport::Tcp;
+    if (isPty) {
         ioFd = openPty(deviceBaud, args.link);
         if (ioFd < 0) return 1;
-        isPty = true;
-    } else if (args.transport == simapp::Transport::Tcp) {
-        listenFd = ::socket(AF_INET, SOCK_STREAM, 0);
-        int one = 1;
-        setsockopt(listenFd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-        sockaddr_in addr{};
-        addr.sin_family = AF_INET;
-        addr.sin_port = htons(static_cast<std::uint16_t>(args.tcpPort));
-        addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        if (::bind(listenFd, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 ||
-            ::listen(listenFd, 1) != 0) {
-            std::perror("gnss-sim: listen");
-            return 1;
-        }
-        setNonBlocking(listenFd);
-        std::printf("127.0.0.1:%d\n", args.tcpPort);
-        std::fflush(stdout);
+    } else if (isTcp) {
+        listenFd = listenOn(args.tcpPort);
+        if (listenFd < 0) return 1;
     } else {
         ioFd = STDOUT_FILENO;
     }
@@ -181,21 +204,31 @@ int main(int argc, char **argv) {
     // slave open: polling it then would spin. While hung up the master is left out of the poll
     // and looked at again every kIdlePollMs (a program opening the device is heard within that).
     bool ptyIdle = false;
-    // The hang-up that comes back (hangup=T/DOWN[xCOUNT], on a pseudo-terminal): the line drops
-    // once a program has had it for T simulated seconds; DOWN seconds later there is a new one.
+    // The hang-up that comes back (hangup=T/DOWN[xCOUNT], on a pseudo-terminal or TCP): the line
+    // drops once a program has had it for T simulated seconds; DOWN seconds later it is back.
     const sim::FaultSpec &faults = args.options.faults;
-    const bool unplugs = rx && isPty && (faults.hangupRepeats() || !faults.hangupOn.empty());
+    const bool unplugs =
+            rx && (isPty || isTcp) && (faults.hangupRepeats() || !faults.hangupOn.empty());
+    bool unplugged = false; // the line is down: back at backAt (simulated time)
     double heldFor = 0, backAt = 0;
     int outages = 0;
     bool heldBefore = false; // a program had the line at the last turn (time since is held time)
     // Unplugged: the program's line is gone, a new one comes `down` simulated seconds later. The
     // name goes first, as a USB device's node does: a program retrying it meets "no such file"
     // until the device is back, never a pseudo-terminal of another program that got the freed
-    // number meanwhile.
+    // number meanwhile. On TCP the listening socket goes first, so a client reconnecting at once
+    // is refused rather than taken into the backlog and reset.
     auto unplug = [&](double down) {
         if (!args.link.empty()) ::unlink(args.link.c_str());
-        ::close(ioFd);
+        if (isTcp) {
+            ::close(listenFd);
+            listenFd = -1;
+            if (ioFd >= 0) closeClient(ioFd);
+        } else {
+            ::close(ioFd);
+        }
         ioFd = -1;
+        unplugged = true;
         backAt = rx->time() + down;
     };
     while (!g_stop) {
@@ -233,10 +266,13 @@ int main(int argc, char **argv) {
                 const ssize_t r = ::read(ioFd, buf, sizeof buf);
                 if (r > 0 && rx) // a base ignores what clients send (a caster's GGA)
                     rx->receive(std::string_view(buf, static_cast<std::size_t>(r)));
-                else if (!isPty && r == 0) { // TCP client left
+                else if (!isPty && (r == 0 || (r < 0 && errno != EAGAIN))) { // TCP client left
                     ::close(ioFd);
                     ioFd = -1;
                 }
+            } else if (!isPty && (fds[ioIdx].revents & (POLLHUP | POLLERR))) {
+                ::close(ioFd); // TCP client reset
+                ioFd = -1;
             }
             // A pseudo-terminal master reports POLLHUP while nobody has the slave open: the
             // receiver keeps running, its output goes nowhere (no stale backlog for the next
@@ -249,7 +285,7 @@ int main(int argc, char **argv) {
             unplug(faults.hangupOnDown);
             peerPresent = false;
         }
-        if (isPty && rx) {
+        if (isPty && rx && ioFd >= 0) {
             termios t{};
             if (tcgetattr(ioFd, &t) == 0)
                 rx->setLineBaud(posix::baudOfTermiosSpeed(cfgetospeed(&t)));
@@ -276,13 +312,19 @@ int main(int argc, char **argv) {
         } else {
             outBuffer.clear();
         }
-        if (rx && rx->hungUp()) break;                     // the hang-up fault: drop the line
-        if (unplugs && ioFd < 0 && rx->time() >= backAt) { // back, as a new device
-            ioFd = openPty(rx->baud(), args.link);
-            if (ioFd < 0) return 1;
-            ptyIdle = true; // until a program opens it
+        if (rx && rx->hungUp()) break;           // the hang-up fault: drop the line
+        if (unplugged && rx->time() >= backAt) { // back, as a new device or listening again
+            unplugged = false;
             heldFor = 0;
-        } else if (unplugs && faults.hangupRepeats() && peerPresent &&
+            if (isTcp) {
+                listenFd = listenOn(args.tcpPort);
+                if (listenFd < 0) return 1;
+            } else {
+                ioFd = openPty(rx->baud(), args.link);
+                if (ioFd < 0) return 1;
+                ptyIdle = true; // until a program opens it
+            }
+        } else if (unplugs && faults.hangupRepeats() && peerPresent && ioFd >= 0 &&
                    (faults.hangupTimes == 0 || outages < faults.hangupTimes)) {
             if (heldBefore) heldFor += elapsed;
             if (heldFor >= faults.hangupAfter) {

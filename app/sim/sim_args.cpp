@@ -26,7 +26,8 @@ const char *const kUsageTail =
         "                 line of standard output\n"
         "  --link PATH    keep a symbolic link at PATH to the pseudo-terminal (a new one after\n"
         "                 each hang-up that comes back); removed at the end\n"
-        "  --tcp PORT     listen on 127.0.0.1:PORT (one client at a time)\n"
+        "  --tcp PORT     listen on 127.0.0.1:PORT (one client at a time); its address is the\n"
+        "                 first line of standard output\n"
         "  --stdout       write to standard output, read commands from standard input\n"
         "  --seed N       random seed (same seed, same sky and noise); default 1\n"
         "  --speed X      simulated seconds per real second, up to 1000; default 1\n"
@@ -34,14 +35,15 @@ const char *const kUsageTail =
         "  --faults SPEC  comma-separated: badcs=P, truncate=P, binary=P (probabilities),\n"
         "                 silence=D@T[/EVERY], noreply=CMD[+CMD], slowreply=MS,\n"
         "                 hangup=SECONDS (the line drops, gnss-sim ends),\n"
-        "                 hangup=T/DOWN[xCOUNT] (pseudo-terminal: the line drops after T s with\n"
-        "                 a program on it; DOWN s later a new one, its path on a new line of\n"
-        "                 standard output; COUNT times, default without end),\n"
+        "                 hangup=T/DOWN[xCOUNT] (--pty or --tcp: the line drops after T s with\n"
+        "                 a program on it; DOWN s later a new pseudo-terminal, or the port\n"
+        "                 listens again (refused meanwhile), its path or address on a new line\n"
+        "                 of standard output; COUNT times, default without end),\n"
         "                 powercut=CMD[+CMD] (the first such command cuts the power before it\n"
         "                 is carried out: off 2 s, then the settings of its flash),\n"
-        "                 hangupon=CMD[+CMD][/DOWN] (pseudo-terminal: the line drops as the\n"
+        "                 hangupon=CMD[+CMD][/DOWN] (--pty or --tcp: the line drops as the\n"
         "                 first such command arrives, which is carried out but not answered;\n"
-        "                 DOWN s later, default 1, a new one; once)\n"
+        "                 DOWN s later, default 1, back as hangup=T/DOWN's; once)\n"
         "  --internal-base  an RTK rover (nvs) corrects itself from a base inside the simulator;\n"
         "                 without it, it stays autonomous until RTCM 3 frames arrive on its\n"
         "                 port (float after 3 s of corrections, fixed after 20 s)\n"
@@ -198,12 +200,14 @@ bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArg
         error = "--dialect is required (or --rtcm-base)";
         return false;
     }
-    if (out.transport != Transport::Pty && out.options.faults.hangupRepeats()) {
-        error = "--faults: a hang-up that comes back (hangup=T/DOWN) needs --pty";
+    // Standard output cannot come back once it is closed: the line that does is a pseudo-terminal
+    // or a TCP port.
+    if (out.transport == Transport::Stdout && out.options.faults.hangupRepeats()) {
+        error = "--faults: a hang-up that comes back (hangup=T/DOWN) needs --pty or --tcp";
         return false;
     }
-    if (out.transport != Transport::Pty && !out.options.faults.hangupOn.empty()) {
-        error = "--faults: hangupon (the line drops and comes back) needs --pty";
+    if (out.transport == Transport::Stdout && !out.options.faults.hangupOn.empty()) {
+        error = "--faults: hangupon (the line drops and comes back) needs --pty or --tcp";
         return false;
     }
     bool known = false;
