@@ -83,8 +83,8 @@ void LogViewer::open(const QString &path, const QString &at) {
     ++generation_;
     path_ = path;
     startAt_ = at;
-    view_ = std::make_shared<logview::LogView>(registry_);
-    firstShown_ = readyNoted_ = havePublished_ = cancelling_ = false;
+    view_ = std::make_shared<logview::LogView>(registry_, viewOptions_);
+    firstShown_ = readyNoted_ = havePublished_ = cancelling_ = followBusy_ = false;
     if (models_.state) models_.state->clear();
     if (models_.satellites) models_.satellites->clear();
     if (models_.messages) models_.messages->clear();
@@ -102,7 +102,9 @@ void LogViewer::close() {
     pollTimer_.stop();
     messagesDelay_.stop();
     ++generation_;
-    exporting_ = false; // an export still running finishes its file; its report is dropped
+    exporting_ = false;
+    followBusy_ = false; // a follow still running finishes on the old log; its report is dropped //
+                         // an export still running finishes its file; its report is dropped
     cursor_.setLog(nullptr);
     view_->cancel();
     view_.reset(); // a worker still reading keeps its own reference
@@ -349,16 +351,23 @@ void LogViewer::setFollowing(bool on) {
 }
 
 void LogViewer::follow() {
-    if (!view_ || !ready()) return;
-    const bool atEnd = cursor_.empty() || cursor_.current() + 1 >= cursor_.epochCount();
-    // follow() indexes what the file gained on this thread: a second's worth of a logger.
-    const auto r = view_->follow();
-    if (!r.grew && !r.truncated) return;
-    cursor_.notifyIndexChanged();
-    if (atEnd && !cursor_.empty()) cursor_.seek(cursor_.epochCount() - 1, true);
-    messagesDelay_.start();
-    emit indexed();
-    emit statusChanged();
+    if (!view_ || !ready() || followBusy_) return;
+    followBusy_ = true;
+    // What the file gained (megabytes, maybe) is indexed on a worker; the engine swaps the new
+    // records in under a short lock, so the views go on drawing meanwhile.
+    runAsync([view = view_] { return view->follow(); },
+             [this](logview::LogView::FollowResult r) {
+                 followBusy_ = false;
+                 if (!r.grew && !r.truncated) return;
+                 // The cursor's count is still the one before the growth.
+                 const bool atEnd =
+                         cursor_.empty() || cursor_.current() + 1 >= cursor_.epochCount();
+                 cursor_.notifyIndexChanged();
+                 if (atEnd && !cursor_.empty()) cursor_.seek(cursor_.epochCount() - 1, true);
+                 messagesDelay_.start();
+                 emit indexed();
+                 emit statusChanged();
+             });
 }
 
 std::optional<LogViewer::Export> LogViewer::formatOfSuffix(const QString &suffix) {

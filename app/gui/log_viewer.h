@@ -4,8 +4,8 @@
 // receiver state at the cursor into the same models the live link feeds, so every dock (sky plot,
 // signal levels, fix, RTK, satellites, attitude, receiver, console, statistics, charts) shows
 // that moment. It plays (paced by the log's own times, 0.1x to 100x, or as fast as the views
-// draw), follows a file still being written, and exports on a worker thread. Nothing on the GUI
-// thread waits for the disk or for indexing.
+// draw), follows a file still being written (what it gained indexed on a worker thread), and
+// exports on a worker thread. Nothing on the GUI thread waits for the disk or for indexing.
 #include "log_cursor.h"
 #include "models/receiver_session.h"
 
@@ -57,6 +57,10 @@ public:
     double speed() const { return speed_; }
     void setFollowing(bool on);
     bool following() const { return followTimer_.isActive(); }
+    // A followed file's growth is being indexed (on a worker thread).
+    bool followBusy() const { return followBusy_; }
+    // The engine's options for the logs opened from now on (tests hook into following).
+    void setViewOptions(logview::LogViewOptions options) { viewOptions_ = std::move(options); }
 
     // Writes the selected range (or the whole log) to `path` on a worker thread;
     // exportFinished() says how it went. False (and `why`) when nothing can be exported yet.
@@ -95,7 +99,8 @@ private:
     ui::LogCursor cursor_;
     QString path_, startAt_;
     QTimer pollTimer_, playTimer_, followTimer_;
-    bool firstShown_ = false, readyNoted_ = false, cancelling_ = false;
+    bool firstShown_ = false, readyNoted_ = false, cancelling_ = false, followBusy_ = false;
+    logview::LogViewOptions viewOptions_;
     std::size_t lastPublished_ = 0;
     bool havePublished_ = false, advancing_ = false;
     double speed_ = 1;

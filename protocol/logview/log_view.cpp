@@ -18,6 +18,7 @@ LogView::~LogView() {
 void LogView::open(const std::string &path) {
     cancel();
     if (worker_.joinable()) worker_.join();
+    std::lock_guard following(followMutex_);
     {
         std::unique_lock lock(mutex_);
         map_.close();
@@ -32,6 +33,7 @@ void LogView::open(const std::string &path) {
         timeline_ = TimelineState();
         eventState_ = EventState();
         closedEvents_ = 0;
+        goneWarned_ = false;
     }
     cancel_ = false;
     bytesDone_ = bytesTotal_ = 0;
@@ -423,25 +425,61 @@ bool LogView::exportRange(ExportFormat format, std::size_t first, std::size_t la
 LogView::FollowResult LogView::follow() {
     FollowResult r;
     if (static_cast<Phase>(phase_.load()) != Phase::Ready) return r;
-    std::unique_lock lock(mutex_);
-    if (gzipped_) return r;
-    const std::uint64_t before = map_.size();
-    switch (map_.refresh()) {
-    case MappedLog::Change::Unchanged: return r;
-    case MappedLog::Change::Gone:
-        warn(path_ + " was deleted: what was read is kept (the bytes stay readable while open)");
-        return r;
-    case MappedLog::Change::Shrunk:
-        r.truncated = true;
-        warn(path_ + " was cut from " + std::to_string(before) + " to " +
-             std::to_string(map_.size()) +
-             " bytes while open: the epochs read are kept, their lines past the cut are gone");
-        return r;
-    case MappedLog::Change::Grown: break;
+    std::lock_guard following(followMutex_);
+    // 1. Under the lock, briefly: how the file changed, and where the index goes on from.
+    LogIndex gain; // the records, checkpoints and end state that the new bytes give
+    std::size_t kept = 0;
+    std::string_view gained;
+    const char *base = nullptr;
+    {
+        std::unique_lock lock(mutex_);
+        if (gzipped_ || !map_.isOpen()) return r;
+        const std::uint64_t before = map_.size();
+        switch (map_.refresh()) {
+        case MappedLog::Change::Unchanged: return r;
+        case MappedLog::Change::Gone:
+            if (!goneWarned_)
+                warn(path_ +
+                     " was deleted: what was read is kept (the bytes stay readable while open)");
+            goneWarned_ = true;
+            return r;
+        case MappedLog::Change::Shrunk:
+            r.truncated = true;
+            warn(path_ + " was cut from " + std::to_string(before) + " to " +
+                 std::to_string(map_.size()) +
+                 " bytes while open: the epochs read are kept, their lines past the cut are gone");
+            return r;
+        case MappedLog::Change::Grown: break;
+        }
+        if (map_.size() <= index_.indexedEnd) return r;
+        gained = map_.bytes(index_.indexedEnd, map_.size() - index_.indexedEnd);
+        base = map_.base();
+        gain.start = index_.start;
+        gain.tail = index_.tail;
+        gain.indexedEnd = index_.indexedEnd;
+        // The records of the unfinished last line are decoded again from the tail.
+        kept = index_.records.size() - std::min(index_.openRecords, index_.records.size());
     }
-    if (map_.size() <= index_.indexedEnd) return r;
-    const std::string_view gained = map_.bytes(index_.indexedEnd, map_.size() - index_.indexedEnd);
-    r.firstChanged = extendIndex(map_.base(), gained, registry_, options_.index, index_);
+    // 2. Without it: decode what the file gained (megabytes, maybe). Only follow() changes the
+    // index and the mapping once it is ready, and it is serialised: `base` and `gained` stay.
+    if (options_.whileFollowing) options_.whileFollowing();
+    extendIndex(base, gained, registry_, options_.index, gain);
+    // 3. Under the lock again, briefly: the new records in.
+    std::unique_lock lock(mutex_);
+    auto &recs = index_.records;
+    recs.resize(kept);
+    recs.insert(recs.end(), gain.records.begin(), gain.records.end());
+    for (Checkpoint &c : gain.checkpoints)
+        if (index_.checkpoints.empty() || index_.checkpoints.back().carry.emitted < c.carry.emitted)
+            index_.checkpoints.push_back(std::move(c));
+    addFramerStats(index_.framer, gain.framer);
+    index_.tail = std::move(gain.tail);
+    index_.indexedEnd = gain.indexedEnd;
+    index_.openEnd = gain.openEnd;
+    index_.openFramer = gain.openFramer;
+    index_.openRecords = gain.openRecords;
+    index_.lastIsOpen = gain.lastIsOpen;
+    r.firstChanged = kept;
     r.grew = true;
     if (!first_ && !index_.records.empty()) first_ = index_.records.front();
     finishTimeline(r.firstChanged);

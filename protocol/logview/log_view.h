@@ -26,6 +26,7 @@
 //       view.exportRange(ExportFormat::Gpx, from, to, sink);
 //   }
 //   view.follow();                          // a file still being written: index what it gained
+//                                           // (from a worker thread: readers go on meanwhile)
 //
 // Problems are reported, never thrown: error() (nothing usable) and warnings() (what was kept).
 #include "log_events.h"
@@ -48,6 +49,9 @@ struct LogViewOptions {
     double gapFactor = 2.5;        // a step over gapFactor × the usual interval (and 1 s) is a gap
     bool hostTimes = true;         // use FILE.idx of a recording when there is one
     std::uint64_t startOffset = 0; // index from this file offset (the tail of a huge log)
+    // Called by follow() on its thread while it decodes what the file gained, holding no lock
+    // (a test holds it there to see that every reader goes on meanwhile).
+    std::function<void()> whileFollowing;
 };
 
 class LogView {
@@ -121,6 +125,9 @@ public:
                      const ExportSink &sink, const std::string &name = {}) const;
 
     // Re-checks the file: indexes what it gained (on the caller's thread), reports truncation.
+    // What the file gained is decoded without the lock the readers take (the new records are
+    // swapped in under it at the end, briefly), so a GUI calls it from a worker thread and goes
+    // on drawing meanwhile. Calls are serialised; open() waits for one running.
     FollowResult follow();
 
 private:
@@ -137,6 +144,7 @@ private:
     std::atomic<int> phase_{static_cast<int>(Phase::Idle)};
     std::atomic<std::uint64_t> bytesDone_{0}, bytesTotal_{0};
     std::atomic<double> inflateProgress_{0};
+    std::mutex followMutex_; // one follow() at a time; open() waits for it
     mutable std::mutex doneMutex_;
     mutable std::condition_variable doneCv_;
     bool workerDone_ = true;
@@ -153,6 +161,7 @@ private:
     TimelineState timeline_; // after the closed records
     EventState eventState_;  // after the closed records
     std::size_t closedEvents_ = 0;
+    bool goneWarned_ = false; // the file's deletion is reported once
 };
 
 } // namespace gnss::logview

@@ -5,7 +5,9 @@
 #include "logview_files.h"
 #include "logview_reference.h"
 
+#include <chrono>
 #include <random>
+#include <thread>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -211,6 +213,78 @@ private slots:
             QVERIFY(s == truth[k]);
         }
         QCOMPARE(view.events().size(), std::size_t(17));
+    }
+
+    // A big growth (19 MB) is decoded without the readers' lock: follow() on a thread is held
+    // (by the test's hook) in the middle of its decoding until every reader has answered; a lock
+    // held over the decoding would keep them waiting and the hook gives up. Then the index is
+    // the one of the whole file opened at once.
+    void readersGoOnWhileAFollowDecodes() {
+        std::string log;
+        bench::generateLog(log, 20'000'000);
+        const std::size_t cut = log.find('\n', 1'000'000) + 1;
+        const std::string p = path("follow-big.nmea");
+        QVERIFY(test::writeFile(p, std::string_view(log).substr(0, cut)));
+        std::atomic<bool> inside{false}, readersDone{false}, readersSeen{false};
+        auto waitFor = [](const std::atomic<bool> &flag) {
+            const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+            while (!flag && std::chrono::steady_clock::now() < until)
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            return flag.load();
+        };
+        LogViewOptions o;
+        o.whileFollowing = [&] {
+            inside = true;
+            readersSeen = waitFor(readersDone);
+        };
+        LogView view(registry_, o);
+        QVERIFY(test::openAndWait(view, p));
+        const std::size_t before = view.epochCount();
+        QVERIFY(before > 100);
+        {
+            std::FILE *f = std::fopen(p.c_str(), "ab");
+            QVERIFY(f);
+            QCOMPARE(std::fwrite(log.data() + cut, 1, log.size() - cut, f), log.size() - cut);
+            QCOMPARE(std::fclose(f), 0);
+        }
+        LogView::FollowResult r;
+        std::thread follower([&] { r = view.follow(); });
+        const bool entered = waitFor(inside);
+        // Every reader answers, from the index as it was, while the growth is decoded.
+        const std::size_t during = view.epochCount();
+        ReceiverState s;
+        const bool state = view.stateAt(before - 1, s);
+        const bool lines = !view.linesAround(view.indexedEnd(), 3, 1).empty();
+        std::size_t seen = 0;
+        view.withRecords([&](std::span<const EpochRecord> all) { seen = all.size(); });
+        view.events();
+        view.stats(0, before - 1);
+        readersDone = true;
+        follower.join();
+        QVERIFY(entered);
+        QVERIFY(readersSeen);
+        QCOMPARE(during, before);
+        QCOMPARE(seen, before);
+        QVERIFY(state && lines);
+        QVERIFY(r.grew);
+        QVERIFY(r.firstChanged <= before);
+        // The same index as the whole file's.
+        LogView whole(registry_);
+        QVERIFY(test::openAndWait(whole, p));
+        QVERIFY(view.epochCount() > before * 10);
+        QCOMPARE(view.epochCount(), whole.epochCount());
+        QCOMPARE(view.indexedEnd(), whole.indexedEnd());
+        QCOMPARE(view.events().size(), whole.events().size());
+        QCOMPARE(view.framerStats().sentences, whole.framerStats().sentences);
+        std::mt19937 rng(5);
+        ReceiverState a, b;
+        for (int i = 0; i < 20; ++i) {
+            const std::size_t k = rng() % view.epochCount();
+            QCOMPARE(view.epoch(k)->offset, whole.epoch(k)->offset);
+            QCOMPARE(view.epoch(k)->utcMs, whole.epoch(k)->utcMs);
+            QVERIFY(view.stateAt(k, a) && whole.stateAt(k, b));
+            QVERIFY(a == b);
+        }
     }
 
     // Offsets past 4 GB: a sparse file (5 GB of hole, no disk used) with a log at its end,

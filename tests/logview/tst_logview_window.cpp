@@ -25,6 +25,7 @@
 #include "whole_log_panels.h"
 
 #include <QCheckBox>
+#include <QDeadlineTimer>
 #include <QDockWidget>
 #include <QFile>
 #include <QLabel>
@@ -40,7 +41,9 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QTranslator>
+#include <chrono>
 #include <random>
+#include <thread>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -416,6 +419,78 @@ private slots:
                     all.substr(half.size(), all.find("$GPRMC,100220.00") - half.size())));
         }
         QTRY_VERIFY_WITH_TIMEOUT(cursor->epochCount() >= 139, 5000);
+        QCOMPARE(cursor->current(), cursor->epochCount() - 1);
+        expectStateAt(*w, cursor->current());
+        QVERIFY(w->findChild<QLabel *>("connectionState")->text().contains("following"));
+    }
+
+    // A followed log that gains 50 MB at once: the growth is indexed on a worker while the GUI
+    // thread keeps turning. The engine's hook holds the follow in the middle of its decoding
+    // until the GUI thread has ticked (a 10 ms timer) five times, reading the log and repainting
+    // the strip each time: had the GUI thread been inside the follow, or waiting on a lock held
+    // over it, no tick would come and the hook would give up after 60 s.
+    void aBigGrowthIsIndexedOffTheGuiThread() {
+        std::string log;
+        bench::generateLog(log, std::size_t(51) << 20);
+        const std::size_t cut = log.find('\n', std::size_t(1) << 20) + 1;
+        const QString path = dir_.filePath("logger.nmea");
+        QVERIFY(test::writeFile(path.toStdString(), std::string_view(log).substr(0, cut)));
+        std::atomic<bool> inside{false}, sawTicks{false};
+        std::atomic<int> ticksInside{0};
+        logview::LogViewOptions o;
+        o.whileFollowing = [&] {
+            inside = true;
+            QDeadlineTimer until(60000);
+            while (ticksInside.load() < 5 && !until.hasExpired())
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            sawTicks = ticksInside.load() >= 5;
+            inside = false;
+        };
+        auto s = settings();
+        auto w = window(s.get());
+        w->logViewer()->setViewOptions(o);
+        QVERIFY(openScenario(*w, path.toStdString()));
+        ui::LogCursor *cursor = w->logViewer()->cursor();
+        const std::size_t before = cursor->epochCount();
+        QVERIFY(before > 100);
+        cursor->seek(before - 1);
+        auto *strip = w->findChild<ui::TimelineStrip *>("timelineStrip");
+        int ticks = 0;
+        bool grewEarly = false, readsFailed = false;
+        QTimer timer;
+        timer.setInterval(10);
+        connect(&timer, &QTimer::timeout, this, [&] {
+            ++ticks;
+            if (!inside) return;
+            // The views read the log as they do on every frame.
+            const logview::LogView *view = w->logViewer()->view();
+            ReceiverState st;
+            grewEarly |= view->epochCount() != before;
+            readsFailed |= !view->stateAt(before - 1, st);
+            strip->repaint();
+            ++ticksInside;
+        });
+        timer.start();
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::Append));
+            QCOMPARE(f.write(log.data() + cut, qint64(log.size() - cut)), qint64(log.size() - cut));
+        }
+        w->findChild<QCheckBox *>("logFollow")->setChecked(true);
+        QTRY_VERIFY_WITH_TIMEOUT(w->logViewer()->followBusy(), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(cursor->epochCount() > before * 20, 120000);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->logViewer()->followBusy(), 20000);
+        timer.stop();
+        QVERIFY(sawTicks);
+        QVERIFY(ticksInside >= 5);
+        QVERIFY(!grewEarly && !readsFailed);
+        qInfo("%d ticks, %d while the follow decoded %zu new epochs", ticks, ticksInside.load(),
+              cursor->epochCount() - before);
+        // The whole growth is there, as indexing the file at once gives, and the cursor is at
+        // its end with the docks showing it.
+        logview::LogView whole(registry_);
+        QVERIFY(test::openAndWait(whole, path.toStdString()));
+        QCOMPARE(cursor->epochCount(), whole.epochCount());
         QCOMPARE(cursor->current(), cursor->epochCount() - 1);
         expectStateAt(*w, cursor->current());
         QVERIFY(w->findChild<QLabel *>("connectionState")->text().contains("following"));
