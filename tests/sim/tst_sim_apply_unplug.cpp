@@ -1,32 +1,30 @@
 // The receiver unplugged in the middle of a settings apply (docs/reliability.md, "Faults, end to
 // end"). First the simulator's side alone (hangupon=CMD: the line drops the moment CMD arrives,
 // the receiver carries it out, its answer is lost). Then end to end: the settings engine on a
-// Connection to gnss-sim on a pseudo-terminal (through the real QSerialPort, reconnecting by
-// the --link name), the line dropping at a chosen command of a seven-command apply of six NV08C
-// settings. Each command has its outcome (answered, sent with the answer lost, not sent); no
-// setting is verified before a read-back; when the link is back the engine reads the apply's
-// settings back by itself and then has the receiver's values.
-// Over TCP gnss-sim has no hang-up that comes back (hangup=T/DOWN and hangupon need --pty), so
-// these run on pseudo-terminals only.
+// Connection to gnss-sim, the line dropping at a chosen command of a seven-command apply of six
+// NV08C settings, on a pseudo-terminal (through the real QSerialPort, reconnecting by the --link
+// name) and over TCP (gnss-sim drops the client and refuses connections while down, as a
+// serial-to-Ethernet server does; the TcpTransport reconnects). Each command has its outcome
+// (answered, sent with the answer lost, not sent); no setting is verified before a read-back;
+// when the link is back the engine reads the apply's settings back by itself and then has the
+// receiver's values.
 #include "builtin_registry.h"
 #include "dialect_receiver.h"
 #include "faults.h"
-#include "sim_process.h"
+#include "sim_line.h"
 
 #include "connection.h"
-#include "serial_transport.h"
 #include "settings_engine.h"
 
 #include "core/sentence_builder.h"
 
 #include <QSignalSpy>
-#include <QTemporaryDir>
 #include <QTest>
 
 using namespace gnss;
 using namespace gnss::config;
 using namespace gnss::link;
-using gnss::link::test::SimProcess;
+using gnss::link::test::SimLine;
 
 namespace {
 
@@ -138,6 +136,7 @@ private slots:
     }
 
     void aSettingsApplyTheLineDropsIn_data() {
+        QTest::addColumn<QString>("line"); // pty or tcp (sim_line.h)
         QTest::addColumn<QString>("fault");
         QTest::addColumn<QStringList>("fates");   // per command, in order
         QTest::addColumn<VerdictMap>("applied");  // the apply's report
@@ -147,34 +146,37 @@ private slots:
                               {"pps.duration", c}, {"pps.cable_delay", c}, {"output.COM2", d}};
         };
         using enum Verdict;
-        QTest::newRow("at the first command")
-                << "hangupon=PNVGRTK/0.5"
-                << QStringList{"lost", "unsent", "unsent", "unsent", "unsent", "unsent", "unsent"}
-                << V(Unconfirmed, NotSent, NotSent, NotSent)
-                << V(Verified, NotSent, NotSent, NotSent); // carried out, its answer lost
-        QTest::newRow("between the sentences of one setting")
-                << "hangupon=ADD/0.5"
-                << QStringList{"ok", "ok", "lost", "unsent", "unsent", "unsent", "unsent"}
-                << V(NotReadBack, Unconfirmed, NotSent, NotSent)
-                << V(Verified, NotTaken, NotSent, NotSent); // one station of the two
-        QTest::newRow("in the middle")
-                << "hangupon=PNVGPPS/0.5"
-                << QStringList{"ok", "ok", "ok", "ok", "lost", "unsent", "unsent"}
-                << V(NotReadBack, NotReadBack, Unconfirmed, NotSent)
-                << V(Verified, Verified, Verified, NotSent);
+        for (const QString line : {"pty", "tcp"}) {
+            const auto row = [&](const char *where) -> QTestData & {
+                return QTest::newRow(qPrintable(line + ": " + where)) << line;
+            };
+            row("at the first command")
+                    << "hangupon=PNVGRTK/0.5" << QStringList{"lost",   "unsent", "unsent", "unsent",
+                                                             "unsent", "unsent", "unsent"}
+                    << V(Unconfirmed, NotSent, NotSent, NotSent)
+                    << V(Verified, NotSent, NotSent, NotSent); // carried out, its answer lost
+            row("between the sentences of one setting")
+                    << "hangupon=ADD/0.5"
+                    << QStringList{"ok", "ok", "lost", "unsent", "unsent", "unsent", "unsent"}
+                    << V(NotReadBack, Unconfirmed, NotSent, NotSent)
+                    << V(Verified, NotTaken, NotSent, NotSent); // one station of the two
+            row("in the middle") << "hangupon=PNVGPPS/0.5"
+                                 << QStringList{"ok", "ok", "ok", "ok", "lost", "unsent", "unsent"}
+                                 << V(NotReadBack, NotReadBack, Unconfirmed, NotSent)
+                                 << V(Verified, Verified, Verified, NotSent);
+        }
     }
     void aSettingsApplyTheLineDropsIn() {
+        QFETCH(QString, line);
         QFETCH(QString, fault);
         QFETCH(QStringList, fates);
         QFETCH(VerdictMap, applied);
         QFETCH(VerdictMap, readBack);
-        QTemporaryDir dir;
-        const QString link = dir.filePath("ttyGNSS");
-        SimProcess sim({"--dialect", "nvs", "--link", link, "--faults", fault});
+        SimLine sim(line, {"--dialect", "nvs", "--faults", fault});
         REQUIRE_SIM(sim);
         const DialectRegistry &registry = gnss::test::builtinRegistry();
         const Dialect *nvs = registry.find("nvs");
-        Connection conn(std::make_unique<SerialTransport>(SerialSettings{link, 115200}), registry);
+        Connection conn(sim.transport(115200), registry);
         conn.commands()->setDialect(nvs);
         conn.setReconnectDelays(50, 200);
         SettingsEngine engine;

@@ -2,18 +2,22 @@
 // to end"): a hundred unplugs of a recorded link, and a power cut during a save to flash. First
 // the simulator's side alone (simulated time, deterministic): a hang-up that comes back leaves
 // the receiver running; a power cut takes the command that brought it and boots from the flash.
-// Then end to end, against gnss-sim on pseudo-terminals through the real QSerialPort.
+// Then end to end, against gnss-sim on pseudo-terminals through the real QSerialPort, and the
+// unplugs also over TCP (gnss-sim drops its client and listens again, as a serial-to-Ethernet
+// server whose receiver went away; the link reconnects as it does to a serial port).
 #include "builtin_registry.h"
 #include "dialect_receiver.h"
 #include "faults.h"
 #include "queue_checks.h"
-#include "recorded_serial_link.h"
+#include "recorded_link.h"
+#include "sim_line.h"
 #include "sim_process.h"
 
 #include "core/sentence_builder.h"
 
 #include <QRegularExpression>
 #include <QSignalSpy>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -21,8 +25,10 @@
 
 using namespace gnss;
 using namespace gnss::link;
-using gnss::link::test::RecordedSerialLink;
+using gnss::link::test::RecordedLink;
+using gnss::link::test::SimLine;
 using gnss::link::test::SimProcess;
+using gnss::link::test::SimTcpProcess;
 
 namespace {
 
@@ -107,15 +113,42 @@ private slots:
         QCOMPARE(store.saved().at("rtk.PVTRATE"), std::string("10"));
     }
 
+    void overTcpTheClientIsDroppedAndRefusedWhileDown() {
+        // Held 1 s (0.1 s at 10x), then down 600 s (a minute): long enough that every attempt
+        // below meets the port closed, whatever the machine's load.
+        SimTcpProcess sim({"--dialect", "nmea", "--speed", "10", "--faults", "hangup=1/600x1"});
+        REQUIRE_SIM(sim);
+        QTcpSocket client;
+        QByteArray got;
+        connect(&client, &QTcpSocket::readyRead, this, [&] { got += client.readAll(); });
+        client.connectToHost(QHostAddress::LocalHost, sim.port);
+        QVERIFY(client.waitForConnected(20000));
+        QTRY_VERIFY_WITH_TIMEOUT(client.state() == QAbstractSocket::UnconnectedState, 20000);
+        QVERIFY(got.contains("GGA")); // it had the line before it was dropped
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            QTcpSocket again;
+            again.connectToHost(QHostAddress::LocalHost, sim.port);
+            QVERIFY(!again.waitForConnected(20000));
+            QCOMPARE(again.error(), QAbstractSocket::ConnectionRefusedError);
+        }
+        QCOMPARE(sim.proc.state(), QProcess::Running); // the receiver runs on meanwhile
+        QVERIFY(!sim.proc.canReadLine());              // and has not said it listens again
+    }
+
+    void aHundredUnplugsOfARecordedLink_data() {
+        QTest::addColumn<QString>("line");
+        QTest::newRow("pseudo-terminal") << "pty";
+        QTest::newRow("TCP") << "tcp";
+    }
     void aHundredUnplugsOfARecordedLink() {
+        QFETCH(QString, line);
         constexpr int kOutages = 100;
         QTemporaryDir dir;
-        const QString link = dir.filePath("ttyGNSS"); // kept by gnss-sim at its current device
         // At 20x, held 3 s is 0.15 s of real time and down 1 s is 50 ms.
-        SimProcess sim({"--dialect", "nmea", "--speed", "20", "--link", link, "--faults",
-                        QString("hangup=3/1x%1").arg(kOutages)});
+        SimLine sim(line, {"--dialect", "nmea", "--speed", "20", "--faults",
+                           QString("hangup=3/1x%1").arg(kOutages)});
         REQUIRE_SIM(sim);
-        RecordedSerialLink recorded(link, 9600, dir.filePath("unplugs.nmea"));
+        RecordedLink recorded(sim.transport(9600), dir.filePath("unplugs.nmea"));
         QVERIFY(recorded.recording);
         Connection &conn = recorded.conn;
         const QByteArray &received = recorded.received;
@@ -128,14 +161,15 @@ private slots:
                                                      .arg(back.count())),
                                   120000);
         const qsizetype atLastReturn = received.size();
-        QTRY_VERIFY_WITH_TIMEOUT(received.size() > atLastReturn + 200, 5000); // it stays now
+        QTRY_VERIFY_WITH_TIMEOUT(received.size() > atLastReturn + 200, 20000); // it stays now
         Recording r;
         QString error;
         QVERIFY2(recorded.finish(r, error), qPrintable(error));
         QCOMPARE(int(lost.count()), kOutages);
         QCOMPARE(int(back.count()), kOutages);
-        // gnss-sim made a new device after each outage, its path on a line of its own.
-        QCOMPARE(int(sim.proc.readAllStandardOutput().count('\n')), kOutages);
+        // gnss-sim made a new device, or listened again, after each outage, and said so on a
+        // line of its own.
+        QCOMPARE(int(sim.proc().readAllStandardOutput().count('\n')), kOutages);
         QCOMPARE(r.bytes, received);
         QCOMPARE(qint64(conn.bytesReceived()), qint64(received.size()));
         // Each outage is marked where it falls: lost, then back; data came between returns

@@ -1,21 +1,19 @@
 #pragma once
-// For the end-to-end suites that record a serial link: a Connection on a device (the built-in
+// For the end-to-end suites that record a link: a Connection on a transport (the built-in
 // dialects) recording to a file, with every byte its transport delivered kept to hold the
 // recording against. (tst_link_pty's hang-up and recording tests build the same by hand.)
 #include "builtin_registry.h"
 #include "connection.h"
 #include "recording.h"
-#include "serial_transport.h"
+#include "transport.h"
 
 #include <memory>
 
 namespace gnss::link::test {
 
-struct RecordedSerialLink {
-    RecordedSerialLink(const QString &device, int baud, const QString &logPath)
-        : conn(std::make_unique<SerialTransport>(SerialSettings{device, baud}),
-               gnss::test::builtinRegistry()),
-          log(logPath) {
+struct RecordedLink {
+    RecordedLink(std::unique_ptr<Transport> transport, const QString &logPath)
+        : conn(std::move(transport), gnss::test::builtinRegistry()), log(logPath) {
         recording = conn.startRecording(log);
         QObject::connect(conn.transport(), &Transport::bytesReceived, &conn,
                          [this](const QByteArray &b) { received += b; });
