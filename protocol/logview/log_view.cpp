@@ -3,7 +3,12 @@
 #include "state/log_scan.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace gnss::logview {
 
@@ -72,6 +77,120 @@ bool LogView::anyDecoded(std::string_view data) const {
     return false;
 }
 
+// A .gz log: inflated into an unnamed temporary file by a second thread while this one maps the
+// file and indexes it as it fills (the first chunk in parallel pieces, then a chunk at a time as
+// a followed file is), so that the first epoch is known after the first megabyte, and the index
+// is ready soon after the last byte is inflated. False when cancelled or failed (`failure`).
+bool LogView::indexWhileInflating(const std::string &path, LogIndex &built, std::uint64_t &start,
+                                  std::string &failure) {
+    constexpr std::uint64_t kChunk = 8 << 20; // indexed at a time while inflating
+    phase_ = static_cast<int>(Phase::Inflating);
+    const int fd = createTemporaryFile(failure);
+    if (fd < 0) return false;
+    const int writer = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
+    if (writer < 0) {
+        failure = "cannot create a temporary file: " + std::string(std::strerror(errno));
+        ::close(fd);
+        return false;
+    }
+    {
+        std::unique_lock lock(mutex_);
+        gzipped_ = true;
+        if (!map_.adopt(fd, path)) {
+            failure = map_.error();
+            ::close(writer);
+            return false;
+        }
+    }
+    std::mutex m;
+    std::condition_variable cv;
+    std::uint64_t inflated = 0;
+    bool inflateDone = false, inflateOk = false;
+    std::string inflateError;
+    std::thread inflater([&] {
+        const bool ok = inflateInto(path, writer, inflateError, &cancel_, &inflateProgress_,
+                                    [&](std::uint64_t n) {
+                                        {
+                                            std::lock_guard l(m);
+                                            inflated = n;
+                                        }
+                                        cv.notify_one();
+                                    });
+        ::close(writer);
+        {
+            std::lock_guard l(m);
+            inflateOk = ok;
+            inflateDone = true;
+        }
+        cv.notify_one();
+    });
+    IndexControl control;
+    control.cancel = &cancel_;
+    control.onFirstEpoch = [this](const EpochRecord &r) { noteFirstEpoch(r); };
+    bool started = false, cancelled = false;
+    while (true) {
+        bool last = false;
+        {
+            std::unique_lock l(m);
+            const std::uint64_t want =
+                    started ? built.indexedEnd + kChunk : options_.startOffset + 1;
+            cv.wait(l, [&] { return inflateDone || inflated >= want; });
+            last = inflateDone;
+        }
+        if (cancel_) {
+            cancelled = true;
+            break;
+        }
+        std::uint64_t size = 0;
+        {
+            std::unique_lock lock(mutex_);
+            map_.refresh();
+            size = map_.size();
+        }
+        if (last) phase_ = static_cast<int>(Phase::Indexing); // what is left to index
+        if (!started) {
+            start = std::min(options_.startOffset, size);
+            bytesTotal_ = size - start;
+            const Checkpoint from = startOfLog(registry_, options_.index.decoder, start);
+            if (!buildIndex(map_.base(), map_.bytes(start, size - start), from, registry_,
+                            options_.index, built, control)) {
+                cancelled = true;
+                break;
+            }
+            started = true;
+        } else if (size > built.indexedEnd) {
+            bytesTotal_ = size - start;
+            extendIndex(map_.base(), map_.bytes(built.indexedEnd, size - built.indexedEnd),
+                        registry_, options_.index, built);
+        }
+        // An epoch closed in a later chunk can be the first (a chunk without a whole one).
+        if (built.records.size() > built.openRecords) noteFirstEpoch(built.records.front());
+        bytesDone_ = built.indexedEnd - start;
+        if (last) break;
+    }
+    inflater.join();
+    if (cancelled) return false;
+    if (!inflateOk) {
+        failure = inflateError.empty() ? path + ": cannot inflate" : inflateError;
+        return false;
+    }
+    if (!inflateError.empty()) {
+        std::unique_lock lock(mutex_);
+        warn(inflateError);
+    }
+    return true;
+}
+
+// Sets the first epoch once, and tells the test hook.
+void LogView::noteFirstEpoch(const EpochRecord &r) {
+    {
+        std::unique_lock lock(mutex_);
+        if (first_) return;
+        first_ = r;
+    }
+    if (options_.onFirstEpoch) options_.onFirstEpoch();
+}
+
 void LogView::run(std::string path) {
     auto finish = [this](Phase p) {
         phase_ = static_cast<int>(p);
@@ -92,53 +211,44 @@ void LogView::run(std::string path) {
     // readers see an empty index and touch neither).
     MappedLog probe;
     if (!probe.open(path)) return fail(probe.error());
-    if (looksGzipped(probe.bytes(0, 2))) {
-        probe.close();
-        phase_ = static_cast<int>(Phase::Inflating);
-        std::string err;
-        const int fd = inflateToTemporary(path, err, &cancel_, &inflateProgress_);
-        if (fd < 0) {
-            if (err.empty()) return finish(Phase::Cancelled);
-            return fail(err);
+    const bool gz = looksGzipped(probe.bytes(0, 2));
+    probe.close();
+    LogIndex built;
+    std::uint64_t start = 0;
+    if (gz) {
+        std::string failure;
+        if (!indexWhileInflating(path, built, start, failure)) {
+            if (failure.empty()) return finish(Phase::Cancelled);
+            return fail(failure);
         }
-        std::unique_lock lock(mutex_);
-        if (!err.empty()) warn(err);
-        gzipped_ = true;
-        if (!map_.adopt(fd, path)) {
-            const std::string e = map_.error();
-            lock.unlock();
-            return fail(e);
-        }
-        phase_ = static_cast<int>(Phase::Indexing);
     } else {
-        std::unique_lock lock(mutex_);
-        map_.open(path);
-        if (!map_.isOpen()) {
-            const std::string e = map_.error();
-            lock.unlock();
-            return fail(e);
+        {
+            std::unique_lock lock(mutex_);
+            map_.open(path);
+            if (!map_.isOpen()) {
+                const std::string e = map_.error();
+                lock.unlock();
+                return fail(e);
+            }
         }
+        const std::uint64_t size = map_.size();
+        start = std::min(options_.startOffset, size);
+        if (options_.hostTimes) {
+            std::unique_lock lock(mutex_);
+            if (!host_.load(path + ".idx", size) && !host_.error().empty()) warn(host_.error());
+        }
+        bytesTotal_ = size - start;
+        IndexControl control;
+        control.cancel = &cancel_;
+        control.bytesDone = &bytesDone_;
+        control.onFirstEpoch = [this](const EpochRecord &r) { noteFirstEpoch(r); };
+        const std::string_view data = map_.bytes(start, size - start);
+        const Checkpoint from = startOfLog(registry_, options_.index.decoder, start);
+        if (!buildIndex(map_.base(), data, from, registry_, options_.index, built, control))
+            return finish(Phase::Cancelled);
     }
     const std::uint64_t size = map_.size();
-    const std::uint64_t start = std::min(options_.startOffset, size);
-    if (!gzipped_ && options_.hostTimes) {
-        std::unique_lock lock(mutex_);
-        if (!host_.load(path + ".idx", size) && !host_.error().empty()) warn(host_.error());
-    }
-    bytesTotal_ = size - start;
-
-    LogIndex built;
-    IndexControl control;
-    control.cancel = &cancel_;
-    control.bytesDone = &bytesDone_;
-    control.onFirstEpoch = [this](const EpochRecord &r) {
-        std::unique_lock lock(mutex_);
-        first_ = r;
-    };
     const std::string_view data = map_.bytes(start, size - start);
-    const Checkpoint from = startOfLog(registry_, options_.index.decoder, start);
-    if (!buildIndex(map_.base(), data, from, registry_, options_.index, built, control))
-        return finish(Phase::Cancelled);
     {
         std::unique_lock lock(mutex_);
         index_ = std::move(built);

@@ -52,6 +52,9 @@ struct LogViewOptions {
     // Called by follow() on its thread while it decodes what the file gained, holding no lock
     // (a test holds it there to see that every reader goes on meanwhile).
     std::function<void()> whileFollowing;
+    // Called by the worker once firstEpoch() answers, before it goes on (a test holds it there
+    // to see the first epoch of a .gz log while it is still being inflated).
+    std::function<void()> onFirstEpoch;
 };
 
 class LogView {
@@ -132,6 +135,9 @@ public:
 
 private:
     void run(std::string path);
+    bool indexWhileInflating(const std::string &path, LogIndex &built, std::uint64_t &start,
+                             std::string &failure);
+    void noteFirstEpoch(const EpochRecord &r);
     void finishTimeline(std::size_t changedFrom);
     void warn(std::string text);
     bool anyDecoded(std::string_view data) const;

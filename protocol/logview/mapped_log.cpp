@@ -121,25 +121,7 @@ bool looksGzipped(std::string_view b) {
            static_cast<unsigned char>(b[1]) == 0x8B;
 }
 
-int inflateToTemporary(const std::string &path, std::string &error, const std::atomic<bool> *cancel,
-                       std::atomic<double> *progress) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) {
-        error = path + ": " + errnoText();
-        return -1;
-    }
-    const int in = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (in < 0) {
-        error = path + ": " + errnoText();
-        return -1;
-    }
-    gzFile gz = ::gzdopen(in, "rb");
-    if (!gz) {
-        ::close(in);
-        error = path + ": cannot read as gzip";
-        return -1;
-    }
-    ::gzbuffer(gz, 1 << 20);
+int createTemporaryFile(std::string &error) {
     const char *tmp = std::getenv("TMPDIR");
     std::string dir = tmp && *tmp ? tmp : "/tmp";
     // Unnamed: the inflated copy disappears with the descriptor, whatever happens.
@@ -149,12 +131,32 @@ int inflateToTemporary(const std::string &path, std::string &error, const std::a
         out = ::mkstemp(name.data());
         if (out >= 0) ::unlink(name.c_str());
     }
-    if (out < 0) {
-        error = "cannot create a temporary file in " + dir + ": " + errnoText();
-        ::gzclose(gz);
-        return -1;
+    if (out < 0) error = "cannot create a temporary file in " + dir + ": " + errnoText();
+    return out;
+}
+
+bool inflateInto(const std::string &path, int out, std::string &error,
+                 const std::atomic<bool> *cancel, std::atomic<double> *progress,
+                 const std::function<void(std::uint64_t)> &written) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        error = path + ": " + errnoText();
+        return false;
     }
+    const int in = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (in < 0) {
+        error = path + ": " + errnoText();
+        return false;
+    }
+    gzFile gz = ::gzdopen(in, "rb");
+    if (!gz) {
+        ::close(in);
+        error = path + ": cannot read as gzip";
+        return false;
+    }
+    ::gzbuffer(gz, 1 << 20);
     std::string buf(1 << 20, '\0');
+    std::uint64_t total = 0;
     bool ok = true;
     while (true) {
         if (cancel && cancel->load(std::memory_order_relaxed)) {
@@ -188,12 +190,21 @@ int inflateToTemporary(const std::string &path, std::string &error, const std::a
             done += static_cast<std::size_t>(w);
         }
         if (!ok) break;
+        total += static_cast<std::uint64_t>(n);
         if (progress && st.st_size > 0)
             progress->store(std::min(1.0, static_cast<double>(::gzoffset(gz)) /
                                                   static_cast<double>(st.st_size)));
+        if (written) written(total);
     }
     ::gzclose(gz);
-    if (!ok) {
+    return ok;
+}
+
+int inflateToTemporary(const std::string &path, std::string &error, const std::atomic<bool> *cancel,
+                       std::atomic<double> *progress) {
+    const int out = createTemporaryFile(error);
+    if (out < 0) return -1;
+    if (!inflateInto(path, out, error, cancel, progress)) {
         ::close(out);
         return -1;
     }

@@ -8,6 +8,7 @@
 // of it being cut in the very instant between the check and the read).
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -65,5 +66,15 @@ bool looksGzipped(std::string_view bytes);
 int inflateToTemporary(const std::string &path, std::string &error,
                        const std::atomic<bool> *cancel = nullptr,
                        std::atomic<double> *progress = nullptr);
+
+// The parts of it: an unnamed temporary file (its descriptor, or -1 with `error` set) ...
+int createTemporaryFile(std::string &error);
+// ... and the inflating into `out` (at its current position; not closed). False when cancelled
+// (error empty) or when nothing could be read or written (error set); a stream broken part way
+// is true, with `error` saying so. `written` (when set) hears the bytes written so far after
+// every megabyte, from the calling thread.
+bool inflateInto(const std::string &path, int out, std::string &error,
+                 const std::atomic<bool> *cancel = nullptr, std::atomic<double> *progress = nullptr,
+                 const std::function<void(std::uint64_t)> &written = {});
 
 } // namespace gnss::logview

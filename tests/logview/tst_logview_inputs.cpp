@@ -121,6 +121,76 @@ private slots:
         QVERIFY(view.stateAt(view.epochCount() / 2, s));
     }
 
+    // A .gz log is indexed while it is inflated: the worker, held by the test's hook as soon as
+    // the first epoch is known, is still inflating then (48 MB take far longer to inflate than
+    // the first megabyte); the index is then the same as the plain file's.
+    void gzipLogsAreIndexedWhileInflating() {
+        std::string log;
+        bench::generateLog(log, 48'000'000);
+        const std::string plainPath = path("inflating.nmea");
+        QVERIFY(test::writeFile(plainPath, log));
+        const std::string gzPath = plainPath + ".gz";
+        gzFile gz = gzopen(gzPath.c_str(), "wb1");
+        QVERIFY(gz);
+        for (std::size_t at = 0; at < log.size();) {
+            const unsigned n = unsigned(std::min<std::size_t>(log.size() - at, 1 << 20));
+            QCOMPARE(gzwrite(gz, log.data() + at, n), int(n));
+            at += n;
+        }
+        QCOMPARE(gzclose(gz), Z_OK);
+        std::atomic<bool> held{false}, released{false};
+        auto waitFor = [](const std::atomic<bool> &flag) {
+            const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+            while (!flag && std::chrono::steady_clock::now() < until)
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            return flag.load();
+        };
+        LogViewOptions o;
+        o.onFirstEpoch = [&] {
+            held = true;
+            waitFor(released);
+        };
+        LogView view(registry_, o);
+        view.open(gzPath);
+        const bool wasHeld = waitFor(held);
+        const LogView::Progress p = view.progress();
+        const auto first = view.firstEpoch();
+        const std::uint64_t mapped = view.fileSize();
+        released = true;
+        QVERIFY(wasHeld);
+        QCOMPARE(p.phase, LogView::Phase::Inflating);
+        QVERIFY(first);
+        QCOMPARE(first->offset, std::uint64_t(0));
+        QVERIFY(mapped < log.size());
+        qInfo("first epoch known after %.1f MB of %.1f MB inflated (%.0f %% of the .gz read)",
+              double(mapped) / 1e6, double(log.size()) / 1e6, p.fraction * 100);
+        QVERIFY(view.waitUntilIndexed(120000));
+        QCOMPARE(view.progress().phase, LogView::Phase::Ready);
+        QVERIFY(view.gzipped());
+        QVERIFY(view.warnings().empty());
+        LogView plain(registry_);
+        QVERIFY(test::openAndWait(plain, plainPath));
+        QCOMPARE(view.fileSize(), plain.fileSize());
+        QCOMPARE(view.epochCount(), plain.epochCount());
+        QCOMPARE(view.indexedEnd(), plain.indexedEnd());
+        QCOMPARE(view.events().size(), plain.events().size());
+        QCOMPARE(view.framerStats().sentences, plain.framerStats().sentences);
+        std::mt19937 rng(9);
+        ReceiverState a, b;
+        for (int i = 0; i < 20; ++i) {
+            const std::size_t k = rng() % view.epochCount();
+            QCOMPARE(view.epoch(k)->offset, plain.epoch(k)->offset);
+            QVERIFY(view.stateAt(k, a) && plain.stateAt(k, b));
+            QVERIFY(a == b);
+        }
+        // Cancelled while inflating: it stops.
+        view.open(gzPath);
+        view.cancel();
+        QVERIFY(view.waitUntilIndexed(60000));
+        QVERIFY(view.progress().phase == LogView::Phase::Cancelled ||
+                view.progress().phase == LogView::Phase::Ready);
+    }
+
     void recordingsUseTheirHostTimes() {
         const std::string text = test::scenarioLog({});
         const std::string p = path("rec.nmea");
