@@ -157,6 +157,14 @@ QString LogViewer::statusText() const {
                 .arg(qRound(p.fraction * 100))
                 .arg(double(p.bytesTotal) / 1e6, 0, 'f', 1);
     case Phase::Cancelled:
+        if (view_->epochCount() > 0)
+            return tr("Log %1: indexing cancelled at %2 %: the first %3 epochs are shown (open "
+                      "it again to index it all)")
+                    .arg(name)
+                    .arg(view_->fileSize() ? qRound(100.0 * double(view_->indexedEnd()) /
+                                                    double(view_->fileSize()))
+                                           : 0)
+                    .arg(view_->epochCount());
         return tr("Log %1: indexing cancelled (open it again to index it)").arg(name);
     case Phase::Failed: return tr("Log %1: %2").arg(name, QString::fromStdString(view_->error()));
     case Phase::Ready: break;
@@ -181,7 +189,10 @@ void LogViewer::poll() {
     } else {
         pollTimer_.stop();
         emit progress(-1, statusText());
-        if (p.phase == Phase::Ready && !readyNoted_) {
+        // Cancelled, the epochs indexed before are shown as a log of their own.
+        const bool usable =
+                p.phase == Phase::Ready || (p.phase == Phase::Cancelled && view_->epochCount() > 0);
+        if (usable && !readyNoted_) {
             readyNoted_ = true;
             cursor_.notifyIndexChanged();
             std::optional<std::size_t> start;

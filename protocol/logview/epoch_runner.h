@@ -79,6 +79,8 @@ public:
     void finish();
 
     std::uint64_t emitted() const { return carry_.emitted; }
+    // File offset just past the last byte fed (a line end after a cancelled feed()).
+    std::uint64_t fedEnd() const { return end_; }
     const FramerStats &framerStats() const { return framer_.stats(); }
     const std::vector<AddressStats> &addressStats() const { return decoder_->addressStats(); }
     const Dialect *dialect() const { return decoder_->dialect(); }

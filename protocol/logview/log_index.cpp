@@ -18,6 +18,7 @@ struct PieceRun {
     Checkpoint end;
     FramerStats framer;
     bool done = false;
+    bool partial = false; // cancelled part way, `end` where it stopped (piece 0, keepOnCancel)
 };
 
 Checkpoint freshStart(const DialectRegistry &registry, const DecoderOptions &options,
@@ -130,14 +131,22 @@ bool buildIndex(const char *base, std::string_view whole, const Checkpoint &from
         sinks.onCheckpoint = [&run](Checkpoint &&c) { run.checkpoints.push_back(std::move(c)); };
         EpochRunner runner(registry, options.decoder, base, every, std::move(sinks));
         runner.restore(k == 0 ? from : freshStart(registry, options.decoder, pieceStart));
-        if (!runner.feed(piece, control.cancel, control.bytesDone)) return;
+        if (!runner.feed(piece, control.cancel, control.bytesDone)) {
+            if (k != 0 || !control.keepOnCancel) return;
+            // Stopped at a line end: the state there is a true checkpoint.
+            run.end = runner.save(runner.fedEnd());
+            run.framer = runner.framerStats();
+            run.partial = true;
+            return;
+        }
         run.end = runner.save(pieceStart + piece.size());
         run.framer = runner.framerStats();
         run.done = true;
     };
     runPieces(pieces.size(), threads, decodePiece);
-    for (const PieceRun &r : runs)
-        if (!r.done) return false;
+    bool cut = false; // cancelled: the index ends after the pieces done from the start
+    for (const PieceRun &r : runs) cut |= !r.done;
+    if (cut && !(control.keepOnCancel && (runs[0].done || runs[0].partial))) return false;
 
     // Merge: piece 0 is exact; each later one is checked against the true state at its start.
     out.records.clear();
@@ -154,8 +163,9 @@ bool buildIndex(const char *base, std::string_view whole, const Checkpoint &from
     for (auto &c : runs[0].checkpoints) addCheckpoint(out.checkpoints, std::move(c));
     addFramerStats(out.framer, runs[0].framer);
     Checkpoint truth = std::move(runs[0].end);
-    for (std::size_t k = 1; k < runs.size(); ++k) {
+    for (std::size_t k = 1; k < runs.size() && runs[0].done; ++k) {
         PieceRun &run = runs[k];
+        if (!run.done) break; // cancelled: the index ends where piece k starts
         addFramerStats(out.framer, run.framer);
         const std::uint64_t pieceStart = offsetOf(base, pieces[k].data());
         const std::uint64_t pieceEnd = pieceStart + pieces[k].size();
@@ -198,9 +208,9 @@ bool buildIndex(const char *base, std::string_view whole, const Checkpoint &from
         run = PieceRun(); // memory back as soon as merged
     }
     out.tail = std::move(truth);
-    out.indexedEnd = from.resume + data.size();
-    closeIndex(base, unfinished, registry, options, out);
-    if (control.bytesDone) control.bytesDone->fetch_add(unfinished.size());
+    out.indexedEnd = cut ? out.tail.resume : from.resume + data.size();
+    closeIndex(base, cut ? std::string_view() : unfinished, registry, options, out);
+    if (control.bytesDone && !cut) control.bytesDone->fetch_add(unfinished.size());
     return true;
 }
 

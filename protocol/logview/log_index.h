@@ -50,6 +50,11 @@ struct IndexControl {
     std::atomic<std::uint64_t> *bytesDone = nullptr;
     // Called (on a worker thread) with the log's first epoch as soon as it is decoded.
     std::function<void(const EpochRecord &)> onFirstEpoch;
+    // Cancelled, buildIndex keeps the exact start it indexed (the first pieces, as far as the
+    // first one unfinished, or the first piece up to where it stopped) and returns true: the
+    // index then ends short of the data (openEnd), as a log cut there would, and extendIndex
+    // goes on from it.
+    bool keepOnCancel = false;
 };
 
 // The checkpoint that starts a log at `start` (nothing decoded yet).
@@ -59,7 +64,7 @@ Checkpoint startOfLog(const DialectRegistry &registry, const DecoderOptions &opt
 // Indexes data = [from.resume, from.resume + data.size()) of a mapping whose file offset 0 is
 // `base`, from the state `from` (startOfLog for a whole log). Bytes after the last line end (a
 // line still being written, or cut) are decoded into the last epoch but not into `tail`, so
-// that following the file picks the line up whole. False when cancelled.
+// that following the file picks the line up whole. False when cancelled (see keepOnCancel).
 bool buildIndex(const char *base, std::string_view data, const Checkpoint &from,
                 const DialectRegistry &registry, const IndexOptions &options, LogIndex &out,
                 const IndexControl &control = {});

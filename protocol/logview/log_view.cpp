@@ -82,7 +82,7 @@ bool LogView::anyDecoded(std::string_view data) const {
 // a followed file is), so that the first epoch is known after the first megabyte, and the index
 // is ready soon after the last byte is inflated. False when cancelled or failed (`failure`).
 bool LogView::indexWhileInflating(const std::string &path, LogIndex &built, std::uint64_t &start,
-                                  std::string &failure) {
+                                  bool &cut, std::string &failure) {
     constexpr std::uint64_t kChunk = 8 << 20; // indexed at a time while inflating
     phase_ = static_cast<int>(Phase::Inflating);
     const int fd = createTemporaryFile(failure);
@@ -126,6 +126,7 @@ bool LogView::indexWhileInflating(const std::string &path, LogIndex &built, std:
     });
     IndexControl control;
     control.cancel = &cancel_;
+    control.keepOnCancel = true;
     control.onFirstEpoch = [this](const EpochRecord &r) { noteFirstEpoch(r); };
     bool started = false, cancelled = false;
     while (true) {
@@ -158,6 +159,10 @@ bool LogView::indexWhileInflating(const std::string &path, LogIndex &built, std:
                 break;
             }
             started = true;
+            if (cancel_) { // what was indexed of the first chunk is kept
+                cancelled = true;
+                break;
+            }
         } else if (size > built.indexedEnd) {
             bytesTotal_ = size - start;
             extendIndex(map_.base(), map_.bytes(built.indexedEnd, size - built.indexedEnd),
@@ -169,7 +174,8 @@ bool LogView::indexWhileInflating(const std::string &path, LogIndex &built, std:
         if (last) break;
     }
     inflater.join();
-    if (cancelled) return false;
+    cut = cancelled;
+    if (cancelled) return started; // what was indexed before is an index of a shorter log
     if (!inflateOk) {
         failure = inflateError.empty() ? path + ": cannot inflate" : inflateError;
         return false;
@@ -215,9 +221,10 @@ void LogView::run(std::string path) {
     probe.close();
     LogIndex built;
     std::uint64_t start = 0;
+    bool cut = false; // cancelled: the index ends short of the file
     if (gz) {
         std::string failure;
-        if (!indexWhileInflating(path, built, start, failure)) {
+        if (!indexWhileInflating(path, built, start, cut, failure)) {
             if (failure.empty()) return finish(Phase::Cancelled);
             return fail(failure);
         }
@@ -241,18 +248,24 @@ void LogView::run(std::string path) {
         IndexControl control;
         control.cancel = &cancel_;
         control.bytesDone = &bytesDone_;
+        control.keepOnCancel = true;
         control.onFirstEpoch = [this](const EpochRecord &r) { noteFirstEpoch(r); };
         const std::string_view data = map_.bytes(start, size - start);
         const Checkpoint from = startOfLog(registry_, options_.index.decoder, start);
         if (!buildIndex(map_.base(), data, from, registry_, options_.index, built, control))
             return finish(Phase::Cancelled);
+        cut = built.openEnd < size;
     }
     const std::uint64_t size = map_.size();
     const std::string_view data = map_.bytes(start, size - start);
     {
         std::unique_lock lock(mutex_);
         index_ = std::move(built);
-        if (index_.records.empty()) {
+        if (cut) {
+            warn("indexing cancelled after " + std::to_string(index_.openEnd - start) +
+                 " bytes: the " + std::to_string(index_.records.size()) +
+                 " epochs before are kept");
+        } else if (index_.records.empty()) {
             if (size == 0)
                 warn(path + " is empty");
             else if (index_.framer.sentences == 0 || !anyDecoded(data))
@@ -266,7 +279,7 @@ void LogView::run(std::string path) {
         if (map_.liveSize() < size)
             warn(path + " got shorter while it was read: what was read is kept");
     }
-    finish(Phase::Ready);
+    finish(cut ? Phase::Cancelled : Phase::Ready);
 }
 
 // Timeline flags and events of records[changedFrom, ...), those of the unfinished last line on

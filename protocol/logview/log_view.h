@@ -9,6 +9,8 @@
 //   view.open("drive.nmea");                // returns at once; a worker maps and indexes
 //   // on a timer (10 Hz):
 //   auto p = view.progress();               // phase, fraction, bytes; view.cancel() stops it
+//                                           // (Cancelled: what was indexed from the start is
+//                                           // kept, epochCount() of them, maybe none)
 //   if (auto e = view.firstEpoch()) ...     // the first epoch, long before the index is done
 //   if (p.phase == LogView::Phase::Ready) { // or view.waitUntilIndexed()
 //       view.epochCount(); view.epoch(k);   // EpochRecord: time, fix, position, flags
@@ -100,7 +102,7 @@ public:
     FramerStats framerStats() const;
     std::string dialectName() const; // the decoder's dialect at the end ("" when none)
 
-    // The index (empty until Ready).
+    // The index (empty until Ready, or Cancelled with the epochs indexed before).
     std::size_t epochCount() const;
     std::optional<EpochRecord> epoch(std::size_t k) const;
     void withRecords(const std::function<void(std::span<const EpochRecord>)> &f) const;
@@ -136,7 +138,7 @@ public:
 private:
     void run(std::string path);
     bool indexWhileInflating(const std::string &path, LogIndex &built, std::uint64_t &start,
-                             std::string &failure);
+                             bool &cut, std::string &failure);
     void noteFirstEpoch(const EpochRecord &r);
     void finishTimeline(std::size_t changedFrom);
     void warn(std::string text);

@@ -191,6 +191,57 @@ private slots:
                 view.progress().phase == LogView::Phase::Ready);
     }
 
+    // Cancelled part way (by the test's hook, at the first epoch), the exact start indexed is
+    // kept: the same epochs and states as the whole log's, a plain log and a .gz one.
+    void cancelKeepsWhatWasIndexed_data() {
+        QTest::addColumn<bool>("gzipped");
+        QTest::newRow("plain") << false;
+        QTest::newRow(".gz") << true;
+    }
+    void cancelKeepsWhatWasIndexed() {
+        QFETCH(bool, gzipped);
+        std::string log;
+        bench::generateLog(log, 48'000'000);
+        std::string p = path("cancelled.nmea");
+        QVERIFY(test::writeFile(p, log));
+        LogView whole(registry_);
+        QVERIFY(test::openAndWait(whole, p));
+        if (gzipped) {
+            p += ".gz";
+            gzFile gz = gzopen(p.c_str(), "wb1");
+            QVERIFY(gz);
+            for (std::size_t at = 0; at < log.size();) {
+                const unsigned n = unsigned(std::min<std::size_t>(log.size() - at, 1 << 20));
+                QCOMPARE(gzwrite(gz, log.data() + at, n), int(n));
+                at += n;
+            }
+            QCOMPARE(gzclose(gz), Z_OK);
+        }
+        LogView *self = nullptr;
+        LogViewOptions o;
+        o.onFirstEpoch = [&self] { self->cancel(); };
+        LogView view(registry_, o);
+        self = &view;
+        view.open(p);
+        QVERIFY(view.waitUntilIndexed(120000));
+        QCOMPARE(view.progress().phase, LogView::Phase::Cancelled);
+        const std::size_t kept = view.epochCount();
+        QVERIFY2(kept > 100 && kept < whole.epochCount() / 2, qPrintable(QString::number(kept)));
+        QVERIFY(!view.warnings().empty());
+        QVERIFY(QString::fromStdString(view.warnings().back()).contains("indexing cancelled"));
+        QVERIFY(view.indexedEnd() < log.size() / 2);
+        std::mt19937 rng(11);
+        ReceiverState a, b;
+        for (int i = 0; i < 20; ++i) {
+            const std::size_t k = i == 0 ? kept - 2 : rng() % (kept - 1); // the last one is open
+            QCOMPARE(view.epoch(k)->offset, whole.epoch(k)->offset);
+            QCOMPARE(view.epoch(k)->utcMs, whole.epoch(k)->utcMs);
+            QVERIFY(view.stateAt(k, a) && whole.stateAt(k, b));
+            QVERIFY(a == b);
+        }
+        QCOMPARE(view.epoch(0)->offset, std::uint64_t(0));
+    }
+
     void recordingsUseTheirHostTimes() {
         const std::string text = test::scenarioLog({});
         const std::string p = path("rec.nmea");

@@ -497,34 +497,48 @@ private slots:
     }
 
     // A big log being indexed can be cancelled from the timeline (its button, or Esc there): the
-    // status bar and the strip say so, and the window goes on working (another log opens).
+    // status bar and the strip say so, what was indexed from the start stays on screen, and the
+    // window goes on working (another log opens). Cancelled at once, little or nothing is kept;
+    // cancelled with the worker held at the first epoch (the test's hook), its first 4 MB are.
     void indexingCanBeCancelled_data() {
         QTest::addColumn<bool>("byKey");
-        QTest::newRow("the Cancel button") << false;
-        QTest::newRow("Esc in the timeline") << true;
+        QTest::addColumn<bool>("afterFirstEpoch");
+        QTest::newRow("the Cancel button, at once") << false << false;
+        QTest::newRow("Esc in the timeline, at once") << true << false;
+        QTest::newRow("the Cancel button, after the first epoch") << false << true;
     }
     void indexingCanBeCancelled() {
         QFETCH(bool, byKey);
+        QFETCH(bool, afterFirstEpoch);
         const QString path = dir_.filePath("big.nmea");
         if (!QFile::exists(path)) {
             std::string log;
             bench::generateLog(log, std::size_t(128) << 20);
             QVERIFY(test::writeFile(path.toStdString(), log));
         }
+        std::atomic<bool> held{false}, clicked{false};
+        logview::LogViewOptions o;
+        if (afterFirstEpoch)
+            o.onFirstEpoch = [&] {
+                held = true;
+                QDeadlineTimer until(60000);
+                while (!clicked && !until.hasExpired())
+                    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            };
         auto s = settings();
         auto w = window(s.get());
+        w->logViewer()->setViewOptions(o);
         auto *panel = w->findChild<ui::TimelinePanel *>("timelinePanel");
         auto *button = panel->findChild<QToolButton *>("logCancelButton");
         QVERIFY(button && !button->isVisible());
         w->activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(w.get()));
-        QElapsedTimer took;
-        took.start();
         w->openLog(path);
-        // Cancelled at once (the 128 MB take far longer to index than this): deterministic.
+        // Cancelled at once (the 128 MB take far longer to index than this), or once held.
         QCOMPARE(w->logViewer()->indexing(), true);
         QVERIFY(button->isVisible());
         QVERIFY(panel->cancelAction()->isEnabled());
+        if (afterFirstEpoch) QTRY_VERIFY_WITH_TIMEOUT(held.load(), 20000);
         if (byKey) {
             auto *strip = panel->strip();
             strip->setFocus();
@@ -533,18 +547,34 @@ private slots:
         } else {
             QTest::mouseClick(button, Qt::LeftButton);
         }
+        clicked = true;
         QTRY_COMPARE_WITH_TIMEOUT(w->logViewer()->view()->progress().phase,
                                   logview::LogView::Phase::Cancelled, 20000);
-        qInfo("cancelled %lld ms after the open", took.elapsed());
         auto *status = w->findChild<QLabel *>("connectionState");
         QTRY_VERIFY_WITH_TIMEOUT(status->text().contains("indexing cancelled"), 20000);
         QVERIFY2(status->text().startsWith("Log big.nmea: "), qPrintable(status->text()));
         QVERIFY(!w->logViewer()->indexing() && !w->logViewer()->failed());
         QVERIFY(!button->isVisible());
         QVERIFY(!panel->cancelAction()->isEnabled());
-        QVERIFY(w->logViewer()->cursor()->empty());
-        QVERIFY(!w->findChild<QAction *>("logStepForward")->isEnabled());
-        QVERIFY(!w->findChild<QAction *>("exportLogAction")->isEnabled());
+        ui::LogCursor *cursor = w->logViewer()->cursor();
+        const std::size_t kept = w->logViewer()->view()->epochCount();
+        if (afterFirstEpoch) QVERIFY(kept > 100);
+        if (kept == 0) {
+            QVERIFY(cursor->empty());
+            QVERIFY(!w->findChild<QAction *>("logStepForward")->isEnabled());
+            QVERIFY(!w->findChild<QAction *>("exportLogAction")->isEnabled());
+        } else {
+            // What was indexed is a log of its own: shown, seekable, exportable.
+            QTRY_VERIFY(w->logViewer()->ready());
+            QVERIFY2(status->text().contains(QString("the first %1 epochs").arg(kept)),
+                     qPrintable(status->text()));
+            QCOMPARE(cursor->epochCount(), kept);
+            QVERIFY(w->findChild<QAction *>("exportLogAction")->isEnabled());
+            expectStateAt(*w, 0);
+            cursor->seek(kept / 2, true);
+            expectStateAt(*w, kept / 2);
+        }
+        qInfo("%zu epochs kept", kept);
         // Esc again does nothing; the window goes on: another log opens and the docks follow.
         QTest::keyClick(panel->strip(), Qt::Key_Escape);
         QVERIFY(openScenario(*w, scenario_));
