@@ -44,6 +44,7 @@
 #include <chrono>
 #include <random>
 #include <thread>
+#include <zlib.h>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -494,6 +495,43 @@ private slots:
         QCOMPARE(cursor->current(), cursor->epochCount() - 1);
         expectStateAt(*w, cursor->current());
         QVERIFY(w->findChild<QLabel *>("connectionState")->text().contains("following"));
+    }
+
+    // A .gz log: its first epoch is on screen while it is still being unpacked (the worker held
+    // there by the test's hook: until it goes on, the log is unpacking), then it is indexed.
+    void aGzipLogShowsItsFirstEpochWhileUnpacking() {
+        std::string log;
+        bench::generateLog(log, std::size_t(16) << 20);
+        const QString path = dir_.filePath("drive.nmea.gz");
+        gzFile gz = gzopen(path.toLocal8Bit().constData(), "wb1");
+        QVERIFY(gz);
+        QCOMPARE(gzwrite(gz, log.data(), unsigned(log.size())), int(log.size()));
+        QCOMPARE(gzclose(gz), Z_OK);
+        std::atomic<bool> held{false}, released{false};
+        logview::LogViewOptions o;
+        o.onFirstEpoch = [&] {
+            held = true;
+            QDeadlineTimer until(60000);
+            while (!released && !until.hasExpired())
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        };
+        auto s = settings();
+        auto w = window(s.get());
+        w->logViewer()->setViewOptions(o);
+        w->openLog(path);
+        QTRY_VERIFY_WITH_TIMEOUT(held.load(), 20000);
+        const auto first = w->logViewer()->view()->firstEpoch();
+        QVERIFY(first && first->hasPosition());
+        QTRY_COMPARE_WITH_TIMEOUT(w->stateModel()->state().epoch.lat, first->lat, 20000);
+        QCOMPARE(w->stateModel()->state().epoch.lon, first->lon);
+        auto *status = w->findChild<QLabel *>("connectionState");
+        QVERIFY2(status->text().startsWith("Log drive.nmea.gz: unpacking"),
+                 qPrintable(status->text()));
+        QCOMPARE(w->logViewer()->view()->progress().phase, logview::LogView::Phase::Inflating);
+        released = true;
+        QTRY_VERIFY_WITH_TIMEOUT(w->logViewer()->ready(), 60000);
+        QVERIFY(w->logViewer()->cursor()->epochCount() > 1000);
+        expectStateAt(*w, 0);
     }
 
     // A big log being indexed can be cancelled from the timeline (its button, or Esc there): the
