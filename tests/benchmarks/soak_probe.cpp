@@ -11,12 +11,13 @@
 namespace gnss::soak {
 namespace {
 
-double vmRssMb(const QString &statusPath) {
+// A "kB" field of /proc/PID/status in MB; -1 when there is none.
+double statusMb(const QString &statusPath, const QByteArray &field) {
     QFile f(statusPath);
     if (!f.open(QIODevice::ReadOnly)) return -1;
     for (const QByteArray &line : f.readAll().split('\n'))
-        if (line.startsWith("VmRSS:"))
-            return line.mid(6).trimmed().split(' ').front().toDouble() / 1024.0;
+        if (line.startsWith(field))
+            return line.mid(field.size()).trimmed().split(' ').front().toDouble() / 1024.0;
     return -1;
 }
 
@@ -24,7 +25,8 @@ double vmRssMb(const QString &statusPath) {
 
 ProcessSample sampleSelf() {
     ProcessSample p;
-    p.rssMb = vmRssMb(QStringLiteral("/proc/self/status"));
+    p.rssMb = statusMb(QStringLiteral("/proc/self/status"), "VmRSS:");
+    p.anonMb = statusMb(QStringLiteral("/proc/self/status"), "RssAnon:");
     const struct mallinfo2 m = mallinfo2();
     p.heapMb = double(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
     rusage u{};
@@ -36,7 +38,8 @@ ProcessSample sampleSelf() {
 
 ProcessSample samplePid(long long pid) {
     ProcessSample p;
-    p.rssMb = vmRssMb(QStringLiteral("/proc/%1/status").arg(pid));
+    p.rssMb = statusMb(QStringLiteral("/proc/%1/status").arg(pid), "VmRSS:");
+    p.anonMb = statusMb(QStringLiteral("/proc/%1/status").arg(pid), "RssAnon:");
     QFile f(QStringLiteral("/proc/%1/stat").arg(pid));
     if (f.open(QIODevice::ReadOnly)) {
         const QByteArray stat = f.readAll();
@@ -51,7 +54,8 @@ ProcessSample samplePid(long long pid) {
 }
 
 void SoakTable::header(const std::vector<ListSize> &lists) {
-    std::printf("%8s %8s %8s %8s %8s", "sim_h", "real_s", "rss_MB", "heap_MB", "cpu_s");
+    std::printf("%8s %8s %8s %8s %8s %8s", "sim_h", "real_s", "rss_MB", "anon_MB", "heap_MB",
+                "cpu_s");
     for (const ListSize &l : lists) std::printf(" %s", qPrintable(l.name));
     std::printf("\n");
     std::fflush(stdout);
@@ -59,8 +63,8 @@ void SoakTable::header(const std::vector<ListSize> &lists) {
 
 void SoakTable::row(double simHours, double realSeconds, const ProcessSample &p,
                     const std::vector<ListSize> &lists) {
-    std::printf("%8.2f %8.1f %8.1f %8.1f %8.1f", simHours, realSeconds, p.rssMb, p.heapMb,
-                p.cpuSeconds);
+    std::printf("%8.2f %8.1f %8.1f %8.1f %8.1f %8.1f", simHours, realSeconds, p.rssMb, p.anonMb,
+                p.heapMb, p.cpuSeconds);
     for (const ListSize &l : lists) std::printf(" %lld", l.size);
     std::printf("\n");
     std::fflush(stdout);
@@ -79,6 +83,9 @@ bool SoakTable::verdict(const ProcessSample &last, double limitMb) {
         std::printf("RSS growth after warm-up: %+.1f MB (%.1f -> %.1f), limit %.0f MB: %s\n", rss,
                     warm_.rssMb, last.rssMb, limitMb, rssOk ? "PASS" : "FAIL");
         ok = ok && rssOk;
+        std::printf("  of which anonymous (RssAnon, not libraries' pages): %+.1f MB (%.1f -> "
+                    "%.1f)\n",
+                    last.anonMb - warm_.anonMb, warm_.anonMb, last.anonMb);
         if (last.heapMb >= 0 && warm_.heapMb >= 0) {
             const double heap = last.heapMb - warm_.heapMb;
             const bool heapOk = heap < limitMb;

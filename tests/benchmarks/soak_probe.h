@@ -1,5 +1,6 @@
 #pragma once
-// What the soak program measures of a process: resident memory (VmRSS of /proc/PID/status),
+// What the soak program measures of a process: resident memory (VmRSS of /proc/PID/status, and
+// its anonymous part RssAnon: the libraries' code pages fault in as code first runs),
 // heap in use (mallinfo2, this process only) and CPU seconds (user + system), and the table it
 // prints: one row per sample with the size of every bounded list, then growth and PASS/FAIL.
 #include <QString>
@@ -11,6 +12,7 @@ namespace gnss::soak {
 
 struct ProcessSample {
     double rssMb = -1;  // VmRSS
+    double anonMb = -1; // RssAnon: VmRSS without the pages of mapped files (libraries' code)
     double heapMb = -1; // mallinfo2().uordblks (+ hblkhd, mmapped blocks); -1 for another process
     double cpuSeconds = -1;
 };
