@@ -4130,19 +4130,30 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::LogViewer</name>
     <message>
-        <location filename="../app/gui/log_viewer.cpp" line="+135"/>
+        <location filename="../app/gui/log_viewer.cpp" line="+152"/>
         <source>Log %1: unpacking, %2 %</source>
         <translation>Журнал %1: распаковка, %2 %</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Log %1: indexing, %2 % of %3 MB</source>
         <translation>Журнал %1: индексация, %2 % из %3 МБ</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Log %1: indexing cancelled</source>
-        <translation>Журнал %1: индексация отменена</translation>
+        <location line="-4"/>
+        <location line="+3"/>
+        <source>Log %1: cancelling…</source>
+        <translation>Журнал %1: отмена…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Log %1: indexing cancelled at %2 %: the first %3 epochs are shown (open it again to index it all)</source>
+        <translation>Журнал %1: индексация отменена на %2 %: показаны первые эпохи (%3) (откройте его снова, чтобы проиндексировать целиком)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Log %1: indexing cancelled (open it again to index it)</source>
+        <translation>Журнал %1: индексация отменена (откройте его снова, чтобы проиндексировать)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4171,12 +4182,12 @@ Serial number: %3</source>
         <translation> · слежение за файлом</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+93"/>
         <source>not a sentence</source>
         <translation>не сообщение NMEA</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+126"/>
         <source>no log is open, or it is still being indexed</source>
         <translation>журнал не открыт или ещё индексируется</translation>
     </message>
@@ -4200,7 +4211,7 @@ Serial number: %3</source>
     <name>gnss::app::MainWindow</name>
     <message>
         <location filename="../app/gui/main_window.cpp" line="+58"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+200"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+202"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
@@ -4210,7 +4221,7 @@ Serial number: %3</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-159"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-161"/>
         <source>Timeline</source>
         <translation>Шкала времени</translation>
     </message>
@@ -4220,7 +4231,7 @@ Serial number: %3</source>
         <translation>Шкала времени журнала</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>Events</source>
         <translation>События</translation>
     </message>
@@ -4903,12 +4914,12 @@ Serial number: %3</source>
         <translation>подключение сменилось во время операции</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+47"/>
         <source>%1 cannot take commands</source>
         <translation>%1 не принимает команды</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+37"/>
         <source>Read back after the link returned</source>
         <translation>Чтение после восстановления связи</translation>
     </message>
@@ -4939,7 +4950,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+70"/>
+        <location line="+71"/>
         <source>unknown setting &apos;%1&apos; of the %2 dialect</source>
         <translation>неизвестная настройка «%1» диалекта %2</translation>
     </message>
@@ -4969,13 +4980,13 @@ Serial number: %3</source>
         <translation>у приёмника %1 нет команды «%2»</translation>
     </message>
     <message>
-        <location line="-270"/>
-        <location line="+383"/>
+        <location line="-271"/>
+        <location line="+385"/>
         <source>could not read back: %1</source>
         <translation>не удалось прочитать обратно: %1</translation>
     </message>
     <message>
-        <location line="+178"/>
+        <location line="+190"/>
         <source>Apply profile</source>
         <translation>Применение профиля</translation>
     </message>
@@ -7779,12 +7790,12 @@ elevation %3°, azimuth %4°</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+108"/>
+        <location line="+123"/>
         <source>Play</source>
         <translation>Воспроизвести</translation>
     </message>
     <message>
-        <location line="-104"/>
+        <location line="-119"/>
         <source>Step forward one epoch</source>
         <translation>На эпоху вперёд</translation>
     </message>
@@ -7864,7 +7875,18 @@ elevation %3°, azimuth %4°</source>
         <translation>Дочитывать журнал, который ещё пишется; курсор остаётся в его конце</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+5"/>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+125"/>
+        <source>Stop indexing this log (Esc)</source>
+        <translation>Остановить индексацию журнала (Esc)</translation>
+    </message>
+    <message>
+        <location line="-101"/>
         <source>Click or drag to move; Shift+drag selects a range</source>
         <translation>Щелчок или перетаскивание — переход; Shift+перетаскивание — выбор интервала</translation>
     </message>
@@ -7899,7 +7921,12 @@ elevation %3°, azimuth %4°</source>
         <translation>в журнале нет эпохи в %1 или позже</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+12"/>
+        <source>Stop indexing: %1 (Esc)</source>
+        <translation>Остановить индексацию: %1 (Esc)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>#%1 / %2</source>
         <translation>№%1 / %2</translation>
     </message>
