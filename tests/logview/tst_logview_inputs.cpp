@@ -139,20 +139,14 @@ private slots:
         }
         QCOMPARE(gzclose(gz), Z_OK);
         std::atomic<bool> held{false}, released{false};
-        auto waitFor = [](const std::atomic<bool> &flag) {
-            const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-            while (!flag && std::chrono::steady_clock::now() < until)
-                std::this_thread::sleep_for(std::chrono::milliseconds(1));
-            return flag.load();
-        };
         LogViewOptions o;
         o.onFirstEpoch = [&] {
             held = true;
-            waitFor(released);
+            test::waitForFlag(released);
         };
         LogView view(registry_, o);
         view.open(gzPath);
-        const bool wasHeld = waitFor(held);
+        const bool wasHeld = test::waitForFlag(held);
         const LogView::Progress p = view.progress();
         const auto first = view.firstEpoch();
         const std::uint64_t mapped = view.fileSize();
@@ -347,16 +341,10 @@ private slots:
         const std::string p = path("follow-big.nmea");
         QVERIFY(test::writeFile(p, std::string_view(log).substr(0, cut)));
         std::atomic<bool> inside{false}, readersDone{false}, readersSeen{false};
-        auto waitFor = [](const std::atomic<bool> &flag) {
-            const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-            while (!flag && std::chrono::steady_clock::now() < until)
-                std::this_thread::sleep_for(std::chrono::milliseconds(1));
-            return flag.load();
-        };
         LogViewOptions o;
         o.whileFollowing = [&] {
             inside = true;
-            readersSeen = waitFor(readersDone);
+            readersSeen = test::waitForFlag(readersDone);
         };
         LogView view(registry_, o);
         QVERIFY(test::openAndWait(view, p));
@@ -370,7 +358,7 @@ private slots:
         }
         LogView::FollowResult r;
         std::thread follower([&] { r = view.follow(); });
-        const bool entered = waitFor(inside);
+        const bool entered = test::waitForFlag(inside);
         // Every reader answers, from the index as it was, while the growth is decoded.
         const std::size_t during = view.epochCount();
         ReceiverState s;
