@@ -366,7 +366,7 @@
         <translation>в PNVGRTK не назван ни один параметр</translation>
     </message>
     <message>
-        <location filename="../protocol/nvs/nvs_settings.cpp" line="+42"/>
+        <location filename="../protocol/nvs/nvs_settings.cpp" line="+43"/>
         <source>%1: &apos;%2&apos; is not ADDRESS:RATE (rate in PVT intervals, &gt;= 1)</source>
         <translation>%1: «%2» не в виде АДРЕС:ТЕМП (темп в интервалах PVT, &gt;= 1)</translation>
     </message>
@@ -377,6 +377,11 @@
     </message>
     <message>
         <location line="+7"/>
+        <source>idl.stations: station %1 is listed twice</source>
+        <translation>idl.stations: станция %1 указана дважды</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>idl.stations: %1 stations is out of range; accepted: 0..32 stations</source>
         <translation>idl.stations: число станций %1 вне допустимого диапазона; допустимо: 0..32</translation>
     </message>

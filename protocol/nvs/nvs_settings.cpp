@@ -6,6 +6,7 @@
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 
@@ -66,6 +67,11 @@ Refusal parseStations(std::string_view v, std::vector<Station> &out) {
                            {std::string(item)});
         Station s{static_cast<int>(id), std::nullopt};
         if (colon != std::string_view::npos) s.icb = icb;
+        // The receiver keeps a station once: a second ADD of it is no second entry, and the list
+        // read back would not be the one sent.
+        if (std::any_of(out.begin(), out.end(), [&](const Station &o) { return o.id == s.id; }))
+            return refusal(QT_TRANSLATE_NOOP("Refusal", "idl.stations: station %1 is listed twice"),
+                           {std::to_string(s.id)});
         out.push_back(s);
     }
     if (out.size() > kMaxStations)

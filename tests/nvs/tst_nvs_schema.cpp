@@ -194,6 +194,9 @@ void TstNvsSchema::encodeSettingsRefusesBeforeBuilding_data() {
     textRow("output rate 0", {"output.COM1", "RMC:0", ">= 1"});
     textRow("station bad", {"idl.stations", "abc", "idl.stations"});
     textRow("station id", {"idl.stations", "5000:0.1", "0..4095"});
+    // The receiver keeps each station once (found by fuzz_settings_roundtrip: 40 twice was sent
+    // and read back once).
+    textRow("station twice", {"idl.stations", "85;40;84;40:0.1", "station 40 is listed twice"});
     textRow("PPS delay", {"pps.cable_delay", "10000", "0..9999"});
     // A number of 5,000 digits is a mistake, and would make a sentence no receiver reads.
     textRow("5000 digits", {"rtk.ICBGLO", "0." + QString(5000, '3'), "at most 32"});
