@@ -35,16 +35,53 @@ private:
     bool ok_ = true;
 };
 
+// The length of the UTF-8 sequence at the start of `s` when it is a character XML 1.0 allows
+// (well formed, no surrogate, not U+FFFE or U+FFFF), else 0.
+std::size_t xmlCharLength(std::string_view s) {
+    const auto b = [&](std::size_t i) { return static_cast<unsigned char>(s[i]); };
+    const unsigned char c = b(0);
+    std::size_t n = 0;
+    unsigned char lo = 0x80, hi = 0xBF; // the second byte's range
+    if (c < 0x80) return c >= 0x20 || c == '\t' || c == '\n' || c == '\r' ? 1 : 0;
+    if (c >= 0xC2 && c <= 0xDF)
+        n = 2;
+    else if (c >= 0xE0 && c <= 0xEF) {
+        n = 3;
+        if (c == 0xE0) lo = 0xA0;
+        if (c == 0xED) hi = 0x9F; // no surrogates
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        n = 4;
+        if (c == 0xF0) lo = 0x90;
+        if (c == 0xF4) hi = 0x8F;
+    } else
+        return 0;
+    if (s.size() < n || b(1) < lo || b(1) > hi) return 0;
+    for (std::size_t i = 2; i < n; ++i)
+        if (b(i) < 0x80 || b(i) > 0xBF) return 0;
+    if (n == 3 && c == 0xEF && b(1) == 0xBF && b(2) >= 0xBE) return 0; // U+FFFE, U+FFFF
+    return n;
+}
+
+// Text for an XML element: markup escaped, and what XML cannot hold (control bytes, bytes that
+// are no UTF-8: a file name may be anything) replaced by U+FFFD, so the document stays well
+// formed whatever the log is called.
 std::string xmlEscape(std::string_view s) {
     std::string out;
-    for (char c : s) {
-        switch (c) {
+    for (std::size_t i = 0; i < s.size();) {
+        const std::size_t n = xmlCharLength(s.substr(i));
+        if (n == 0) {
+            out += "\xEF\xBF\xBD";
+            ++i;
+            continue;
+        }
+        switch (s[i]) {
         case '&': out += "&amp;"; break;
         case '<': out += "&lt;"; break;
         case '>': out += "&gt;"; break;
         case '"': out += "&quot;"; break;
-        default: out += c;
+        default: out.append(s.substr(i, n));
         }
+        i += n;
     }
     return out;
 }

@@ -9,6 +9,7 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
+#include <QXmlStreamReader>
 
 #include <optional>
 
@@ -91,6 +92,42 @@ private slots:
                              std::abs(points[i].second - expected[i].second) < 1e-7,
                      qPrintable(QString("point %1").arg(i)));
         }
+    }
+
+    // A log may be called anything: markup, control bytes, bytes that are no UTF-8. The GPX and
+    // KML stay well formed, the name's markup and its good characters kept as they were.
+    void anyNameGivesWellFormedXml_data() {
+        QTest::addColumn<int>("format");
+        QTest::newRow("gpx") << int(ExportFormat::Gpx);
+        QTest::newRow("kml") << int(ExportFormat::Kml);
+    }
+    void anyNameGivesWellFormedXml() {
+        QFETCH(int, format);
+        const std::string p = dir_.filePath("named.nmea").toStdString();
+        QVERIFY(test::writeFile(p, test::scenarioLog({})));
+        LogView view(registry_);
+        QVERIFY(test::openAndWait(view, p));
+        const std::string name = "a\x01"
+                                 "b\x1b[31m\xff\xfe<&>\"\xc3\xa9\xed\xa0\x80\xef\xbf\xbe z";
+        std::string out;
+        QVERIFY(view.exportRange(
+                ExportFormat(format), 0, 10,
+                [&](std::string_view b) {
+                    out += b;
+                    return true;
+                },
+                name));
+        QXmlStreamReader x(QByteArray::fromStdString(out));
+        QString shown;
+        while (!x.atEnd()) {
+            x.readNext();
+            if (x.isStartElement() && x.name() == QLatin1String("name") && shown.isEmpty())
+                shown = x.readElementText();
+        }
+        QVERIFY2(!x.hasError(), qPrintable(x.errorString()));
+        const QChar r(0xFFFD);
+        QCOMPARE(shown, QString("a") + r + "b" + r + "[31m" + r + r + "<&>\"" + QChar(0xE9) + r +
+                                r + r + r + r + r + " z");
     }
 
     void csvHasARowPerEpoch() {
