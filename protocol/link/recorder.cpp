@@ -97,13 +97,14 @@ void Recorder::sent(const QByteArray &bytes) {
 
 void Recorder::gap(const QString &text) {
     if (!index_.isOpen()) return;
-    QByteArray t = text.toUtf8();
-    t.replace('\n', ' ').replace('\r', ' ');
     writeIndex(QByteArray("G ") + QByteArray::number(clock_()) + ' ' + QByteArray::number(offset_) +
-               ' ' + t);
+               ' ' + text.toUtf8());
 }
 
-void Recorder::writeIndex(const QByteArray &line) {
+void Recorder::writeIndex(QByteArray line) {
+    // One line whatever a text in it holds (a gap's reason, the source the user typed): a line
+    // break would make the rest of it an index line of its own.
+    line.replace('\n', ' ').replace('\r', ' ');
     if (index_.write(line + '\n') != line.size() + 1 || !index_.flush()) writeFailed(index_);
 }
 

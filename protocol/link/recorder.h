@@ -43,7 +43,7 @@ signals:
     void errorOccurred(const QString &message);
 
 private:
-    void writeIndex(const QByteArray &line);
+    void writeIndex(QByteArray line); // one line: breaks inside become spaces
     void writeFailed(QFile &f);
 
     Clock clock_;

@@ -115,6 +115,29 @@ private slots:
         QCOMPARE(r.chunks[1].offset, 7);
     }
 
+    // The source's description goes into the index's "# started" line: one that holds line
+    // breaks (a host the user typed, say) stays one comment line, not index records.
+    void aSourceWithLineBreaksStaysOneIndexLine() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("s.nmea");
+        qint64 now = 1000;
+        {
+            Recorder rec(nullptr, [&] { return now; });
+            QVERIFY(rec.open(path, QStringLiteral("host\nR 1000 0 999\r\nG 1 0 x")));
+            rec.received("$A*41\r\n");
+        }
+        const QList<QByteArray> lines = readAll(path + ".idx").split('\n');
+        QCOMPARE(lines.size(), 4); // the title, "# started ...", the one chunk, nothing after it
+        QVERIFY2(lines[1].startsWith("# started ") && lines[1].contains("host R 1000 0 999"),
+                 lines[1].constData());
+        Recording r;
+        QString error;
+        QVERIFY2(loadRecording(path, r, error), qPrintable(error));
+        QCOMPARE(r.bytes, QByteArray("$A*41\r\n"));
+        QCOMPARE(r.chunks.size(), std::size_t(1));
+        QVERIFY(r.events.empty()); // no gap read out of the source's text
+    }
+
     void bytesPastTheIndexAndATornLastLineAreKept() {
         QTemporaryDir dir;
         const QString path = writeRecording(dir, "torn.nmea", "$A*41\r\n$B*42\r\n",
