@@ -1,6 +1,7 @@
 #include "soak_sky.h"
 
 #include "core/sentence_builder.h"
+#include "core/wgs84.h"
 
 #include <QDate>
 
@@ -20,7 +21,7 @@ struct System {
 // 32 + 24 + 30 + 40 = kPoolSize satellites; about half are above the horizon at any time.
 constexpr System kSystems[] = {
         {"GP", 1, 32, 1, 1}, {"GL", 2, 24, 65, 1}, {"GA", 3, 30, 1, 7}, {"GB", 4, 40, 1, 1}};
-constexpr double kPi = 3.14159265358979323846;
+using wgs84::kPi;
 constexpr double kStartSecondOfDay = 10 * 3600.0; // as sim::Receiver::kStartSecondOfDay
 
 struct InView {
