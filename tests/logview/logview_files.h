@@ -10,6 +10,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <optional>
+#include <random>
 #include <string>
 #include <thread>
 
@@ -35,6 +37,33 @@ inline bool waitForFlag(const std::atomic<bool> &flag) {
     while (!flag && std::chrono::steady_clock::now() < until)
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
     return flag.load();
+}
+
+// Twenty epochs of `view` (the first `first`, then picked by `seed` below `end`) against the same
+// epochs of `reference`: offsets, UTC and the receiver state rebuilt there. QCOMPARE inside: the
+// caller returns when QTest::currentTestFailed().
+inline void compareEpochs(const logview::LogView &view, const logview::LogView &reference,
+                          unsigned seed, std::size_t end, std::optional<std::size_t> first = {}) {
+    std::mt19937 rng(seed);
+    ReceiverState a, b;
+    for (int i = 0; i < 20; ++i) {
+        const std::size_t k = i == 0 && first ? *first : rng() % end;
+        QCOMPARE(view.epoch(k)->offset, reference.epoch(k)->offset);
+        QCOMPARE(view.epoch(k)->utcMs, reference.epoch(k)->utcMs);
+        QVERIFY(view.stateAt(k, a) && reference.stateAt(k, b));
+        QVERIFY(a == b);
+    }
+}
+
+// The whole index of `view` against `reference`'s: epochs, indexed bytes, events, sentences, and
+// twenty epochs compared as above.
+inline void compareIndexes(const logview::LogView &view, const logview::LogView &reference,
+                           unsigned seed) {
+    QCOMPARE(view.epochCount(), reference.epochCount());
+    QCOMPARE(view.indexedEnd(), reference.indexedEnd());
+    QCOMPARE(view.events().size(), reference.events().size());
+    QCOMPARE(view.framerStats().sentences, reference.framerStats().sentences);
+    compareEpochs(view, reference, seed, view.epochCount());
 }
 
 } // namespace gnss::test
