@@ -24,8 +24,10 @@ void LogView::open(const std::string &path) {
     cancel();
     if (worker_.joinable()) worker_.join();
     std::lock_guard following(followMutex_);
+    std::lock_guard counting(linesMutex_);
     {
         std::unique_lock lock(mutex_);
+        lines_ = LineTable();
         map_.close();
         host_ = HostTimes();
         path_ = path;
@@ -450,6 +452,52 @@ std::optional<std::size_t> LogView::previousEvent(std::size_t k) const {
                                [](const LogEvent &e, std::uint64_t v) { return e.epoch < v; });
     if (it == events_.begin()) return std::nullopt;
     return static_cast<std::size_t>(std::prev(it)->epoch);
+}
+
+std::string_view LogView::liveData() const {
+    return map_.isOpen() ? map_.bytes(0, std::min(map_.size(), liveEnd())) : std::string_view{};
+}
+
+std::uint64_t LogView::indexLines(const std::atomic<bool> *cancel) {
+    std::lock_guard one(linesMutex_);
+    LineTable table;
+    {
+        // The shared lock keeps the mapping while it is read; the count goes on a copy, swapped
+        // in below, so readers see the table before or after, never half of it.
+        std::shared_lock lock(mutex_);
+        table = lines_;
+        if (!table.extend(liveData(), cancel)) return lines_.lineCount();
+    }
+    std::unique_lock lock(mutex_);
+    lines_ = std::move(table);
+    return lines_.lineCount();
+}
+
+std::uint64_t LogView::lineCount() const {
+    std::shared_lock lock(mutex_);
+    return lines_.lineCount();
+}
+
+std::optional<LineRef> LogView::line(std::uint64_t k) const {
+    std::shared_lock lock(mutex_);
+    const std::string_view data = liveData();
+    if (lines_.scanned() > data.size()) return std::nullopt; // truncated since it was counted
+    return lines_.line(data, k);
+}
+
+std::uint64_t LogView::lineAt(std::uint64_t offset) const {
+    std::shared_lock lock(mutex_);
+    const std::string_view data = liveData();
+    if (lines_.scanned() > data.size()) return 0;
+    return lines_.lineAt(data, offset);
+}
+
+bool LogView::findLines(const std::function<bool(std::string_view)> &keep, std::size_t limit,
+                        LineTable::Matches &m, const std::atomic<bool> *cancel) const {
+    std::shared_lock lock(mutex_);
+    const std::string_view data = liveData();
+    if (lines_.scanned() > data.size()) return false;
+    return lines_.findLines(data, keep, limit, m, cancel);
 }
 
 std::vector<LogView::LineRef> LogView::linesAround(std::uint64_t offset, std::size_t before,
