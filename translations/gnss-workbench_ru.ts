@@ -4135,7 +4135,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::LogViewer</name>
     <message>
-        <location filename="../app/gui/log_viewer.cpp" line="+152"/>
+        <location filename="../app/gui/log_viewer.cpp" line="+155"/>
         <source>Log %1: unpacking, %2 %</source>
         <translation>Журнал %1: распаковка, %2 %</translation>
     </message>
@@ -4187,12 +4187,7 @@ Serial number: %3</source>
         <translation> · слежение за файлом</translation>
     </message>
     <message>
-        <location line="+93"/>
-        <source>not a sentence</source>
-        <translation>не сообщение NMEA</translation>
-    </message>
-    <message>
-        <location line="+126"/>
+        <location line="+212"/>
         <source>no log is open, or it is still being indexed</source>
         <translation>журнал не открыт или ещё индексируется</translation>
     </message>
@@ -4216,17 +4211,17 @@ Serial number: %3</source>
     <name>gnss::app::MainWindow</name>
     <message>
         <location filename="../app/gui/main_window.cpp" line="+58"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+202"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+221"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+261"/>
+        <location line="+262"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-161"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-178"/>
         <source>Timeline</source>
         <translation>Шкала времени</translation>
     </message>
@@ -4258,12 +4253,12 @@ Serial number: %3</source>
     <message>
         <location line="+3"/>
         <location line="+12"/>
-        <location line="+146"/>
+        <location line="+163"/>
         <source>Not exported: %1</source>
         <translation>Не экспортировано: %1</translation>
     </message>
     <message>
-        <location line="-154"/>
+        <location line="-171"/>
         <source>Log statistics</source>
         <translation>Статистика журнала</translation>
     </message>
@@ -4303,7 +4298,7 @@ Serial number: %3</source>
         <translation>Трек (весь журнал)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+29"/>
         <source>&amp;Open Log...</source>
         <translation>&amp;Открыть журнал...</translation>
     </message>
@@ -4343,12 +4338,12 @@ Serial number: %3</source>
         <translation>Очистить список</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>%1 — GNSS Workbench</source>
         <translation>%1 — GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Export epochs %1 to %2</source>
         <translation>Экспорт эпох с %1 по %2</translation>
     </message>
@@ -4428,12 +4423,12 @@ Serial number: %3</source>
         <translation>О &amp;Qt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-120"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-123"/>
         <source>Open Log</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-292"/>
+        <location filename="../app/gui/main_window.cpp" line="-293"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -4468,7 +4463,7 @@ Serial number: %3</source>
         <translation>Решение</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <location line="+1"/>
         <source>Signal levels</source>
         <translation>Уровни сигналов</translation>
@@ -5605,12 +5600,12 @@ Serial number: %3</source>
     <message>
         <location filename="../protocol/link/recorder.cpp" line="+24"/>
         <location line="+5"/>
-        <location line="+82"/>
+        <location line="+83"/>
         <source>Cannot write %1: %2</source>
         <translation>Не удаётся записать %1: %2</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-47"/>
         <source>link lost: %1</source>
         <translation>связь потеряна: %1</translation>
     </message>
@@ -5906,7 +5901,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::ConsoleView</name>
     <message>
-        <location filename="../ui/views/console_view.cpp" line="+34"/>
+        <location filename="../ui/views/console_view.cpp" line="+35"/>
         <source>Filter by address (e.g. GGA|PNVG)</source>
         <translation>Фильтр по адресу (например, GGA|PNVG)</translation>
     </message>
@@ -5931,7 +5926,7 @@ Serial number: %3</source>
         <translation>Очистить</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+58"/>
         <source>Send</source>
         <translation>Отправить</translation>
     </message>
@@ -5956,7 +5951,7 @@ Serial number: %3</source>
         <translation>Команда для отправки, например %1 (контрольная сумма добавляется)</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+75"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -6641,6 +6636,44 @@ Serial number: %3</source>
         <location line="+3"/>
         <source>Events: %1; click one to go there</source>
         <translation>Событий: %1; щёлкните событие, чтобы перейти к нему</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::LogLinesModel</name>
+    <message>
+        <location filename="../ui/logview/log_lines_model.cpp" line="+215"/>
+        <source>The filter is not a valid expression: %1</source>
+        <translation>Фильтр — недопустимое регулярное выражение: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Filtering the log&apos;s lines…</source>
+        <translation>Отбор строк журнала…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The first %L1 lines whose address matches (a filter keeps no more)</source>
+        <translation>Первые %L1 строк с подходящим адресом (больше фильтр не хранит)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lines that match: %L1</source>
+        <translation>Подходящих строк: %L1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Counting the log&apos;s lines…</source>
+        <translation>Подсчёт строк журнала…</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>not a sentence</source>
+        <translation>не сообщение NMEA</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Checksum %1, computed %2</source>
+        <translation>Контрольная сумма %1, вычислена %2</translation>
     </message>
 </context>
 <context>

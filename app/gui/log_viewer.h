@@ -7,6 +7,7 @@
 // draw), follows a file still being written (what it gained indexed on a worker thread), and
 // exports on a worker thread. Nothing on the GUI thread waits for the disk or for indexing.
 #include "log_cursor.h"
+#include "log_lines_model.h"
 #include "models/receiver_session.h"
 
 #include <QElapsedTimer>
@@ -41,6 +42,8 @@ public:
     bool ready() const { return view_ && readyNoted_; }
     QString path() const { return path_; }
     ui::LogCursor *cursor() { return &cursor_; }
+    // The console's rows while a log is open: every line of the file, the cursor's marked.
+    ui::LogLinesModel *lines() { return &lines_; }
     const logview::LogView *view() const { return view_.get(); }
     // The open log, for work that may outlive it being closed (play out).
     std::shared_ptr<const logview::LogView> shared() const { return view_; }
@@ -86,7 +89,8 @@ private:
     void follow();
     void showFirstEpoch();
     void publishMessages();
-    void fillConsole(std::size_t k);
+    void showCursorLines(std::size_t k);
+    void countLines();
     qint64 epochMs(std::size_t k) const;
     void anchorPlay();
     // Runs `work` on a worker thread and `done` with its result back on this thread (dropped
@@ -97,6 +101,7 @@ private:
     ui::SessionModels models_;
     std::shared_ptr<logview::LogView> view_; // shared with the workers that read it
     ui::LogCursor cursor_;
+    ui::LogLinesModel lines_;
     QString path_, startAt_;
     QTimer pollTimer_, playTimer_, followTimer_;
     bool firstShown_ = false, readyNoted_ = false, cancelling_ = false, followBusy_ = false;

@@ -184,6 +184,7 @@ void MainWindow::createDocks() {
     });
     connect(this, &MainWindow::displayPrefsChanged, console_, [this](const ui::DisplayPrefs &p) {
         console_->setTimeZone(p.time);
+        if (logViewer_) logViewer_->lines()->setTimeZone(p.time);
         messages_->setTimeZone(p.time);
     });
     auto *signalDock = addDock(new ui::SignalLevelsView(satellites_, this), tr("Signal levels"),

@@ -6,12 +6,14 @@
 #include "log_events_view.h"
 #include "log_player.h"
 #include "log_summary_view.h"
+#include "log_view.h"
 #include "log_viewer.h"
 #include "main_window.h"
 #include "models/receiver_session.h"
 #include "play_out_dialog.h"
 #include "timeline_panel.h"
 #include "timeline_strip.h"
+#include "views/console_view.h"
 #include "whole_log_panels.h"
 
 #include <QAction>
@@ -89,6 +91,20 @@ void MainWindow::createLogViewer() {
                               Qt::LeftDockWidgetArea);
     for (QDockWidget *d : {eventsDock, summaryDock, chartsDock, trackDock}) d->hide();
 
+    // The console shows the log's own lines while a log is open: filtered by the model (a whole
+    // log, on a worker), the cursor's line kept in view, a line double-clicked is its moment.
+    ui::LogLinesModel *lines = logViewer_->lines();
+    lines->setTimeZone(prefs_.display.time);
+    connect(consoleView_, &ui::ConsoleView::filterChanged, lines, &ui::LogLinesModel::setFilter);
+    connect(lines, &ui::LogLinesModel::cursorRowChanged, consoleView_, &ui::ConsoleView::showRow);
+    connect(lines, &ui::LogLinesModel::noteChanged, consoleView_, &ui::ConsoleView::setNote);
+    connect(consoleView_, &ui::ConsoleView::lineActivated, this, [this, lines](int row) {
+        const auto offset = lines->offsetOfRow(row);
+        const logview::LogView *view = logViewer_->view();
+        const auto epoch = offset && view ? view->epochAtOffset(*offset) : std::nullopt;
+        if (epoch && !logViewer_->cursor()->empty()) logViewer_->cursor()->seek(*epoch, true);
+    });
+
     // A live source closes the log (the docks show one thing at a time).
     connect(controller_, &ConnectionController::stateChanged, this, [this] {
         const auto s = controller_->state();
@@ -164,6 +180,8 @@ void MainWindow::openLog(const QString &path, const QString &at) {
     controller_->disconnectFromSource();
     session_->reset();
     logViewer_->open(path, at);
+    consoleView_->showLog(logViewer_->lines(),
+                          [this] { return logViewer_->lines()->bytesBeforeCursor(8192); });
     rememberLog(path);
     timelineBar_->show();
     // The transport's keys (Space, arrows) act at once, not in the source box's text.
@@ -195,6 +213,7 @@ void MainWindow::openLog(const QString &path, const QString &at) {
 void MainWindow::closeLog() {
     if (!logViewer_->isOpen()) return;
     logViewer_->close();
+    consoleView_->showLog(nullptr);
     timelineBar_->hide();
     closeLogAction_->setEnabled(false);
     exportAction_->setEnabled(false);

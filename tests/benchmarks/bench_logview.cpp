@@ -155,6 +155,26 @@ int main(int argc, char **argv) {
         std::printf("seek to a random epoch:  median %.2f ms, 99th percentile %.2f ms, max %.2f "
                     "ms (%zu seeks)\n",
                     ms[ms.size() / 2], ms[ms.size() * 99 / 100], ms.back(), ms.size());
+    // The console's virtual list over the file: the lines counted once (on a worker in the GUI),
+    // then any line read from the mapping as it is drawn.
+    const auto l0 = Clock::now();
+    const std::uint64_t lines = view.indexLines();
+    std::printf("console lines counted:   %6.3f s  (%llu lines)\n", since(l0),
+                static_cast<unsigned long long>(lines));
+    std::vector<double> us;
+    for (int i = 0; i < 10000 && lines > 0; ++i) {
+        const std::uint64_t k = rng() % lines;
+        const auto s0 = Clock::now();
+        if (!view.line(k)) {
+            std::fprintf(stderr, "line %llu not found\n", static_cast<unsigned long long>(k));
+            return 1;
+        }
+        us.push_back(since(s0) * 1e6);
+    }
+    std::sort(us.begin(), us.end());
+    if (!us.empty())
+        std::printf("console line at random:  median %.1f us, 99th percentile %.1f us\n",
+                    us[us.size() / 2], us[us.size() * 99 / 100]);
     const double recordsMb = static_cast<double>(epochs * sizeof(gnss::logview::EpochRecord)) / 1e6;
     std::printf("memory beyond the mapped file: %.0f MB anonymous (the index's records %.0f MB "
                 "of it; checkpoints and the rest %.0f MB); file pages mapped: %ld MB\n",

@@ -24,6 +24,16 @@ inline bool writeFile(const std::string &path, std::string_view bytes) {
     return std::fclose(f) == 0 && ok;
 }
 
+inline std::string readFile(const std::string &path) {
+    std::string out;
+    std::FILE *f = std::fopen(path.c_str(), "rb");
+    if (!f) return out;
+    char buf[65536];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) out.append(buf, n);
+    std::fclose(f);
+    return out;
+}
+
 // Opens `path` and waits for the index.
 inline bool openAndWait(logview::LogView &view, const std::string &path) {
     view.open(path);

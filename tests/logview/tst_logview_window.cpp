@@ -22,6 +22,7 @@
 #include "startup_options.h"
 #include "timeline_panel.h"
 #include "timeline_strip.h"
+#include "views/console_view.h"
 #include "whole_log_panels.h"
 
 #include <QCheckBox>
@@ -30,6 +31,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListView>
 #include <QMenu>
 #include <QSettings>
 #include <QSignalSpy>
@@ -124,17 +126,21 @@ private slots:
             expectStateAt(*w, k);
             QVERIFY(w->logViewer()->lastPublishMs() < 1000);
         }
-        auto *console = w->findChild<ui::ConsoleModel *>();
-        QVERIFY(console->rowCount() > 10);
+        // The console is the file's lines, the cursor's epoch ending at its current row.
+        auto *console = w->findChild<ui::ConsoleView *>("console");
+        QVERIFY(console->showingLog());
+        ui::LogLinesModel *lines = w->logViewer()->lines();
         const logview::LogView *view = w->logViewer()->view();
+        QTRY_COMPARE(std::uint64_t(lines->rowCount()), view->lineCount());
+        QVERIFY(lines->rowCount() > 600);
         const std::size_t k = w->logViewer()->cursor()->current();
-        const auto lines = view->linesAround(view->epochEnd(k), 1, 0);
-        QCOMPARE(console->data(console->index(console->rowCount() - 1), Qt::DisplayRole)
-                         .toString()
-                         .endsWith(QString::fromLatin1(
-                                 view->bytes(lines[0].offset, lines[0].length).data(),
-                                 int(lines[0].length))),
-                 true);
+        const auto last = view->linesAround(view->epochEnd(k) - 1, 0, 1);
+        QCOMPARE(lines->cursorRow(), int(view->lineAt(last[0].offset)));
+        QVERIFY(lines->data(lines->index(lines->cursorRow()), Qt::DisplayRole)
+                        .toString()
+                        .endsWith(QString::fromLatin1(
+                                view->bytes(last[0].offset, last[0].length).data(),
+                                int(last[0].length))));
         // Status bar: the file and its epochs; the window's title names it.
         QTRY_VERIFY(w->findChild<QLabel *>("connectionState")->text().contains("600 epochs"));
         QVERIFY(w->windowTitle().startsWith("drive.nmea"));
@@ -411,6 +417,11 @@ private slots:
         const std::size_t before = cursor->epochCount();
         QVERIFY(before >= 99 && before <= 100);
         cursor->seek(before - 1);
+        // The console filtered to RMC: the filter goes on over what the file gains.
+        ui::LogLinesModel *lines = w->logViewer()->lines();
+        w->findChild<QLineEdit *>("consoleFilter")->setText("RMC");
+        QTRY_VERIFY(!lines->filtering() && lines->rowCount() >= 99);
+        const int rmcBefore = lines->rowCount();
         w->findChild<QCheckBox *>("logFollow")->setChecked(true);
         QVERIFY(w->logViewer()->following());
         {
@@ -423,6 +434,87 @@ private slots:
         QCOMPARE(cursor->current(), cursor->epochCount() - 1);
         expectStateAt(*w, cursor->current());
         QVERIFY(w->findChild<QLabel *>("connectionState")->text().contains("following"));
+        QTRY_VERIFY(lines->rowCount() >= rmcBefore + 39);
+        QCOMPARE(w->logViewer()->view()->epochAtOffset(*lines->offsetOfRow(lines->cursorRow())),
+                 std::optional<std::size_t>(cursor->current()));
+    }
+
+    // The console while a log is open: every line of the file (a virtual list over the mapping),
+    // the cursor's epoch marked and in view, a filter over the whole log, a double click on a
+    // line moves the cursor to its moment, and closing the log gives the live console back.
+    void theConsoleIsTheWholeFileAtTheCursor() {
+        auto s = settings();
+        auto w = window(s.get());
+        QVERIFY(openScenario(*w, scenario_));
+        auto *console = w->findChild<ui::ConsoleView *>("console");
+        auto *list = console->findChild<QListView *>("consoleLines");
+        ui::LogLinesModel *lines = w->logViewer()->lines();
+        const logview::LogView *view = w->logViewer()->view();
+        QVERIFY(list->model() == lines);
+        QTRY_VERIFY(lines->rowCount() > 0);
+        QCOMPARE(console->visibleLines(), lines->rowCount());
+        QVERIFY(!console->findChild<QToolButton *>("consolePause")->isVisibleTo(console));
+        // Every line of the file, in order: the first and the last.
+        const std::string text = test::readFile(scenario_);
+        const auto first = lines->data(lines->index(0), Qt::DisplayRole).toString();
+        std::string firstLine = text.substr(0, text.find('\n'));
+        if (!firstLine.empty() && firstLine.back() == '\r') firstLine.pop_back();
+        QVERIFY2(first.endsWith(QString::fromLatin1(firstLine)), qPrintable(first));
+        // Seeks: the cursor's last line is the current row, in the viewport, marked.
+        ui::LogCursor *cursor = w->logViewer()->cursor();
+        for (std::size_t k : {std::size_t(300), std::size_t(10), std::size_t(599)}) {
+            cursor->seek(k, true);
+            const int row = lines->cursorRow();
+            QVERIFY(row >= 0);
+            QCOMPARE(list->currentIndex().row(), row);
+            QVERIFY(list->viewport()->rect().intersects(list->visualRect(list->currentIndex())));
+            QVERIFY(lines->data(lines->index(row), Qt::BackgroundRole).isValid());
+            const auto offset = lines->offsetOfRow(row);
+            QVERIFY(offset);
+            QCOMPARE(view->epochAtOffset(*offset), std::optional<std::size_t>(k));
+            if (row > 50)
+                QVERIFY(!lines->data(lines->index(row - 50), Qt::BackgroundRole).isValid());
+        }
+        // A double click on a line far from the cursor: the cursor goes to the epoch holding it.
+        const int far = lines->rowCount() / 2;
+        emit list->activated(lines->index(far));
+        const auto farEpoch = view->epochAtOffset(*lines->offsetOfRow(far));
+        QCOMPARE(cursor->current(), *farEpoch);
+        // The filter runs over the whole log: only GGA lines, each of them.
+        auto *filter = console->findChild<QLineEdit *>("consoleFilter");
+        filter->setText("GGA");
+        std::size_t gga = 0; // lines that start a sentence whose address has GGA
+        for (std::size_t at = 0; at < text.size();) {
+            const std::size_t end = std::min(text.find('\n', at), text.size());
+            const std::string line = text.substr(at, end - at);
+            const std::size_t addressEnd = line.find_first_of(",*");
+            if (!line.empty() && (line[0] == '$' || line[0] == '!') &&
+                line.substr(0, addressEnd).find("GGA") != std::string::npos)
+                ++gga;
+            at = end + 1;
+        }
+        QTRY_COMPARE(std::size_t(lines->rowCount()), gga);
+        auto *note = console->findChild<QLabel *>("consoleNote");
+        QTRY_VERIFY(note->isVisibleTo(console) && note->text().contains(QString::number(gga)));
+        for (int r = 0; r < lines->rowCount(); r += 37)
+            QVERIFY(lines->data(lines->index(r), ui::ConsoleModel::AddressRole)
+                            .toString()
+                            .endsWith("GGA"));
+        cursor->seek(200, true);
+        QVERIFY(lines->cursorRow() >= 0);
+        QCOMPARE(view->epochAtOffset(*lines->offsetOfRow(lines->cursorRow())),
+                 std::optional<std::size_t>(200));
+        // A filter that is no expression says so and shows nothing.
+        filter->setText("GGA(");
+        QCOMPARE(lines->rowCount(), 0);
+        QVERIFY(note->text().contains("not a valid"));
+        filter->clear();
+        QTRY_COMPARE(std::uint64_t(lines->rowCount()), view->lineCount());
+        // Closing the log: the live console again, with its pause button.
+        w->closeLog();
+        QVERIFY(!console->showingLog());
+        QVERIFY(list->model() != lines);
+        QVERIFY(console->findChild<QToolButton *>("consolePause")->isVisibleTo(console));
     }
 
     // A followed log that gains 50 MB at once: the growth is indexed on a worker while the GUI

@@ -7,6 +7,7 @@
 
 #include <QCompleter>
 #include <QHBoxLayout>
+#include <QItemSelectionModel>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -35,12 +36,12 @@ ConsoleView::ConsoleView(ConsoleModel *model, QWidget *parent) : QWidget(parent)
     filter_->setClearButtonEnabled(true);
     connect(filter_, &QLineEdit::textChanged, this, &ConsoleView::setFilter);
     bar->addWidget(filter_, 1);
-    auto *pause = new QToolButton(this);
-    pause->setObjectName("consolePause");
-    pause->setText(tr("Pause"));
-    pause->setCheckable(true);
-    connect(pause, &QToolButton::toggled, this, [this](bool on) { model_->setPaused(on); });
-    bar->addWidget(pause);
+    pause_ = new QToolButton(this);
+    pause_->setObjectName("consolePause");
+    pause_->setText(tr("Pause"));
+    pause_->setCheckable(true);
+    connect(pause_, &QToolButton::toggled, this, [this](bool on) { model_->setPaused(on); });
+    bar->addWidget(pause_);
     auto *hex = new QToolButton(this);
     hex->setObjectName("consoleHex");
     hex->setText(tr("Hex"));
@@ -48,11 +49,18 @@ ConsoleView::ConsoleView(ConsoleModel *model, QWidget *parent) : QWidget(parent)
     hex->setToolTip(tr("Show the raw bytes received, including binary data"));
     connect(hex, &QToolButton::toggled, this, &ConsoleView::setHex);
     bar->addWidget(hex);
-    auto *clear = new QToolButton(this);
-    clear->setObjectName("consoleClear");
-    clear->setText(tr("Clear"));
-    connect(clear, &QToolButton::clicked, model_, &ConsoleModel::clear);
-    bar->addWidget(clear);
+    clear_ = new QToolButton(this);
+    clear_->setObjectName("consoleClear");
+    clear_->setText(tr("Clear"));
+    connect(clear_, &QToolButton::clicked, model_, &ConsoleModel::clear);
+    bar->addWidget(clear_);
+    // What a log's filter found, beside it: in the bar, so that the console is no taller for it;
+    // cut to the room there (the whole text in its tooltip).
+    note_ = new QLabel(this);
+    note_->setObjectName("consoleNote");
+    note_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    note_->setVisible(false);
+    bar->insertWidget(1, note_, 1);
     layout->addLayout(bar);
 
     proxy_ = new QSortFilterProxyModel(this);
@@ -70,7 +78,10 @@ ConsoleView::ConsoleView(ConsoleModel *model, QWidget *parent) : QWidget(parent)
     connect(list_->verticalScrollBar(), &QScrollBar::valueChanged, this,
             [this](int v) { follow_ = v >= list_->verticalScrollBar()->maximum() - 2; });
     connect(proxy_, &QAbstractItemModel::rowsInserted, this, [this] {
-        if (follow_) list_->scrollToBottom();
+        if (follow_ && !logLines_) list_->scrollToBottom();
+    });
+    connect(list_, &QListView::activated, this, [this](const QModelIndex &i) {
+        if (logLines_ && i.isValid()) emit lineActivated(i.row());
     });
     layout->addWidget(list_, 1);
 
@@ -152,10 +163,48 @@ void ConsoleView::setFilter(const QString &pattern) {
     if (filter_->text() != pattern) filter_->setText(pattern);
     proxy_->setFilterRegularExpression(
             QRegularExpression(pattern, QRegularExpression::CaseInsensitiveOption));
+    emit filterChanged(pattern);
 }
 
 int ConsoleView::visibleLines() const {
-    return proxy_->rowCount();
+    return logLines_ ? logLines_->rowCount() : proxy_->rowCount();
+}
+
+void ConsoleView::showLog(QAbstractItemModel *lines, std::function<QByteArray()> raw) {
+    logLines_ = lines;
+    logRaw_ = std::move(raw);
+    QAbstractItemModel *shown = lines ? lines : static_cast<QAbstractItemModel *>(proxy_);
+    if (list_->model() != shown) {
+        QItemSelectionModel *previous = list_->selectionModel();
+        list_->setModel(shown);
+        delete previous; // setModel() leaves the old model's selection to its caller
+    }
+    // A log is neither paused nor cleared: it is the file.
+    pause_->setVisible(!lines);
+    clear_->setVisible(!lines);
+    if (!lines) setNote({});
+    emit filterChanged(filter_->text());
+    follow_ = true;
+    if (!lines) list_->scrollToBottom();
+    if (hex_->isVisible()) refreshHex();
+}
+
+void ConsoleView::showRow(int row) {
+    if (!logLines_ || row < 0 || row >= logLines_->rowCount()) return;
+    const QModelIndex i = logLines_->index(row, 0);
+    list_->selectionModel()->setCurrentIndex(i, QItemSelectionModel::NoUpdate);
+    // Like a live console: the cursor's line at the bottom, the lines before it above. A line
+    // already in view stays where it is.
+    const QRect r = list_->visualRect(i);
+    if (!list_->viewport()->rect().contains(r))
+        list_->scrollTo(i, QAbstractItemView::PositionAtBottom);
+    if (hex_->isVisible()) refreshHex();
+}
+
+void ConsoleView::setNote(const QString &note) {
+    note_->setText(note);
+    note_->setToolTip(note);
+    note_->setVisible(!note.isEmpty());
 }
 
 bool ConsoleView::submit() {
@@ -203,7 +252,7 @@ void ConsoleView::setHex(bool on) {
 }
 
 void ConsoleView::refreshHex() {
-    const QByteArray &raw = model_->raw();
+    const QByteArray raw = logLines_ ? (logRaw_ ? logRaw_() : QByteArray()) : model_->raw();
     const QByteArray tail = raw.right(8192);
     QString out;
     out.reserve(tail.size() * 4);

@@ -2,9 +2,18 @@
 // ConsoleView: received and sent lines (sent ones marked), checksum errors highlighted, filter by
 // address, pause, clear, a hex view of the raw bytes, and a send box that adds the checksum,
 // keeps a history and completes the dialect's command names.
+//
+// While a log is open it shows the log's own lines instead (showLog: any list model with
+// ConsoleModel's roles, such as the viewer's virtual list over the file): the filter is then
+// the model's to apply (filterChanged), the cursor's line is kept in view (showRow), a double
+// click or Enter on a line asks for its moment (lineActivated), and the hex view shows the
+// file's bytes up to the cursor.
 #include <QStringList>
 #include <QWidget>
 
+#include <functional>
+
+class QAbstractItemModel;
 class QLabel;
 class QLineEdit;
 class QListView;
@@ -36,6 +45,15 @@ public:
     void setFilter(const QString &addressPattern);
     int visibleLines() const;
 
+    // A log's lines in place of the live ones (nullptr: back to the live console). `raw` gives
+    // the bytes for the hex view.
+    void showLog(QAbstractItemModel *lines, std::function<QByteArray()> raw = {});
+    bool showingLog() const { return logLines_ != nullptr; }
+    // Brings a row of the log's lines into view (the cursor's line), marked as the current one.
+    void showRow(int row);
+    // A line above the list (what a log's filter found); empty: none.
+    void setNote(const QString &note);
+
     // Sends what the send box holds: completes the checksum, refuses a malformed sentence with a
     // message beside the box. Returns whether a sentence was emitted.
     bool submit();
@@ -45,6 +63,8 @@ public:
 
 signals:
     void sendRequested(const QByteArray &sentence);
+    void filterChanged(const QString &addressPattern);
+    void lineActivated(int row); // of the log's lines
 
 protected:
     bool eventFilter(QObject *o, QEvent *e) override;
@@ -58,6 +78,11 @@ private:
     QListView *list_;
     QPlainTextEdit *hex_;
     QLineEdit *filter_;
+    QToolButton *pause_;
+    QToolButton *clear_;
+    QLabel *note_;
+    QAbstractItemModel *logLines_ = nullptr;
+    std::function<QByteArray()> logRaw_;
     QLineEdit *input_;
     QPushButton *sendButton_;
     QLabel *inputError_;
