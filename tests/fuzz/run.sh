@@ -4,7 +4,11 @@
 # executions, executions per second, coverage (libFuzzer's cov: edges, ft: features) and corpus
 # size; crashes are kept under build/fuzz/artifacts/ and make the script fail.
 #
-#   tests/fuzz/run.sh [--merge] SECONDS [HARNESS...]      (default: every harness)
+#   tests/fuzz/run.sh [--fast] [--merge] SECONDS [HARNESS...]      (default: every harness)
+#
+# --fast runs the fuzz-fast preset's binaries instead: the same harnesses with UBSan but without
+# AddressSanitizer, several times the executions per second (an out-of-bounds read that does not
+# crash goes unseen there: the ASan campaign covers that, the fast one covers more inputs).
 #
 # New inputs go to a scratch folder, never straight into the committed corpus. With --merge,
 # those that reach new coverage are then merged into tests/fuzz/corpus/<harness>/ (libFuzzer
@@ -16,23 +20,28 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 
 merge=0
-if [ "${1:-}" = "--merge" ]; then
-  merge=1
+preset=fuzz
+while [ $# -gt 0 ]; do
+  case $1 in
+    --merge) merge=1 ;;
+    --fast) preset=fuzz-fast ;;
+    *) break ;;
+  esac
   shift
-fi
-seconds=${1:?usage: tests/fuzz/run.sh [--merge] SECONDS [HARNESS...]}
+done
+seconds=${1:?usage: tests/fuzz/run.sh [--fast] [--merge] SECONDS [HARNESS...]}
 shift
 harnesses=("$@")
 [ ${#harnesses[@]} -eq 0 ] && harnesses=(fuzz_stream_decoder fuzz_epochs_state
   fuzz_settings_roundtrip fuzz_profile_import fuzz_rtcm fuzz_log_scan fuzz_log_index
   fuzz_ntrip_response fuzz_recording_index)
 
-build=build/fuzz
+build=build/$preset
 missing=0
 for h in "${harnesses[@]}"; do [ -x "$build/tests/fuzz/$h" ] || missing=1; done
 if [ $missing -eq 1 ]; then
-  cmake --preset fuzz >/dev/null
-  nice -n 10 cmake --build --preset fuzz --parallel 1 --target "${harnesses[@]}"
+  cmake --preset "$preset" >/dev/null
+  nice -n 10 cmake --build --preset "$preset" --parallel 1 --target "${harnesses[@]}"
 fi
 
 artifacts=$build/artifacts
@@ -41,7 +50,14 @@ failed=0
 printf '%-24s %12s %9s %7s %7s %14s %s\n' harness executions exec/s cov ft corpus result
 for h in "${harnesses[@]}"; do
   corpus=tests/fuzz/corpus/$h
-  scratch=$(mktemp -d)
+  # GNSS_FUZZ_WORK=DIR keeps each harness's new inputs in DIR/<harness> from one run to the next
+  # (a campaign of many runs goes on from the coverage it reached); by default they are dropped.
+  if [ -n "${GNSS_FUZZ_WORK:-}" ]; then
+    scratch=$GNSS_FUZZ_WORK/$h
+    mkdir -p "$scratch"
+  else
+    scratch=$(mktemp -d)
+  fi
   log=$build/$h.log
   dict=()
   [ -f "tests/fuzz/$h.dict" ] && dict=(-dict="tests/fuzz/$h.dict")
@@ -81,7 +97,7 @@ for h in "${harnesses[@]}"; do
     nice -n 19 "$build/tests/fuzz/$h" -merge=1 -max_len=$max_len "$corpus" "$scratch" \
       >"$build/$h.merge.log" 2>&1
   fi
-  rm -rf "$scratch"
+  [ -n "${GNSS_FUZZ_WORK:-}" ] || rm -rf "$scratch"
   printf '%-24s %12s %9s %7s %7s %14s %s\n' "$h" "${execs:-?}" "${speed:-?}" "${cov:-?}" \
     "${ft:-?}" "${corp:-?}" "$result"
 done
