@@ -64,6 +64,15 @@ GNSS_FUZZ_NO_COVERAGE bool sameReal(std::string_view given, std::string_view bac
     return std::fabs(a - b) <= unit + 1e-12 * std::max(std::fabs(a), 1.0);
 }
 
+// Two names of a list's items: the same number however written ("05" is "5"), exactly (stations
+// 84 and 85 are two stations, though as measurements they would be within a unit), or the same
+// text.
+GNSS_FUZZ_NO_COVERAGE bool sameName(std::string_view x, std::string_view y) {
+    double a, b;
+    if (!parseReal(trim(x), a) || !parseReal(trim(y), b)) return trim(x) == trim(y);
+    return a == b;
+}
+
 GNSS_FUZZ_NO_COVERAGE bool sameValue(const SettingDef &def, std::string_view given,
                                      std::string_view back) {
     switch (def.type) {
@@ -114,7 +123,7 @@ GNSS_FUZZ_NO_COVERAGE bool sameValue(const SettingDef &def, std::string_view giv
             const std::string_view name = split(trim(i), ":").front();
             bool updated = false;
             for (auto &seen : x)
-                if (sameReal(split(seen, ":").front(), name)) seen = trim(i), updated = true;
+                if (sameName(split(seen, ":").front(), name)) seen = trim(i), updated = true;
             if (!updated) x.push_back(trim(i));
         }
         for (auto i : split(back, ";,"))
