@@ -32,7 +32,9 @@ struct ReceiverState;
 class DecodeContext {
 public:
     using Emit = FunctionRef<void(const Message &)>;
-    DecodeContext(const Dialect *dialect, Emit emit);
+    // Inline: built once per sentence, its FunctionRef (80 bytes) is then made in place rather
+    // than written piecewise and copied whole (a store-forwarding stall on every sentence).
+    inline DecodeContext(const Dialect *dialect, Emit onMessage);
 
     // The dialect in force (chosen, or detected so far); nullptr when none is known yet.
     const Dialect *dialect() const { return dialect_; }
@@ -213,5 +215,9 @@ struct Dialect {
 
 // The action of this kind a dialect offers, nullptr when it has none.
 const ActionDef *findAction(const Dialect &d, ReceiverAction action);
+
+inline DecodeContext::DecodeContext(const Dialect *dialect, Emit onMessage)
+    : dialect_(dialect), dialectMapsSatellites_(dialect && dialect->mapSatellite),
+      emit_(onMessage) {}
 
 } // namespace gnss

@@ -2,9 +2,6 @@
 
 namespace gnss {
 
-DecodeContext::DecodeContext(const Dialect *dialect, Emit emit)
-    : dialect_(dialect), dialectMapsSatellites_(dialect && dialect->mapSatellite), emit_(emit) {}
-
 SatelliteRef DecodeContext::mapSatelliteByDialect(Constellation system, int id) const {
     return dialect_->mapSatellite(system, id);
 }

@@ -27,10 +27,10 @@ bool looksLikeSystemId(std::string_view last, std::string_view beforeLast, std::
 bool decodeGsa(const Sentence &s, DecodeContext &ctx) {
     return decodeWith<Gsa>(s, ctx, 5, [&](FieldReader &r, Gsa &m) {
         m.mode = r.letter(0, "mode");
-        m.fix = r.integer(1, "fix");
+        r.integerInto(1, "fix", m.fix);
         std::size_t n = r.count();
         if (n >= 6 && looksLikeSystemId(r.text(n - 1), r.text(n - 2), n)) {
-            m.systemId = r.integer(n - 1, "system id");
+            r.integerInto(n - 1, "system id", m.systemId);
             --n;
         }
         m.pdop = r.real(n - 3, "PDOP");
@@ -40,10 +40,10 @@ bool decodeGsa(const Sentence &s, DecodeContext &ctx) {
                               : constellationOfTalker(s.talker());
         for (std::size_t i = 2; i + 3 < n; ++i) {
             if (r.empty(i)) continue;
-            auto id = r.integer(i, "satellite id");
-            if (!id || m.idCount == Gsa::kMaxIds) continue;
-            m.ids[m.idCount] = *id;
-            m.satellites[m.idCount] = ctx.mapSatellite(m.system, *id);
+            int id;
+            if (!r.integerValue(i, "satellite id", id) || m.idCount == Gsa::kMaxIds) continue;
+            m.ids[m.idCount] = id;
+            m.satellites[m.idCount] = ctx.mapSatellite(m.system, id);
             ++m.idCount;
         }
     });

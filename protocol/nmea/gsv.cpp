@@ -16,30 +16,30 @@ const MessageType Gsv::kType{"GSV"};
 
 bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
     return decodeWith<Gsv>(s, ctx, 3, [&](FieldReader &r, Gsv &m) {
-        m.total = r.integer(0, "total sentences");
-        m.index = r.integer(1, "sentence number");
-        m.inView = r.integer(2, "satellites in view");
+        r.integerInto(0, "total sentences", m.total);
+        r.integerInto(1, "sentence number", m.index);
+        r.integerInto(2, "satellites in view", m.inView);
         m.system = constellationOfTalker(s.talker());
         std::size_t n = r.count();
         if (n > 3 && (n - 3) % 4 == 1) {
-            m.signalId = r.integer(n - 1, "signal id");
+            r.integerInto(n - 1, "signal id", m.signalId);
             --n;
         }
         for (std::size_t i = 3; i < n; i += 4) {
             if (r.empty(i)) continue; // padding slot
-            auto id = r.integer(i, "satellite id");
-            if (!id) continue;
+            int id;
+            if (!r.integerValue(i, "satellite id", id)) continue;
             if (m.satelliteCount == Gsv::kMaxSatellites) {
                 r.failSentence(std::string(
                         QT_TRANSLATE_NOOP("Refusal", "too many satellites in one GSV sentence")));
                 break;
             }
             GsvSatellite &sv = m.satellites[m.satelliteCount++];
-            sv.id = *id;
-            sv.sat = ctx.mapSatellite(m.system, *id);
-            sv.elevation = r.integer(i + 1, "elevation");
-            sv.azimuth = r.integer(i + 2, "azimuth");
-            sv.snr = r.integer(i + 3, "SNR");
+            sv.id = id;
+            sv.sat = ctx.mapSatellite(m.system, id);
+            r.integerInto(i + 1, "elevation", sv.elevation);
+            r.integerInto(i + 2, "azimuth", sv.azimuth);
+            r.integerInto(i + 3, "SNR", sv.snr);
             if (sv.elevation && (*sv.elevation < -90 || *sv.elevation > 90))
                 r.fail(i + 1, "elevation", QT_TRANSLATE_NOOP("Refusal", "out of range"));
             if (sv.azimuth && (*sv.azimuth < 0 || *sv.azimuth > 360))

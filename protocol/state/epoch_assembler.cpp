@@ -95,10 +95,10 @@ void EpochAssembler::closeEpoch(Callback onEpoch) {
             it = groups_.erase(it);
             continue;
         }
-        for (SatelliteInView sv : it->satellites) {
-            sv.used = isUsed(sv.sat);
-            e.satellites.push_back(sv);
-        }
+        // Copied whole, then marked in place: a copy changed on the stack first would be read
+        // back from smaller writes than it is read with (a store-forwarding stall per satellite).
+        for (const SatelliteInView &sv : it->satellites)
+            e.satellites.emplace_back(sv).used = isUsed(sv.sat);
         ++it;
     }
     if (!e.satsUsed && usedThisEpoch_) e.satsUsed = usedCount_;
@@ -273,13 +273,12 @@ void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) 
         } else {
             for (std::size_t i = 0; i < g->satelliteCount; ++i) {
                 const GsvSatellite &sv = g->satellites[i];
-                SatelliteInView out;
+                SatelliteInView &out = grp.pending.emplace_back(); // filled in place (see above)
                 out.sat = sv.sat;
                 out.signalId = g->signalId.value_or(0);
                 out.elevation = sv.elevation;
                 out.azimuth = sv.azimuth;
                 out.snr = sv.snr;
-                grp.pending.push_back(out);
             }
             if (index == total) {
                 grp.satellites.swap(grp.pending);
