@@ -454,6 +454,8 @@ private slots:
         QTRY_VERIFY(lines->rowCount() > 0);
         QCOMPARE(console->visibleLines(), lines->rowCount());
         QVERIFY(!console->findChild<QToolButton *>("consolePause")->isVisibleTo(console));
+        // Nothing takes commands: no send box.
+        QVERIFY(!console->findChild<QLineEdit *>("consoleInput")->isVisibleTo(console));
         // Every line of the file, in order: the first and the last.
         const std::string text = test::readFile(scenario_);
         const auto first = lines->data(lines->index(0), Qt::DisplayRole).toString();
@@ -515,6 +517,7 @@ private slots:
         QVERIFY(!console->showingLog());
         QVERIFY(list->model() != lines);
         QVERIFY(console->findChild<QToolButton *>("consolePause")->isVisibleTo(console));
+        QVERIFY(console->findChild<QLineEdit *>("consoleInput")->isVisibleTo(console));
     }
 
     // A followed log that gains 50 MB at once: the growth is indexed on a worker while the GUI

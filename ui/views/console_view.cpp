@@ -132,7 +132,7 @@ void ConsoleView::setSendRefusal(const QString &why) {
     sendButton_->setEnabled(why.isEmpty());
     sendButton_->setToolTip(why);
     sendNote_->setText(why.isEmpty() ? QString() : tr("Sending is off: %1.").arg(why));
-    sendNote_->setVisible(!why.isEmpty());
+    sendNote_->setVisible(!why.isEmpty() && !logLines_);
     if (!why.isEmpty()) inputError_->setVisible(false);
     setExample(example_); // the hint says why too
 }
@@ -179,9 +179,13 @@ void ConsoleView::showLog(QAbstractItemModel *lines, std::function<QByteArray()>
         list_->setModel(shown);
         delete previous; // setModel() leaves the old model's selection to its caller
     }
-    // A log is neither paused nor cleared: it is the file.
+    // A log is neither paused nor cleared: it is the file; and nothing takes commands.
     pause_->setVisible(!lines);
     clear_->setVisible(!lines);
+    input_->setVisible(!lines);
+    sendButton_->setVisible(!lines);
+    sendNote_->setVisible(!lines && !refusal_.isEmpty());
+    if (lines) inputError_->setVisible(false);
     if (!lines) setNote({});
     emit filterChanged(filter_->text());
     follow_ = true;
