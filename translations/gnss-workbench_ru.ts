@@ -5951,7 +5951,7 @@ Serial number: %3</source>
         <translation>Команда для отправки, например %1 (контрольная сумма добавляется)</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+79"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -6641,7 +6641,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::LogLinesModel</name>
     <message>
-        <location filename="../ui/logview/log_lines_model.cpp" line="+215"/>
+        <location filename="../ui/logview/log_lines_model.cpp" line="+262"/>
         <source>The filter is not a valid expression: %1</source>
         <translation>Фильтр — недопустимое регулярное выражение: %1</translation>
     </message>
@@ -6651,22 +6651,32 @@ Serial number: %3</source>
         <translation>Отбор строк журнала…</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>The first %L1 lines whose address matches (a filter keeps no more)</source>
         <translation>Первые %L1 строк с подходящим адресом (больше фильтр не хранит)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Lines that match: %L1</source>
         <translation>Подходящих строк: %L1</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source> · shown: %L1 to %L2, around the cursor</source>
+        <translation> · показаны строки с %L1 по %L2, вокруг курсора</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Counting the log&apos;s lines…</source>
         <translation>Подсчёт строк журнала…</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+2"/>
+        <source>Lines %L1 to %L2 of %L3, around the cursor</source>
+        <translation>Строки с %L1 по %L2 из %L3, вокруг курсора</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>not a sentence</source>
         <translation>не сообщение NMEA</translation>
     </message>

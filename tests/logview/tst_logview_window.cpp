@@ -520,6 +520,42 @@ private slots:
         QVERIFY(console->findChild<QLineEdit *>("consoleInput")->isVisibleTo(console));
     }
 
+    // A log of more lines than the console's window: the rows are the lines around the cursor,
+    // moved with it to either end of the log, each still the file's line.
+    void theConsoleWindowFollowsTheCursorThroughABigLog() {
+        const std::string path = dir_.filePath("big-console.nmea").toStdString();
+        std::string text;
+        bench::generateLog(text, 4'000'000);
+        QVERIFY(test::writeFile(path, text));
+        auto s = settings();
+        auto w = window(s.get());
+        QVERIFY(openScenario(*w, path));
+        ui::LogLinesModel *lines = w->logViewer()->lines();
+        const logview::LogView *view = w->logViewer()->view();
+        QTRY_VERIFY(view->lineCount() > 2 * ui::LogLinesModel::kWindow &&
+                    lines->rowCount() == int(ui::LogLinesModel::kWindow));
+        auto *list = w->findChild<QListView *>("consoleLines");
+        ui::LogCursor *cursor = w->logViewer()->cursor();
+        const std::size_t last = cursor->epochCount() - 1;
+        for (std::size_t k : {last, std::size_t(0), last / 2, last - 3, std::size_t(5)}) {
+            cursor->seek(k, true);
+            const int row = lines->cursorRow();
+            QVERIFY2(row >= 0, qPrintable(QString::number(k)));
+            QCOMPARE(lines->rowCount(), int(ui::LogLinesModel::kWindow));
+            QCOMPARE(view->epochAtOffset(*lines->offsetOfRow(row)), std::optional<std::size_t>(k));
+            QCOMPARE(list->currentIndex().row(), row);
+            QVERIFY(list->viewport()->rect().intersects(list->visualRect(list->currentIndex())));
+            // The row is the file's line: its text ends the row's display.
+            const auto ref = view->line(view->lineAt(*lines->offsetOfRow(row)));
+            QVERIFY(lines->data(lines->index(row), Qt::DisplayRole)
+                            .toString()
+                            .endsWith(QString::fromLatin1(
+                                    view->bytes(ref->offset, ref->length).data(),
+                                    int(ref->length))));
+        }
+        QVERIFY(lines->note().contains(QString::number(view->lineCount()).right(3)));
+    }
+
     // A followed log that gains 50 MB at once: the growth is indexed on a worker while the GUI
     // thread keeps turning. The engine's hook holds the follow in the middle of its decoding
     // until the GUI thread has ticked (a 10 ms timer) five times, reading the log and repainting

@@ -33,6 +33,7 @@ void LogLinesModel::setLog(std::shared_ptr<const logview::LogView> view, LineTim
     view_ = std::move(view);
     lineTime_ = std::move(lineTime);
     lines_ = 0;
+    base_ = 0;
     matches_ = {};
     cursorBegin_ = cursorEnd_ = 0;
     cursorRow_ = -1;
@@ -44,13 +45,15 @@ void LogLinesModel::setLineCount(std::uint64_t lines) {
     if (!view_ || lines == lines_) return;
     const bool shrunk = lines < lines_;
     if (pattern_.isEmpty()) {
-        const int before = rowCount();
-        const int after = int(std::min<std::uint64_t>(lines, INT_MAX));
         if (shrunk) {
             beginResetModel();
             lines_ = lines;
+            base_ = 0;
             endResetModel();
         } else {
+            // A window not yet full takes the new lines; a full one moves with the cursor.
+            const int before = rowCount();
+            const int after = int(std::min(lines - std::min(base_, lines), kWindow));
             if (after > before) beginInsertRows({}, before, after - 1);
             lines_ = lines;
             if (after > before) endInsertRows();
@@ -61,6 +64,7 @@ void LogLinesModel::setLineCount(std::uint64_t lines) {
             stopSearch();
             beginResetModel();
             matches_ = {};
+            base_ = 0;
             endResetModel();
         }
         if (searching_)
@@ -68,14 +72,53 @@ void LogLinesModel::setLineCount(std::uint64_t lines) {
         else if (!matches_.full)
             search({{}, matches_.scannedTo, false});
     }
+    if (const auto at = cursorEnd_ > 0 ? indexOfOffset(cursorEnd_ - 1) : std::nullopt)
+        centreOn(*at);
     updateCursorRow();
     emit noteChanged(note());
+}
+
+std::uint64_t LogLinesModel::total() const {
+    return pattern_.isEmpty() ? lines_ : matches_.offsets.size();
+}
+
+std::optional<std::uint64_t> LogLinesModel::indexOfOffset(std::uint64_t offset) const {
+    if (!view_ || total() == 0) return std::nullopt;
+    if (pattern_.isEmpty()) return std::min(view_->lineAt(offset), lines_ - 1);
+    const auto &o = matches_.offsets;
+    const auto it = std::upper_bound(o.begin(), o.end(), offset);
+    if (it == o.begin()) return std::nullopt;
+    return std::uint64_t(it - o.begin()) - 1;
+}
+
+bool LogLinesModel::centreOn(std::uint64_t index) {
+    const std::uint64_t all = total();
+    if (all <= kWindow) {
+        if (base_ == 0) return false;
+        beginResetModel();
+        base_ = 0;
+        endResetModel();
+        return true;
+    }
+    if (index >= base_ + kWindow / 4 && index < base_ + kWindow * 3 / 4) return false;
+    const std::uint64_t wanted = std::min(index - std::min(index, kWindow / 2), all - kWindow);
+    if (wanted == base_) return false;
+    beginResetModel();
+    base_ = wanted;
+    endResetModel();
+    emit noteChanged(note());
+    return true;
 }
 
 void LogLinesModel::setCursor(std::uint64_t begin, std::uint64_t end) {
     const int oldFirst = rowOfOffset(cursorBegin_), oldLast = cursorRow_;
     cursorBegin_ = begin;
     cursorEnd_ = end;
+    if (const auto at = end > 0 ? indexOfOffset(end - 1) : std::nullopt; at && centreOn(*at)) {
+        cursorRow_ = -2; // the rows are new: announce the cursor's again
+        updateCursorRow();
+        return;
+    }
     updateCursorRow();
     const int first = rowOfOffset(begin);
     const QList<int> roles{Qt::BackgroundRole};
@@ -96,6 +139,7 @@ void LogLinesModel::setFilter(const QString &pattern) {
     beginResetModel();
     pattern_ = pattern;
     matches_ = {};
+    base_ = 0;
     endResetModel();
     const QRegularExpression re(pattern);
     if (!pattern.isEmpty() && re.isValid() && view_ && lines_ > 0) search({});
@@ -155,10 +199,16 @@ void LogLinesModel::found(quint64 generation, LineTable::Matches m, bool complet
     searching_ = false;
     if (!m.offsets.empty()) {
         const int before = rowCount();
-        beginInsertRows({}, before, before + int(m.offsets.size()) - 1);
+        const int after = int(std::min<std::uint64_t>(
+                matches_.offsets.size() + m.offsets.size() -
+                        std::min<std::uint64_t>(base_, matches_.offsets.size() + m.offsets.size()),
+                kWindow));
+        if (after > before) beginInsertRows({}, before, after - 1);
         matches_.offsets.insert(matches_.offsets.end(), m.offsets.begin(), m.offsets.end());
-        endInsertRows();
+        if (after > before) endInsertRows();
     }
+    if (const auto at = cursorEnd_ > 0 ? indexOfOffset(cursorEnd_ - 1) : std::nullopt)
+        centreOn(*at);
     matches_.scannedTo = m.scannedTo;
     matches_.full = m.full || matches_.offsets.size() >= kMaxMatches;
     if (complete && searchAgain_ && !matches_.full) {
@@ -171,14 +221,15 @@ void LogLinesModel::found(quint64 generation, LineTable::Matches m, bool complet
 
 int LogLinesModel::rowCount(const QModelIndex &parent) const {
     if (parent.isValid() || !view_) return 0;
-    if (!pattern_.isEmpty()) return int(matches_.offsets.size());
-    return int(std::min<std::uint64_t>(lines_, INT_MAX));
+    const std::uint64_t all = total();
+    return int(std::min(all - std::min(base_, all), kWindow));
 }
 
 std::optional<LineRef> LogLinesModel::lineOfRow(int row) const {
     if (!view_ || row < 0 || row >= rowCount()) return std::nullopt;
-    if (pattern_.isEmpty()) return view_->line(std::uint64_t(row));
-    const std::uint64_t at = matches_.offsets[std::size_t(row)];
+    const std::uint64_t index = base_ + std::uint64_t(row);
+    if (pattern_.isEmpty()) return view_->line(index);
+    const std::uint64_t at = matches_.offsets[std::size_t(index)];
     std::uint64_t next = 0;
     LineRef r = LineTable::lineFrom(view_->bytes(at, Framer::kMaxLine + 1), 0, next);
     r.offset = at;
@@ -186,13 +237,9 @@ std::optional<LineRef> LogLinesModel::lineOfRow(int row) const {
 }
 
 int LogLinesModel::rowOfOffset(std::uint64_t offset) const {
-    const int rows = rowCount();
-    if (rows == 0) return -1;
-    if (pattern_.isEmpty())
-        return int(std::min<std::uint64_t>(view_->lineAt(offset), std::uint64_t(rows - 1)));
-    const auto &o = matches_.offsets;
-    const auto it = std::upper_bound(o.begin(), o.end(), offset);
-    return it == o.begin() ? -1 : int(it - o.begin()) - 1;
+    const auto index = indexOfOffset(offset);
+    if (!index || *index < base_ || *index >= base_ + std::uint64_t(rowCount())) return -1;
+    return int(*index - base_);
 }
 
 std::optional<std::uint64_t> LogLinesModel::offsetOfRow(int row) const {
@@ -215,11 +262,23 @@ QString LogLinesModel::note() const {
             return tr("The filter is not a valid expression: %1").arg(re.errorString());
         if (lines_ == 0 || searching_) return tr("Filtering the log's lines…");
         const int n = int(matches_.offsets.size());
-        if (matches_.full)
-            return tr("The first %L1 lines whose address matches (a filter keeps no more)").arg(n);
-        return tr("Lines that match: %L1").arg(n);
+        QString text =
+                matches_.full
+                        ? tr("The first %L1 lines whose address matches (a filter keeps no more)")
+                                  .arg(n)
+                        : tr("Lines that match: %L1").arg(n);
+        if (std::uint64_t(n) > kWindow)
+            text += tr(" · shown: %L1 to %L2, around the cursor")
+                            .arg(base_ + 1)
+                            .arg(base_ + std::uint64_t(rowCount()));
+        return text;
     }
     if (lines_ == 0) return tr("Counting the log's lines…");
+    if (lines_ > kWindow)
+        return tr("Lines %L1 to %L2 of %L3, around the cursor")
+                .arg(base_ + 1)
+                .arg(base_ + std::uint64_t(rowCount()))
+                .arg(lines_);
     return {};
 }
 

@@ -1,8 +1,10 @@
 #pragma once
-// LogLinesModel: the console's rows while a log is open: every line of the file, read from the
-// mapping when a row is drawn (a virtual list: nothing is copied, a 4 GB log scrolls like a small
-// one), or, with a filter, the lines whose address matches it (found on a worker thread, at most
-// kMaxMatches of them). The lines of the cursor's epoch are marked and followed.
+// LogLinesModel: the console's rows while a log is open: the file's lines, read from the mapping
+// when a row is drawn (nothing is copied), or, with a filter, the lines whose address matches it
+// (found on a worker thread over the whole log, at most kMaxMatches of them). The rows are a
+// window of kWindow lines around the cursor, moved as the cursor moves: a list view lays out and
+// keeps a position for every row it is given, which for the 15 million lines of a 1 GB log would
+// cost it seconds and a hundred megabytes. The lines of the cursor's epoch are marked.
 //
 // Rows have the live console's roles (ConsoleModel::Role), so the same view shows both.
 #include "models/console_model.h"
@@ -28,6 +30,8 @@ class LogLinesModel : public QAbstractListModel {
 public:
     // Offsets kept for a filter: 8 bytes each, 32 MB at most.
     static constexpr std::size_t kMaxMatches = 4'000'000;
+    // Rows shown at once: the lines around the cursor (the live console keeps as many).
+    static constexpr std::uint64_t kWindow = 20'000;
     // A line's time (host or UTC, ms) from its file offset.
     using LineTime = std::function<qint64(std::uint64_t offset)>;
 
@@ -66,6 +70,11 @@ signals:
 private:
     std::optional<logview::LineRef> lineOfRow(int row) const;
     int rowOfOffset(std::uint64_t offset) const;
+    // Lines (or matches) in all, and the one holding an offset, counted from the first.
+    std::uint64_t total() const;
+    std::optional<std::uint64_t> indexOfOffset(std::uint64_t offset) const;
+    // Moves the window so that `index` is in its middle half; true when it moved.
+    bool centreOn(std::uint64_t index);
     void search(logview::LineTable::Matches from);
     void found(quint64 generation, logview::LineTable::Matches m, bool complete);
     void stopSearch();
@@ -74,6 +83,7 @@ private:
     std::shared_ptr<const logview::LogView> view_;
     LineTime lineTime_;
     std::uint64_t lines_ = 0; // counted
+    std::uint64_t base_ = 0;  // the first row's line (or match)
     QString pattern_;
     logview::LineTable::Matches matches_; // with a filter
     bool searching_ = false, searchAgain_ = false;
