@@ -519,15 +519,12 @@ std::vector<LogView::LineRef> LogView::linesAround(std::uint64_t offset, std::si
     std::uint64_t start = holding;
     for (std::size_t i = 0; i < before && start > 0; ++i) start = lineStart(start - 1);
     std::size_t fromHolding = 0;
+    const std::string_view data(b, size);
     for (std::uint64_t pos = start; pos < size;) {
         if (pos >= holding && fromHolding++ >= after) break;
-        const std::uint64_t limit = std::min(size, pos + Framer::kMaxLine);
-        std::uint64_t end = pos;
-        while (end < limit && b[end] != '\n') ++end;
-        std::uint64_t textEnd = end;
-        if (textEnd > pos && b[textEnd - 1] == '\r') --textEnd;
-        out.push_back({pos, static_cast<std::uint32_t>(textEnd - pos)});
-        pos = end < size && b[end] == '\n' ? end + 1 : end;
+        std::uint64_t next = pos;
+        out.push_back(LineTable::lineFrom(data, pos, next)); // the console's line rule
+        pos = next;
     }
     return out;
 }
