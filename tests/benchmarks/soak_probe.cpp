@@ -29,6 +29,7 @@ ProcessSample sampleSelf() {
     p.anonMb = statusMb(QStringLiteral("/proc/self/status"), "RssAnon:");
     const struct mallinfo2 m = mallinfo2();
     p.heapMb = double(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
+    p.mmapMb = double(m.hblkhd) / (1024.0 * 1024.0);
     rusage u{};
     getrusage(RUSAGE_SELF, &u);
     p.cpuSeconds = double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
@@ -54,8 +55,8 @@ ProcessSample samplePid(long long pid) {
 }
 
 void SoakTable::header(const std::vector<ListSize> &lists) {
-    std::printf("%8s %8s %8s %8s %8s %8s", "sim_h", "real_s", "rss_MB", "anon_MB", "heap_MB",
-                "cpu_s");
+    std::printf("%8s %8s %8s %8s %8s %8s %8s", "sim_h", "real_s", "rss_MB", "anon_MB", "heap_MB",
+                "mmap_MB", "cpu_s");
     for (const ListSize &l : lists) std::printf(" %s", qPrintable(l.name));
     std::printf("\n");
     std::fflush(stdout);
@@ -63,8 +64,8 @@ void SoakTable::header(const std::vector<ListSize> &lists) {
 
 void SoakTable::row(double simHours, double realSeconds, const ProcessSample &p,
                     const std::vector<ListSize> &lists) {
-    std::printf("%8.2f %8.1f %8.1f %8.1f %8.1f %8.1f", simHours, realSeconds, p.rssMb, p.anonMb,
-                p.heapMb, p.cpuSeconds);
+    std::printf("%8.2f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f", simHours, realSeconds, p.rssMb,
+                p.anonMb, p.heapMb, p.mmapMb, p.cpuSeconds);
     for (const ListSize &l : lists) std::printf(" %lld", l.size);
     std::printf("\n");
     std::fflush(stdout);

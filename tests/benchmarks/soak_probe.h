@@ -14,6 +14,9 @@ struct ProcessSample {
     double rssMb = -1;  // VmRSS
     double anonMb = -1; // RssAnon: VmRSS without the pages of mapped files (libraries' code)
     double heapMb = -1; // mallinfo2().uordblks (+ hblkhd, mmapped blocks); -1 for another process
+    // Of the heap, the blocks malloc mapped on their own (hblkhd: single allocations over the
+    // mmap threshold, 128 KiB and up): a step here is one big buffer, not many small ones.
+    double mmapMb = -1;
     double cpuSeconds = -1;
 };
 
