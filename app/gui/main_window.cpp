@@ -27,6 +27,7 @@
 #include "views/rtk_view.h"
 #include "views/signal_levels_view.h"
 #include "views/sky_plot_view.h"
+#include "widgets/fitted_columns.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -193,7 +194,8 @@ void MainWindow::createDocks() {
     table->setObjectName("satelliteTable");
     table->setModel(satellites_);
     table->verticalHeader()->hide();
-    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Rewritten whole at every epoch: measured when satellites come or go and once a second.
+    new ui::FittedColumns(table, table->horizontalHeader());
     auto *satDock = addDock(table, tr("Satellites"), tr("Satellites"), "satellitesDock",
                             Qt::RightDockWidgetArea);
     consoleView_ = new ui::ConsoleView(console_, this);
