@@ -4,6 +4,7 @@
 #include "models/value_format.h"
 #include "style/gnss_style.h"
 #include "views/chart_palette.h"
+#include "widgets/fitted_columns.h"
 #include "widgets/read_only_table.h"
 
 #include "correction_forwarder.h"
@@ -144,7 +145,8 @@ CorrectionsView::CorrectionsView(const corrections::CorrectionsMonitor &monitor,
     types_->setHorizontalHeaderLabels(
             {tr("Message"), tr("Count"), tr("Rate, /s"), tr("Age, s"), tr("Meaning")});
     types_->setSelectionMode(QAbstractItemView::NoSelection);
-    types_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Rewritten cell by cell at every refresh: measured when types come or go and once a second.
+    new FittedColumns(types_, types_->horizontalHeader());
     streamLayout->addWidget(types_, 1);
     // The correction age over the last ten minutes (the monitor samples it once a second).
     ageSeries_ = new QLineSeries;
