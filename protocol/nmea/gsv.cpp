@@ -35,6 +35,7 @@ bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
                 break;
             }
             GsvSatellite &sv = m.satellites[m.satelliteCount++];
+            sv = GsvSatellite{}; // the slot whole first (a SlotArray's are not cleared)
             sv.id = id;
             sv.sat = ctx.mapSatellite(m.system, id);
             r.integerInto(i + 1, "elevation", sv.elevation);

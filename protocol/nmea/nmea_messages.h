@@ -11,6 +11,7 @@
 #include "core/finish_decode.h"
 #include "core/message.h"
 #include "core/satellite.h"
+#include "core/slot_array.h"
 
 #include <array>
 #include <cstdint>
@@ -69,11 +70,11 @@ struct Gsa : Message {
     static const MessageType kType;
     static constexpr std::size_t kMaxIds = 32;
     Gsa() : Message(kType) {}
-    std::optional<char> mode; // M manual, A automatic
-    std::optional<int> fix;   // 1 none, 2 2D, 3 3D
-    std::array<int, kMaxIds> ids{};
+    std::optional<char> mode;    // M manual, A automatic
+    std::optional<int> fix;      // 1 none, 2 2D, 3 3D
+    SlotArray<int, kMaxIds> ids; // the first idCount are set
     std::size_t idCount = 0;
-    std::array<SatelliteRef, kMaxIds> satellites{}; // ids mapped to constellation + PRN
+    SlotArray<SatelliteRef, kMaxIds> satellites; // ids mapped to constellation + PRN
     std::optional<double> pdop, hdop, vdop;
     std::optional<int> systemId;                   // 4.10+
     Constellation system = Constellation::Unknown; // from the system id or the talker
@@ -93,9 +94,9 @@ struct Gsv : Message {
     static constexpr std::size_t kMaxSatellites = 16;
     Gsv() : Message(kType) {}
     std::optional<int> total, index, inView;
-    std::optional<int> signalId;                   // 4.10+
-    Constellation system = Constellation::Unknown; // from the talker (Unknown for GN)
-    std::array<GsvSatellite, kMaxSatellites> satellites{};
+    std::optional<int> signalId;                        // 4.10+
+    Constellation system = Constellation::Unknown;      // from the talker (Unknown for GN)
+    SlotArray<GsvSatellite, kMaxSatellites> satellites; // the first satelliteCount are set
     std::size_t satelliteCount = 0;
     void writeJson(JsonWriter &w) const override;
 };
