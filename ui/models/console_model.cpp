@@ -40,6 +40,13 @@ QVariant ConsoleModel::data(const QModelIndex &index, int role) const {
     return {};
 }
 
+void ConsoleModel::append(ConsoleLine line) {
+    // Drop a quarter of the cap at once (amortised), keeping the newest kMaxLines - 1.
+    if (pending_.size() >= std::size_t(kMaxPending))
+        pending_.erase(pending_.begin(), pending_.end() - (kMaxLines - 1));
+    pending_.push_back(std::move(line));
+}
+
 void ConsoleModel::flush() {
     if (pending_.empty()) return;
     if (paused_) {
@@ -59,10 +66,17 @@ void ConsoleModel::flush() {
         if (pending_.size() > size_t(kMaxLines))
             pending_.erase(pending_.begin(), pending_.end() - kMaxLines);
     }
+    const std::size_t moved = pending_.size();
     beginInsertRows({}, int(lines_.size()), int(lines_.size() + pending_.size()) - 1);
     for (auto &l : pending_) lines_.push_back(std::move(l));
     endInsertRows();
     pending_.clear();
+    // A burst's room goes back once the bursts are over (a flush that used a quarter of it): at
+    // 20 Hz a flush moves a few hundred lines, and a vector keeps its largest size (up to 3.6 MB
+    // after a burst of kMaxPending lines), while lines that keep coming fast keep their room.
+    constexpr std::size_t kKeep = 4096;
+    if (pending_.capacity() > kKeep && moved < pending_.capacity() / 4)
+        std::vector<ConsoleLine>().swap(pending_);
 }
 
 void ConsoleModel::clear() {

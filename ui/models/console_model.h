@@ -31,8 +31,14 @@ public:
     int rowCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
 
-    void append(ConsoleLine line) { pending_.push_back(std::move(line)); }
+    // Waits for the next flush. Lines past the cap would be dropped there anyway, so a burst
+    // between two flushes (a busy event loop, a fast replay) keeps at most kMaxPending of them.
+    void append(ConsoleLine line);
     void flush(); // moves pending lines into the model (one insert), drops the oldest past the cap
+    static constexpr int kMaxPending = kMaxLines + kMaxLines / 4;
+    std::size_t pendingLines() const { return pending_.size(); }
+    // Room held for pending lines: given back after a burst (what the soak's heap shows).
+    std::size_t pendingCapacity() const { return pending_.capacity(); }
     void clear();
     void setPaused(bool p) { paused_ = p; }
     // Arrival times in UTC or local time; the rows shown are rewritten.
