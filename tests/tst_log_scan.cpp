@@ -7,6 +7,8 @@
 #include "state/log_scan.h"
 
 #include <QTest>
+
+#include <algorithm>
 #include <random>
 
 using namespace gnss;
@@ -87,6 +89,8 @@ private slots:
                                        << "nemerix";
         QTest::newRow("lenient") << 100000 << ""
                                  << "lenient";
+        QTest::newRow("CR line ends") << 100000 << ""
+                                      << "CR";
     }
     void parallelCountsEqualSequential() {
         QFETCH(int, vendorFrom);
@@ -99,6 +103,8 @@ private slots:
         DecoderOptions o;
         if (dialect == "lenient")
             o.lenient = true;
+        else if (dialect == "CR") // a log with no LF at all: still cut into segments
+            log.erase(std::remove(log.begin(), log.end(), '\n'), log.end());
         else
             o.dialect = dialect.toStdString();
         const LogScanResult seq = frontToBack(log, reg, o);
@@ -108,6 +114,34 @@ private slots:
             QCOMPARE(par.segments, threads);
             expectSame(par, seq);
         }
+    }
+
+    // Where a line surely ends, reading the bytes alone: a LF, a CR LF, a CR before anything but
+    // a LF; a CR that is the last byte may be half of a CR LF still to come.
+    void lineEnds_data() {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<int>("from");
+        QTest::addColumn<int>("after"); // lineEndAfter, -1: none
+        QTest::addColumn<int>("last");  // lastLineEnd
+        QTest::newRow("LF") << QByteArray("ab\ncd") << 0 << 3 << 3;
+        QTest::newRow("CR LF") << QByteArray("ab\r\ncd") << 0 << 4 << 4;
+        QTest::newRow("CR alone") << QByteArray("ab\rcd") << 0 << 3 << 3;
+        QTest::newRow("CR last") << QByteArray("ab\r") << 0 << -1 << 0;
+        QTest::newRow("CR LF then CR last") << QByteArray("a\r\nb\r") << 0 << 3 << 3;
+        QTest::newRow("two CRs last") << QByteArray("a\r\r") << 0 << 2 << 2;
+        QTest::newRow("from past the first") << QByteArray("a\nb\rc\n") << 2 << 4 << 6;
+        QTest::newRow("none") << QByteArray("abc") << 0 << -1 << 0;
+        QTest::newRow("empty") << QByteArray() << 0 << -1 << 0;
+    }
+    void lineEnds() {
+        QFETCH(QByteArray, bytes);
+        QFETCH(int, from);
+        QFETCH(int, after);
+        QFETCH(int, last);
+        const std::string_view s(bytes.constData(), static_cast<std::size_t>(bytes.size()));
+        const std::size_t a = lineEndAfter(s, static_cast<std::size_t>(from));
+        QCOMPARE(a == std::string_view::npos ? -1 : static_cast<int>(a), after);
+        QCOMPARE(static_cast<int>(lastLineEnd(s)), last);
     }
 
     // An epoch whose time-carrying sentences are all on one side of a cut, with only GSV on the

@@ -1,5 +1,7 @@
 #include "epoch_runner.h"
 
+#include "state/log_scan.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -50,15 +52,15 @@ Checkpoint EpochRunner::save(std::uint64_t resume) const {
 
 bool EpochRunner::feed(std::string_view bytes, const std::atomic<bool> *cancel,
                        std::atomic<std::uint64_t> *progress) {
-    // Pieces of a few MB, cut after a '\n' (so that every line is whole in one feed and stays a
+    // Pieces of a few MB, cut at a line end (so that every line is whole in one feed and stays a
     // view into the mapping): between them, cancel is looked at and progress reported.
     constexpr std::size_t kStep = 4 << 20;
     while (!bytes.empty()) {
         if (cancel && cancel->load(std::memory_order_relaxed)) return false;
         std::size_t n = bytes.size();
         if (n > kStep) {
-            const std::size_t nl = bytes.find('\n', kStep);
-            n = nl == std::string_view::npos ? bytes.size() : nl + 1;
+            const std::size_t end = lineEndAfter(bytes, kStep);
+            n = end == std::string_view::npos ? bytes.size() : end;
         }
         chunkEnd_ = bytes.data() + n;
         framer_.feed(bytes.substr(0, n), [this](std::string_view line) { onLine(line); });

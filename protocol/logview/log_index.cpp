@@ -81,6 +81,10 @@ void closeIndex(const char *base, std::string_view unfinished, const DialectRegi
                 const IndexOptions &options, LogIndex &out) {
     EpochRunner::Sinks sinks;
     sinks.onEpoch = [&out](EpochRecord &&r, const ReceiverState &) { out.records.push_back(r); };
+    // A line ended by a last CR closes an epoch: the checkpoint after it keeps the last epochs
+    // within N of one (dropped with the open records when the file grows).
+    const std::size_t checkpointsBefore = out.checkpoints.size();
+    sinks.onCheckpoint = [&out](Checkpoint &&c) { addCheckpoint(out.checkpoints, std::move(c)); };
     EpochRunner last(registry, options.decoder, base, options.checkpointEvery, std::move(sinks));
     last.restore(out.tail);
     const std::size_t before = out.records.size();
@@ -88,14 +92,14 @@ void closeIndex(const char *base, std::string_view unfinished, const DialectRegi
     last.finish();
     out.openFramer = last.framerStats();
     out.openEnd = out.indexedEnd + unfinished.size();
+    out.openCheckpoints = out.checkpoints.size() - checkpointsBefore;
     out.openRecords = out.records.size() - before;
     out.lastIsOpen = out.openRecords > 0;
 }
 
-// Splits off what follows the last '\n'.
+// Splits off what follows the last line end (lastLineEnd: a LF, or a CR not last).
 std::pair<std::string_view, std::string_view> atLastLineEnd(std::string_view data) {
-    const std::size_t nl = data.rfind('\n');
-    const std::size_t cut = nl == std::string_view::npos ? 0 : nl + 1;
+    const std::size_t cut = lastLineEnd(data);
     return {data.substr(0, cut), data.substr(cut)};
 }
 
@@ -221,7 +225,9 @@ std::size_t extendIndex(const char *base, std::string_view whole, const DialectR
     // line ended by a bare CR, the file cut before its LF, closes an epoch and opens another;
     // dropping the open one alone kept the first twice.)
     out.records.resize(out.records.size() - std::min(out.openRecords, out.records.size()));
-    out.openRecords = 0;
+    out.checkpoints.resize(out.checkpoints.size() -
+                           std::min(out.openCheckpoints, out.checkpoints.size()));
+    out.openRecords = out.openCheckpoints = 0;
     out.lastIsOpen = false;
     const std::size_t changedFrom = out.records.size();
     EpochRunner::Sinks sinks;

@@ -36,6 +36,8 @@ struct LogIndex {
                                              // open one included (more than one when it closes
                                              // an epoch itself: a CR, the file cut before its LF);
                                              // redone when the file grows
+    std::size_t openCheckpoints = 0;         // checkpoints.back() ones made from it (after a
+                                             // last CR), dropped when it grows
     std::uint64_t start = 0, indexedEnd = 0; // file offsets indexed (to a line end)
     std::uint64_t openEnd = 0;               // ... and with the unfinished last line, if any
     FramerStats framer;                      // bytes, sentences, junk, cut lines (exact)

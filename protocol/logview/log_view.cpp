@@ -637,6 +637,8 @@ LogView::FollowResult LogView::follow() {
     auto &recs = index_.records;
     recs.resize(kept);
     recs.insert(recs.end(), gain.records.begin(), gain.records.end());
+    auto &cps = index_.checkpoints;
+    cps.resize(cps.size() - std::min(index_.openCheckpoints, cps.size()));
     for (Checkpoint &c : gain.checkpoints)
         if (index_.checkpoints.empty() || index_.checkpoints.back().carry.emitted < c.carry.emitted)
             index_.checkpoints.push_back(std::move(c));
@@ -646,6 +648,7 @@ LogView::FollowResult LogView::follow() {
     index_.openEnd = gain.openEnd;
     index_.openFramer = gain.openFramer;
     index_.openRecords = gain.openRecords;
+    index_.openCheckpoints = gain.openCheckpoints;
     index_.lastIsOpen = gain.lastIsOpen;
     r.firstChanged = kept;
     r.grew = true;

@@ -111,7 +111,23 @@ bool sameCounts(const SegmentRun &a, const SegmentRun &b) {
 
 } // namespace
 
-// Segment boundaries: just after a '\n' near each equal share of the log.
+std::size_t lineEndAfter(std::string_view log, std::size_t from) {
+    for (std::size_t p = from; (p = log.find_first_of("\r\n", p)) != std::string_view::npos;) {
+        if (log[p] == '\n') return p + 1;
+        if (p + 1 == log.size()) return std::string_view::npos; // a CR whose LF may follow
+        return log[p + 1] == '\n' ? p + 2 : p + 1;
+    }
+    return std::string_view::npos;
+}
+
+std::size_t lastLineEnd(std::string_view log) {
+    std::size_t p = log.find_last_of("\r\n");
+    if (p != std::string_view::npos && p + 1 == log.size() && log[p] == '\r')
+        p = p == 0 ? std::string_view::npos : log.find_last_of("\r\n", p - 1);
+    return p == std::string_view::npos ? 0 : p + 1;
+}
+
+// Segment boundaries: at the first line end after each equal share of the log.
 std::vector<std::string_view> cutLog(std::string_view log, unsigned pieces) {
     if (pieces == 0) pieces = 1;
     std::vector<std::string_view> out;
@@ -119,10 +135,10 @@ std::vector<std::string_view> cutLog(std::string_view log, unsigned pieces) {
     for (unsigned k = 1; k < pieces; ++k) {
         std::size_t target = log.size() / pieces * k;
         if (target <= start) continue;
-        const std::size_t nl = log.find('\n', target);
-        if (nl == std::string_view::npos) break;
-        out.push_back(log.substr(start, nl + 1 - start));
-        start = nl + 1;
+        const std::size_t end = lineEndAfter(log, target);
+        if (end == std::string_view::npos) break;
+        out.push_back(log.substr(start, end - start));
+        start = end;
     }
     out.push_back(log.substr(start));
     return out;

@@ -31,9 +31,16 @@ LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
                       const DecoderOptions &options, unsigned threads,
                       std::size_t minSegmentBytes = 4 << 20);
 
-// The pieces scanLog decodes, for other whole-log passes (the log viewer's index): `log` cut
-// just after a '\n' near each of `pieces` equal shares (fewer when lines are too long). A
-// decoder started at a piece's first byte frames exactly what one reading from the start does.
+// Where a line ends for certain, reading `log` alone: just after a LF, after a CR LF, or after
+// a CR followed by anything but a LF (a log of CR-ended lines). A CR that is the last byte is not
+// an end yet (its LF may follow). A decoder started at such a position frames what one reading
+// from the start does.
+// The first such position after `from` (npos if none), and the last in `log` (0 if none).
+std::size_t lineEndAfter(std::string_view log, std::size_t from);
+std::size_t lastLineEnd(std::string_view log);
+
+// The pieces scanLog decodes, for other whole-log passes (the log viewer's index): `log` cut at
+// the first line end (above) after each of `pieces` equal shares (fewer when lines are too long).
 std::vector<std::string_view> cutLog(std::string_view log, unsigned pieces);
 
 // Calls work(k) once for every k in [0, count), on at most `threads` threads (the caller's

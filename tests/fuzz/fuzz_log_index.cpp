@@ -150,7 +150,11 @@ void checkAgainstTruth(std::string_view log, const LogIndex &idx, const FrontToB
     check(idx.records.size() - std::min<std::size_t>(idx.records.size(),
                                                      idx.checkpoints.back().carry.emitted) <=
                   every,
-          "the last epochs are more than N past the last checkpoint");
+          "the last epochs are more than N past the last checkpoint",
+          std::to_string(idx.records.size()) + " epochs, the last checkpoint after " +
+                  std::to_string(idx.checkpoints.back().carry.emitted) + ", " +
+                  std::to_string(idx.openRecords) +
+                  " from the unfinished line, N = " + std::to_string(every));
     // Decoding on from a checkpoint gives the epochs of the index and the front-to-back states,
     // for the next N + 1 epochs (at most 8 checkpoints tried, spread over the log: every one with
     // N = 1 would cost more than the rest). A checkpoint where a piece began is mid-epoch: its

@@ -55,8 +55,9 @@ private slots:
         QTest::addColumn<int>("threads");
         QTest::addColumn<int>("pieceBytes");
         QTest::addColumn<int>("every");
-        for (const char *log : {"scenario", "scenario, no date, midnight", "generated 10 Hz", "nvs",
-                                "geostar", "nemerix", "nvs then geostar", "junk everywhere"}) {
+        for (const char *log :
+             {"scenario", "scenario, no date, midnight", "generated 10 Hz", "nvs", "geostar",
+              "nemerix", "nvs then geostar", "junk everywhere", "scenario, CR line ends"}) {
             QTest::newRow((std::string(log) + ", 1 piece").c_str()) << log << 1 << (1 << 30) << 64;
             QTest::newRow((std::string(log) + ", 2 threads").c_str())
                     << log << 2 << (1 << 30) << 16;
@@ -119,6 +120,39 @@ private slots:
             QVERIFY2(s == truth[k], qPrintable(QString("epoch %1").arg(k)));
         }
         QVERIFY(!idx.framer.bytesIn || idx.framer.bytesIn + idx.openFramer.bytesIn == text.size());
+        // Only the last line is left to the end (a log of CR-ended lines too): the rest is cut
+        // into pieces and indexed on the threads.
+        QVERIFY(text.size() - idx.indexedEnd < 200);
+    }
+
+    // A log whose last line ends with a CR and no LF (a CR-ended log, or a file cut before the
+    // LF): that line closes an epoch and the end closes one more, and a checkpoint after it keeps
+    // every epoch within N of one (tests/fuzz fuzz_log_index found the last two N = 1 apart from
+    // the last checkpoint), until the file grows.
+    void theLastLineEndedByACrHasACheckpointAfterIt() {
+        const FollowedScenario scenario;
+        const auto &[reg, text, o, whole] = scenario;
+        const std::size_t cr = text.find('\r', whole.records[40].offset);
+        QVERIFY(cr != std::string::npos && text[cr + 1] == '\n');
+        IndexOptions every1 = o;
+        every1.checkpointEvery = 1;
+        LogIndex idx;
+        buildIndex(text.data(), std::string_view(text).substr(0, cr + 1),
+                   startOfLog(reg, o.decoder, 0), reg, every1, idx);
+        QCOMPARE(idx.openRecords, std::size_t(2));
+        QCOMPARE(idx.openCheckpoints, std::size_t(1));
+        QCOMPARE(idx.records.size() - idx.checkpoints.back().carry.emitted, std::size_t(1));
+        const auto truth = test::frontToBack(text.substr(0, cr + 1), reg);
+        QCOMPARE(idx.records.size(), truth.size());
+        ReceiverState s;
+        QVERIFY(stateAtEpoch(text.data(), cr + 1, idx, truth.size() - 1, reg, {}, s));
+        QVERIFY(s == truth.back());
+        // Grown, the open checkpoint goes with the open records: checkpoints as a whole read.
+        extendIndex(text.data(), std::string_view(text).substr(idx.indexedEnd), reg, every1, idx);
+        const LogIndex all = indexOf(text, reg, 1, std::size_t(1) << 40, 1);
+        QVERIFY(sameRecords(idx.records, all.records));
+        QCOMPARE(idx.checkpoints.size(), all.checkpoints.size());
+        QCOMPARE(idx.openCheckpoints, std::size_t(0));
     }
 
     // A file that grows line by line (and mid-line) indexes to what the whole file gives.
