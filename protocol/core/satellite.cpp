@@ -1,5 +1,6 @@
 #include "satellite.h"
 
+#include <array>
 #include <cstdio>
 
 namespace gnss {
@@ -34,13 +35,24 @@ char rinexLetter(Constellation c) {
 
 Constellation constellationOfTalker(std::string_view t) {
     if (t.size() != 2) return Constellation::Unknown;
-    if (t == "GP") return Constellation::Gps;
-    if (t == "GL") return Constellation::Glonass;
-    if (t == "GA") return Constellation::Galileo;
-    if (t == "GB" || t == "BD") return Constellation::BeiDou;
-    if (t == "GQ" || t == "QZ") return Constellation::Qzss;
-    if (t == "GI") return Constellation::NavIC;
-    return Constellation::Unknown; // GN (combined) and anything else
+    // Every GSV asks: the G talkers by a table of their second letter (no chain of comparisons,
+    // no jump table, nothing for a branch predictor to miss).
+    static constexpr auto kG = [] {
+        std::array<Constellation, 26> g{};
+        g.fill(Constellation::Unknown); // GN (combined) and anything else
+        g['P' - 'A'] = Constellation::Gps;
+        g['L' - 'A'] = Constellation::Glonass;
+        g['A' - 'A'] = Constellation::Galileo;
+        g['B' - 'A'] = Constellation::BeiDou;
+        g['Q' - 'A'] = Constellation::Qzss;
+        g['I' - 'A'] = Constellation::NavIC;
+        return g;
+    }();
+    const auto second = static_cast<unsigned>(static_cast<unsigned char>(t[1]) - 'A');
+    if (t[0] == 'G') return second < kG.size() ? kG[second] : Constellation::Unknown;
+    if (t == "BD") return Constellation::BeiDou;
+    if (t == "QZ") return Constellation::Qzss;
+    return Constellation::Unknown;
 }
 
 Constellation constellationOfSystemId(int id) {

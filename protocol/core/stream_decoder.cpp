@@ -7,12 +7,25 @@ namespace {
 
 constexpr std::size_t kMaxTrackedAddresses = 4096;
 
-// Packs an address of up to 8 characters into a cache key (0 = not cacheable).
+inline std::uint64_t load32(const char *p) {
+    std::uint32_t v;
+    std::memcpy(&v, p, 4);
+    return v;
+}
+
+// Packs an address of up to 8 characters into a cache key (0 = not cacheable): its bytes in
+// order, zeros above. Read with fixed-size loads inside the address (two that may overlap, OR-ed
+// where they do: the same byte at the same place), not a memcpy of its length, which is a call,
+// and then a byte-wise store read back whole (a store-forwarding stall on every sentence).
 inline std::uint64_t packAddress(std::string_view a) {
-    if (a.empty() || a.size() > 8) return 0;
-    std::uint64_t k = 0;
-    std::memcpy(&k, a.data(), a.size());
-    return k;
+    const std::size_t n = a.size();
+    const char *p = a.data();
+    if (n - 1 >= 8) return 0; // empty or longer than 8
+    if (n >= 4) return load32(p) | load32(p + n - 4) << (8 * (n - 4));
+    const auto byte = [p](std::size_t i) -> std::uint64_t {
+        return static_cast<unsigned char>(p[i]);
+    };
+    return byte(0) | byte(n / 2) << (8 * (n / 2)) | byte(n - 1) << (8 * (n - 1));
 }
 
 inline std::size_t hashKey(std::uint64_t k) {

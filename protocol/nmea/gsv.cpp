@@ -26,8 +26,7 @@ bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
             --n;
         }
         for (std::size_t i = 3; i < n; i += 4) {
-            if (r.empty(i)) continue; // padding slot
-            int id;
+            int id; // none: an empty padding slot (or a malformed id, recorded)
             if (!r.integerValue(i, "satellite id", id)) continue;
             if (m.satelliteCount == Gsv::kMaxSatellites) {
                 r.failSentence(std::string(

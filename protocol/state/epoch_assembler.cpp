@@ -174,20 +174,87 @@ bool groupBefore(std::uint32_t a, std::uint32_t b) {
 // anywhere in a log then holds the same sky as one started at its beginning (the log index's
 // pieces rely on it to agree with a front-to-back decode).
 EpochAssembler::GsvGroup &EpochAssembler::group(std::uint32_t key) {
+    // Nearly always a group already known: found by its key alone, the order is looked at only
+    // to place a new one.
+    for (GsvGroup &g : groups_)
+        if (g.key == key) return g;
     auto it = groups_.begin();
-    for (; it != groups_.end(); ++it) {
-        if (it->key == key) return *it;
-        if (groupBefore(key, it->key)) break;
-    }
+    while (it != groups_.end() && !groupBefore(key, it->key)) ++it;
     it = groups_.emplace(it);
     it->key = key;
     it->refreshedEpoch = epochs_;
     return *it;
 }
 
+void EpochAssembler::addGsa(const nmea::Gsa &a) {
+    if (!usedThisEpoch_) {
+        used_.reset();
+        usedCount_ = 0;
+    }
+    usedThisEpoch_ = true;
+    for (std::size_t i = 0; i < a.idCount; ++i) {
+        if (!isUsed(a.satellites[i])) ++usedCount_;
+        markUsed(a.satellites[i]);
+    }
+    if (a.fix && (!gsaFix_ || *a.fix > *gsaFix_)) gsaFix_ = a.fix;
+    if (!current_.pdop) current_.pdop = a.pdop;
+    if (!current_.hdop) current_.hdop = a.hdop;
+    if (!current_.vdop) current_.vdop = a.vdop;
+    if (a.pdop) lastPdop_ = a.pdop;
+    if (a.hdop) lastHdop_ = a.hdop;
+    if (a.vdop) lastVdop_ = a.vdop;
+}
+
+void EpochAssembler::addGsv(const Sentence &s, const nmea::Gsv &gsv) {
+    const auto t = s.talker();
+    const std::uint32_t key =
+            (static_cast<std::uint32_t>(static_cast<unsigned char>(t[0])) << 24) |
+            (static_cast<std::uint32_t>(static_cast<unsigned char>(t.size() > 1 ? t[1] : 0))
+             << 16) |
+            static_cast<std::uint32_t>(gsv.signalId.value_or(0) & 0xFFFF);
+    GsvGroup &grp = group(key);
+    const int total = gsv.total.value_or(1);
+    const int index = gsv.index.value_or(1);
+    if (index == 1) {
+        if (!grp.pending.empty() || grp.nextIndex > 1) ++incompleteGroups_;
+        grp.pending.clear();
+        grp.expectedTotal = total;
+        grp.nextIndex = 1;
+    }
+    if (index != grp.nextIndex || total != grp.expectedTotal) {
+        // A part is missing or out of order: drop the whole group.
+        ++incompleteGroups_;
+        grp.pending.clear();
+        grp.nextIndex = 0;
+    } else {
+        for (std::size_t i = 0; i < gsv.satelliteCount; ++i) {
+            const nmea::GsvSatellite &sv = gsv.satellites[i];
+            SatelliteInView &out = grp.pending.emplace_back(); // filled in place (see above)
+            out.sat = sv.sat;
+            out.signalId = gsv.signalId.value_or(0);
+            out.elevation = sv.elevation;
+            out.azimuth = sv.azimuth;
+            out.snr = sv.snr;
+        }
+        if (index == total) {
+            grp.satellites.swap(grp.pending);
+            grp.pending.clear();
+            grp.nextIndex = 0;
+            grp.refreshedEpoch = epochs_;
+        } else {
+            ++grp.nextIndex;
+        }
+    }
+}
+
 void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) {
     using namespace nmea;
-    if (const auto *g = message_cast<Gga>(m)) {
+    // The sky's sentences first: they are two thirds of a multi-constellation receiver's.
+    if (const auto *g = message_cast<Gsv>(m)) {
+        addGsv(s, *g);
+    } else if (const auto *a = message_cast<Gsa>(m)) {
+        addGsa(*a);
+    } else if (const auto *g = message_cast<Gga>(m)) {
         startEpochIfTimeChanged(g->time, onEpoch);
         if (g->lat) current_.lat = g->lat;
         if (g->lon) current_.lon = g->lon;
@@ -232,63 +299,6 @@ void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) 
     } else if (const auto *v = message_cast<Vtg>(m)) {
         if (!current_.sogKnots) current_.sogKnots = v->sogKnots;
         if (!current_.cog) current_.cog = v->cogTrue;
-    } else if (const auto *a = message_cast<Gsa>(m)) {
-        if (!usedThisEpoch_) {
-            used_.reset();
-            usedCount_ = 0;
-        }
-        usedThisEpoch_ = true;
-        for (std::size_t i = 0; i < a->idCount; ++i) {
-            if (!isUsed(a->satellites[i])) ++usedCount_;
-            markUsed(a->satellites[i]);
-        }
-        if (a->fix && (!gsaFix_ || *a->fix > *gsaFix_)) gsaFix_ = a->fix;
-        if (!current_.pdop) current_.pdop = a->pdop;
-        if (!current_.hdop) current_.hdop = a->hdop;
-        if (!current_.vdop) current_.vdop = a->vdop;
-        if (a->pdop) lastPdop_ = a->pdop;
-        if (a->hdop) lastHdop_ = a->hdop;
-        if (a->vdop) lastVdop_ = a->vdop;
-    } else if (const auto *g = message_cast<Gsv>(m)) {
-        const auto t = s.talker();
-        const std::uint32_t key =
-                (static_cast<std::uint32_t>(static_cast<unsigned char>(t[0])) << 24) |
-                (static_cast<std::uint32_t>(static_cast<unsigned char>(t.size() > 1 ? t[1] : 0))
-                 << 16) |
-                static_cast<std::uint32_t>(g->signalId.value_or(0) & 0xFFFF);
-        GsvGroup &grp = group(key);
-        const int total = g->total.value_or(1);
-        const int index = g->index.value_or(1);
-        if (index == 1) {
-            if (!grp.pending.empty() || grp.nextIndex > 1) ++incompleteGroups_;
-            grp.pending.clear();
-            grp.expectedTotal = total;
-            grp.nextIndex = 1;
-        }
-        if (index != grp.nextIndex || total != grp.expectedTotal) {
-            // A part is missing or out of order: drop the whole group.
-            ++incompleteGroups_;
-            grp.pending.clear();
-            grp.nextIndex = 0;
-        } else {
-            for (std::size_t i = 0; i < g->satelliteCount; ++i) {
-                const GsvSatellite &sv = g->satellites[i];
-                SatelliteInView &out = grp.pending.emplace_back(); // filled in place (see above)
-                out.sat = sv.sat;
-                out.signalId = g->signalId.value_or(0);
-                out.elevation = sv.elevation;
-                out.azimuth = sv.azimuth;
-                out.snr = sv.snr;
-            }
-            if (index == total) {
-                grp.satellites.swap(grp.pending);
-                grp.pending.clear();
-                grp.nextIndex = 0;
-                grp.refreshedEpoch = epochs_;
-            } else {
-                ++grp.nextIndex;
-            }
-        }
     } else {
         return; // not an epoch message: nothing to count
     }

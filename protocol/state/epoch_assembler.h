@@ -16,6 +16,11 @@
 
 namespace gnss {
 
+namespace nmea {
+struct Gsa;
+struct Gsv;
+} // namespace nmea
+
 class EpochAssembler {
 public:
     using Callback = FunctionRef<void(const Epoch &)>;
@@ -44,6 +49,8 @@ private:
         int nextIndex = 0;
         std::uint64_t refreshedEpoch = 0;
     };
+    void addGsv(const Sentence &s, const nmea::Gsv &gsv);
+    void addGsa(const nmea::Gsa &a);
     void startEpochIfTimeChanged(const std::optional<TimeOfDay> &t, Callback onEpoch);
     void closeEpoch(Callback onEpoch);
     FixType fixFromQuality(int q) const;
