@@ -48,6 +48,18 @@ private slots:
         QCOMPARE(ref.prn, prn);
     }
 
+    // The inline table answers as mapSatelliteId does, for every system and any id.
+    void theInlineMappingIsMapSatelliteId() {
+        for (int c = 0; c <= int(gnss::Constellation::NavIC); ++c)
+            for (int id = -300; id <= 1000; ++id) {
+                const auto system = static_cast<gnss::Constellation>(c);
+                const auto inlined = gnss::mapSatelliteIdInline(system, id);
+                const auto called = gnss::mapSatelliteId(system, id);
+                if (!(inlined == called))
+                    QFAIL(qPrintable(QString("system %1, id %2").arg(c).arg(id)));
+            }
+    }
+
     void systemIdsName41xConstellations() {
         QCOMPARE(int(gnss::constellationOfSystemId(1)), int(Constellation::Gps));
         QCOMPARE(int(gnss::constellationOfSystemId(2)), int(Constellation::Glonass));

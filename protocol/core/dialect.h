@@ -41,8 +41,7 @@ public:
     // Satellite numbering, with the dialect's override where it has one.
     SatelliteRef mapSatellite(Constellation system, int id) const {
         if (dialectMapsSatellites_) return mapSatelliteByDialect(system, id);
-        if (system == Constellation::Gps && id >= 1 && id <= 32) return {system, id}; // hot path
-        return mapSatelliteId(system, id);
+        return mapSatelliteIdInline(system, id);
     }
     // Hands the decoded message to the caller (valid only during the call).
     void deliver(const Message &m) { emit_(m); }

@@ -61,7 +61,7 @@ void Framer::abandon(std::size_t bytes) {
     inSentence_ = false;
 }
 
-void Framer::feed(std::string_view chunk, SentenceCallback onSentence) {
+void Framer::feed(std::string_view chunk, const SentenceCallback &onSentence) {
     const char *p = chunk.data();
     const std::size_t n = chunk.size();
     stats_.bytesIn += n;

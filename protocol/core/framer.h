@@ -37,7 +37,7 @@ public:
 
     // Feeds a chunk; calls onSentence for each complete sentence. Views passed to the callback
     // are valid only during the call.
-    void feed(std::string_view chunk, SentenceCallback onSentence);
+    void feed(std::string_view chunk, const SentenceCallback &onSentence);
 
     // End of stream: a pending partial sentence is counted as truncated and dropped.
     void finish();

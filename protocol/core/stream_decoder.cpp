@@ -108,10 +108,10 @@ StreamDecoder::Resolved StreamDecoder::resolve(std::string_view address) {
     std::size_t slot = hashKey(key) & (cache_.size() - 1);
     for (std::size_t probe = 0; probe < cache_.size(); ++probe) {
         CacheEntry &e = cache_[slot];
-        if (!e.used) {
+        if (e.key == key) return {e.match, e.statsIndex}; // nearly always, at the first probe
+        if (e.key == 0) { // a free slot (no address packs to 0): not met before
             Resolved r = resolveSlow(address);
             if (cacheUsed_ < cache_.size() * 3 / 4) {
-                e.used = true;
                 e.key = key;
                 e.match = r.match;
                 e.statsIndex = r.statsIndex;
@@ -119,7 +119,6 @@ StreamDecoder::Resolved StreamDecoder::resolve(std::string_view address) {
             }
             return r;
         }
-        if (e.key == key) return {e.match, e.statsIndex};
         slot = (slot + 1) & (cache_.size() - 1);
     }
     return resolveSlow(address);
@@ -136,11 +135,11 @@ bool StreamDecoder::checksumAcceptable(const Sentence &s, const Dialect *ruleDia
     return false;
 }
 
-void StreamDecoder::feed(std::string_view bytes, Handler handler) {
+void StreamDecoder::feed(std::string_view bytes, const Handler &handler) {
     framer_.feed(bytes, [&](std::string_view line) { decodeLine(line, handler); });
 }
 
-void StreamDecoder::decodeLine(std::string_view line, Handler handler) {
+void StreamDecoder::decodeLine(std::string_view line, const Handler &handler) {
     Sentence s;
     if (!s.parse(line)) {
         ++malformed_;

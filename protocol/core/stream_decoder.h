@@ -60,13 +60,13 @@ public:
     StreamDecoder(const DialectRegistry &registry, DecoderOptions options = {});
 
     // Feeds raw bytes from the receiver.
-    void feed(std::string_view bytes, Handler handler);
+    void feed(std::string_view bytes, const Handler &handler);
     // End of stream (counts a dangling partial sentence).
     void finish() { framer_.finish(); }
     // Forgets a partial sentence without counting it (a baud switch: what came before is noise).
     void resetFraming() { framer_.reset(); }
     // Decodes one already-framed line (no terminator).
-    void decodeLine(std::string_view line, Handler handler);
+    void decodeLine(std::string_view line, const Handler &handler);
 
     const FramerStats &framerStats() const { return framer_.stats(); }
     // Per-address counters, in order of first appearance.
@@ -82,10 +82,9 @@ public:
 
 private:
     struct CacheEntry {
-        std::uint64_t key = 0;
+        std::uint64_t key = 0; // 0: free
         DialectRegistry::Match match;
         std::uint32_t statsIndex = 0;
-        bool used = false;
     };
     struct Resolved {
         DialectRegistry::Match match;

@@ -11,7 +11,7 @@ namespace gnss::rtcm {
 // first byte not yet decided: a candidate that needs bytes beyond n (never when atEnd), or
 // `limit` or more when everything before it was decided. A frame found may end beyond `limit`.
 std::size_t RtcmFramer::scan(const std::uint8_t *p, std::size_t n, std::size_t limit, bool atEnd,
-                             FrameCallback onFrame) {
+                             const FrameCallback &onFrame) {
     std::size_t i = 0;
     while (i < limit) {
         const void *hit = std::memchr(p + i, kPreamble, limit - i);
@@ -62,13 +62,13 @@ std::size_t RtcmFramer::scan(const std::uint8_t *p, std::size_t n, std::size_t l
     return i;
 }
 
-void RtcmFramer::feed(std::string_view chunk, FrameCallback onFrame) {
+void RtcmFramer::feed(std::string_view chunk, const FrameCallback &onFrame) {
     feed(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t *>(chunk.data()),
                                        chunk.size()),
          onFrame);
 }
 
-void RtcmFramer::feed(std::span<const std::uint8_t> chunk, FrameCallback onFrame) {
+void RtcmFramer::feed(std::span<const std::uint8_t> chunk, const FrameCallback &onFrame) {
     stats_.bytesIn += chunk.size();
     std::size_t from = 0; // first byte of `chunk` still to scan in place
     if (!held_.empty()) {
@@ -91,7 +91,7 @@ void RtcmFramer::feed(std::span<const std::uint8_t> chunk, FrameCallback onFrame
     if (done < n) held_.assign(chunk.begin() + std::ptrdiff_t(from + done), chunk.end());
 }
 
-void RtcmFramer::finish(FrameCallback onFrame) {
+void RtcmFramer::finish(const FrameCallback &onFrame) {
     truncationCounted_ = false;
     if (!held_.empty()) scan(held_.data(), held_.size(), held_.size(), true, onFrame);
     held_.clear();

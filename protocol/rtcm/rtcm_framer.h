@@ -57,11 +57,11 @@ class RtcmFramer {
 public:
     using FrameCallback = FunctionRef<void(const RtcmFrame &)>;
 
-    void feed(std::string_view chunk, FrameCallback onFrame);
-    void feed(std::span<const std::uint8_t> chunk, FrameCallback onFrame);
+    void feed(std::string_view chunk, const FrameCallback &onFrame);
+    void feed(std::span<const std::uint8_t> chunk, const FrameCallback &onFrame);
 
     // End of stream: frames still findable in the held bytes are emitted; the rest is skipped.
-    void finish(FrameCallback onFrame);
+    void finish(const FrameCallback &onFrame);
 
     // Forgets held bytes without counting them (e.g. after a reconnect).
     void reset() { held_.clear(); }
@@ -72,7 +72,7 @@ public:
 
 private:
     std::size_t scan(const std::uint8_t *p, std::size_t n, std::size_t limit, bool atEnd,
-                     FrameCallback onFrame);
+                     const FrameCallback &onFrame);
 
     RtcmFramerStats stats_;
     std::vector<std::uint8_t> held_; // undecided bytes carried across chunks

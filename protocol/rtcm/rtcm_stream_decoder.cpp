@@ -2,18 +2,18 @@
 
 namespace gnss::rtcm {
 
-void RtcmStreamDecoder::onFrame(const RtcmFrame &f, Handler handler) {
+void RtcmStreamDecoder::onFrame(const RtcmFrame &f, const Handler &handler) {
     const RtcmMessage m = decodeMessage(f.payload());
     ++perType_[m.number & 0xFFF];
     if (!m.error.empty()) ++decodeErrors_;
     handler(m);
 }
 
-void RtcmStreamDecoder::feed(std::string_view bytes, Handler handler) {
+void RtcmStreamDecoder::feed(std::string_view bytes, const Handler &handler) {
     framer_.feed(bytes, [&](const RtcmFrame &f) { onFrame(f, handler); });
 }
 
-void RtcmStreamDecoder::finish(Handler handler) {
+void RtcmStreamDecoder::finish(const Handler &handler) {
     framer_.finish([&](const RtcmFrame &f) { onFrame(f, handler); });
 }
 

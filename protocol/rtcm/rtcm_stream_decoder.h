@@ -19,8 +19,8 @@ class RtcmStreamDecoder {
 public:
     using Handler = FunctionRef<void(const RtcmMessage &)>;
 
-    void feed(std::string_view bytes, Handler handler);
-    void finish(Handler handler);
+    void feed(std::string_view bytes, const Handler &handler);
+    void finish(const Handler &handler);
 
     const RtcmFramerStats &framerStats() const { return framer_.stats(); }
     std::uint64_t decodeErrors() const { return decodeErrors_; }
@@ -28,7 +28,7 @@ public:
     std::vector<std::pair<unsigned, std::uint64_t>> typeCounts() const;
 
 private:
-    void onFrame(const RtcmFrame &f, Handler handler);
+    void onFrame(const RtcmFrame &f, const Handler &handler);
 
     RtcmFramer framer_;
     std::array<std::uint64_t, 4096> perType_{};

@@ -53,13 +53,14 @@ FixType EpochAssembler::fixFromQuality(int q) const {
     return fixTypeFromGgaQuality(q);
 }
 
-void EpochAssembler::startEpochIfTimeChanged(const std::optional<TimeOfDay> &t, Callback onEpoch) {
+void EpochAssembler::startEpochIfTimeChanged(const std::optional<TimeOfDay> &t,
+                                             const Callback &onEpoch) {
     if (!t) return;
     if (current_.time && !(*current_.time == *t)) closeEpoch(onEpoch);
     if (!current_.time) current_.time = t;
 }
 
-void EpochAssembler::closeEpoch(Callback onEpoch) {
+void EpochAssembler::closeEpoch(const Callback &onEpoch) {
     if (!hasContent_) return;
     Epoch &e = current_;
     if (!e.date) e.date = lastDate_;
@@ -146,7 +147,7 @@ bool EpochAssembler::sameFuture(const EpochAssembler &o) const {
     return true;
 }
 
-void EpochAssembler::flush(Callback onEpoch) {
+void EpochAssembler::flush(const Callback &onEpoch) {
     closeEpoch(onEpoch);
 }
 
@@ -247,7 +248,7 @@ void EpochAssembler::addGsv(const Sentence &s, const nmea::Gsv &gsv) {
     }
 }
 
-void EpochAssembler::add(const Sentence &s, const Message &m, Callback onEpoch) {
+void EpochAssembler::add(const Sentence &s, const Message &m, const Callback &onEpoch) {
     using namespace nmea;
     // The sky's sentences first: they are two thirds of a multi-constellation receiver's.
     if (const auto *g = message_cast<Gsv>(m)) {

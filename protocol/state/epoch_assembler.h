@@ -29,9 +29,9 @@ public:
     void setDialect(const Dialect *d) { dialect_ = d; }
 
     // Adds one decoded message; calls onEpoch when it closes the epoch in progress.
-    void add(const Sentence &s, const Message &m, Callback onEpoch);
+    void add(const Sentence &s, const Message &m, const Callback &onEpoch);
     // Emits the epoch in progress, if it holds anything.
-    void flush(Callback onEpoch);
+    void flush(const Callback &onEpoch);
 
     std::uint64_t epochs() const { return epochs_; }
     // Whether both would turn the same messages into the same epochs from here on (what they
@@ -51,8 +51,8 @@ private:
     };
     void addGsv(const Sentence &s, const nmea::Gsv &gsv);
     void addGsa(const nmea::Gsa &a);
-    void startEpochIfTimeChanged(const std::optional<TimeOfDay> &t, Callback onEpoch);
-    void closeEpoch(Callback onEpoch);
+    void startEpochIfTimeChanged(const std::optional<TimeOfDay> &t, const Callback &onEpoch);
+    void closeEpoch(const Callback &onEpoch);
     FixType fixFromQuality(int q) const;
     FixType fixFromMode(char mode) const;
     int modeRank(char mode) const;

@@ -5,7 +5,7 @@
 namespace gnss {
 
 void StateTracker::add(const Sentence &s, const Message &m, const Dialect *ruleDialect,
-                       Callback onEpoch) {
+                       const Callback &onEpoch) {
     auto deliver = [&](const Epoch &e) {
         state_.epoch = e;
         onEpoch(state_);
@@ -25,7 +25,7 @@ void StateTracker::add(const Sentence &s, const Message &m, const Dialect *ruleD
     epochs_.add(s, m, deliver);
 }
 
-void StateTracker::flush(Callback onEpoch) {
+void StateTracker::flush(const Callback &onEpoch) {
     epochs_.flush([&](const Epoch &e) {
         state_.epoch = e;
         onEpoch(state_);

@@ -18,8 +18,9 @@ public:
     }
 
     // One decoded message (with the dialect of the rule that decoded it, nullptr: standard).
-    void add(const Sentence &s, const Message &m, const Dialect *ruleDialect, Callback onEpoch);
-    void flush(Callback onEpoch);
+    void add(const Sentence &s, const Message &m, const Dialect *ruleDialect,
+             const Callback &onEpoch);
+    void flush(const Callback &onEpoch);
 
     const ReceiverState &state() const { return state_; }
     // Whether both hold the same state and will turn the same messages into the same snapshots.
