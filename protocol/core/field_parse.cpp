@@ -15,61 +15,59 @@ inline bool isDigit(char c) {
 }
 
 // Parses "[+-]digits[.digits]" into an integer mantissa and a count of decimals.
-// Returns false on anything else (or more than 18 significant digits).
+// Returns false on anything else (or more than 18 digits before the point; decimals past the
+// 18th significant digit are ignored). A loop for each part: no test per character of which
+// part it is in.
 inline bool parseDecimal(std::string_view s, bool &neg, std::uint64_t &mant, int &decimals,
                          std::uint64_t &intPart) {
-    std::size_t i = 0;
+    const char *p = s.data();
+    const char *const end = p + s.size();
     neg = false;
-    if (i < s.size() && (s[i] == '-' || s[i] == '+')) {
-        neg = s[i] == '-';
-        ++i;
+    if (p != end && (*p == '-' || *p == '+')) {
+        neg = *p == '-';
+        ++p;
     }
     mant = 0;
     decimals = 0;
-    int digits = 0;
-    bool any = false;
-    for (; i < s.size() && isDigit(s[i]); ++i) {
-        if (++digits > 18) return false;
-        mant = mant * 10 + static_cast<std::uint64_t>(s[i] - '0');
-        any = true;
-    }
+    unsigned d;
+    const char *const whole = p;
+    for (; p != end && (d = static_cast<unsigned char>(*p) - '0') <= 9; ++p) mant = mant * 10 + d;
+    int digits = static_cast<int>(p - whole);
+    if (digits > 18) return false;
     intPart = mant;
-    if (i < s.size() && s[i] == '.') {
-        ++i;
-        for (; i < s.size() && isDigit(s[i]); ++i) {
+    if (p != end && *p == '.') {
+        for (++p; p != end && (d = static_cast<unsigned char>(*p) - '0') <= 9; ++p) {
             if (digits >= 18) continue; // extra precision beyond double's: ignore
             ++digits;
-            mant = mant * 10 + static_cast<std::uint64_t>(s[i] - '0');
+            mant = mant * 10 + d;
             ++decimals;
-            any = true;
         }
     }
-    return any && i == s.size();
+    return digits > 0 && p == end;
 }
 
 } // namespace
 
 bool parseReal(std::string_view s, double &out) {
     // Fast path: unsigned "digits[.digits]" with at most 15 significant digits, the form of
-    // nearly every real field (DOPs, altitudes, speeds); exact to the last digit.
-    {
+    // nearly every real field (DOPs, altitudes, speeds); exact to the last digit. Two plain
+    // loops, the whole part then the decimals: no test per character of which part it is in.
+    if (s.size() - 1 < 16) {
         const char *p = s.data();
-        const std::size_t n = s.size();
-        std::size_t i = 0;
+        const char *const end = p + s.size();
         std::uint64_t mant = 0;
-        int dec = -1;
-        for (; i < n && i < 16; ++i) {
-            const unsigned d = static_cast<unsigned char>(p[i]) - '0';
-            if (d <= 9) {
+        unsigned d;
+        for (; p != end && (d = static_cast<unsigned char>(*p) - '0') <= 9; ++p)
+            mant = mant * 10 + d;
+        const bool whole = p != s.data();
+        int dec = 0;
+        if (p != end && *p == '.') {
+            const char *const first = ++p;
+            for (; p != end && (d = static_cast<unsigned char>(*p) - '0') <= 9; ++p)
                 mant = mant * 10 + d;
-                if (dec >= 0) ++dec;
-            } else if (p[i] == '.' && dec < 0) {
-                dec = 0;
-            } else {
-                break;
-            }
+            dec = static_cast<int>(p - first);
         }
-        if (i == n && n > 0 && !(n == 1 && dec == 0)) {
+        if (p == end && (whole || dec > 0)) {
             out = dec > 0 ? static_cast<double>(mant) / kPow10[dec] : static_cast<double>(mant);
             return true;
         }

@@ -49,8 +49,13 @@ public:
     // The same into a plain int: true when field i holds one (false when it is empty, or not an
     // integer: the error is recorded).
     [[gnu::always_inline]] bool integerValue(std::size_t i, const char *name, int &out) {
+        switch (s_.smallField(i, out)) { // most integer fields: straight from the sentence
+        case Sentence::kSmallNumber: return true;
+        case Sentence::kEmpty: return false;
+        case Sentence::kOther: break;
+        }
         const auto t = s_.field(i);
-        if (t.empty()) return false;
+        if (t.empty()) return false; // blanks only
         if (parseSmallInt(t, out)) return true;
         const auto slow = integerSlow(i, name);
         if (slow) out = *slow;

@@ -60,6 +60,40 @@ public:
         return body_.substr(start_[i], start_[i + 1] - start_[i] - 1);
     }
 
+    // Field i when it is empty or one to three digits, the commonest fields of all (satellite
+    // ids, elevations, azimuths, SNRs, counts), read without making a view of it first:
+    // kSmallNumber (in `out`), kEmpty (or past the end), or kOther (anything else: read it as
+    // text).
+    enum SmallField { kEmpty, kSmallNumber, kOther };
+    SmallField smallField(std::size_t i, int &out) const {
+        if (i >= fieldCount_) return kEmpty;
+        const unsigned from = start_[i], length = start_[i + 1] - from - 1u;
+        const auto *p = reinterpret_cast<const unsigned char *>(body_.data()) + from;
+        switch (length) {
+        case 0: return kEmpty;
+        case 1: {
+            const unsigned a = p[0] - unsigned{'0'};
+            if (a > 9) return kOther;
+            out = static_cast<int>(a);
+            return kSmallNumber;
+        }
+        case 2: {
+            const unsigned a = p[0] - unsigned{'0'}, b = p[1] - unsigned{'0'};
+            if ((a > 9) | (b > 9)) return kOther;
+            out = static_cast<int>(a * 10 + b);
+            return kSmallNumber;
+        }
+        case 3: {
+            const unsigned a = p[0] - unsigned{'0'}, b = p[1] - unsigned{'0'},
+                           c = p[2] - unsigned{'0'};
+            if ((a > 9) | (b > 9) | (c > 9)) return kOther;
+            out = static_cast<int>(a * 100 + b * 10 + c);
+            return kSmallNumber;
+        }
+        default: return kOther;
+        }
+    }
+
     const char *error() const { return error_; }
 
 private:

@@ -39,8 +39,7 @@ bool decodeGsa(const Sentence &s, DecodeContext &ctx) {
         m.system = m.systemId ? constellationOfSystemId(*m.systemId)
                               : constellationOfTalker(s.talker());
         for (std::size_t i = 2; i + 3 < n; ++i) {
-            if (r.empty(i)) continue;
-            int id;
+            int id; // none: an empty slot (or a malformed id, recorded)
             if (!r.integerValue(i, "satellite id", id) || m.idCount == Gsa::kMaxIds) continue;
             m.ids[m.idCount] = id;
             m.satellites[m.idCount] = ctx.mapSatellite(m.system, id);
