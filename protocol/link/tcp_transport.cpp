@@ -12,6 +12,11 @@ TcpTransport::TcpTransport(QString host, quint16 port, QObject *parent)
     : Transport(parent), host_(std::move(host)), port_(port) {
     connectTimer_.setSingleShot(true);
     connectTimer_.setInterval(kDefaultConnectTimeoutMs);
+    // Bounded reads: when what is read is handed on more slowly than it comes (a consumer
+    // blocked on a full pipe, gnss-cli monitor behind a slow reader), Qt's buffer would
+    // otherwise take in all the kernel holds at once, chunks of megabytes, and the program's
+    // memory would follow the longest stall (gnss-soak --cli monitor grew 15 MB in 24 hours).
+    socket_.setReadBufferSize(kReadChunk);
     connect(&connectTimer_, &QTimer::timeout, this, [this] {
         if (state() != State::Connecting) return;
         abortSocket();

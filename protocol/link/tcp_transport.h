@@ -25,6 +25,9 @@ public:
     qint64 pendingWriteBytes() const override { return socket_.bytesToWrite(); }
     // How long a connection attempt may take before it is given up.
     void setConnectTimeout(int ms) { connectTimer_.setInterval(ms); }
+    // The most read from the socket at once (a chunk handed on); the rest waits in the kernel,
+    // and past its buffer TCP slows the sender down.
+    static constexpr qint64 kReadChunk = 256 * 1024;
 
 protected:
     bool writeBytes(const QByteArray &bytes) override;

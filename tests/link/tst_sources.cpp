@@ -19,9 +19,14 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
+
 #include <QElapsedTimer>
 #include <QSignalSpy>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QTest>
+#include <QThread>
 #include <QTimer>
 
 using namespace gnss;
@@ -101,6 +106,34 @@ private slots:
         sim.stop();
         QTRY_COMPARE_WITH_TIMEOUT(tcp.state(), Transport::State::Lost, 5000);
         QVERIFY(!tcp.errorString().isEmpty());
+    }
+
+    // What is read is handed on in chunks of at most kReadChunk, however much waits in the
+    // kernel (here several megabytes, sent while the loop was busy): memory does not follow
+    // the longest stall of whatever consumes it.
+    void tcpReadsInBoundedChunks() {
+        QTcpServer server;
+        QVERIFY(server.listen(QHostAddress::LocalHost));
+        TcpTransport tcp(QStringLiteral("127.0.0.1"), server.serverPort());
+        QVERIFY(tcp.open());
+        QTRY_VERIFY_WITH_TIMEOUT(server.hasPendingConnections(), 5000);
+        QTcpSocket *peer = server.nextPendingConnection();
+        QTRY_COMPARE_WITH_TIMEOUT(tcp.state(), Transport::State::Open, 5000);
+        qint64 got = 0, largest = 0;
+        connect(&tcp, &Transport::bytesReceived, [&](const QByteArray &b) {
+            got += b.size();
+            largest = std::max<qint64>(largest, b.size());
+        });
+        const QByteArray block(1 << 20, 'x');
+        constexpr qint64 kTotal = 8 << 20;
+        for (qint64 sent = 0; sent < kTotal; sent += block.size()) peer->write(block);
+        // The bytes reach the kernel's buffers while nothing reads them.
+        for (int i = 0; i < 20 && peer->bytesToWrite() > 0; ++i) {
+            peer->waitForBytesWritten(50);
+            QThread::msleep(20);
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(got, kTotal, 10000);
+        QVERIFY2(largest <= TcpTransport::kReadChunk, QByteArray::number(largest));
     }
 
     void tcpConnectsInTheBackgroundAndSaysWhyItFailed() {
