@@ -33,8 +33,12 @@ void add(std::string &out, const char *body) {
 } // namespace
 
 void generateLog(std::string &out, std::size_t bytes) {
+    LogGenerator().append(out, bytes);
+}
+
+void LogGenerator::append(std::string &out, std::size_t bytes) {
     char b[256];
-    long epoch = 0;
+    long &epoch = epoch_;
     while (out.size() < bytes) {
         const long tenths = epoch % 864000;
         const int h = static_cast<int>(tenths / 36000), m = static_cast<int>(tenths / 600 % 60);

@@ -9,6 +9,18 @@ namespace gnss::bench {
 // Appends epochs until `out` holds at least `bytes` bytes.
 void generateLog(std::string &out, std::size_t bytes);
 
+// The same log a piece at a time: each append() goes on from the epoch the last one ended
+// with, so pieces written one after the other are generateLog's log (gnss-loggen writes logs of
+// any size so, with a few MB of memory).
+class LogGenerator {
+public:
+    // Appends epochs until `out` holds at least `bytes` bytes.
+    void append(std::string &out, std::size_t bytes);
+
+private:
+    long epoch_ = 0;
+};
+
 // Writes such a log of `bytes` to `path` from a child process (its memory is not the caller's).
 bool writeLogFile(const std::string &path, std::size_t bytes);
 

@@ -24,6 +24,22 @@ class TestLogviewInputs : public QObject {
     std::string path(const char *name) const { return dir_.filePath(name).toStdString(); }
 
 private slots:
+    // The generated log, made a piece at a time (as gnss-loggen writes logs of any size), is
+    // byte for byte the log made at once, which the suites and benchmarks use.
+    void theGeneratedLogInPiecesIsTheLogAtOnce() {
+        std::string whole;
+        bench::generateLog(whole, 3'000'000);
+        bench::LogGenerator generator;
+        std::string pieces, piece;
+        for (std::size_t size = 1; pieces.size() < whole.size(); size = size * 3 + 7) {
+            piece.clear();
+            generator.append(piece, std::min<std::size_t>(size, whole.size() - pieces.size()));
+            pieces += piece;
+        }
+        QCOMPARE(pieces.size(), whole.size());
+        QVERIFY(pieces == whole);
+    }
+
     void opensWhateverItIsGiven_data() {
         QTest::addColumn<QByteArray>("bytes");
         QTest::addColumn<int>("epochs");
