@@ -62,16 +62,6 @@ std::uint8_t nmeaChecksum(std::string_view body) {
     return sum;
 }
 
-std::string_view Sentence::talker() const {
-    if (proprietary()) return address_.substr(0, 1);
-    return address_.substr(0, address_.size() >= 2 ? 2 : address_.size());
-}
-
-std::string_view Sentence::type() const {
-    if (proprietary()) return address_.substr(1);
-    return address_.size() > 2 ? address_.substr(2) : std::string_view{};
-}
-
 bool Sentence::parse(std::string_view line) {
     line_ = line;
     error_ = nullptr;

@@ -37,8 +37,15 @@ public:
     std::string_view address() const { return address_; }
     // Standard address: talker = first two characters, type = the rest ("GP" + "GGA").
     // Proprietary address: talker "P", type = the rest ("P" + "NVGRTK").
-    std::string_view talker() const;
-    std::string_view type() const;
+    // Inline: every GSV and GSA asks for its talker.
+    std::string_view talker() const {
+        if (proprietary()) return address_.substr(0, 1);
+        return address_.substr(0, address_.size() >= 2 ? 2 : address_.size());
+    }
+    std::string_view type() const {
+        if (proprietary()) return address_.substr(1);
+        return address_.size() > 2 ? address_.substr(2) : std::string_view{};
+    }
     bool proprietary() const { return !address_.empty() && address_.front() == 'P'; }
 
     ChecksumStatus checksum() const { return checksumStatus_; }

@@ -161,7 +161,7 @@ void StreamDecoder::decodeLine(std::string_view line, const Handler &handler) {
                               true});
         return;
     }
-    if (!checksumAcceptable(s, r.match.dialect)) {
+    if (s.checksum() != ChecksumStatus::Ok && !checksumAcceptable(s, r.match.dialect)) {
         ++st.rejected;
         char a[3], b[3];
         if (s.checksum() == ChecksumStatus::Bad) {
