@@ -197,6 +197,8 @@ private slots:
         // The same through the keyboard.
         cursor->seek(10);
         w->activateWindow();
+        // A window shortcut answers only in the active window; activation is asynchronous.
+        QVERIFY(QTest::qWaitForWindowActive(w.get()));
         QTest::keyClick(w.get(), Qt::Key_Right);
         QCOMPARE(cursor->current(), std::size_t(11));
         // A typed time: 10:05:00 is epoch 300 before the 30 s gap... the gap starts at 300, so
@@ -398,9 +400,12 @@ private slots:
         QVERIFY(why.contains("speed"));
         QVERIFY(!player->running());
         // The dialog is there, with the range.
-        w->findChild<QAction *>("playOutAction")->trigger();
+        auto *playOut = w->findChild<QAction *>("playOutAction");
+        QVERIFY2(playOut->isEnabled(), "Play Out is offered once the log is indexed");
+        playOut->trigger();
         auto *dialog = w->findChild<app::PlayOutDialog *>();
-        QVERIFY(dialog && dialog->isVisible());
+        QVERIFY2(dialog, "File > Play Out opens its dialog");
+        QTRY_VERIFY(dialog->isVisible());
     }
 
     // A logger still writing: with Follow on, the timeline grows and the cursor stays at the end.
