@@ -70,8 +70,7 @@ StreamDecoder::StreamDecoder(const DialectRegistry &registry, DecoderOptions opt
 void StreamDecoder::setDialect(const Dialect *d) {
     dialect_ = d;
     autoDetect_ = d == nullptr;
-    cache_ = {};
-    cacheUsed_ = 0;
+    forgetAddresses();
 }
 
 std::uint32_t StreamDecoder::statsIndexFor(std::string_view address) {
@@ -102,13 +101,27 @@ StreamDecoder::Resolved StreamDecoder::resolveSlow(std::string_view address) {
     return {registry_.lookup(lookupAddress, dialect_), statsIndexFor(address)};
 }
 
+void StreamDecoder::forgetAddresses() {
+    cache_ = {};
+    cacheUsed_ = 0;
+    last_ = {};
+}
+
 StreamDecoder::Resolved StreamDecoder::resolve(std::string_view address) {
     const std::uint64_t key = packAddress(address);
     if (key == 0) return resolveSlow(address);
+    // The address of the sentence before, most often (a receiver sends a system's GSVs and a
+    // combined fix's GSAs one after the other): one comparison. The decode waits on this
+    // answer (its function is called through it), so the hash and the table's load were on
+    // every sentence's path.
+    if (key == last_.key) return {last_.match, last_.statsIndex};
     std::size_t slot = hashKey(key) & (cache_.size() - 1);
     for (std::size_t probe = 0; probe < cache_.size(); ++probe) {
         CacheEntry &e = cache_[slot];
-        if (e.key == key) return {e.match, e.statsIndex}; // nearly always, at the first probe
+        if (e.key == key) { // nearly always, at the first probe
+            last_ = e;
+            return {e.match, e.statsIndex};
+        }
         if (e.key == 0) { // a free slot (no address packs to 0): not met before
             Resolved r = resolveSlow(address);
             if (cacheUsed_ < cache_.size() * 3 / 4) {
@@ -200,8 +213,7 @@ void StreamDecoder::decodeLine(std::string_view line, const Handler &handler) {
     if (autoDetect_ && !dialect_ && r.match.dialect && r.match.rule->match == AddressMatch::Whole &&
         s.checksum() != ChecksumStatus::Bad) {
         dialect_ = r.match.dialect;
-        cache_ = {};
-        cacheUsed_ = 0;
+        forgetAddresses();
     }
 }
 

@@ -91,6 +91,7 @@ private:
         std::uint32_t statsIndex;
     };
     Resolved resolve(std::string_view address);
+    void forgetAddresses(); // what resolve() learnt (the dialect changed)
     Resolved resolveSlow(std::string_view address);
     std::uint32_t statsIndexFor(std::string_view address);
     bool checksumAcceptable(const Sentence &s, const Dialect *ruleDialect) const;
@@ -104,6 +105,7 @@ private:
     std::unordered_map<std::string, std::uint32_t> statsByAddress_;
     std::array<CacheEntry, 256> cache_{};
     std::size_t cacheUsed_ = 0;
+    CacheEntry last_; // the last address found in the cache
     std::uint64_t malformed_ = 0;
     std::string aliasBuffer_;
     Refusal problem_; // of the last checksum refusal (the event points at it)

@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include <unistd.h>
+
 #include <benchmark/benchmark.h>
 
 namespace gnss::bench {
@@ -45,6 +47,10 @@ namespace gnss::bench {
 // how much the others took away.
 class BestOfReporter : public benchmark::ConsoleReporter {
 public:
+    // As the library's own console output: colours on a terminal, plain "name=value" counters
+    // otherwise (what scripts read).
+    BestOfReporter() : ConsoleReporter(isatty(STDOUT_FILENO) ? OO_Color : OO_None) {}
+
     void ReportRuns(const std::vector<Run> &runs) override {
         ConsoleReporter::ReportRuns(runs);
         for (const Run &r : runs) {
