@@ -46,17 +46,20 @@ constexpr MaskKey kMaskKeys[] = {
 } // namespace
 
 std::vector<std::string> sequenceIds(std::string_view list) {
+    // Spaces around an id are the user's layout ("GGA; RMC"); one inside it is part of it, so
+    // "G SV" is refused by name rather than sent as GSV.
     std::vector<std::string> out;
-    std::string cur;
-    for (char c : list) {
-        if (c == ';' || c == ',') {
-            if (!cur.empty()) out.push_back(cur);
-            cur.clear();
-        } else if (c != ' ') {
-            cur.push_back(c);
+    auto keep = [&out](std::string_view id) {
+        const auto first = id.find_first_not_of(' ');
+        if (first == std::string_view::npos) return;
+        out.emplace_back(id.substr(first, id.find_last_not_of(' ') - first + 1));
+    };
+    std::size_t start = 0;
+    for (std::size_t i = 0; i <= list.size(); ++i)
+        if (i == list.size() || list[i] == ';' || list[i] == ',') {
+            keep(list.substr(start, i - start));
+            start = i + 1;
         }
-    }
-    if (!cur.empty()) out.push_back(cur);
     return out;
 }
 

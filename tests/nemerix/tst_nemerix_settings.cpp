@@ -20,12 +20,6 @@ const gnss::Dialect &D() {
     return gnss::nemerix::dialect();
 }
 
-gnss::EncodeResult encode(std::initializer_list<std::pair<const char *, const char *>> kv) {
-    std::vector<gnss::KeyValue> v;
-    for (const auto &[k, val] : kv) v.push_back({k, val});
-    return encodeSettings(D(), v);
-}
-
 // Decodes a line and collects what extractSettings reads from it.
 std::vector<gnss::KeyValue> extract(const std::string &line) {
     return gnss::test::extractedSettings("nemerix", line);
@@ -150,6 +144,8 @@ void TestNemerixSettings::settingsEncodeToCommands_data() {
             << QStringList{"rate.ZDA=0", "rate.GSV=2", "GGA=1"} << "$PNMRX103,GGA,1,GSV,2,ZDA,0*04";
     QTest::newRow("sequence then rates") << QStringList{"rate.GSA=3", "output.sequence=GGA;GLL;GSA"}
                                          << "$PNMRX108,GGA,GLL,GSA*1F $PNMRX103,GSA,3*0D";
+    QTest::newRow("sequence typed with spaces")
+            << QStringList{"output.sequence= GGA; GLL ,GSA "} << "$PNMRX108,GGA,GLL,GSA*1F";
     QTest::newRow("nemerix messages")
             << QStringList{"nmrx.301=2", "nmrx.300=1"} << "$PNMRX107,300,1,301,2*6D";
     QTest::newRow("internal datum")
@@ -200,6 +196,8 @@ void TestNemerixSettings::refusedSettingsBuildNothing_data() {
     textRow("offset without datum", {"datum.dx", "5", "datum.mapDatum: required"});
     textRow("parity without baud", {"serial.parity", "1", "serial.baud: required"});
     textRow("sequence unknown", {"output.sequence", "GGA;GNS", "'GNS'"});
+    // Found by fuzz_settings_roundtrip: the space was dropped and GSV sent.
+    textRow("sequence id with a space", {"output.sequence", "ZDA;G SV;RMC", "'G SV'"});
     textRow("channels", {"nav.channels", "8", "nav.channels: 8 is out of range"});
     textRow("nav mode", {"nav.mode", "3", "nav.mode"});
     textRow("off period", {"power.offPeriod", "4", "5..10"});
