@@ -179,6 +179,10 @@ void MainWindow::updateRecentMenu() {
 void MainWindow::openLog(const QString &path, const QString &at) {
     controller_->disconnectFromSource();
     session_->reset();
+    // Before open(): a small log is indexed by the time open() returns, and the `indexed` it
+    // emits then enables these; disabling them after would leave Export greyed on a ready log.
+    exportAction_->setEnabled(false);
+    playOutAction_->setEnabled(false);
     logViewer_->open(path, at);
     consoleView_->showLog(logViewer_->lines(),
                           [this] { return logViewer_->lines()->bytesBeforeCursor(8192); });
@@ -187,8 +191,6 @@ void MainWindow::openLog(const QString &path, const QString &at) {
     // The transport's keys (Space, arrows) act at once, not in the source box's text.
     if (auto *strip = timelineBar_->findChild<ui::TimelineStrip *>()) strip->setFocus();
     closeLogAction_->setEnabled(true);
-    exportAction_->setEnabled(false);
-    playOutAction_->setEnabled(false);
     setWindowTitle(tr("%1 — GNSS Workbench").arg(QFileInfo(path).fileName()));
     if (!logDocksShown_) {
         // The first log of the session brings its docks forward, beside the live ones.
