@@ -103,13 +103,14 @@ public:
 
     const char *error() const { return error_; }
 
-private:
+    // `s` without the spaces around it (what field() does to a field).
     static std::string_view trim(std::string_view s) {
         while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
         while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
         return s;
     }
 
+private:
     std::string_view line_;
     std::string_view body_;
     std::string_view address_;

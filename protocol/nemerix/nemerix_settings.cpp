@@ -6,6 +6,7 @@
 // right after it.
 #include "core/baud_rates.h"
 #include "core/field_parse.h"
+#include "core/sentence.h"
 #include "core/sentence_builder.h"
 #include "nemerix_actions.h"
 #include "nemerix_commands.h"
@@ -49,15 +50,11 @@ std::vector<std::string> sequenceIds(std::string_view list) {
     // Spaces around an id are the user's layout ("GGA; RMC"); one inside it is part of it, so
     // "G SV" is refused by name rather than sent as GSV.
     std::vector<std::string> out;
-    auto keep = [&out](std::string_view id) {
-        const auto first = id.find_first_not_of(' ');
-        if (first == std::string_view::npos) return;
-        out.emplace_back(id.substr(first, id.find_last_not_of(' ') - first + 1));
-    };
     std::size_t start = 0;
     for (std::size_t i = 0; i <= list.size(); ++i)
         if (i == list.size() || list[i] == ';' || list[i] == ',') {
-            keep(list.substr(start, i - start));
+            const std::string_view id = Sentence::trim(list.substr(start, i - start));
+            if (!id.empty()) out.emplace_back(id);
             start = i + 1;
         }
     return out;
