@@ -110,9 +110,11 @@ private slots:
         const LogScanResult seq = frontToBack(log, reg, o);
         QVERIFY(seq.epochs > 2900);
         for (unsigned threads : {1u, 2u, 3u, 7u}) {
-            const LogScanResult par = scanLog(log, reg, o, threads, 1000);
-            QCOMPARE(par.segments, threads);
-            expectSame(par, seq);
+            for (unsigned perThread : {1u, 4u, 16u}) {
+                const LogScanResult par = scanLog(log, reg, o, threads, 1000, perThread);
+                QCOMPARE(par.segments, threads == 1 ? 1u : threads * perThread);
+                expectSame(par, seq);
+            }
         }
     }
 
@@ -176,7 +178,7 @@ private slots:
         const DecoderOptions o;
         const LogScanResult seq = frontToBack(log, reg, o);
         QCOMPARE(seq.epochs, std::uint64_t{1});
-        const LogScanResult par = scanLog(log, reg, o, threads, 16);
+        const LogScanResult par = scanLog(log, reg, o, threads, 16, 1);
         QCOMPARE(par.segments, threads);
         expectSame(par, seq);
     }

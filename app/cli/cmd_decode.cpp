@@ -197,7 +197,7 @@ int cmdStats(const CliContext &ctx) {
         w.field("unknown", unknown).field("checksum_bad", bad).field("checksum_missing", missing);
         w.field("rejected", rejected).field("truncated", fs.truncated);
         w.field("too_long", fs.tooLong).field("binary_aborted", fs.binaryAborted);
-        w.field("epochs", epochs).field("seconds", seconds).field("threads", scan.segments);
+        w.field("epochs", epochs).field("seconds", seconds).field("threads", scan.threads);
         w.field("mb_per_s", seconds > 0 ? mb / seconds : 0.0);
         w.key("addresses").beginArray();
         for (const auto &a : dec.addressStats()) {
@@ -240,8 +240,8 @@ int cmdStats(const CliContext &ctx) {
         std::snprintf(line, sizeof line,
                       "time: %.3f s (%.0f MB/s, %.0f sentences/s, %u thread%s)\n", seconds,
                       seconds > 0 ? mb / seconds : 0.0,
-                      seconds > 0 ? static_cast<double>(sentences) / seconds : 0.0, scan.segments,
-                      scan.segments == 1 ? "" : "s");
+                      seconds > 0 ? static_cast<double>(sentences) / seconds : 0.0, scan.threads,
+                      scan.threads == 1 ? "" : "s");
         o += line;
     }
     std::fwrite(o.data(), 1, o.size(), stdout);

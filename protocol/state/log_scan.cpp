@@ -156,21 +156,62 @@ void runPieces(std::size_t count, unsigned threads, FunctionRef<void(std::size_t
     for (auto &w : workers) w.join();
 }
 
+namespace {
+
+// Read front to back, a segment would have started with `inForce` known: its own run, corrected
+// when that could have changed anything.
+void correctSegment(SegmentRun &r, std::string_view seg, const DialectRegistry &registry,
+                    const DecoderOptions &options, const Dialect *inForce) {
+    if (!inForce || r.initialDialect == inForce) return;
+    if (r.detectLineStart == kNoDetection || r.finalDialect != inForce) {
+        r = runSegment(seg, registry, options, inForce);
+    } else if (r.detectLineStart > 0) {
+        // Did knowing the dialect change anything before this segment named it? Usually not (it
+        // matters for optional checksums and vendor readings of standard sentences); when it did,
+        // decode the whole segment again as it was meant.
+        const std::string_view prefix = seg.substr(0, r.detectLineStart);
+        const SegmentRun asRun = runSegment(prefix, registry, options, nullptr);
+        const SegmentRun asMeant = runSegment(prefix, registry, options, inForce);
+        if (!sameCounts(asRun, asMeant)) r = runSegment(seg, registry, options, inForce);
+    }
+}
+
+} // namespace
+
 LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
-                      const DecoderOptions &options, unsigned threads,
-                      std::size_t minSegmentBytes) {
+                      const DecoderOptions &options, unsigned threads, std::size_t minSegmentBytes,
+                      unsigned piecesPerThread) {
     if (threads == 0) threads = 1;
     const std::size_t bySize =
             std::max<std::size_t>(1, log.size() / std::max<std::size_t>(1, minSegmentBytes));
-    const unsigned pieces = static_cast<unsigned>(std::min<std::size_t>(threads, bySize));
+    // Several pieces per thread: a core slowed by something else takes fewer of them, instead of
+    // the others waiting for it. One thread gains nothing from pieces.
+    const std::size_t wanted =
+            threads == 1 ? 1 : std::size_t{threads} * std::max(1u, piecesPerThread);
+    const unsigned pieces = static_cast<unsigned>(std::min<std::size_t>(wanted, bySize));
     const std::vector<std::string_view> segs = cutLog(log, pieces);
 
     std::vector<SegmentRun> runs(segs.size());
-    runPieces(segs.size(), static_cast<unsigned>(segs.size()),
+    runPieces(segs.size(), threads,
               [&](std::size_t k) { runs[k] = runSegment(segs[k], registry, options, nullptr); });
+
+    // The dialect in force at the start of each segment, read front to back: the first one named
+    // stays (a decoder that knows its dialect never changes it), so it follows from the runs as
+    // they are, and the corrections are independent of each other and run in parallel too.
+    std::vector<std::size_t> toCorrect;
+    std::vector<const Dialect *> inForceAt(segs.size(), nullptr);
+    for (std::size_t k = 1; k < segs.size(); ++k) {
+        inForceAt[k] = inForceAt[k - 1] ? inForceAt[k - 1] : runs[k - 1].finalDialect;
+        if (inForceAt[k] && runs[k].initialDialect != inForceAt[k]) toCorrect.push_back(k);
+    }
+    runPieces(toCorrect.size(), threads, [&](std::size_t i) {
+        const std::size_t k = toCorrect[i];
+        correctSegment(runs[k], segs[k], registry, options, inForceAt[k]);
+    });
 
     LogScanResult result;
     result.segments = static_cast<unsigned>(segs.size());
+    result.threads = std::min(threads, result.segments);
     const Dialect *inForce = runs[0].finalDialect;
     addFramerStats(result.framer, runs[0].framer);
     addAddressStats(result.addresses, runs[0].addresses);
@@ -179,22 +220,7 @@ LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
     bool haveLast = runs[0].hasFirst;
 
     for (std::size_t k = 1; k < segs.size(); ++k) {
-        SegmentRun &r = runs[k];
-        if (inForce && r.initialDialect != inForce) {
-            // Read front to back, this segment would have started with `inForce` known.
-            if (r.detectLineStart == kNoDetection || r.finalDialect != inForce) {
-                r = runSegment(segs[k], registry, options, inForce);
-            } else if (r.detectLineStart > 0) {
-                // Did knowing the dialect change anything before this segment named it? Usually
-                // not (it matters for optional checksums and vendor readings of standard
-                // sentences); when it did, decode the whole segment again as it was meant.
-                const std::string_view prefix = segs[k].substr(0, r.detectLineStart);
-                const SegmentRun asRun = runSegment(prefix, registry, options, nullptr);
-                const SegmentRun asMeant = runSegment(prefix, registry, options, inForce);
-                if (!sameCounts(asRun, asMeant))
-                    r = runSegment(segs[k], registry, options, inForce);
-            }
-        }
+        const SegmentRun &r = runs[k];
         addFramerStats(result.framer, r.framer);
         addAddressStats(result.addresses, r.addresses);
         result.epochs += r.epochs;

@@ -7,7 +7,8 @@
 // simply add up. What can depend on earlier bytes is the dialect recognised in auto mode: a
 // segment that began without it while the log before it had named one is corrected by decoding
 // the lines before its own detection again with that dialect (or the whole segment, in the rare
-// case it never names one itself). An epoch cut by a segment boundary is counted once.
+// case it never names one itself); these corrections run in parallel too. An epoch cut by a
+// segment boundary is counted once.
 #include "core/function_ref.h"
 #include "core/stream_decoder.h"
 
@@ -22,14 +23,16 @@ struct LogScanResult {
     std::vector<AddressStats> addresses; // in order of first appearance
     std::uint64_t epochs = 0;
     const Dialect *dialect = nullptr; // the dialect in force at the end
-    unsigned segments = 1;            // how many pieces were decoded in parallel
+    unsigned segments = 1;            // how many pieces the log was decoded in
+    unsigned threads = 1;             // on how many threads
 };
 
-// `threads` pieces at most, each at least `minSegmentBytes` long (threads cost more than they
-// save on small logs).
+// On `threads` threads, in `piecesPerThread` pieces per thread (so that a thread slowed by
+// something else takes fewer of them), each at least `minSegmentBytes` long (threads cost more
+// than they save on small logs). One thread decodes the log in one piece.
 LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
                       const DecoderOptions &options, unsigned threads,
-                      std::size_t minSegmentBytes = 4 << 20);
+                      std::size_t minSegmentBytes = 4 << 20, unsigned piecesPerThread = 4);
 
 // Where a line ends for certain, reading `log` alone: just after a LF, after a CR LF, or after
 // a CR followed by anything but a LF (a log of CR-ended lines). A CR that is the last byte is not

@@ -55,12 +55,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     const std::uint8_t split = in.byte();
     const unsigned threads = 1 + (split & 3);
     const std::size_t minSegment = std::size_t{1} << ((split >> 2) % 7);
+    const unsigned piecesPerThread = 1 + ((split >> 5) & 3);
     std::string storage;
     const std::string_view log = streamOf(control, in.rest(), storage);
 
     const LogScanResult seq = gnss::test::scanFrontToBack(log, registry(), options);
-    const LogScanResult par = scanLog(log, registry(), options, threads, minSegment);
-    check(par.segments >= 1 && par.segments <= threads, "scanLog cut more segments than threads");
+    const LogScanResult par =
+            scanLog(log, registry(), options, threads, minSegment, piecesPerThread);
+    check(par.segments >= 1 && par.segments <= (threads == 1 ? 1 : threads * piecesPerThread),
+          "scanLog cut more segments than asked");
     if (!same(seq, par))
         fail("scanLog counts differ from one front-to-back pass",
              "front to back: " + describe(seq) + "\n  scanLog: " + describe(par));
