@@ -82,6 +82,16 @@ private slots:
         if (ok) QCOMPARE(QString::fromStdString(t.toString()), formatted);
     }
 
+    // More decimals than a nanosecond has are not invented: the fraction stops at 9 digits.
+    void timeDecimalsStopAtNanoseconds() {
+        gnss::TimeOfDay t;
+        QVERIFY(gnss::parseTimeOfDay("081248.547824228", t));
+        QCOMPARE(QString::fromStdString(t.toString(12)), QString("08:12:48.547824228"));
+        QCOMPARE(QString::fromStdString(t.toString(2)), QString("08:12:48.547824228"));
+        QVERIFY(gnss::parseTimeOfDay("081248.5", t));
+        QCOMPARE(QString::fromStdString(t.toString(12)), QString("08:12:48.500000000"));
+    }
+
     void datesParse() {
         gnss::Date d;
         QVERIFY(gnss::parseDateDdMmYy("300518", d));

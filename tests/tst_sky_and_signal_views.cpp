@@ -158,6 +158,32 @@ private slots:
         QVERIFY(!view.grab().isNull());
     }
 
+    // A narrow group's caption is shortened, not cut: the full name, then the ids' letter with
+    // the signal, then the signal alone, then the letter; elided only when nothing fits.
+    void groupCaptionsShortenToFit_data() {
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("room for all") << "GLONASS G2 C/A";
+        QTest::newRow("letter and signal") << "R G2 C/A";
+        QTest::newRow("signal alone") << "G2 C/A";
+        QTest::newRow("letter alone") << "R";
+    }
+    void groupCaptionsShortenToFit() {
+        QFETCH(QString, expected);
+        const QFontMetricsF fm(QFont("DejaVu Sans", 9));
+        const double width = fm.horizontalAdvance(expected);
+        QCOMPARE(ui::SignalLevelsView::groupCaption(fm, Constellation::Glonass, 3, width),
+                 expected);
+        // Less room than the letter: the full name elided.
+        const QString tiny = ui::SignalLevelsView::groupCaption(fm, Constellation::Glonass, 3,
+                                                                fm.horizontalAdvance("R") - 1);
+        QVERIFY(tiny.isEmpty() || tiny.endsWith(QChar(0x2026)));
+        // No signal name: the constellation, then its letter.
+        QCOMPARE(ui::SignalLevelsView::groupCaption(fm, Constellation::Gps, 0, 1000), "GPS");
+        QCOMPARE(ui::SignalLevelsView::groupCaption(fm, Constellation::Gps, 0,
+                                                    fm.horizontalAdvance("G")),
+                 "G");
+    }
+
     void satellitesOutOfViewAreKeptThenDropped() {
         ui::SatelliteModel model;
         model.setKeepAfterLostMs(5000);

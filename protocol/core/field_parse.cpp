@@ -2,6 +2,7 @@
 
 #include "hex_digit.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace gnss {
@@ -169,7 +170,8 @@ bool parseDateDdMmYy(std::string_view s, Date &out) {
 }
 
 std::string TimeOfDay::toString(int minDecimals) const {
-    const int dec = decimals > minDecimals ? decimals : minDecimals;
+    // Nanoseconds are all there is: more than 9 decimals would print a wrong fraction.
+    const int dec = std::min(9, decimals > minDecimals ? decimals : minDecimals);
     char buf[48];
     // A leap second (23:59:60) is stored past the end of the day.
     const bool leap = nanos >= 86'400'000'000'000LL;

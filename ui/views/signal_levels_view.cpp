@@ -11,6 +11,23 @@ namespace {
 constexpr double kMaxSnr = 60.0;
 }
 
+// The longest of "GLONASS L1OF", "R L1OF" (the letter of the ids under the bars), "L1OF" and
+// "R" that fits `width`, else the first elided.
+QString SignalLevelsView::groupCaption(const QFontMetricsF &fm, Constellation system, int signalId,
+                                       double width) {
+    const auto sig = signalName(system, signalId);
+    const QString signal = QString::fromLatin1(sig.data(), int(sig.size()));
+    const QString full = QString::fromLatin1(toString(system).data());
+    const QString letter(QChar::fromLatin1(rinexLetter(system)));
+    const QStringList candidates =
+            signal.isEmpty()
+                    ? QStringList{full, letter}
+                    : QStringList{full + ' ' + signal, letter + ' ' + signal, signal, letter};
+    for (const QString &c : candidates)
+        if (fm.horizontalAdvance(c) <= width) return c;
+    return fm.elidedText(candidates.front(), Qt::ElideRight, width);
+}
+
 SignalLevelsView::SignalLevelsView(SatelliteModel *model, QWidget *parent)
     : QWidget(parent), model_(model) {
     setObjectName("signalLevels");
@@ -161,13 +178,16 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
                          rows[size_t(bars[i].row)].sat.system != first.sat.system ||
                          rows[size_t(bars[i].row)].signalId != first.signalId;
         if (!end) continue;
-        const auto sig = signalName(first.sat.system, first.signalId);
-        QString name = QString::fromLatin1(toString(first.sat.system).data());
-        if (!sig.empty()) name += ' ' + QString::fromLatin1(sig.data(), int(sig.size()));
-        const QRectF span(bars[start].rect.left(), height() - fm.height() * 1.2,
-                          bars[i - 1].rect.right() - bars[start].rect.left(), fm.height());
+        // The group's bars and half the gap on each side (a bar is 0.76 of its slot, the gap
+        // between groups 0.8 of a slot).
+        const double slot = bars[start].rect.width() / 0.76;
+        const double margin = slot * (0.12 + 0.4) - 2;
+        const QRectF span(bars[start].rect.left() - margin, height() - fm.height() * 1.2,
+                          bars[i - 1].rect.right() - bars[start].rect.left() + 2 * margin,
+                          fm.height());
         p.setPen(style::constellationColor(first.sat.system));
-        p.drawText(span, Qt::AlignCenter, fm.elidedText(name, Qt::ElideRight, span.width()));
+        p.drawText(span, Qt::AlignCenter,
+                   groupCaption(fm, first.sat.system, first.signalId, span.width()));
         start = i;
     }
 }

@@ -3,6 +3,9 @@
 // used satellites filled, tracked ones outlined, ids below. Ids stay legible at any width:
 // level while they fit their slot, turned on end when they do not, and when even that is too
 // crowded only every n-th id of a group is written. Repaints on a timer, from the model.
+#include "core/satellite.h"
+
+#include <QFontMetricsF>
 #include <QTimer>
 #include <QWidget>
 
@@ -32,6 +35,10 @@ public:
     // What the next paint draws (for tests).
     Layout layout() const;
     QVector<Bar> layoutBars() const { return layout().bars; }
+    // The caption under a group of bars, shortened to fit `width` ("GLONASS L2OF", "R L2OF",
+    // "L2OF", "R"; elided only when even the letter does not fit).
+    static QString groupCaption(const QFontMetricsF &fm, Constellation system, int signalId,
+                                double width);
 
     QSize sizeHint() const override { return {600, 220}; }
     QSize minimumSizeHint() const override { return {200, 100}; }
