@@ -158,11 +158,10 @@ void runPieces(std::size_t count, unsigned threads, FunctionRef<void(std::size_t
 
 namespace {
 
-// Read front to back, a segment would have started with `inForce` known: its own run, corrected
-// when that could have changed anything.
+// Read front to back, a segment would have started with `inForce` known (the caller's choice: one
+// that began without it): its own run, corrected when that could have changed anything.
 void correctSegment(SegmentRun &r, std::string_view seg, const DialectRegistry &registry,
                     const DecoderOptions &options, const Dialect *inForce) {
-    if (!inForce || r.initialDialect == inForce) return;
     if (r.detectLineStart == kNoDetection || r.finalDialect != inForce) {
         r = runSegment(seg, registry, options, inForce);
     } else if (r.detectLineStart > 0) {

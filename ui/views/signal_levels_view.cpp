@@ -9,7 +9,9 @@
 namespace gnss::ui {
 namespace {
 constexpr double kMaxSnr = 60.0;
-}
+// Of a slot: the bar's inset on each side and its width; a gap between groups.
+constexpr double kBarInset = 0.12, kBarShare = 0.76, kGroupGap = 0.8;
+} // namespace
 
 // The longest of "GLONASS L1OF", "R L1OF" (the letter of the ids under the bars), "L1OF" and
 // "R" that fits `width`, else the first elided.
@@ -62,7 +64,9 @@ SignalLevelsView::Layout SignalLevelsView::layout() const {
         const auto &a = rows[size_t(order[i - 1])], &b = rows[size_t(order[i])];
         if (a.sat.system != b.sat.system || a.signalId != b.signalId) ++groups;
     }
-    const double slot = order.isEmpty() ? plotWidth : plotWidth / (order.size() + groups * 0.8);
+    const double slot =
+            order.isEmpty() ? plotWidth : plotWidth / (order.size() + groups * kGroupGap);
+    out.slot = slot;
     // Ids: the normal font shrunk to no less than 7 pt; level when the widest fits its slot, on
     // end when a line of text fits it, else on end and thinned out.
     out.idFont = font();
@@ -90,11 +94,12 @@ SignalLevelsView::Layout SignalLevelsView::layout() const {
         const auto &r = rows[size_t(order[i])];
         if (i > 0) {
             const auto &prev = rows[size_t(order[i - 1])];
-            if (prev.sat.system != r.sat.system || prev.signalId != r.signalId) x += slot * 0.8;
+            if (prev.sat.system != r.sat.system || prev.signalId != r.signalId)
+                x += slot * kGroupGap;
         }
         const double snr = std::clamp(double(r.snr.value_or(0)), 0.0, kMaxSnr);
         const double h = out.area.height() * snr / kMaxSnr;
-        Bar b{order[i], QRectF(x + slot * 0.12, out.area.bottom() - h, slot * 0.76, h),
+        Bar b{order[i], QRectF(x + slot * kBarInset, out.area.bottom() - h, slot * kBarShare, h),
               SatelliteModel::label(r), QString(), QRectF()};
         const QString id = QString::fromStdString(satelliteLabel(r.sat));
         const double cx = x + slot / 2, top = out.area.bottom() + 2;
@@ -178,10 +183,8 @@ void SignalLevelsView::paintEvent(QPaintEvent *) {
                          rows[size_t(bars[i].row)].sat.system != first.sat.system ||
                          rows[size_t(bars[i].row)].signalId != first.signalId;
         if (!end) continue;
-        // The group's bars and half the gap on each side (a bar is 0.76 of its slot, the gap
-        // between groups 0.8 of a slot).
-        const double slot = bars[start].rect.width() / 0.76;
-        const double margin = slot * (0.12 + 0.4) - 2;
+        // The group's bars and half the gap on each side.
+        const double margin = lay.slot * (kBarInset + kGroupGap / 2) - 2;
         const QRectF span(bars[start].rect.left() - margin, height() - fm.height() * 1.2,
                           bars[i - 1].rect.right() - bars[start].rect.left() + 2 * margin,
                           fm.height());

@@ -31,6 +31,7 @@ public:
         QFont idFont;
         bool rotated = false; // ids turned on end
         int every = 1;        // one id in `every` is written
+        double slot = 0;      // the width each bar stands in
     };
     // What the next paint draws (for tests).
     Layout layout() const;
