@@ -236,6 +236,11 @@ private slots:
                                 gnss::app::simulatedDialects(registry_), err);
         QVERIFY(o);
         QCOMPARE(o->baud, 115200);
+        // "auto", the default --help names, is accepted as such (0: detect).
+        o = parseStartupOptions({"gnss-workbench", "--port", "/dev/ttyUSB0", "--baud", "auto"},
+                                gnss::app::simulatedDialects(registry_), err);
+        QVERIFY2(o, qPrintable(err));
+        QCOMPARE(o->baud, 0);
         QCOMPARE(SourceSpec::fromString("serial:/dev/ttyUSB0@115200").baud, 115200);
         QCOMPARE(SourceSpec::fromString("tcp:localhost:5000").name, QString("localhost:5000"));
         // gpsd: the URL form or the bare HOST[:PORT][/DEVICE]; the name is kept without scheme.

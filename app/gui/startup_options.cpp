@@ -110,7 +110,8 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
     o.gpsd = p.value(gpsd);
     o.showDock = p.value(showDock);
     o.screenshot = p.value(shot);
-    if (p.isSet(baud)) {
+    // "auto", the default that --help names, may also be given.
+    if (p.isSet(baud) && p.value(baud).compare(QLatin1String("auto"), Qt::CaseInsensitive) != 0) {
         bool ok = false;
         o.baud = p.value(baud).toInt(&ok);
         if (!ok || o.baud <= 0) {
