@@ -104,6 +104,53 @@ private slots:
         QCOMPARE(last.data["satellites"].toArray().size(), 1);
     }
 
+    // GSV satellites and GSA ids printed at the receivers' fixed widths are read at once
+    // (core/fixed_digits.h); the same values printed otherwise are read field by field. Both must
+    // give the same message, or the same refusal.
+    void fixedWidthFieldsReadAsAnyOther_data() {
+        QTest::addColumn<QString>("fixedWidth");
+        QTest::addColumn<QString>("otherwise");
+        QTest::newRow("GSV satellites")
+                << "GPGSV,3,1,12,01,05,000,31,02,12,037,32,03,19,074,33,04,26,111,35"
+                << "GPGSV,3,1,12,1,5,0,31,2,12,37,32,3,19,74,33,4,26,111,35";
+        QTest::newRow("GSV with signal id")
+                << "GLGSV,2,1,08,65,05,000,31,66,12,037,32,67,19,074,33,68,26,111,35,1"
+                << "GLGSV,2,1,08,65,5,000,31,66,12,037,32,67,19,074,33,68,26,111,35,1";
+        QTest::newRow("GSV last of three") << "GBGSV,3,3,10,09,61,296,42,10,68,333,43,1"
+                                           << "GBGSV,3,3,10,9,61,296,42,10,68,333,43,1";
+        QTest::newRow("GSV largest values") << "GPGSV,1,1,02,99,90,360,99,98,00,000,00"
+                                            << "GPGSV,1,1,02,99,90,360,99,98,0,0,0";
+        QTest::newRow("GSV elevation out of range") << "GPGSV,1,1,01,01,91,000,31"
+                                                    << "GPGSV,1,1,01,1,91,000,31";
+        QTest::newRow("GSV azimuth out of range") << "GPGSV,1,1,01,01,05,361,31"
+                                                  << "GPGSV,1,1,01,1,05,361,31";
+        QTest::newRow("GSA twelve ids")
+                << "GNGSA,A,3,01,02,03,04,05,06,07,08,09,10,11,12,1.1,0.6,0.9,1"
+                << "GNGSA,A,3,1,2,3,4,5,6,7,8,9,10,11,12,1.1,0.6,0.9,1";
+        QTest::newRow("GSA ids then empty slots")
+                << "GNGSA,A,3,65,66,67,68,69,70,,,,,,,1.1,0.6,0.9,2"
+                << "GNGSA,A,3,65,66,67,68,69,70,,,,,,,1.1,0.6,0.9,2";
+        QTest::newRow("GSA sixteen ids")
+                << "GPGSA,A,3,01,02,03,04,05,06,07,08,09,10,11,12,13,14,15,16,1.1,0.6,0.9"
+                << "GPGSA,A,3,1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,1.1,0.6,0.9";
+    }
+    void fixedWidthFieldsReadAsAnyOther() {
+        QFETCH(QString, fixedWidth);
+        QFETCH(QString, otherwise);
+        const auto a = decodeOne(gnss::buildSentence(fixedWidth.toStdString()).c_str());
+        const auto b = decodeOne(gnss::buildSentence(otherwise.toStdString()).c_str());
+        QCOMPARE(a.ok, b.ok);
+        if (!a.ok) {
+            QVERIFY(!a.error.isEmpty());
+            QCOMPARE(a.error, b.error);
+            return;
+        }
+        // "id" is the number as printed: the same number either way.
+        QCOMPARE(a.data, b.data);
+        QVERIFY(a.data.contains("satellites"));
+        QVERIFY(!a.data["satellites"].toArray().isEmpty());
+    }
+
     void gsv411SignalIdsForEveryConstellation_data() {
         QTest::addColumn<QString>("line");
         QTest::addColumn<QString>("system");

@@ -67,6 +67,13 @@ public:
         return body_.substr(start_[i], start_[i + 1] - start_[i] - 1);
     }
 
+    // The text of fields i to i + count - 1 with the commas between them, untrimmed; empty when
+    // they are not all there.
+    std::string_view fieldRun(std::size_t i, std::size_t count) const {
+        if (count == 0 || i + count > fieldCount_) return {};
+        return body_.substr(start_[i], start_[i + count] - start_[i] - 1u);
+    }
+
     // Field i when it is empty or one to three digits, the commonest fields of all (satellite
     // ids, elevations, azimuths, SNRs, counts), read without making a view of it first:
     // kSmallNumber (in `out`), kEmpty (or past the end), or kOther (anything else: read it as

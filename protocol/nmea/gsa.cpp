@@ -7,11 +7,15 @@
 // id, when present, is a bare integer after three DOP fields.
 #include "nmea_messages.h"
 
+#include "core/fixed_digits.h"
+
 namespace gnss::nmea {
 
 const MessageType Gsa::kType{"GSA"};
 
 namespace {
+
+constexpr DigitLayout kFourIds{"dd,dd,dd,dd"};
 
 bool looksLikeSystemId(std::string_view last, std::string_view beforeLast, std::size_t count) {
     if (last.empty() || last.size() > 2) return false;
@@ -38,7 +42,19 @@ bool decodeGsa(const Sentence &s, DecodeContext &ctx) {
         m.vdop = r.real(n - 1, "VDOP");
         m.system = m.systemId ? constellationOfSystemId(*m.systemId)
                               : constellationOfTalker(s.talker());
-        for (std::size_t i = 2; i + 3 < n; ++i) {
+        std::size_t i = 2;
+        // Four two-digit ids at once while they are printed so ("01,02,03,04": fixed_digits.h).
+        int four[4];
+        while (i + 4 + 3 <= n && m.idCount + 4 <= Gsa::kMaxIds &&
+               readFixedDigits<kFourIds>(s.fieldRun(i, 4), four)) {
+            for (int id : four) {
+                m.ids[m.idCount] = id;
+                m.satellites[m.idCount] = ctx.mapSatellite(m.system, id);
+                ++m.idCount;
+            }
+            i += 4;
+        }
+        for (; i + 3 < n; ++i) {
             int id; // none: an empty slot (or a malformed id, recorded)
             if (!r.integerValue(i, "satellite id", id) || m.idCount == Gsa::kMaxIds) continue;
             m.ids[m.idCount] = id;

@@ -8,11 +8,16 @@
 // the 2.x numbering ranges (see core/satellite.h).
 #include "nmea_messages.h"
 
+#include "core/fixed_digits.h"
 #include "core/satellite_json.h"
 
 namespace gnss::nmea {
 
 const MessageType Gsv::kType{"GSV"};
+
+namespace {
+constexpr DigitLayout kPlainSatellite{"dd,dd,ddd,dd"}; // id, elevation, azimuth, SNR
+} // namespace
 
 bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
     return decodeWith<Gsv>(s, ctx, 3, [&](FieldReader &r, Gsv &m) {
@@ -26,8 +31,15 @@ bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
             --n;
         }
         for (std::size_t i = 3; i < n; i += 4) {
+            // Nearly every satellite is printed "01,05,000,31": read at once (fixed_digits.h).
+            int plain[4];
+            const bool isPlain =
+                    i + 4 <= n && readFixedDigits<kPlainSatellite>(s.fieldRun(i, 4), plain);
             int id; // none: an empty padding slot (or a malformed id, recorded)
-            if (!r.integerValue(i, "satellite id", id)) continue;
+            if (isPlain)
+                id = plain[0];
+            else if (!r.integerValue(i, "satellite id", id))
+                continue;
             if (m.satelliteCount == Gsv::kMaxSatellites) {
                 r.failSentence(std::string(
                         QT_TRANSLATE_NOOP("Refusal", "too many satellites in one GSV sentence")));
@@ -37,9 +49,15 @@ bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
             sv = GsvSatellite{}; // the slot whole first (a SlotArray's are not cleared)
             sv.id = id;
             sv.sat = ctx.mapSatellite(m.system, id);
-            r.integerInto(i + 1, "elevation", sv.elevation);
-            r.integerInto(i + 2, "azimuth", sv.azimuth);
-            r.integerInto(i + 3, "SNR", sv.snr);
+            if (isPlain) {
+                sv.elevation = plain[1];
+                sv.azimuth = plain[2];
+                sv.snr = plain[3];
+            } else {
+                r.integerInto(i + 1, "elevation", sv.elevation);
+                r.integerInto(i + 2, "azimuth", sv.azimuth);
+                r.integerInto(i + 3, "SNR", sv.snr);
+            }
             if (sv.elevation && (*sv.elevation < -90 || *sv.elevation > 90))
                 r.fail(i + 1, "elevation", QT_TRANSLATE_NOOP("Refusal", "out of range"));
             if (sv.azimuth && (*sv.azimuth < 0 || *sv.azimuth > 360))
