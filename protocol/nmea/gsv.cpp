@@ -31,15 +31,22 @@ bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
             --n;
         }
         for (std::size_t i = 3; i < n; i += 4) {
-            // Nearly every satellite is printed "01,05,000,31": read at once (fixed_digits.h).
+            // Nearly every satellite is printed "01,05,000,31": read at once (fixed_digits.h),
+            // its values checked while in registers (two digits and three can only be too big).
             int plain[4];
-            const bool isPlain =
-                    i + 4 <= n && readFixedDigits<kPlainSatellite>(s.fieldRun(i, 4), plain);
-            int id; // none: an empty padding slot (or a malformed id, recorded)
-            if (isPlain)
-                id = plain[0];
-            else if (!r.integerValue(i, "satellite id", id))
+            if (i + 4 <= n && m.satelliteCount < Gsv::kMaxSatellites &&
+                readFixedDigits<kPlainSatellite>(s.fieldRun(i, 4), plain)) {
+                m.satellites[m.satelliteCount++] =
+                        GsvSatellite{plain[0], ctx.mapSatellite(m.system, plain[0]), plain[1],
+                                     plain[2], plain[3]};
+                if (plain[1] > 90)
+                    r.fail(i + 1, "elevation", QT_TRANSLATE_NOOP("Refusal", "out of range"));
+                if (plain[2] > 360)
+                    r.fail(i + 2, "azimuth", QT_TRANSLATE_NOOP("Refusal", "out of range"));
                 continue;
+            }
+            int id; // none: an empty padding slot (or a malformed id, recorded)
+            if (!r.integerValue(i, "satellite id", id)) continue;
             if (m.satelliteCount == Gsv::kMaxSatellites) {
                 r.failSentence(std::string(
                         QT_TRANSLATE_NOOP("Refusal", "too many satellites in one GSV sentence")));
@@ -49,15 +56,9 @@ bool decodeGsv(const Sentence &s, DecodeContext &ctx) {
             sv = GsvSatellite{}; // the slot whole first (a SlotArray's are not cleared)
             sv.id = id;
             sv.sat = ctx.mapSatellite(m.system, id);
-            if (isPlain) {
-                sv.elevation = plain[1];
-                sv.azimuth = plain[2];
-                sv.snr = plain[3];
-            } else {
-                r.integerInto(i + 1, "elevation", sv.elevation);
-                r.integerInto(i + 2, "azimuth", sv.azimuth);
-                r.integerInto(i + 3, "SNR", sv.snr);
-            }
+            r.integerInto(i + 1, "elevation", sv.elevation);
+            r.integerInto(i + 2, "azimuth", sv.azimuth);
+            r.integerInto(i + 3, "SNR", sv.snr);
             if (sv.elevation && (*sv.elevation < -90 || *sv.elevation > 90))
                 r.fail(i + 1, "elevation", QT_TRANSLATE_NOOP("Refusal", "out of range"));
             if (sv.azimuth && (*sv.azimuth < 0 || *sv.azimuth > 360))
