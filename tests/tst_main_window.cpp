@@ -12,10 +12,12 @@
 #include "preferences_dialog.h"
 #include "startup_options.h"
 #include "views/sky_plot_view.h"
+#include "window_start.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDockWidget>
+#include <QFile>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
@@ -222,6 +224,40 @@ private slots:
         QVERIFY(w.dock("skyDock")->isVisible());
         w.connectAtStart({}); // no source given: the last one
         QCOMPARE(w.controller()->source().toString(), QString("sim:nmea"));
+    }
+
+    // `gnss-workbench LOG --show-dock sky`: opening a log brings the log's docks forward (the
+    // track beside the sky plot); the dock asked for on the command line must still be the one in
+    // front, and an unknown one is refused before anything is opened.
+    void showDockIsInFrontAfterALogOpens() {
+        const QString log = dir_.filePath("show-dock.nmea");
+        {
+            QFile f(log);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("$GPGGA,092750.000,5321.6802,N,00630.3372,W,1,8,1.03,61.7,M,55.2,M,,*76\r\n"
+                    "$GPGSV,1,1,01,05,40,083,46*40\r\n"
+                    "$GPGGA,092751.000,5321.6802,N,00630.3372,W,1,8,1.03,61.7,M,55.2,M,,*77\r\n");
+        }
+        QString err;
+        auto o = parseStartupOptions({"gnss-workbench", log, "--show-dock", "sky"},
+                                     gnss::app::simulatedDialects(registry_), err);
+        QVERIFY2(o, qPrintable(err));
+        auto s = settings();
+        gnss::app::MainWindow w(registry_, transports_, s.get());
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(gnss::app::startWindow(w, *o), QString());
+        QVERIFY(w.windowTitle().startsWith("show-dock.nmea"));
+        QTRY_VERIFY(!w.dock("skyDock")->visibleRegion().isEmpty());
+        QVERIFY(w.dock("logTrackDock")->isVisible());
+        QVERIFY(w.dock("logTrackDock")->visibleRegion().isEmpty());
+
+        o->showDock = "nosuch";
+        gnss::app::MainWindow other(registry_, transports_, s.get());
+        const QString refused = gnss::app::startWindow(other, *o);
+        QVERIFY(refused.contains("nosuch"));
+        QVERIFY(!other.windowTitle().startsWith("show-dock.nmea"));
     }
 
     void startupOptionsParse() {

@@ -6,6 +6,7 @@
 #include "startup_options.h"
 #include "style/app_icon.h"
 #include "window_screenshot.h"
+#include "window_start.h"
 
 #include <QApplication>
 #include <QLibraryInfo>
@@ -55,30 +56,11 @@ int main(int argc, char **argv) {
     const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory(registry);
     gnss::app::MainWindow window(registry, transports, &settings);
     window.show();
-    using gnss::app::SourceSpec;
-    SourceSpec start;
-    if (!options->port.isEmpty())
-        start = {SourceSpec::Kind::Serial, options->port, options->baud};
-    else if (!options->tcp.isEmpty())
-        start = {SourceSpec::Kind::Tcp, options->tcp};
-    else if (!options->replay.isEmpty())
-        start = {SourceSpec::Kind::Replay, options->replay};
-    else if (!options->sim.isEmpty())
-        start = {SourceSpec::Kind::Simulator, options->sim};
-    else if (!options->gpsd.isEmpty())
-        start = {SourceSpec::Kind::Gpsd, options->gpsd};
-    if (!options->showDock.isEmpty() && !window.showDock(options->showDock)) {
-        std::fprintf(
-                stderr, "gnss-workbench: %s\n",
-                qPrintable(QApplication::translate("StartupOptions", "Unknown dock '%1' (use %2)")
-                                   .arg(options->showDock,
-                                        window.dockNames().join(QStringLiteral(", ")))));
+    const QString startError = gnss::app::startWindow(window, *options);
+    if (!startError.isEmpty()) {
+        std::fprintf(stderr, "gnss-workbench: %s\n", qPrintable(startError));
         return 2;
     }
-    if (!options->open.isEmpty())
-        window.openLog(options->open, options->at);
-    else
-        window.connectAtStart(start);
 
     const double delay =
             options->quitAfter > 0 ? options->quitAfter : (options->screenshot.isEmpty() ? 0 : 1);
