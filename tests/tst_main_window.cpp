@@ -30,6 +30,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolBar>
 
 using gnss::app::parseStartupOptions;
 using gnss::app::SourceSpec;
@@ -42,6 +43,17 @@ class TestMainWindow : public QObject {
 
     std::unique_ptr<QSettings> settings() {
         return std::make_unique<QSettings>(dir_.filePath("settings.ini"), QSettings::IniFormat);
+    }
+
+    // Three epochs of a GPS receiver, written to the test's directory.
+    QString writeSmallLog(const QString &name) {
+        const QString log = dir_.filePath(name);
+        QFile f(log);
+        if (!f.open(QIODevice::WriteOnly)) return {};
+        f.write("$GPGGA,092750.000,5321.6802,N,00630.3372,W,1,8,1.03,61.7,M,55.2,M,,*76\r\n"
+                "$GPGSV,1,1,01,05,40,083,46*40\r\n"
+                "$GPGGA,092751.000,5321.6802,N,00630.3372,W,1,8,1.03,61.7,M,55.2,M,,*77\r\n");
+        return log;
     }
 
 private slots:
@@ -230,14 +242,8 @@ private slots:
     // track beside the sky plot); the dock asked for on the command line must still be the one in
     // front, and an unknown one is refused before anything is opened.
     void showDockIsInFrontAfterALogOpens() {
-        const QString log = dir_.filePath("show-dock.nmea");
-        {
-            QFile f(log);
-            QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write("$GPGGA,092750.000,5321.6802,N,00630.3372,W,1,8,1.03,61.7,M,55.2,M,,*76\r\n"
-                    "$GPGSV,1,1,01,05,40,083,46*40\r\n"
-                    "$GPGGA,092751.000,5321.6802,N,00630.3372,W,1,8,1.03,61.7,M,55.2,M,,*77\r\n");
-        }
+        const QString log = writeSmallLog("show-dock.nmea");
+        QVERIFY(!log.isEmpty());
         QString err;
         auto o = parseStartupOptions({"gnss-workbench", log, "--show-dock", "sky"},
                                      gnss::app::simulatedDialects(registry_), err);
@@ -258,6 +264,48 @@ private slots:
         const QString refused = gnss::app::startWindow(other, *o);
         QVERIFY(refused.contains("nosuch"));
         QVERIFY(!other.windowTitle().startsWith("show-dock.nmea"));
+    }
+
+    // The log's docks and timeline show only "no log open" without a log: a layout saved with a
+    // log open must not bring them back empty at the next start, nor keep them after the log
+    // closes; the next log shows them where they were.
+    void logDocksGoAwayWithoutALog() {
+        const QString log = writeSmallLog("docks.nmea");
+        QVERIFY(!log.isEmpty());
+        const char *const logDocks[] = {"logEventsDock", "logSummaryDock", "logChartsDock",
+                                        "logTrackDock"};
+        auto s = settings();
+        {
+            gnss::app::MainWindow w(registry_, transports_, s.get());
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            w.openLog(log);
+            for (const char *d : logDocks) QVERIFY2(!w.dock(d)->isHidden(), d);
+            QVERIFY(w.tabifiedDockWidgets(w.dock("skyDock")).contains(w.dock("logTrackDock")));
+            w.saveLayout(); // as when the window closes with the log open
+        }
+        gnss::app::MainWindow w(registry_, transports_, s.get());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto *timeline = w.findChild<QToolBar *>("timelineBar");
+        QVERIFY(timeline);
+        for (const char *d : logDocks) QVERIFY2(w.dock(d)->isHidden(), d);
+        QVERIFY(timeline->isHidden());
+        QTRY_VERIFY(!w.dock("skyDock")->visibleRegion().isEmpty());
+        QTRY_VERIFY(!w.dock("fixDock")->visibleRegion().isEmpty());
+
+        w.openLog(log);
+        for (const char *d : logDocks) QVERIFY2(!w.dock(d)->isHidden(), d);
+        QVERIFY(!timeline->isHidden());
+        QVERIFY(w.tabifiedDockWidgets(w.dock("skyDock")).contains(w.dock("logTrackDock")));
+        QTRY_VERIFY(!w.dock("logEventsDock")->visibleRegion().isEmpty());
+
+        w.closeLog();
+        for (const char *d : logDocks) QVERIFY2(w.dock(d)->isHidden(), d);
+        QVERIFY(timeline->isHidden());
+        QTRY_VERIFY(!w.dock("skyDock")->visibleRegion().isEmpty());
+        w.openLog(log);
+        for (const char *d : logDocks) QVERIFY2(!w.dock(d)->isHidden(), d);
     }
 
     void startupOptionsParse() {

@@ -114,6 +114,7 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
     }
     defaultState_ = saveState();
     restoreLayout();
+    putLogViewAway(); // a layout saved with a log open would show them empty
 }
 
 MainWindow::~MainWindow() {

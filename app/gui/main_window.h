@@ -109,6 +109,7 @@ private:
     void applyTheme(const QString &theme);
     void toggleRecording(bool on);
     void createLogViewer();
+    void putLogViewAway();
     void createLogMenu(QMenu *file);
     void rememberLog(const QString &path);
     void updateRecentMenu();
@@ -142,6 +143,7 @@ private:
     QMenu *recentMenu_ = nullptr;
     QAction *exportAction_ = nullptr, *closeLogAction_ = nullptr;
     bool logDocksShown_ = false;
+    bool logDocksPlaced_ = false; // the log's docks have a place in the layout (shown before)
     QLabel *stateLabel_ = nullptr, *dialectLabel_ = nullptr, *rateLabel_ = nullptr,
            *errorLabel_ = nullptr, *fixLabel_ = nullptr, *recordLabel_ = nullptr;
     QByteArray defaultState_;

@@ -199,7 +199,8 @@ void MainWindow::openLog(const QString &path, const QString &at) {
             QDockWidget *d = dock(QString::fromLatin1(name));
             QDockWidget *b = dock(QString::fromLatin1(beside));
             if (!d) return;
-            if (b && b->isVisible() && !d->isVisible()) tabifyDockWidget(b, d);
+            // Beside a live dock the first time; where the user left it after that.
+            if (!logDocksPlaced_ && b && b->isVisible() && !d->isVisible()) tabifyDockWidget(b, d);
             d->show();
             d->raise();
         };
@@ -208,15 +209,40 @@ void MainWindow::openLog(const QString &path, const QString &at) {
         show("logTrackDock", "skyDock");
         show("logChartsDock", "consoleDock");
         if (QDockWidget *e = dock("logEventsDock")) e->raise();
+        logDocksPlaced_ = true;
     }
     updateStatus();
+}
+
+// The log's docks and timeline belong to an open log: without one they would only say "no log
+// open", taking half the window from the live views. Put away at start (a layout saved with a log
+// open shows them) and when the log closes; a hidden dock keeps its place, and the next log shows
+// them there.
+void MainWindow::putLogViewAway() {
+    // Each log dock, and the live dock it is first shown beside (brought back to the front of
+    // their tab group: Qt would show the next tab, the deviation rather than the sky plot).
+    const std::pair<const char *, const char *> docks[] = {{"logEventsDock", "fixDock"},
+                                                           {"logSummaryDock", "fixDock"},
+                                                           {"logChartsDock", "consoleDock"},
+                                                           {"logTrackDock", "skyDock"}};
+    for (const auto &[name, beside] : docks) {
+        QDockWidget *d = dock(QString::fromLatin1(name));
+        if (!d) continue;
+        QDockWidget *live = dock(QString::fromLatin1(beside));
+        const bool tabbed = live && tabifiedDockWidgets(d).contains(live);
+        if (!d->isHidden()) logDocksPlaced_ = true;
+        d->hide();
+        if (tabbed && !live->isHidden()) live->raise();
+    }
+    timelineBar_->hide();
+    logDocksShown_ = false;
 }
 
 void MainWindow::closeLog() {
     if (!logViewer_->isOpen()) return;
     logViewer_->close();
     consoleView_->showLog(nullptr);
-    timelineBar_->hide();
+    putLogViewAway();
     closeLogAction_->setEnabled(false);
     exportAction_->setEnabled(false);
     playOutAction_->setEnabled(false);
