@@ -27,6 +27,13 @@ public:
 
     explicit EpochAssembler(const Dialect *dialect = nullptr) : dialect_(dialect) {}
     void setDialect(const Dialect *d) { dialect_ = d; }
+    // Drops the satellites in view gathered so far, in the epoch in progress and in every GSV
+    // group: what a live view does when the receiver's dialect becomes known, since they were
+    // numbered without it.
+    void forgetSatellites() {
+        groups_.clear();
+        current_.satellites.clear();
+    }
 
     // Adds one decoded message; calls onEpoch when it closes the epoch in progress.
     void add(const Sentence &s, const Message &m, const Callback &onEpoch);

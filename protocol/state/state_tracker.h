@@ -16,6 +16,7 @@ public:
         dialect_ = d;
         epochs_.setDialect(d);
     }
+    void forgetSatellites() { epochs_.forgetSatellites(); }
 
     // One decoded message (with the dialect of the rule that decoded it, nullptr: standard).
     void add(const Sentence &s, const Message &m, const Dialect *ruleDialect,

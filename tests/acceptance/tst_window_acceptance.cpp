@@ -201,8 +201,12 @@ private slots:
             QVERIFY2(!d->widget()->grab().isNull(), name); // paints
         }
         auto *sky = w_->findChild<ui::SkyPlotView *>("skyPlot");
-        QVERIFY(sky->markers().size() >= 10);
-        QVERIFY(w_->findChild<ui::SignalLevelsView *>("signalLevels")->layoutBars().size() >= 10);
+        // The satellites are gathered afresh once the dialect is known (their numbering may
+        // change with it): within two epochs of the receiver's identity.
+        QTRY_VERIFY_WITH_TIMEOUT(sky->markers().size() >= 10, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+                w_->findChild<ui::SignalLevelsView *>("signalLevels")->layoutBars().size() >= 10,
+                5000);
         QTRY_VERIFY_WITH_TIMEOUT(labelText(w_.get(), "fixLatitude").contains("N"), 10000);
         QVERIFY(labelText(w_.get(), "fixSatellites").contains("/"));
         QTRY_VERIFY_WITH_TIMEOUT(labelText(w_.get(), "rtkRtcmTotal") != QStringLiteral("—"), 10000);
@@ -381,6 +385,19 @@ private slots:
                                   QString("GeoS-5M"), 20000);
         auto *c = w_->controller()->connection();
         QVERIFY(c->stream()->dialect() && c->stream()->dialect()->id == "geostar");
+        // GeoStar's own numbering (2.x: Galileo as 101-136 in GPGSV) from then on: no satellite
+        // of unknown system, Galileo's among them.
+        auto galileoAndNoUnknown = [this] {
+            bool galileo = false;
+            for (const auto &r : w_->satelliteModel()->rows()) {
+                if (r.sat.system == gnss::Constellation::Unknown) return false;
+                galileo |= r.sat.system == gnss::Constellation::Galileo;
+            }
+            return galileo;
+        };
+        // Within two epochs: the satellites numbered before the dialect was known are not kept
+        // beside them as recently lost (for ten seconds, as a satellite that set is).
+        QTRY_VERIFY_WITH_TIMEOUT(galileoAndNoUnknown(), 3000);
         w_->controller()->disconnectFromSource();
     }
 

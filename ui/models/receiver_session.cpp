@@ -38,6 +38,11 @@ void ReceiverSession::consume(const SentenceEvent &ev, const Dialect *dialect) {
     if (dialect != lastDialect_) {
         lastDialect_ = dialect;
         tracker_->setDialect(dialect);
+        // The satellites seen so far were numbered without the dialect (a GeoS-5's Galileo at
+        // 101-136 read as satellites of no known system): kept as "recently lost", they would
+        // stand beside the same satellites renamed for ten seconds.
+        tracker_->forgetSatellites();
+        if (models_.satellites) models_.satellites->clear();
         emit dialectChanged(dialect);
     }
     const Sentence &s = ev.sentence;
