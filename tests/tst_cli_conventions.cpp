@@ -285,6 +285,12 @@ private slots:
 #else
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         for (const char *v : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) env.remove(v);
+        // English text is looked for: not the preferences of whoever runs the tests.
+        QTemporaryDir home;
+        QVERIFY(home.isValid());
+        env.insert("XDG_CONFIG_HOME", home.path());
+        for (const char *v : {"LANG", "LC_ALL", "LC_MESSAGES"}) env.insert(v, "C.UTF-8");
+        env.remove("LANGUAGE");
         const QString gui = QStringLiteral(GNSS_WORKBENCH_PATH);
         const Run version = run(gui, {"--version"}, {}, env);
         QVERIFY2(version.exitCode == 0 && version.out == "GNSS Workbench " GNSS_VERSION "\n",
