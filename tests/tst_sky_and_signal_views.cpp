@@ -182,6 +182,15 @@ private slots:
         QCOMPARE(ui::SignalLevelsView::groupCaption(fm, Constellation::Gps, 0,
                                                     fm.horizontalAdvance("G")),
                  "G");
+        // A satellite of no known system is named in words (translated), not "unknown".
+        QCOMPARE(ui::SignalLevelsView::groupCaption(fm, Constellation::Unknown, 0, 1000),
+                 "unknown system");
+        ui::SatelliteModel model;
+        Epoch e;
+        e.satellites.push_back({{Constellation::Unknown, 101}, 0, 40, 83, 46, false});
+        model.update(e, 1000);
+        QCOMPARE(model.data(model.index(0, ui::SatelliteModel::System)).toString(),
+                 QString("unknown system"));
     }
 
     void satellitesOutOfViewAreKeptThenDropped() {

@@ -2,9 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru" sourcelanguage="en">
 <context>
-    <name>FixType</name>
+    <name>Constellation</name>
     <message>
         <location filename="../ui/style/gnss_style.cpp" line="+37"/>
+        <source>unknown system</source>
+        <translation>неизвестная система</translation>
+    </message>
+</context>
+<context>
+    <name>FixType</name>
+    <message>
+        <location line="+6"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
@@ -416,7 +424,9 @@
         <location filename="../protocol/nemerix/nemerix_fix_settings.cpp" line="+108"/>
         <location filename="../protocol/nemerix/nemerix_nav_init.cpp" line="+43"/>
         <location line="+2"/>
-        <location filename="../protocol/nmea/gsv.cpp" line="+44"/>
+        <location filename="../protocol/nmea/gsv.cpp" line="+43"/>
+        <location line="+2"/>
+        <location line="+18"/>
         <location line="+2"/>
         <location filename="../protocol/nmea/zda.cpp" line="+18"/>
         <location line="+2"/>
@@ -460,7 +470,7 @@
         <translation>не число</translation>
     </message>
     <message>
-        <location filename="../protocol/core/sentence.cpp" line="+59"/>
+        <location filename="../protocol/core/sentence.cpp" line="+73"/>
         <source>not a sentence</source>
         <translation>не сообщение NMEA</translation>
     </message>
@@ -470,7 +480,7 @@
         <translation>слишком длинное сообщение</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+92"/>
         <location filename="../protocol/nemerix/nemerix_fields.cpp" line="+25"/>
         <source>too many fields</source>
         <translation>слишком много полей</translation>
@@ -481,7 +491,7 @@
         <translation>пустой адрес</translation>
     </message>
     <message>
-        <location filename="../protocol/core/stream_decoder.cpp" line="+148"/>
+        <location filename="../protocol/core/stream_decoder.cpp" line="+173"/>
         <source>unknown sentence</source>
         <translation>неизвестное сообщение</translation>
     </message>
@@ -762,12 +772,12 @@
         <translation>вне диапазона -59..59</translation>
     </message>
     <message>
-        <location filename="../protocol/nmea/gsv.cpp" line="-12"/>
+        <location filename="../protocol/nmea/gsv.cpp" line="-13"/>
         <source>too many satellites in one GSV sentence</source>
         <translation>слишком много спутников в одном сообщении GSV</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>sentence number outside 1..%1</source>
         <translation>номер сообщения вне диапазона 1..%1</translation>
     </message>
@@ -3738,7 +3748,7 @@
         <translation>Нет такого журнала: %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>Invalid --gpsd: %1</source>
         <translation>Неверное значение --gpsd: %1</translation>
     </message>
@@ -3748,7 +3758,7 @@
         <translation>Укажите не более одного источника: --port, --tcp, --gpsd, --replay, --sim или журнал.</translation>
     </message>
     <message>
-        <location line="-82"/>
+        <location line="-83"/>
         <source>Save an image of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
@@ -3763,7 +3773,7 @@
         <translation>Лишний аргумент «%1»</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+33"/>
         <source>Invalid baud rate: %1</source>
         <translation>Неверная скорость порта: %1</translation>
     </message>
@@ -3778,7 +3788,7 @@
         <translation>Неизвестный имитатор приёмника «%1» (допустимо: %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="+73"/>
+        <location filename="../app/gui/window_start.cpp" line="+12"/>
         <source>Unknown dock &apos;%1&apos; (use %2)</source>
         <translation>Неизвестная панель «%1» (допустимо: %2)</translation>
     </message>
@@ -4210,18 +4220,18 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+58"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+221"/>
+        <location filename="../app/gui/main_window.cpp" line="+59"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+249"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+262"/>
+        <location line="+264"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-178"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-206"/>
         <source>Timeline</source>
         <translation>Шкала времени</translation>
     </message>
@@ -4253,12 +4263,12 @@ Serial number: %3</source>
     <message>
         <location line="+3"/>
         <location line="+12"/>
-        <location line="+163"/>
+        <location line="+191"/>
         <source>Not exported: %1</source>
         <translation>Не экспортировано: %1</translation>
     </message>
     <message>
-        <location line="-171"/>
+        <location line="-199"/>
         <source>Log statistics</source>
         <translation>Статистика журнала</translation>
     </message>
@@ -4338,12 +4348,12 @@ Serial number: %3</source>
         <translation>Очистить список</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>%1 — GNSS Workbench</source>
         <translation>%1 — GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+66"/>
         <source>Export epochs %1 to %2</source>
         <translation>Экспорт эпох с %1 по %2</translation>
     </message>
@@ -4423,12 +4433,12 @@ Serial number: %3</source>
         <translation>О &amp;Qt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-123"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-151"/>
         <source>Open Log</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-293"/>
+        <location filename="../app/gui/main_window.cpp" line="-295"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -4448,7 +4458,7 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+77"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
     </message>
@@ -4469,7 +4479,7 @@ Serial number: %3</source>
         <translation>Уровни сигналов</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Satellites</source>
         <translation>Спутники</translation>
     </message>
@@ -5712,7 +5722,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::TcpTransport</name>
     <message>
-        <location filename="../protocol/link/tcp_transport.cpp" line="+18"/>
+        <location filename="../protocol/link/tcp_transport.cpp" line="+23"/>
         <source>Cannot connect to %1: no answer within %2 s</source>
         <translation>Не удаётся подключиться к %1: нет ответа за %2 с</translation>
     </message>
@@ -6025,7 +6035,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CorrectionsView</name>
     <message>
-        <location filename="../ui/views/corrections_view.cpp" line="+56"/>
+        <location filename="../ui/views/corrections_view.cpp" line="+57"/>
         <source>RTK fixed</source>
         <translation>RTK fixed</translation>
     </message>
@@ -6091,12 +6101,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>not stored</source>
         <translation>не сохраняется</translation>
     </message>
     <message>
-        <location line="-88"/>
+        <location line="-89"/>
         <source>Password</source>
         <translation>Пароль</translation>
     </message>
@@ -6122,12 +6132,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+145"/>
+        <location line="+146"/>
         <source>Start</source>
         <translation>Запустить</translation>
     </message>
     <message>
-        <location line="-141"/>
+        <location line="-142"/>
         <source>Not started</source>
         <translation>Не запущено</translation>
     </message>
@@ -6162,7 +6172,7 @@ Serial number: %3</source>
         <translation>Описание</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Correction age, s (last 10 min)</source>
         <translation>Возраст поправок, с (последние 10 мин)</translation>
     </message>
@@ -7661,7 +7671,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SignalLevelsView</name>
     <message>
-        <location filename="../ui/views/signal_levels_view.cpp" line="+118"/>
+        <location filename="../ui/views/signal_levels_view.cpp" line="+140"/>
         <source>No satellites in view</source>
         <translation>Нет видимых спутников</translation>
     </message>

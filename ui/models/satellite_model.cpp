@@ -50,7 +50,7 @@ QVariant SatelliteModel::data(const QModelIndex &index, int role) const {
         const QString dash = QStringLiteral("—");
         auto show = [&](const std::optional<int> &v) { return v ? QString::number(*v) : dash; };
         switch (index.column()) {
-        case System: return QString::fromLatin1(toString(r.sat.system).data());
+        case System: return style::constellationName(r.sat.system);
         case Prn: return label(r);
         case Signal: {
             const auto s = signalName(r.sat.system, r.signalId);

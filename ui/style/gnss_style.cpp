@@ -32,6 +32,12 @@ Marker constellationMarker(Constellation c) {
     return Marker::Circle;
 }
 
+QString constellationName(Constellation c) {
+    if (c == Constellation::Unknown)
+        return QCoreApplication::translate("Constellation", "unknown system");
+    return QString::fromLatin1(toString(c).data(), int(toString(c).size()));
+}
+
 QString fixTypeLabel(FixType f) {
     switch (f) {
     case FixType::None: return QCoreApplication::translate("FixType", "No fix");

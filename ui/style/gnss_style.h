@@ -13,6 +13,9 @@ enum class Marker { Circle, Square, Diamond, TriangleUp, Pentagon, TriangleDown,
 
 QColor constellationColor(Constellation c);
 Marker constellationMarker(Constellation c);
+// A constellation's name as the views show it: the systems' own names ("GPS", "GLONASS"), and
+// for a satellite whose system the receiver's numbering does not tell, a translated word.
+QString constellationName(Constellation c);
 
 // Badge text (translated) and colour for a fix type.
 QString fixTypeLabel(FixType f);

@@ -19,7 +19,7 @@ QString SignalLevelsView::groupCaption(const QFontMetricsF &fm, Constellation sy
                                        double width) {
     const auto sig = signalName(system, signalId);
     const QString signal = QString::fromLatin1(sig.data(), int(sig.size()));
-    const QString full = QString::fromLatin1(toString(system).data());
+    const QString full = style::constellationName(system);
     const QString letter(QChar::fromLatin1(rinexLetter(system)));
     const QStringList candidates =
             signal.isEmpty()
