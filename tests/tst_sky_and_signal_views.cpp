@@ -93,6 +93,8 @@ private slots:
         view.resize(size, size);
         const auto ms = view.markers();
         QCOMPARE(ms.size(), 60);
+        const auto grid = view.gridTexts();
+        QCOMPARE(grid.size(), 7);
         const double body = 8;
         int labelled = 0;
         for (int i = 0; i < ms.size(); ++i) {
@@ -103,6 +105,10 @@ private slots:
             }
             ++labelled;
             QVERIFY(view.rect().contains(ms[i].labelRect.toAlignedRect()));
+            // Nor over a compass letter or a ring's degrees ("G26" over the W read "GW6").
+            for (const auto &t : grid)
+                QVERIFY2(!ms[i].labelRect.intersects(t.rect),
+                         qPrintable(ms[i].text + " over " + t.text));
             for (int j = 0; j < ms.size(); ++j) {
                 if (j == i) continue;
                 QVERIFY2(!ms[j].labelRect.isNull() ? !ms[i].labelRect.intersects(ms[j].labelRect)

@@ -157,6 +157,8 @@ void SkyPlotView::placeLabels(QVector<Marker> &ms) const {
     for (const Marker &m : ms)
         taken.push_back(
                 QRectF(m.pos - QPointF(size * 0.65, size * 0.65), QSizeF(size * 1.3, size * 1.3)));
+    // And the compass letters and ring degrees: "G26" written over the W read "GW6".
+    for (const GridText &t : gridTexts()) taken.push_back(t.rect);
     // Used satellites first, then the strongest: when there is no room, the weak lose their label.
     QVector<int> order(ms.size());
     std::iota(order.begin(), order.end(), 0);
@@ -214,6 +216,30 @@ void SkyPlotView::placeLabels(QVector<Marker> &ms) const {
     }
 }
 
+QVector<SkyPlotView::GridText> SkyPlotView::gridTexts() const {
+    const QFontMetricsF fm(font());
+    const QPointF c = center();
+    const double r = radius();
+    const double off = fm.height() * 0.8;
+    QVector<GridText> out;
+    auto centred = [&](const QString &s, QPointF at) {
+        const double w = fm.horizontalAdvance(s) + 2;
+        out.push_back({s, QRectF(at.x() - w / 2, at.y() - fm.height() / 2, w, fm.height())});
+    };
+    centred(tr("N"), QPointF(c.x(), c.y() - r - off));
+    centred(tr("S"), QPointF(c.x(), c.y() + r + off));
+    centred(tr("E"), QPointF(c.x() + r + off, c.y()));
+    centred(tr("W"), QPointF(c.x() - r - off, c.y()));
+    for (int el : {0, 30, 60}) {
+        const QString s = QStringLiteral("%1°").arg(el);
+        out.push_back({s,
+                       QRectF(c.x() + 3, c.y() - r * (90 - el) / 90.0, fm.horizontalAdvance(s) + 2,
+                              fm.height()),
+                       true});
+    }
+    return out;
+}
+
 void SkyPlotView::paintEvent(QPaintEvent *) {
     dirty_ = false;
     QPainter p(this);
@@ -235,21 +261,10 @@ void SkyPlotView::paintEvent(QPaintEvent *) {
     }
     p.drawLine(QPointF(c.x(), c.y() - r), QPointF(c.x(), c.y() + r));
     p.drawLine(QPointF(c.x() - r, c.y()), QPointF(c.x() + r, c.y()));
-    const QFontMetricsF fm(font());
-    p.setPen(text);
-    const double off = fm.height() * 0.8;
-    auto centred = [&](const QString &s, QPointF at) {
-        p.drawText(QRectF(at.x() - 30, at.y() - fm.height() / 2, 60, fm.height()), Qt::AlignCenter,
-                   s);
-    };
-    centred(tr("N"), QPointF(c.x(), c.y() - r - off));
-    centred(tr("S"), QPointF(c.x(), c.y() + r + off));
-    centred(tr("E"), QPointF(c.x() + r + off, c.y()));
-    centred(tr("W"), QPointF(c.x() - r - off, c.y()));
-    p.setPen(grid);
-    for (int el : {0, 30, 60})
-        p.drawText(QPointF(c.x() + 3, c.y() - r * (90 - el) / 90.0 + fm.ascent()),
-                   QStringLiteral("%1°").arg(el));
+    for (const GridText &t : gridTexts()) {
+        p.setPen(t.ring ? grid : text);
+        p.drawText(t.rect, t.ring ? Qt::AlignLeft | Qt::AlignTop : Qt::AlignCenter, t.text);
+    }
 
     // Elevation mask.
     if (mask_ > 0) {

@@ -46,6 +46,14 @@ public:
     // overlaps another label or a marker: a label with no free place is dropped (the marker
     // keeps its tooltip).
     QVector<Marker> markers() const;
+    // The compass letters and the elevation rings' degrees, where paint draws them (labels keep
+    // off them too).
+    struct GridText {
+        QString text;
+        QRectF rect;
+        bool ring = false; // a ring's degrees (drawn in the grid's colour), else a letter
+    };
+    QVector<GridText> gridTexts() const;
 
     QSize sizeHint() const override { return {420, 420}; }
     QSize minimumSizeHint() const override { return {160, 160}; }
