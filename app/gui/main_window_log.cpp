@@ -204,11 +204,16 @@ void MainWindow::openLog(const QString &path, const QString &at) {
             d->show();
             d->raise();
         };
-        show("logEventsDock", "fixDock");
-        show("logSummaryDock", "logEventsDock");
+        // The track and the range statistics beside the sky plot, the whole-log charts and the
+        // events (a wide list) beside the console: the live docks' groups keep the tabs they
+        // have, so that every tab's title stays whole on a laptop in every language (ten tabs
+        // beside the fix were cut to "Ре…", "Поп…" in Russian at 1280x800).
         show("logTrackDock", "skyDock");
+        show("logSummaryDock", "logTrackDock");
         show("logChartsDock", "consoleDock");
-        if (QDockWidget *e = dock("logEventsDock")) e->raise();
+        show("logEventsDock", "logChartsDock");
+        for (const char *front : {"logTrackDock", "logChartsDock"})
+            if (QDockWidget *d = dock(QString::fromLatin1(front))) d->raise();
         logDocksPlaced_ = true;
     }
     updateStatus();
@@ -221,8 +226,8 @@ void MainWindow::openLog(const QString &path, const QString &at) {
 void MainWindow::putLogViewAway() {
     // Each log dock, and the live dock it is first shown beside (brought back to the front of
     // their tab group: Qt would show the next tab, the deviation rather than the sky plot).
-    const std::pair<const char *, const char *> docks[] = {{"logEventsDock", "fixDock"},
-                                                           {"logSummaryDock", "fixDock"},
+    const std::pair<const char *, const char *> docks[] = {{"logEventsDock", "consoleDock"},
+                                                           {"logSummaryDock", "skyDock"},
                                                            {"logChartsDock", "consoleDock"},
                                                            {"logTrackDock", "skyDock"}};
     for (const auto &[name, beside] : docks) {

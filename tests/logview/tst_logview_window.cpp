@@ -36,6 +36,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTableView>
 #include <QTableWidget>
 #include <QTcpServer>
@@ -70,6 +71,22 @@ class TestLogviewWindow : public QObject {
         w->resize(1280, 800);
         w->show();
         return w;
+    }
+    // Every tab of every dock group shows its whole title (ten tabs in one group were cut to
+    // "Ре…", "Поп…" in Russian at 1280x800).
+    static void expectTabTitlesWhole(MainWindow &w) {
+        QApplication::processEvents();
+        for (QTabBar *bar : w.findChildren<QTabBar *>()) {
+            if (!bar->isVisible()) continue;
+            for (int i = 0; i < bar->count(); ++i) {
+                const int need = bar->fontMetrics().horizontalAdvance(bar->tabText(i));
+                QVERIFY2(bar->tabRect(i).width() > need,
+                         qPrintable(QStringLiteral("tab '%1': %2 px for %3 px of text")
+                                            .arg(bar->tabText(i))
+                                            .arg(bar->tabRect(i).width())
+                                            .arg(need)));
+            }
+        }
     }
     // Opens the scenario log and waits for its index.
     static bool openScenario(MainWindow &w, const std::string &path) {
@@ -110,6 +127,7 @@ private slots:
                                     .arg(w->minimumSizeHint().height())));
         for (const char *d : {"logEventsDock", "logSummaryDock", "logChartsDock", "logTrackDock"})
             QVERIFY2(w->dock(d)->isVisibleTo(w.get()), d);
+        expectTabTitlesWhole(*w);
         QCOMPARE(w->logViewer()->cursor()->epochCount(), std::size_t(600));
         expectStateAt(*w, 0);
         // The strip: fix colours everywhere, the gap and the checksum burst marked.
@@ -164,6 +182,7 @@ private slots:
             QVERIFY2(min.width() <= 1280 && min.height() <= 740,
                      qPrintable(QString("%1x%2").arg(min.width()).arg(min.height())));
             QVERIFY(w->findChild<QAction *>("logPlay")->text() != QLatin1String("Play"));
+            expectTabTitlesWhole(*w);
         }
         QCoreApplication::removeTranslator(&russian);
     }
