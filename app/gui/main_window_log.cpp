@@ -33,6 +33,15 @@ namespace gnss::app {
 namespace {
 constexpr int kRecentLogs = 8;
 const char *const kRecentKey = "logview/recent";
+// Each log dock and the live dock whose tab group it joins. The track and the range statistics
+// beside the sky plot, the whole-log charts and the events (a wide list) beside the console: the
+// live docks' groups keep the tabs they have, so that every tab's title stays whole on a laptop in
+// every language (ten tabs beside the fix were cut to "Ре…", "Поп…" in Russian at 1280x800).
+constexpr std::pair<const char *, const char *> kLogDockPlaces[] = {
+        {"logTrackDock", "skyDock"},
+        {"logSummaryDock", "skyDock"},
+        {"logChartsDock", "consoleDock"},
+        {"logEventsDock", "consoleDock"}};
 } // namespace
 
 void MainWindow::createLogViewer() {
@@ -195,23 +204,14 @@ void MainWindow::openLog(const QString &path, const QString &at) {
     if (!logDocksShown_) {
         // The first log of the session brings its docks forward, beside the live ones.
         logDocksShown_ = true;
-        auto show = [this](const char *name, const char *beside) {
+        for (const auto &[name, beside] : kLogDockPlaces) {
             QDockWidget *d = dock(QString::fromLatin1(name));
             QDockWidget *b = dock(QString::fromLatin1(beside));
-            if (!d) return;
+            if (!d) continue;
             // Beside a live dock the first time; where the user left it after that.
             if (!logDocksPlaced_ && b && b->isVisible() && !d->isVisible()) tabifyDockWidget(b, d);
             d->show();
-            d->raise();
-        };
-        // The track and the range statistics beside the sky plot, the whole-log charts and the
-        // events (a wide list) beside the console: the live docks' groups keep the tabs they
-        // have, so that every tab's title stays whole on a laptop in every language (ten tabs
-        // beside the fix were cut to "Ре…", "Поп…" in Russian at 1280x800).
-        show("logTrackDock", "skyDock");
-        show("logSummaryDock", "logTrackDock");
-        show("logChartsDock", "consoleDock");
-        show("logEventsDock", "logChartsDock");
+        }
         for (const char *front : {"logTrackDock", "logChartsDock"})
             if (QDockWidget *d = dock(QString::fromLatin1(front))) d->raise();
         logDocksPlaced_ = true;
@@ -224,13 +224,9 @@ void MainWindow::openLog(const QString &path, const QString &at) {
 // open shows them) and when the log closes; a hidden dock keeps its place, and the next log shows
 // them there.
 void MainWindow::putLogViewAway() {
-    // Each log dock, and the live dock it is first shown beside (brought back to the front of
-    // their tab group: Qt would show the next tab, the deviation rather than the sky plot).
-    const std::pair<const char *, const char *> docks[] = {{"logEventsDock", "consoleDock"},
-                                                           {"logSummaryDock", "skyDock"},
-                                                           {"logChartsDock", "consoleDock"},
-                                                           {"logTrackDock", "skyDock"}};
-    for (const auto &[name, beside] : docks) {
+    // Each log dock's live neighbour is brought back to the front of their tab group (Qt would
+    // show the next tab, the deviation rather than the sky plot).
+    for (const auto &[name, beside] : kLogDockPlaces) {
         QDockWidget *d = dock(QString::fromLatin1(name));
         if (!d) continue;
         QDockWidget *live = dock(QString::fromLatin1(beside));
