@@ -3729,8 +3729,8 @@
     </message>
     <message>
         <location line="+6"/>
-        <source>Show this dock in front of its tab group: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info.</source>
-        <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info.</translation>
+        <source>Show this dock in front of its tab group: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info; with a log open also logTrack, logSummary, logCharts, logEvents.</source>
+        <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info; при открытом журнале также logTrack, logSummary, logCharts, logEvents.</translation>
     </message>
     <message>
         <location line="+32"/>

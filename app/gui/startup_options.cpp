@@ -63,7 +63,9 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             QCoreApplication::translate("StartupOptions",
                                         "Show this dock in front of its tab group: settings, "
                                         "console, sky, signal, fix, satellites, rtk, charts, "
-                                        "corrections, deviation, attitude, stats, info."),
+                                        "corrections, deviation, attitude, stats, info; with "
+                                        "a log open also logTrack, logSummary, logCharts, "
+                                        "logEvents."),
             "name");
     const QCommandLineOption shot(
             "screenshot",
