@@ -4,6 +4,7 @@
 #include "log_time.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <vector>
 
@@ -16,6 +17,23 @@ double percentile(std::vector<double> &v, double p) {
             std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5));
     std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
     return v[k];
+}
+
+// A value the index keeps as a float (HDOP, altitude), as the decimal it was printed as: 0.6,
+// not the float's 0.6000000238418579.
+double printed(float f) {
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, f).ptr;
+    double d = f;
+    std::from_chars(buf, end, d);
+    return d;
+}
+
+// `v` to the nearest 1 / perUnit (1e4: a tenth of a millimetre), for the JSON: digits past what a
+// receiver prints or the statistic can hold are noise ("cep50_m": 0.15757527423437667).
+std::optional<double> roundedTo(std::optional<double> v, double perUnit) {
+    if (!v || !std::isfinite(*v)) return v;
+    return std::round(*v * perUnit) / perUnit;
 }
 
 bool isFix(FixType f) {
@@ -85,7 +103,7 @@ RangeStats rangeStats(std::span<const EpochRecord> records, std::uint64_t first,
     double altSum = 0;
     std::uint64_t altCount = 0;
     std::optional<std::int64_t> prevMs;
-    double elapsed = 0;
+    std::int64_t elapsedMs = 0; // whole milliseconds: 16381 steps of 0.1 s add up to 1638, exactly
     for (std::uint64_t i = first; i <= last; ++i) {
         const EpochRecord &r = records[i];
         if (r.fix < s.perFix.size()) ++s.perFix[r.fix];
@@ -95,8 +113,9 @@ RangeStats rangeStats(std::span<const EpochRecord> records, std::uint64_t first,
                 s.dated = r.has(kDateKnown);
             }
             if (prevMs) {
-                const double step = static_cast<double>(r.utcMs - *prevMs) / 1000.0;
-                if (step > 0) elapsed += step;
+                const std::int64_t stepMs = r.utcMs - *prevMs;
+                const double step = static_cast<double>(stepMs) / 1000.0;
+                if (stepMs > 0) elapsedMs += stepMs;
                 if (i > first && r.has(kGapBefore)) {
                     ++s.gaps;
                     if (step > s.longestGapS) {
@@ -111,22 +130,23 @@ RangeStats rangeStats(std::span<const EpochRecord> records, std::uint64_t first,
         if (i > first && r.has(kTimeBack)) ++s.timeJumps;
         s.checksumErrors += r.checksumErrors;
         if (r.has(kJunk)) ++s.epochsWithJunk;
+        const double elapsed = static_cast<double>(elapsedMs) / 1000.0;
         if (!s.timeToFirstFixS && isFix(r.fixType())) s.timeToFirstFixS = elapsed;
         if (!s.timeToRtkFixedS && r.fixType() == FixType::RtkFixed) s.timeToRtkFixedS = elapsed;
-        if (!std::isnan(r.hdop) && (!s.maxHdop || r.hdop > *s.maxHdop)) {
-            s.maxHdop = r.hdop;
+        if (!std::isnan(r.hdop) && (!s.maxHdop || printed(r.hdop) > *s.maxHdop)) {
+            s.maxHdop = printed(r.hdop);
             s.maxHdopEpoch = i;
         }
         if (r.hasPosition() && (!s.stationaryOnly || (!std::isnan(r.speed) && r.speed < 0.5f))) {
             lats.push_back(r.lat);
             lons.push_back(r.lon);
             if (!std::isnan(r.altMsl)) {
-                altSum += r.altMsl;
+                altSum += printed(r.altMsl);
                 ++altCount;
             }
         }
     }
-    s.durationS = elapsed;
+    s.durationS = static_cast<double>(elapsedMs) / 1000.0;
     s.positions = lats.size();
     if (!lats.empty()) {
         const Spread sp = horizontalSpread(lats, lons);
@@ -153,7 +173,8 @@ void RangeStats::writeJson(JsonWriter &w) const {
     w.key("availability").beginObject();
     for (std::size_t f = 0; f < perFix.size(); ++f)
         if (perFix[f])
-            w.field(toString(static_cast<FixType>(f)), availability(static_cast<FixType>(f)));
+            w.field(toString(static_cast<FixType>(f)), // per cent, to 1e-4 (16.6667)
+                    roundedTo(availability(static_cast<FixType>(f)), 1e4));
     w.endObject();
     w.key("epochs_per_fix").beginObject();
     for (std::size_t f = 0; f < perFix.size(); ++f)
@@ -166,8 +187,11 @@ void RangeStats::writeJson(JsonWriter &w) const {
     w.field("epochs_with_junk", epochsWithJunk);
     w.key("position").beginObject();
     w.field("count", positions).field("stationary_only", stationaryOnly);
-    w.field("mean_lat", meanLat).field("mean_lon", meanLon).field("mean_alt_msl", meanAlt);
-    w.field("cep50_m", cep50).field("cep95_m", cep95).field("drms2_m", drms2);
+    // Degrees to 1e-9 (0.1 mm on the ground), metres to 0.1 mm.
+    w.field("mean_lat", roundedTo(meanLat, 1e9)).field("mean_lon", roundedTo(meanLon, 1e9));
+    w.field("mean_alt_msl", roundedTo(meanAlt, 1e4));
+    w.field("cep50_m", roundedTo(cep50, 1e4)).field("cep95_m", roundedTo(cep95, 1e4));
+    w.field("drms2_m", roundedTo(drms2, 1e4));
     w.endObject();
     w.field("max_hdop", maxHdop);
     if (maxHdop) w.field("max_hdop_epoch", maxHdopEpoch);

@@ -4,6 +4,9 @@
 #include "logview_files.h"
 #include "scenario_log.h"
 
+#include <QRegularExpression>
+
+#include <cmath>
 #include <map>
 
 using namespace gnss;
@@ -125,6 +128,26 @@ private slots:
         for (const auto &a : msgs)
             if (a.address == "GPGGA") gga = a.sentences;
         QCOMPARE(int(gga), s.epochs);
+    }
+
+    // The statistics' JSON says what the receiver printed and what the statistic can hold: the
+    // HDOP the index keeps as a float is 0.8, not 0.800000011920929; 600 epochs' 0.1 s steps add up
+    // in whole milliseconds; metres and degrees stop at a tenth of a millimetre.
+    void statisticsJsonHasNoFloatNoise() {
+        LogView view(registry_);
+        QVERIFY(test::openAndWait(view, write({}, "json.nmea")));
+        const RangeStats s = view.stats(0, 599);
+        std::string json;
+        JsonWriter w(json);
+        s.writeJson(w);
+        QVERIFY2(json.find("\"max_hdop\":0.8,") != std::string::npos, json.c_str());
+        QCOMPARE(s.durationS * 1000, std::round(s.durationS * 1000));
+        static const QRegularExpression decimals(QStringLiteral("\\.([0-9]+)"));
+        for (auto it = decimals.globalMatch(QString::fromStdString(json)); it.hasNext();) {
+            const QString digits = it.next().captured(1);
+            QVERIFY2(digits.size() <= 9,
+                     qPrintable(digits + QStringLiteral(" in ") + QString::fromStdString(json)));
+        }
     }
 
     // CEP of known positions: a square of side 2 m around a point has every point at 1.414 m.
