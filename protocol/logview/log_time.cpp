@@ -18,11 +18,14 @@ bool digits(std::string_view s, std::size_t pos, std::size_t n, int &out) {
     return true;
 }
 
-// "hh:mm[:ss[.fff]]" → ms; nullopt when it is not one.
+// "hh:mm[:ss[.fff]]" or "h:mm…" (as people write "9:42") → ms; nullopt when it is not one.
 std::optional<std::int64_t> timeOfDay(std::string_view s) {
     int h = 0, m = 0, sec = 0;
-    if (!digits(s, 0, 2, h) || s.size() < 5 || s[2] != ':' || !digits(s, 3, 2, m)) return {};
-    std::size_t pos = 5;
+    const std::size_t hourDigits = s.size() > 1 && s[1] == ':' ? 1 : 2;
+    if (!digits(s, 0, hourDigits, h) || s.size() < hourDigits + 3 || s[hourDigits] != ':' ||
+        !digits(s, hourDigits + 1, 2, m))
+        return {};
+    std::size_t pos = hourDigits + 3;
     double frac = 0;
     if (pos < s.size() && s[pos] == ':') {
         if (!digits(s, pos + 1, 2, sec)) return {};

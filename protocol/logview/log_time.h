@@ -9,7 +9,7 @@
 namespace gnss::logview {
 
 // A time a user gave: a whole UTC time ("2024-03-15T10:00:00Z", "2024-03-15 10:00:00.5") or a
-// time of day ("10:00:00", "10:00"), or an epoch number ("#1200").
+// time of day ("10:00:00", "10:00", "9:42"), or an epoch number ("#1200").
 struct TimeSpec {
     enum class Kind { Utc, TimeOfDay, Epoch } kind = Kind::Utc;
     std::int64_t ms = 0;     // Utc: ms since 1970; TimeOfDay: ms since midnight
