@@ -45,7 +45,9 @@ int cmdSummary(const CliContext &ctx) {
         JsonWriter w(o);
         w.beginObject().field("file", log.path).field("bytes", v.fileSize());
         w.field("gzip", v.gzipped()).field("host_times", v.hasHostTimes());
-        w.field("dialect", v.dialectName().empty() ? std::string("unknown") : v.dialectName());
+        // No vendor sentence recognised: a standard NMEA receiver (--dialect nmea), not an
+        // unknown one.
+        w.field("dialect", v.dialectName().empty() ? std::string("nmea") : v.dialectName());
         w.field("sentences", fs.sentences).field("bytes_skipped", fs.bytesSkipped);
         w.field("lines_cut", fs.truncated + fs.tooLong + fs.binaryAborted);
         w.key("stats");
@@ -73,7 +75,8 @@ int cmdSummary(const CliContext &ctx) {
         };
         line("file: %s (%.1f MB%s%s)\n", log.path.c_str(), v.fileSize() / 1e6,
              v.gzipped() ? ", gzip" : "", v.hasHostTimes() ? ", host times from .idx" : "");
-        line("dialect: %s\n", v.dialectName().empty() ? "unknown" : v.dialectName().c_str());
+        line("dialect: %s\n",
+             v.dialectName().empty() ? "nmea (no vendor sentences)" : v.dialectName().c_str());
         line("sentences: %llu; junk: %llu bytes, %llu lines cut\n",
              static_cast<unsigned long long>(fs.sentences),
              static_cast<unsigned long long>(fs.bytesSkipped),

@@ -80,6 +80,16 @@ private slots:
         QCOMPARE(text.exitCode, 0);
         QVERIFY(text.out.contains("RTK fixed 28.3 %"));
         QVERIFY(text.out.contains("time_jump"));
+        // A receiver that sends no vendor sentence is a standard NMEA one, not an unknown one.
+        const QString plain = dir_.filePath("plain.nmea");
+        QFile f(plain);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("$GPRMC,123519,A,4807.038,N,01131.000,E,022.4,084.4,230394,003.1,W*6A\r\n"
+                "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n");
+        f.close();
+        const Run plainRun = runCli({"summary", "--json", plain});
+        QCOMPARE(QJsonDocument::fromJson(plainRun.out).object()["dialect"].toString(), "nmea");
+        QVERIFY(runCli({"summary", plain}).out.contains("dialect: nmea (no vendor sentences)"));
         QCOMPARE(runCli({"summary", dir_.filePath("missing.nmea")}).exitCode, 1);
         QCOMPARE(runCli({"summary"}).exitCode, 2);
     }
