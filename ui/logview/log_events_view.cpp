@@ -83,8 +83,15 @@ QString LogEventsView::kindName(logview::EventKind k) {
 
 QString LogEventsView::describe(const logview::LogEvent &e) const {
     const logview::LogView *log = cursor_->log();
-    const auto cur = log ? log->epoch(e.epoch) : std::nullopt;
-    const auto prev = log && e.epoch > 0 ? log->epoch(e.epoch - 1) : std::nullopt;
+    // The epoch and the one before, null when there is none (filled step by step: a conditional
+    // of two optionals made GCC warn that their members may be read uninitialised).
+    std::optional<logview::EpochRecord> curRec, prevRec;
+    if (log) {
+        curRec = log->epoch(e.epoch);
+        if (e.epoch > 0) prevRec = log->epoch(e.epoch - 1);
+    }
+    const logview::EpochRecord *cur = curRec ? &*curRec : nullptr;
+    const logview::EpochRecord *prev = prevRec ? &*prevRec : nullptr;
     auto dialect = [this](int d) {
         const auto all = registry_.dialects();
         const Dialect *x =
