@@ -277,6 +277,19 @@ private slots:
         QCOMPARE(cursor->current(), std::size_t(epoch));
         // Every description is in words, none empty.
         for (int r = 0; r < table->rowCount(); ++r) QVERIFY(!table->item(r, 2)->text().isEmpty());
+        // …and says what changed, from the epoch and the one before: "RTK float → RTK fixed",
+        // "station 2 (was 1)".
+        const auto all = w->logViewer()->view()->events();
+        int fixChanges = 0, stationChanges = 0;
+        for (int r = 0; r < table->rowCount(); ++r) {
+            const QString text = table->item(r, 2)->text();
+            if (all[std::size_t(r)].kind == logview::EventKind::FixChange)
+                fixChanges += text.contains(QStringLiteral(" → "));
+            if (all[std::size_t(r)].kind == logview::EventKind::BaseStation)
+                stationChanges += text.contains(QStringLiteral("(was "));
+        }
+        QCOMPARE(fixChanges, 5);
+        QCOMPARE(stationChanges, 1); // the first station heard was none before
 
         // The track: a click on an epoch's dot goes there.
         w->showDock("logTrack");
