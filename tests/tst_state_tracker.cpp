@@ -72,6 +72,7 @@ private slots:
         ReceiverState st = track({buildSentence("PNVGVER,NVS,RTK,0029,CSM24,0101")});
         QCOMPARE(QString::fromStdString(st.identity.model), QString("NV08C-RTK"));
         QCOMPARE(QString::fromStdString(st.identity.firmware), QString("0029"));
+        QCOMPARE(QString::fromStdString(st.identity.hardware), QString("CSM24 0101"));
         QVERIFY(st.reports.count("Version"));
 
         st = track({"$GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C"});

@@ -41,8 +41,11 @@ bool updateState(const Message &m, ReceiverState &st) {
         st.identity.vendor = "NVS";
         st.identity.model = "NV08C-" + std::string(v->device.value_or("RTK"));
         st.identity.firmware = std::string(v->rtkFw.value_or(""));
-        st.identity.hardware = std::string(v->csmHw.value_or("")) +
-                               (v->csmFw ? " " + std::string(*v->csmFw) : std::string());
+        // Appended, not `" " + std::string(…)`: GCC 12's Release build warned of an overlapping
+        // memcpy (-Wrestrict) in that concatenation.
+        std::string hardware(v->csmHw.value_or(""));
+        if (v->csmFw) hardware.append(" ").append(*v->csmFw);
+        st.identity.hardware = std::move(hardware);
         st.reports["Version"] = messageJson(m);
         return true;
     }
