@@ -274,10 +274,13 @@ void TestGeostarStatusWords::encodeIsTheInverseOfDecode_data() {
     QTest::addRow("status example") << "status" << 0x00083037u;
     QTest::addRow("config1 example") << "config1" << 0x802DC097u;
     QTest::addRow("config2 example") << "config2" << 0xF7FF8064u;
-    for (const char *w : {"status", "config1", "config2"}) {
-        QTest::addRow("%s none", w) << QString(w) << 0u;
-        QTest::addRow("%s all", w) << QString(w) << 0xFFFFFFFFu;
-        for (int b = 0; b < 32; ++b) QTest::addRow("%s bit %d", w, b) << QString(w) << (1u << b);
+    // The row names made as text (a "%s" of the loop's pointer made GCC's Release build warn that
+    // it might be null).
+    for (const QString w : {"status", "config1", "config2"}) {
+        QTest::newRow(qPrintable(w + " none")) << w << 0u;
+        QTest::newRow(qPrintable(w + " all")) << w << 0xFFFFFFFFu;
+        for (int b = 0; b < 32; ++b)
+            QTest::newRow(qPrintable(QStringLiteral("%1 bit %2").arg(w).arg(b))) << w << (1u << b);
     }
 }
 
