@@ -90,6 +90,11 @@ private slots:
         QCOMPARE(QString::fromStdString(t.toString(2)), QString("08:12:48.547824228"));
         QVERIFY(gnss::parseTimeOfDay("081248.5", t));
         QCOMPARE(QString::fromStdString(t.toString(12)), QString("08:12:48.500000000"));
+        // As many decimals as were printed (leading zeros kept), none for a whole second.
+        QVERIFY(gnss::parseTimeOfDay("123519.05", t));
+        QCOMPARE(QString::fromStdString(t.toString(0)), QString("12:35:19.05"));
+        QVERIFY(gnss::parseTimeOfDay("123519", t));
+        QCOMPARE(QString::fromStdString(t.toString(0)), QString("12:35:19"));
     }
 
     void datesParse() {

@@ -171,7 +171,7 @@ bool parseDateDdMmYy(std::string_view s, Date &out) {
 
 std::string TimeOfDay::toString(int minDecimals) const {
     // Nanoseconds are all there is: more than 9 decimals would print a wrong fraction.
-    const int dec = std::min(9, decimals > minDecimals ? decimals : minDecimals);
+    const int dec = std::clamp(decimals > minDecimals ? decimals : minDecimals, 0, 9);
     char buf[48];
     // A leap second (23:59:60) is stored past the end of the day.
     const bool leap = nanos >= 86'400'000'000'000LL;
@@ -180,11 +180,15 @@ std::string TimeOfDay::toString(int minDecimals) const {
     const long long whole = secNanos / 1'000'000'000LL;
     long long frac = secNanos % 1'000'000'000LL;
     for (int i = dec; i < 9; ++i) frac /= 10;
-    if (dec > 0)
-        std::snprintf(buf, sizeof buf, "%02d:%02d:%02lld.%0*lld", hh, mm, whole, dec, frac);
-    else
-        std::snprintf(buf, sizeof buf, "%02d:%02d:%02lld", hh, mm, whole);
-    return buf;
+    const int n = std::snprintf(buf, sizeof buf, "%02d:%02d:%02lld", hh, mm, whole);
+    std::string out(buf, static_cast<std::size_t>(std::clamp(n, 0, int(sizeof buf) - 1)));
+    if (dec > 0) { // the decimals digit by digit: a "%0*lld" of variable width made GCC warn
+        out.push_back('.');
+        out.resize(out.size() + static_cast<std::size_t>(dec));
+        char *digit = out.data() + out.size();
+        for (int i = 0; i < dec; ++i, frac /= 10) *--digit = static_cast<char>('0' + frac % 10);
+    }
+    return out;
 }
 
 std::string Date::toString() const {
