@@ -103,6 +103,7 @@ RangeStats rangeStats(std::span<const EpochRecord> records, std::uint64_t first,
     double altSum = 0;
     std::uint64_t altCount = 0;
     std::optional<std::int64_t> prevMs;
+    float maxHdop = 0;          // the largest as the index keeps it
     std::int64_t elapsedMs = 0; // whole milliseconds: 16381 steps of 0.1 s add up to 1638, exactly
     for (std::uint64_t i = first; i <= last; ++i) {
         const EpochRecord &r = records[i];
@@ -133,8 +134,9 @@ RangeStats rangeStats(std::span<const EpochRecord> records, std::uint64_t first,
         const double elapsed = static_cast<double>(elapsedMs) / 1000.0;
         if (!s.timeToFirstFixS && isFix(r.fixType())) s.timeToFirstFixS = elapsed;
         if (!s.timeToRtkFixedS && r.fixType() == FixType::RtkFixed) s.timeToRtkFixedS = elapsed;
-        if (!std::isnan(r.hdop) && (!s.maxHdop || printed(r.hdop) > *s.maxHdop)) {
-            s.maxHdop = printed(r.hdop);
+        if (!std::isnan(r.hdop) && (!s.maxHdop || r.hdop > maxHdop)) {
+            maxHdop = r.hdop;
+            s.maxHdop = 0; // made the printed decimal once, after the loop
             s.maxHdopEpoch = i;
         }
         if (r.hasPosition() && (!s.stationaryOnly || (!std::isnan(r.speed) && r.speed < 0.5f))) {
@@ -147,6 +149,7 @@ RangeStats rangeStats(std::span<const EpochRecord> records, std::uint64_t first,
         }
     }
     s.durationS = static_cast<double>(elapsedMs) / 1000.0;
+    if (s.maxHdop) s.maxHdop = printed(maxHdop);
     s.positions = lats.size();
     if (!lats.empty()) {
         const Spread sp = horizontalSpread(lats, lons);
