@@ -1,6 +1,6 @@
 #include "dialects.h"
 
-// One line per receiver family (DESIGN.md: "a new vendor costs one folder plus one registry line").
+// One line per receiver family in builtinDialects() below (docs/adding-a-dialect.md).
 #include "geostar/geostar_dialect.h"
 #include "nemerix/nemerix_dialect.h"
 #include "nmea/nmea_rules.h"

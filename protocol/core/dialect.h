@@ -3,7 +3,7 @@
 //
 // A new receiver family is one folder (its messages, decoders, encoders, schema, reply rules)
 // plus one line in protocol/dialects.cpp. Nothing else names vendors: not the decoder, not the
-// views (DESIGN.md).
+// views (docs/adding-a-dialect.md).
 #include "fix_type.h"
 #include "function_ref.h"
 #include "message.h"

@@ -1,5 +1,6 @@
 #pragma once
-// Fix type, as one badge everywhere (UI.md). Vendors' extra GGA qualities map onto these.
+// Fix type, as one badge everywhere: the same words and colours in the status bar, the fix dock,
+// charts and the deviation plot. Vendors' extra GGA qualities map onto these.
 #include <cstdint>
 #include <string_view>
 

@@ -22,7 +22,7 @@ FixType ggaQuality(int quality);
 // Mode letters of GLL/GNS/RMC (table 6): the standard ones plus G, GeoPath (shown as 3D).
 FixType modeIndicator(char mode);
 
-// "GeoPath" for GGA quality 9 or mode letter G (UI.md: shown as 3D with a "GeoPath" note).
+// "GeoPath" for GGA quality 9 or mode letter G: shown as 3D with a "GeoPath" note by the badge.
 std::string_view fixNote(int ggaQuality, char mode);
 
 } // namespace gnss::geostar

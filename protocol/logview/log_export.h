@@ -1,6 +1,6 @@
 #pragma once
 // Export of a log or a range of its epochs: GPX 1.1, KML (the track coloured by fix type, in the
-// colours of UI.md), CSV (one row per epoch, docs/export.md) and the NMEA bytes exactly as they
+// views' fix colours), CSV (one row per epoch, docs/export.md) and the NMEA bytes exactly as they
 // are in the file. Written through a sink in pieces, so a whole log never sits in memory twice.
 #include "epoch_record.h"
 
@@ -31,7 +31,7 @@ bool writeKml(std::span<const EpochRecord> records, std::uint64_t first, std::ui
 bool writeCsv(std::span<const EpochRecord> records, std::uint64_t first, std::uint64_t last,
               std::uint64_t end, const ExportSink &sink);
 
-// The UI.md colour of a fix type, "#RRGGBB".
+// The colour of a fix type, "#RRGGBB": the same as the views' fix badge (ui/style).
 std::string_view fixColour(FixType f);
 
 } // namespace gnss::logview

@@ -17,7 +17,7 @@ struct TimeSpec {
 };
 std::optional<TimeSpec> parseTimeSpec(std::string_view text);
 
-// The UI.md words for a fix type: "no fix", "estimated", "2D", "3D", "DGNSS", "RTK float",
+// The fix badge's words for a fix type: "no fix", "estimated", "2D", "3D", "DGNSS", "RTK float",
 // "RTK fixed", "fixed position", "simulator".
 std::string_view fixWords(FixType f);
 

@@ -1,6 +1,6 @@
 #pragma once
 // TimelineStrip: the whole log as one strip under the views. Each pixel column is coloured by the
-// fix type most of its epochs had (UI.md colours); data gaps are dark ticks above, checksum-error
+// fix type most of its epochs had (fix colours); data gaps are dark ticks above, checksum-error
 // bursts red ticks below, events small marks on top; the selected range is shaded and the cursor
 // is a line. Click or drag to seek; Shift+drag selects a range. While the log is being indexed it
 // shows the progress instead.

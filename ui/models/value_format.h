@@ -1,5 +1,5 @@
 #pragma once
-// Number formatting shared by the panels (UI.md "Numbers and units"): "—" for a value the
+// Number formatting shared by the panels, the same rules in every one: "—" for a value the
 // receiver has not sent, hemispheres instead of signs, units always said, and the user's
 // display preferences (units, coordinate format, time zone) applied in one place.
 #include <QString>

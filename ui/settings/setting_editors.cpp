@@ -257,7 +257,7 @@ CoordinateEditor::CoordinateEditor(const SettingDef &def, const config::SchemaTe
         row(1, tr("Y"), b_, nullptr);
         row(2, tr("Z"), c_, nullptr);
     } else {
-        // Degrees with 8 decimals (about 1 mm) and hemispheres, never a bare minus (UI.md).
+        // Degrees with 8 decimals (about 1 mm) and hemispheres, never a bare minus sign.
         a_ = coordinateBox(this, 0, 90, 8, QStringLiteral("\u00b0"));
         b_ = coordinateBox(this, 0, 180, 8, QStringLiteral("\u00b0"));
         c_ = coordinateBox(this, -1e5, 1e7, 4, tr(" m"));

@@ -37,7 +37,7 @@ QString qs(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-// Edited values: Okabe-Ito orange, the palette of UI.md.
+// Edited values: Okabe-Ito orange, the palette of the views' colours (ui/style).
 const QColor kEdited(0xE6, 0x9F, 0x00);
 
 // Shows a setting's help when its editor takes focus.

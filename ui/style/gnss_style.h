@@ -1,6 +1,7 @@
 #pragma once
-// The view conventions of UI.md in one place: constellation colours (Okabe-Ito) and marker
+// The view conventions in one place: constellation colours (Okabe-Ito) and marker
 // shapes, fix-type badge words and colours. Change one here and every view follows.
+// Nothing depends on colour alone: each constellation has its own marker shape too.
 #include "core/fix_type.h"
 #include "core/satellite.h"
 

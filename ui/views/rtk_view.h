@@ -38,7 +38,7 @@ public:
     // The receiver reports RTK information at all (state.rtk.seen).
     bool rtkAvailable() const { return available_; }
 
-    // The watchdog's alarm colour (UI.md semantic red, readable on light and dark palettes).
+    // The watchdog's alarm colour (the views' error red, readable on light and dark palettes).
     static QColor alarmColor();
 
 public slots:

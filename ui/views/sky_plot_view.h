@@ -1,6 +1,6 @@
 #pragma once
 // SkyPlotView: satellites on a polar plot (azimuth clockwise from north, elevation rings),
-// one colour and marker shape per constellation (UI.md), used satellites filled, tracked ones
+// one colour and marker shape per constellation (ui/style), used satellites filled, tracked ones
 // outlined, ones without signal dashed and dimmed; labels, SNR, optional tracks, a constellation
 // filter, the elevation mask, and a tooltip per satellite. Repaints on a timer, from the model.
 #include "core/satellite.h"
