@@ -3733,7 +3733,7 @@
         <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info; при открытом журнале также logTrack, logSummary, logCharts, logEvents.</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+34"/>
         <source>--at needs a log to open</source>
         <translation>--at указывается вместе с журналом</translation>
     </message>
@@ -4145,7 +4145,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::LogViewer</name>
     <message>
-        <location filename="../app/gui/log_viewer.cpp" line="+155"/>
+        <location filename="../app/gui/log_viewer.cpp" line="+156"/>
         <source>Log %1: unpacking, %2 %</source>
         <translation>Журнал %1: распаковка, %2 %</translation>
     </message>
@@ -4197,7 +4197,7 @@ Serial number: %3</source>
         <translation> · слежение за файлом</translation>
     </message>
     <message>
-        <location line="+212"/>
+        <location line="+219"/>
         <source>no log is open, or it is still being indexed</source>
         <translation>журнал не открыт или ещё индексируется</translation>
     </message>
@@ -4221,7 +4221,7 @@ Serial number: %3</source>
     <name>gnss::app::MainWindow</name>
     <message>
         <location filename="../app/gui/main_window.cpp" line="+59"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+249"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+255"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
@@ -4231,7 +4231,7 @@ Serial number: %3</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-206"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-203"/>
         <source>Timeline</source>
         <translation>Шкала времени</translation>
     </message>
@@ -4263,12 +4263,12 @@ Serial number: %3</source>
     <message>
         <location line="+3"/>
         <location line="+12"/>
-        <location line="+191"/>
+        <location line="+188"/>
         <source>Not exported: %1</source>
         <translation>Не экспортировано: %1</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-196"/>
         <source>Log statistics</source>
         <translation>Статистика журнала</translation>
     </message>
@@ -4343,7 +4343,12 @@ Serial number: %3</source>
         <translation>&amp;Закрыть журнал</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+7"/>
+        <source>--at: %1</source>
+        <translation>--at: %1</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>Clear the list</source>
         <translation>Очистить список</translation>
     </message>
@@ -4353,7 +4358,7 @@ Serial number: %3</source>
         <translation>%1 — GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+58"/>
         <source>Export epochs %1 to %2</source>
         <translation>Экспорт эпох с %1 по %2</translation>
     </message>
@@ -4433,7 +4438,7 @@ Serial number: %3</source>
         <translation>О &amp;Qt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-151"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-148"/>
         <source>Open Log</source>
         <translation>Открыть журнал</translation>
     </message>
@@ -6563,7 +6568,7 @@ Serial number: %3</source>
         <translation>Базовая станция</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>standard NMEA</source>
         <translation>стандартный NMEA</translation>
     </message>
@@ -7696,7 +7701,7 @@ elevation %3°, azimuth %4°</source>
 угол места %3°, азимут %4°</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+107"/>
         <source>N</source>
         <translation>С</translation>
     </message>
@@ -7716,7 +7721,7 @@ elevation %3°, azimuth %4°</source>
         <translation>З</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+136"/>
         <source>Show tracks</source>
         <translation>Показывать треки</translation>
     </message>
@@ -7939,12 +7944,12 @@ elevation %3°, azimuth %4°</source>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+125"/>
+        <location line="+150"/>
         <source>Stop indexing this log (Esc)</source>
         <translation>Остановить индексацию журнала (Esc)</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-126"/>
         <source>Click or drag to move; Shift+drag selects a range</source>
         <translation>Щелчок или перетаскивание — переход; Shift+перетаскивание — выбор интервала</translation>
     </message>
@@ -7974,12 +7979,27 @@ elevation %3°, azimuth %4°</source>
         <translation>это не время: напишите 10:42:00, 2024-03-15T10:42:00Z или #1200</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>the log has no epoch at or after %1</source>
-        <translation>в журнале нет эпохи в %1 или позже</translation>
+        <location line="+26"/>
+        <source>%1 is before the log&apos;s start: it runs from %2 to %3</source>
+        <translation>%1 — раньше начала журнала: он идёт с %2 по %3</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+2"/>
+        <source>the log has no epochs</source>
+        <translation>в журнале нет эпох</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is after the log&apos;s end: it runs from %2 to %3</source>
+        <translation>%1 — позже конца журнала: он идёт с %2 по %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the log&apos;s epochs carry no time for %1: write an epoch number (#1200)</source>
+        <translation>у эпох журнала нет времени для %1: укажите номер эпохи (#1200)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Stop indexing: %1 (Esc)</source>
         <translation>Остановить индексацию: %1 (Esc)</translation>
     </message>

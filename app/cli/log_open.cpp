@@ -1,5 +1,7 @@
 #include "log_open.h"
 
+#include "log_range.h"
+
 #include <cstdio>
 #include <thread>
 #include <unistd.h>
@@ -52,33 +54,54 @@ int openLogForCommand(const CliContext &ctx, OpenedLog &out) {
     }
     for (const std::string &w : out.view->warnings())
         std::fprintf(stderr, "gnss-cli: %s\n", w.c_str());
-    const std::size_t n = out.view->epochCount();
-    out.first = 0;
-    out.last = n == 0 ? 0 : n - 1;
-    if (n == 0) {
-        out.first = 1; // empty
-        return 0;
+    const logview::EpochRange range = logview::resolveRange(*out.view, from, to);
+    const std::string fromText = args.option("from").value_or(""),
+                      toText = args.option("to").value_or("");
+    const std::string span = logview::logSpanText(*out.view);
+    using Refusal = logview::EpochRange::Refusal;
+    switch (range.refusal) {
+    case Refusal::None: break;
+    case Refusal::FromAfterEnd:
+        std::fprintf(stderr, "gnss-cli: --from %s is after the log's end: the log runs from %s\n",
+                     fromText.c_str(), span.c_str());
+        return 2;
+    case Refusal::ToBeforeStart:
+        std::fprintf(stderr, "gnss-cli: --to %s is before the log's start: the log runs from %s\n",
+                     toText.c_str(), span.c_str());
+        return 2;
+    case Refusal::Empty:
+        std::fprintf(stderr,
+                     "gnss-cli: --from %s is after --to %s: no epoch between them (the log runs "
+                     "from %s)\n",
+                     fromText.c_str(), toText.c_str(), span.c_str());
+        return 2;
+    case Refusal::Untimed: {
+        // A whole UTC time in a log whose epochs have a time of day but no date, or any time in
+        // a log whose epochs carry none.
+        const bool anyTime =
+                logview::lookUpTime(*out.view,
+                                    logview::TimeSpec{logview::TimeSpec::Kind::TimeOfDay})
+                        .place != logview::TimePlace::Untimed;
+        std::fprintf(stderr, "gnss-cli: the log's epochs carry no %s: give %s\n",
+                     anyTime ? "date" : "time",
+                     anyTime ? "a time of day (10:00:00) or an epoch number (#1200)"
+                             : "an epoch number (#1200)");
+        return 2;
     }
-    if (from) {
-        const auto k = out.view->epochAt(*from);
-        if (!k) {
-            out.first = n; // after the end: nothing
-            out.last = n - 1;
-            return 0;
-        }
-        out.first = *k;
+    case Refusal::NoEpochs:
+        std::fprintf(stderr, "gnss-cli: %s has no epochs: --from and --to have nothing to cut\n",
+                     out.path.c_str());
+        return 2;
     }
-    if (to) {
-        // The last epoch at or before `to`.
-        logview::TimeSpec after = *to;
-        if (after.kind == logview::TimeSpec::Kind::Epoch)
-            ++after.epoch;
-        else
-            after.ms += 1;
-        const auto k = out.view->epochAt(after);
-        out.last = k ? (*k == 0 ? 0 : *k - 1) : n - 1;
-        if (k && *k == 0) out.first = 1, out.last = 0;
-    }
+    if (range.cutStart)
+        std::fprintf(stderr,
+                     "gnss-cli: --from %s is before the log's start: from its first epoch, %s\n",
+                     fromText.c_str(), logview::epochText(*out.view, range.first).c_str());
+    if (range.cutEnd)
+        std::fprintf(stderr, "gnss-cli: --to %s is after the log's end: to its last epoch, %s\n",
+                     toText.c_str(), logview::epochText(*out.view, range.last).c_str());
+    out.first = range.first;
+    out.last = range.last;
     return 0;
 }
 

@@ -3,6 +3,7 @@
 #include "core/dialect_registry.h"
 #include "core/json_writer.h"
 #include "log_time.h"
+#include "timeline_panel.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -200,9 +201,16 @@ void LogViewer::poll() {
             countLines();
             cursor_.notifyIndexChanged();
             std::optional<std::size_t> start;
-            if (const auto spec = logview::parseTimeSpec(startAt_.toStdString()))
-                start = view_->epochAt(*spec);
+            QString refused;
+            if (const auto spec = logview::parseTimeSpec(startAt_.toStdString())) {
+                const logview::TimeLookup at = logview::lookUpTime(*view_, *spec);
+                if (at.place == logview::TimePlace::Inside)
+                    start = at.epoch;
+                else
+                    refused = ui::TimelinePanel::refusalText(*view_, at.place, startAt_);
+            }
             if (!cursor_.empty()) cursor_.seek(start.value_or(0), true);
+            if (!refused.isEmpty()) emit startRefused(refused);
             publishMessages();
             emit indexed();
         }

@@ -80,6 +80,8 @@ signals:
     void statusChanged();
     void progress(double fraction, const QString &text);
     void indexed(); // ready (or grown, when following)
+    // The time or epoch to start at (--at) names none of the log's: the cursor stays at #0.
+    void startRefused(const QString &why);
     void playingChanged(bool playing);
     void exportFinished(bool ok, const QString &message);
 

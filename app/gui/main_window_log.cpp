@@ -147,6 +147,11 @@ void MainWindow::createLogMenu(QMenu *file) {
     closeLogAction_->setObjectName("closeLogAction");
     closeLogAction_->setShortcut(QKeySequence::Close);
     closeLogAction_->setEnabled(false);
+    // A start time the log does not hold: said by the Go to box and in the status bar.
+    connect(logViewer_, &LogViewer::startRefused, this, [this](const QString &why) {
+        if (auto *panel = timelineBar_->findChild<ui::TimelinePanel *>()) panel->showMessage(why);
+        statusBar()->showMessage(tr("--at: %1").arg(why), 15000);
+    });
     connect(logViewer_, &LogViewer::indexed, this, [this] {
         exportAction_->setEnabled(logViewer_->isOpen() && !logViewer_->cursor()->empty());
         playOutAction_->setEnabled(exportAction_->isEnabled());

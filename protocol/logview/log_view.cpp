@@ -412,16 +412,26 @@ std::optional<std::size_t> LogView::epochAt(const TimeSpec &t) const {
     const auto &recs = index_.records;
     if (t.kind == TimeSpec::Kind::Epoch)
         return t.epoch < recs.size() ? std::optional<std::size_t>(t.epoch) : std::nullopt;
+    // In this order: the first epoch within the typed second [t, t + 1 s); where the log's time
+    // crosses t (an epoch at or after t, the timed epoch before it earlier: in a log whose time
+    // went back, a receiver reset, that is the epoch of t, not the first epoch later than t);
+    // the first epoch at or after t. A log whose time only runs forward gives the first epoch at
+    // or after t each way.
+    std::optional<std::size_t> crossing, firstAtOrAfter;
+    bool earlierBefore = false;
     for (std::size_t i = 0; i < recs.size(); ++i) {
         const EpochRecord &r = recs[i];
         if (!r.hasTime()) continue;
-        if (t.kind == TimeSpec::Kind::Utc) {
-            if (r.has(kDateKnown) && r.utcMs >= t.ms) return i;
-        } else if (r.utcMs % 86'400'000 >= t.ms) {
-            return i;
+        if (t.kind == TimeSpec::Kind::Utc && !r.has(kDateKnown)) continue;
+        const std::int64_t ms = t.kind == TimeSpec::Kind::Utc ? r.utcMs : r.utcMs % 86'400'000;
+        if (ms >= t.ms) {
+            if (ms < t.ms + 1000) return i;
+            if (earlierBefore && !crossing) crossing = i;
+            if (!firstAtOrAfter) firstAtOrAfter = i;
         }
+        earlierBefore = ms < t.ms;
     }
-    return std::nullopt;
+    return crossing ? crossing : firstAtOrAfter;
 }
 
 std::optional<std::size_t> LogView::epochAtOffset(std::uint64_t offset) const {

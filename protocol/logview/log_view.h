@@ -112,7 +112,9 @@ public:
     bool lastEpochOpen() const; // the last epoch was completed by the end of the data
 
     bool stateAt(std::size_t k, ReceiverState &out) const;
-    std::optional<std::size_t> epochAt(const TimeSpec &t) const; // first epoch at or after
+    // The epoch at t: the first within t's second, else where the log's time crosses t, else the
+    // first at or after t (in a log whose time only runs forward: the first epoch at or after t).
+    std::optional<std::size_t> epochAt(const TimeSpec &t) const;
     std::optional<std::size_t> epochAtOffset(std::uint64_t offset) const;
 
     std::vector<LogEvent> events() const;

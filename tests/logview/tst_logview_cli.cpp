@@ -94,6 +94,50 @@ private slots:
         QCOMPARE(runCli({"summary"}).exitCode, 2);
     }
 
+    // A time or epoch wholly outside the log is refused with the log's first and last epoch;
+    // a range that only reaches past an end is cut to the log, and says so.
+    void rangesOutsideTheLogAreRefusedOrCut_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<int>("code");
+        QTest::addColumn<QString>("said");
+        const QString span = "2024-03-15T10:00:00.000Z (#0) to 2024-03-15T09:10:29.000Z (#599)";
+        QTest::newRow("summary from past the end")
+                << QStringList{"summary", "--from", "#3000"} << 2
+                << "--from #3000 is after the log's end: the log runs from " + span;
+        QTest::newRow("summary to before the start")
+                << QStringList{"summary", "--to", "2024-03-14T10:00:00Z"} << 2
+                << "is before the log's start: the log runs from " + span;
+        QTest::newRow("export from after to")
+                << QStringList{"export", "--format", "csv", "--from", "#10", "--to", "#5"} << 2
+                << "--from #10 is after --to #5: no epoch between them";
+        QTest::newRow("export to past the end: cut")
+                << QStringList{"export", "--format", "csv", "--from", "#590", "--to", "#3000"} << 0
+                << "--to #3000 is after the log's end: to its last epoch, "
+                   "2024-03-15T09:10:29.000Z (#599)";
+        QTest::newRow("summary from before the start: cut")
+                << QStringList{"summary", "--from", "2024-03-15T08:00:00Z", "--to", "#5"} << 0
+                << "is before the log's start: from its first epoch, 2024-03-15T10:00:00.000Z (#0)";
+    }
+    void rangesOutsideTheLogAreRefusedOrCut() {
+        QFETCH(QStringList, args);
+        QFETCH(int, code);
+        QFETCH(QString, said);
+        const QString out = dir_.filePath("range.out");
+        QFile::remove(out);
+        QStringList all = args;
+        all << log_;
+        if (args.front() == "export") all << "-o" << out;
+        const Run r = runCli(all);
+        QCOMPARE(r.exitCode, code);
+        QVERIFY2(r.err.contains(said.toUtf8()), r.err.constData());
+        if (code == 0 && args.front() == "export") {
+            QFile f(out);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            QCOMPARE(f.readAll().count('\n'), 11); // a header and #590 to #599
+        }
+        if (code == 2 && args.front() == "export") QVERIFY(!QFile::exists(out));
+    }
+
     // play --pty: read back from the pseudo-terminal, byte for byte, at 200 times the pace.
     void playToAPseudoTerminal() {
         QProcess p;

@@ -846,6 +846,35 @@ private slots:
         QVERIFY(w->findChild<QLabel *>("connectionState")->text().startsWith("Log missing.nmea: "));
     }
 
+    // A time or epoch the log does not hold is refused by the Go to box with the log's first
+    // and last epoch, and a --at outside the log leaves the cursor at #0 and says why there.
+    void aTimeOutsideTheLogIsRefusedByTheGoToBox() {
+        auto s = settings();
+        auto w = window(s.get());
+        w->openLog(QString::fromStdString(scenario_), "#3000");
+        QTRY_VERIFY(w->logViewer()->ready());
+        auto *message = w->findChild<QLabel *>("logMessage");
+        QVERIFY(message);
+        const QString span = "2024-03-15T10:00:00.000Z (#0) to 2024-03-15T09:10:29.000Z (#599)";
+        QTRY_COMPARE(message->text(), "#3000 is after the log's end: it runs from " + span);
+        QCOMPARE(w->logViewer()->cursor()->current(), std::size_t(0));
+        auto *panel = w->findChild<ui::TimelinePanel *>();
+        QVERIFY(panel);
+        QVERIFY(!panel->goTo("#600"));
+        QCOMPARE(message->text(), "#600 is after the log's end: it runs from " + span);
+        QVERIFY(!panel->goTo("2024-03-14T12:00:00Z"));
+        QCOMPARE(message->text(),
+                 "2024-03-14T12:00:00Z is before the log's start: it runs from " + span);
+        QCOMPARE(w->logViewer()->cursor()->current(), std::size_t(0));
+        // The receiver reset at #400 took the time back an hour: 09:07:00 is after it, not #0.
+        QVERIFY(panel->goTo("09:07:00"));
+        QVERIFY(message->text().isEmpty());
+        const auto at = w->logViewer()->view()->epoch(w->logViewer()->cursor()->current());
+        QVERIFY(at);
+        QCOMPARE(QString::fromStdString(logview::formatTime(*at)),
+                 QString("2024-03-15T09:07:00.000Z"));
+    }
+
     void aLiveSourceClosesTheLogAndTheCommandLineOpensOne() {
         auto s = settings();
         auto w = window(s.get());

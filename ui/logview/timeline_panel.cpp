@@ -213,14 +213,39 @@ bool TimelinePanel::goTo(const QString &text) {
         message_->setText(tr("not a time: write 10:42:00, 2024-03-15T10:42:00Z or #1200"));
         return false;
     }
-    const auto k = log ? log->epochAt(*spec) : std::nullopt;
-    if (!k) {
-        message_->setText(tr("the log has no epoch at or after %1").arg(text.trimmed()));
+    if (!log) return false;
+    const logview::TimeLookup at = logview::lookUpTime(*log, *spec);
+    if (at.place != logview::TimePlace::Inside) {
+        message_->setText(refusalText(*log, at.place, text.trimmed()));
         return false;
     }
+    const std::optional<std::size_t> k = at.epoch;
     message_->clear();
     cursor_->seek(*k, true);
     return true;
+}
+
+void TimelinePanel::showMessage(const QString &text) {
+    message_->setText(text);
+}
+
+QString TimelinePanel::refusalText(const logview::LogView &log, logview::TimePlace place,
+                                   const QString &typed) {
+    const std::size_t n = log.epochCount();
+    const QString first = QString::fromStdString(logview::epochText(log, 0)),
+                  last = QString::fromStdString(logview::epochText(log, n ? n - 1 : 0));
+    switch (place) {
+    case logview::TimePlace::BeforeStart:
+        return tr("%1 is before the log's start: it runs from %2 to %3").arg(typed, first, last);
+    case logview::TimePlace::AfterEnd:
+        if (n == 0) return tr("the log has no epochs");
+        return tr("%1 is after the log's end: it runs from %2 to %3").arg(typed, first, last);
+    case logview::TimePlace::Untimed:
+        return tr("the log's epochs carry no time for %1: write an epoch number (#1200)")
+                .arg(typed);
+    case logview::TimePlace::Inside: break;
+    }
+    return {};
 }
 
 void TimelinePanel::setIndexing(double fraction, const QString &text) {

@@ -6,6 +6,7 @@
 // itself; playing and following a growing file are the application's (it owns the timers).
 // While a log is being indexed it offers a Cancel button (Esc while the timeline has focus).
 #include "log_cursor.h"
+#include "log_range.h"
 #include "transport_icons.h"
 
 #include <QWidget>
@@ -37,6 +38,12 @@ public:
     // Goes to a typed time ("10:42:00", "2024-03-15T10:42:00Z", "#1200"); false (and a word
     // beside the box) when it names no epoch of the log.
     bool goTo(const QString &text);
+    // A word beside the Go to box (a start time the log does not hold, say).
+    void showMessage(const QString &text);
+    // Why a typed time names no epoch of `log` (before its start, after its end, a log without
+    // times), with the log's first and last epoch, in the user's language.
+    static QString refusalText(const logview::LogView &log, logview::TimePlace place,
+                               const QString &typed);
     // Every action of the panel, for the window's menu.
     QList<QAction *> actions() const { return actions_; }
     // The words under the strip ("#1200 of 5000 · 10:42:00.000 · RTK fixed").
