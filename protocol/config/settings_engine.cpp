@@ -1,4 +1,6 @@
 // Before any Qt header: core headers have members named emit, which Qt defines as a macro.
+
+#include "config/utf8_text.h"
 #include "core/dialect_registry.h"
 #include "core/sentence_builder.h"
 #include "core/settings_plan.h"
@@ -19,10 +21,6 @@
 namespace gnss::config {
 
 namespace {
-
-QString qs(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
 
 bool succeeded(const link::CommandResult &r) {
     return r.outcome == link::CommandOutcome::Accepted || r.outcome == link::CommandOutcome::Sent;

@@ -1,5 +1,7 @@
 #include "settings_profile.h"
 
+#include "config/utf8_text.h"
+
 #include "refusal_text.h"
 #include "setting_values.h"
 
@@ -16,9 +18,6 @@ namespace gnss::config {
 namespace {
 constexpr auto kFormat = "gnss-workbench-settings";
 
-QString qs(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
 } // namespace
 
 QByteArray profileToJson(const Profile &p) {

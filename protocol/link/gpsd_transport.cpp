@@ -8,7 +8,6 @@
 namespace gnss::link {
 
 namespace {
-constexpr int kDefaultConnectTimeoutMs = 5000;
 
 bool parsePort(const QString &text, quint16 &port) {
     bool ok = false;

@@ -4,10 +4,6 @@
 
 namespace gnss::link {
 
-namespace {
-constexpr int kDefaultConnectTimeoutMs = 5000;
-}
-
 TcpTransport::TcpTransport(QString host, quint16 port, QObject *parent)
     : Transport(parent), host_(std::move(host)), port_(port) {
     connectTimer_.setSingleShot(true);

@@ -8,6 +8,9 @@
 
 namespace gnss::link {
 
+// How long a network transport (TCP, gpsd) waits for its connection before it calls it failed.
+constexpr int kDefaultConnectTimeoutMs = 5000;
+
 class Transport : public QObject {
     Q_OBJECT
 public:

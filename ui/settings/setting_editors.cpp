@@ -1,5 +1,7 @@
 #include "setting_editors.h"
 
+#include "config/utf8_text.h"
+
 #include <QAbstractItemView>
 #include <QCheckBox>
 #include <QComboBox>
@@ -19,9 +21,7 @@ namespace gnss::ui {
 
 namespace {
 
-QString qs(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
+using config::qs;
 
 // An editor whose input is one widget, made here; the subclass sets it up and calls finish().
 template <class Input> class InputEditor : public SettingEditor {

@@ -1,4 +1,6 @@
 #include "settings_view.h"
+
+#include "config/utf8_text.h"
 #include "style/gnss_style.h"
 
 #include "presets.h"
@@ -33,9 +35,7 @@ namespace gnss::ui {
 
 namespace {
 
-QString qs(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
+using config::qs;
 
 // Edited values: Okabe-Ito orange, the palette of the views' colours (ui/style).
 const QColor kEdited(0xE6, 0x9F, 0x00);
