@@ -3,13 +3,13 @@
 #include "app_transports.h"
 #include "bad_input_files.h"
 #include "config/settings_engine.h"
-#include "connection_controller.h"
 #include "dialects.h"
 #include "main_window.h"
 #include "models/message_stats_model.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
 #include "preferences_dialog.h"
+#include "session/receiver_link.h"
 #include "startup_options.h"
 #include "views/sky_plot_view.h"
 #include "window_start.h"
@@ -121,7 +121,7 @@ private slots:
             QCOMPARE(stats->headerData(gnss::ui::MessageStatsModel::LastSeen, Qt::Horizontal)
                              .toString(),
                      QString("Last seen (local time)"));
-            QCOMPARE(w.controller()->baudCandidates(), (QList<int>{38400, 115200}));
+            QCOMPARE(w.link()->baudCandidates(), (QList<int>{38400, 115200}));
             QVERIFY(w.statusBar()->currentMessage().contains("next start"));
             QCOMPARE(s->value("view/units").toString(), QString("imperial"));
             QCOMPARE(s->value("view/coordinates").toString(), QString("dms"));
@@ -132,7 +132,7 @@ private slots:
         {
             gnss::app::MainWindow w(registry_, transports_, s.get());
             QCOMPARE(w.preferences().display.units, gnss::ui::UnitSystem::Imperial);
-            QCOMPARE(w.controller()->baudCandidates(), (QList<int>{38400, 115200}));
+            QCOMPARE(w.link()->baudCandidates(), (QList<int>{38400, 115200}));
             // The view's own coordinate box is the same preference.
             auto *box = w.findChild<QComboBox *>("coordinateFormat");
             QCOMPARE(box->currentIndex(), 2);
@@ -153,7 +153,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(w.stateModel()->epochCount() >= 3, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(w.satelliteModel()->rowCount() > 5, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(w.stateModel()->state().epoch.lat.has_value(), 20000);
-        QCOMPARE(w.controller()->state(), gnss::app::ConnectionController::State::Connected);
+        QCOMPARE(w.link()->state(), gnss::session::ReceiverLink::State::Connected);
         const auto *fixLabel = w.findChild<QLabel *>("statusFix");
         QVERIFY(fixLabel);
     }
@@ -186,14 +186,14 @@ private slots:
         gnss::app::MainWindow w(registry_, transports_, s.get());
         SourceSpec spec{SourceSpec::Kind(kind), name};
         spec.baud = 9600;
-        w.controller()->connectTo(spec);
-        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->stateText().contains(words), 10000);
+        w.link()->connectTo(spec);
+        QTRY_VERIFY_WITH_TIMEOUT(w.link()->stateText().contains(words), 10000);
         QTest::qWait(200);
-        const QString text = w.controller()->stateText();
+        const QString text = w.link()->stateText();
         QVERIFY2(text.contains(words), qPrintable(text));
         QVERIFY2(!text.contains("trying again"), qPrintable(text));
-        QCOMPARE(w.controller()->state(), gnss::app::ConnectionController::State::Failed);
-        w.controller()->disconnectFromSource();
+        QCOMPARE(w.link()->state(), gnss::session::ReceiverLink::State::Failed);
+        w.link()->disconnectFromSource();
     }
 
     void skyPlotDrawsTheReceiversElevationMask() {
@@ -215,7 +215,7 @@ private slots:
         w->show();
         w->connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, "nvs"});
         QString why;
-        QVERIFY2(w->controller()->send("$PNVGVER*4E", &why), qPrintable(why));
+        QVERIFY2(w->link()->send("$PNVGVER*4E", &why), qPrintable(why));
         w.reset(); // the command is still waiting for its answer
     }
 
@@ -235,7 +235,7 @@ private slots:
         QVERIFY(w.dock("consoleDock")->isHidden());
         QVERIFY(w.dock("skyDock")->isVisible());
         w.connectAtStart({}); // no source given: the last one
-        QCOMPARE(w.controller()->source().toString(), QString("sim:nmea"));
+        QCOMPARE(w.link()->source().toString(), QString("sim:nmea"));
     }
 
     // `gnss-workbench LOG --show-dock sky`: opening a log brings the log's docks forward (the

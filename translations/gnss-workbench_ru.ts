@@ -3935,7 +3935,7 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
-    <name>gnss::app::ConnectionController</name>
+    <name>gnss::session::ReceiverLink</name>
     <message>
         <location filename="../app/gui/connection_controller.cpp" line="+24"/>
         <location line="+171"/>

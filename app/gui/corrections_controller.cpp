@@ -1,12 +1,11 @@
 #include "corrections_controller.h"
 
-#include "correction_forwarder.h"
 #include "ntrip_source.h"
 #include "password_keychain.h"
 #include "rover_position.h"
 #include "tcp_correction_source.h"
 
-#include "link/connection.h"
+#include "session/receiver_link.h"
 #include "state/epoch.h"
 
 #include <QDateTime>
@@ -48,7 +47,6 @@ CorrectionsController::CorrectionsController(QSettings *settings, QObject *paren
 }
 
 CorrectionsController::~CorrectionsController() {
-    forwarder_.reset();
     if (source_) source_->stop();
 }
 
@@ -104,7 +102,7 @@ bool CorrectionsController::start(const ui::CorrectionsRequest &r, QString *why)
         source_ = std::make_unique<corrections::TcpCorrectionSource>(r.host, quint16(r.port));
     }
     monitor_.reset();
-    if (forwarder_) forwarder_->resetFraming();
+    if (target_) target_->resetCorrectionFraming();
     connect(source_.get(), &corrections::CorrectionSource::dataReceived, this,
             &CorrectionsController::onData);
     connect(source_.get(), &corrections::CorrectionSource::statusChanged, this,
@@ -143,16 +141,8 @@ QString CorrectionsController::statusText() const {
     return source_ ? source_->statusText() : tr("Not started");
 }
 
-void CorrectionsController::setReceiver(link::Connection *connection) {
-    // (receiver_ is a QPointer: a connection already deleted reads as null, so compare the
-    // forwarder's presence too.)
-    if (connection == receiver_ && (connection != nullptr) == (forwarder_ != nullptr)) return;
-    forwarder_.reset();
-    receiver_ = connection;
-    // A link that takes no writes (a replayed log, a receiver behind gpsd) gets no corrections.
-    if (connection && connection->transport()->canWrite())
-        forwarder_ = std::make_unique<corrections::CorrectionForwarder>(connection->transport(),
-                                                                        connection->commands());
+void CorrectionsController::setTarget(session::ReceiverLink *receiver) {
+    target_ = receiver;
 }
 
 void CorrectionsController::setRoverFix(const Epoch &e) {
@@ -162,13 +152,9 @@ void CorrectionsController::setRoverFix(const Epoch &e) {
     if (const auto p = corrections::ggaPositionOf(e); ntrip && p) ntrip->setRoverPosition(*p);
 }
 
-const corrections::ForwarderStats *CorrectionsController::forwarderStats() const {
-    return forwarder_ ? &forwarder_->stats() : nullptr;
-}
-
 void CorrectionsController::onData(const QByteArray &bytes) {
     monitor_.feed(std::string_view(bytes.constData(), std::size_t(bytes.size())), nowMs());
-    if (forwarder_) forwarder_->feed(bytes);
+    if (target_) target_->forwardCorrections(bytes);
 }
 
 } // namespace gnss::app

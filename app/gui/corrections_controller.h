@@ -1,8 +1,8 @@
 #pragma once
 // CorrectionsController: the corrections path of the window. It owns the correction source the
 // user started from the corrections dock (an NTRIP mountpoint or a base's TCP stream), feeds what
-// arrives to the CorrectionsMonitor the dock shows and, while a receiver is connected, to a
-// CorrectionForwarder on that receiver's link (whole frames, never inside a command). The
+// arrives to the CorrectionsMonitor the dock shows and to the receiver session it serves (its
+// ReceiverLink forwards whole frames into the receiver, never inside a command). The
 // receiver's fix goes up to the caster as the GGA and to the monitor for the baseline. Caster,
 // port, mountpoint, user and protocol are remembered in the injected QSettings; the password is
 // used for this session only and never written anywhere.
@@ -20,13 +20,11 @@ class QSettings;
 
 namespace gnss {
 struct Epoch;
-namespace link {
-class Connection;
+namespace session {
+class ReceiverLink;
 }
 namespace corrections {
 class CorrectionSource;
-class CorrectionForwarder;
-struct ForwarderStats;
 } // namespace corrections
 } // namespace gnss
 
@@ -53,14 +51,12 @@ public:
     void recallPassword();
     static bool keychainAvailable();
 
-    // The receiver's link the corrections go to (null: none; the forwarder goes with it).
-    void setReceiver(link::Connection *connection);
+    // The receiver the corrections go to (null: none).
+    void setTarget(session::ReceiverLink *receiver);
     // The receiver's latest fix: the GGA sent up, the baseline shown.
     void setRoverFix(const Epoch &epoch);
 
     const corrections::CorrectionsMonitor &monitor() const { return monitor_; }
-    // Null while nothing is forwarded.
-    const corrections::ForwarderStats *forwarderStats() const;
     corrections::CorrectionSource *source() const { return source_.get(); }
 
 signals:
@@ -75,8 +71,7 @@ private:
     QSettings *settings_;
     corrections::CorrectionsMonitor monitor_;
     std::unique_ptr<corrections::CorrectionSource> source_;
-    std::unique_ptr<corrections::CorrectionForwarder> forwarder_;
-    QPointer<link::Connection> receiver_;
+    QPointer<session::ReceiverLink> target_;
     QTimer ageSampler_;
     PasswordKeychain *keychain_;
 };

@@ -1,10 +1,15 @@
 #pragma once
-// MainWindow: menus, docks, the connection bar and the status bar. It wires models, views and
-// the connection; it does not decode or draw.
+// MainWindow: menus, docks, the connection bar and the status bar. It holds the receiver
+// sessions (ui::ReceiverSession: one per receiver, one for now) and gives each dock the session
+// it shows; its docks are the rows of dock_table.h. It does not decode or draw.
+#include "dock_table.h"
 #include "link/source_spec.h"
 #include "preferences.h"
 
+#include <QList>
 #include <QMainWindow>
+
+#include <span>
 
 class QLabel;
 class QSettings;
@@ -20,10 +25,11 @@ namespace link {
 class PortWatcher;
 class TransportFactory;
 } // namespace link
+namespace session {
+class ReceiverLink;
+}
 namespace ui {
-class ConsoleModel;
 class ConsoleView;
-class MessageStatsModel;
 class ReceiverSession;
 class ReceiverStateModel;
 class SatelliteModel;
@@ -38,7 +44,6 @@ namespace gnss::app {
 using link::SourceSpec;
 
 class ConnectionBar;
-class ConnectionController;
 class CorrectionsController;
 class LogPlayer;
 class LogViewer;
@@ -52,11 +57,14 @@ public:
                QSettings *settings, QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    ConnectionController *controller() const { return controller_; }
-    CorrectionsController *corrections() const { return corrections_; }
-    ui::ReceiverStateModel *stateModel() const { return stateModel_; }
-    ui::SatelliteModel *satelliteModel() const { return satellites_; }
+    // The receivers' sessions (one for now) and the one the docks show.
+    const QList<ui::ReceiverSession *> &sessions() const { return sessions_; }
     ui::ReceiverSession *session() const { return session_; }
+    // The shown session's link, state and satellites.
+    session::ReceiverLink *link() const;
+    ui::ReceiverStateModel *stateModel() const;
+    ui::SatelliteModel *satelliteModel() const;
+    CorrectionsController *corrections() const { return corrections_; }
     QDockWidget *dock(const QString &objectName) const;
     // The docks by short name ("settings" for settingsDock), for --show-dock.
     QStringList dockNames() const;
@@ -99,16 +107,41 @@ protected:
     void dropEvent(QDropEvent *e) override;
 
 private:
-    void createModels();
+    friend std::span<const DockRow> dockRows();
+
     void createDocks();
     void createMenus();
     void createStatusBar();
-    QDockWidget *addDock(QWidget *w, const QString &title, const QString &fullTitle,
-                         const QString &objectName, Qt::DockWidgetArea area);
+    void wireConnection();
+    // Units, coordinate format and time zone (Preferences) reach every view that shows them.
+    template <class View> void followDisplayPrefs(View *view) {
+        connect(this, &MainWindow::displayPrefsChanged, view, &View::setDisplayPrefs);
+    }
+    // The docks' views (dock_table.h), each for the session it shows.
+    QWidget *makeSkyPlot(ui::ReceiverSession &s);
+    QWidget *makeFix(ui::ReceiverSession &s);
+    QWidget *makeSignalLevels(ui::ReceiverSession &s);
+    QWidget *makeSatellites(ui::ReceiverSession &s);
+    QWidget *makeConsole(ui::ReceiverSession &s);
+    QWidget *makeStatistics(ui::ReceiverSession &s);
+    QWidget *makeReceiverInfo(ui::ReceiverSession &s);
+    QWidget *makeRtk(ui::ReceiverSession &s);
+    QWidget *makeCharts(ui::ReceiverSession &s);
+    QWidget *makeDeviation(ui::ReceiverSession &s);
+    QWidget *makeAttitude(ui::ReceiverSession &s);
+    QWidget *makeCorrections(ui::ReceiverSession &s);
+    QWidget *makeSettings(ui::ReceiverSession &s);
+    QWidget *makeLogTrack(ui::ReceiverSession &s);
+    QWidget *makeLogSummary(ui::ReceiverSession &s);
+    QWidget *makeLogCharts(ui::ReceiverSession &s);
+    QWidget *makeLogEvents(ui::ReceiverSession &s);
+    // The sky plot's elevation mask: the dialect's default, then the receiver's own value.
+    void followElevationMask(ui::ReceiverSession &s, ui::SkyPlotView *sky);
     void updateStatus();
     void applyTheme(const QString &theme);
     void toggleRecording(bool on);
     void createLogViewer();
+    void wireLogConsole();
     void putLogViewAway();
     void createLogMenu(QMenu *file);
     void rememberLog(const QString &path);
@@ -119,12 +152,9 @@ private:
     const link::TransportFactory &transports_;
     QSettings *settings_;
     link::PortWatcher *ports_ = nullptr;
-    ui::ReceiverStateModel *stateModel_ = nullptr;
-    ui::SatelliteModel *satellites_ = nullptr;
-    ui::MessageStatsModel *messages_ = nullptr;
-    ui::ConsoleModel *console_ = nullptr;
-    ui::ReceiverSession *session_ = nullptr;
-    ConnectionController *controller_ = nullptr;
+    QList<ui::ReceiverSession *> sessions_;
+    ui::ReceiverSession *session_ = nullptr; // the one the docks show
+    session::ReceiverLink *link_ = nullptr;  // its link
     CorrectionsController *corrections_ = nullptr;
     ConnectionBar *bar_ = nullptr;
     ui::SkyPlotView *sky_ = nullptr;

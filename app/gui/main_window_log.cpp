@@ -2,19 +2,16 @@
 // range statistics, whole-log charts, track), File → Open Log / Open Recent / Export / Close,
 // drag and drop. The live docks are the same ones: LogViewer publishes the state at the cursor
 // into their models.
-#include "connection_controller.h"
-#include "log_events_view.h"
 #include "log_player.h"
-#include "log_summary_view.h"
 #include "log_view.h"
 #include "log_viewer.h"
 #include "main_window.h"
 #include "models/receiver_session.h"
 #include "play_out_dialog.h"
+#include "session/receiver_link.h"
 #include "timeline_panel.h"
 #include "timeline_strip.h"
 #include "views/console_view.h"
-#include "whole_log_panels.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -33,19 +30,17 @@ namespace gnss::app {
 namespace {
 constexpr int kRecentLogs = 8;
 const char *const kRecentKey = "logview/recent";
-// Each log dock and the live dock whose tab group it joins. The track and the range statistics
-// beside the sky plot, the whole-log charts and the events (a wide list) beside the console: the
-// live docks' groups keep the tabs they have, so that every tab's title stays whole on a laptop in
-// every language (ten tabs beside the fix were cut to "Ре…", "Поп…" in Russian at 1280x800).
-constexpr std::pair<const char *, const char *> kLogDockPlaces[] = {
-        {"logTrackDock", "skyDock"},
-        {"logSummaryDock", "skyDock"},
-        {"logChartsDock", "consoleDock"},
-        {"logEventsDock", "consoleDock"}};
+// The first live dock of a log dock's tab group (the dock table's rows), which it joins.
+QString groupLeader(const DockRow &logRow) {
+    for (const DockRow &r : dockRows())
+        if (!r.log && r.tabGroup && logRow.tabGroup && qstrcmp(r.tabGroup, logRow.tabGroup) == 0)
+            return dockObjectName(r);
+    return {};
+}
 } // namespace
 
 void MainWindow::createLogViewer() {
-    logViewer_ = new LogViewer(registry_, {stateModel_, satellites_, messages_, console_}, this);
+    logViewer_ = new LogViewer(registry_, session_->models(), this);
     logPlayer_ = new LogPlayer(this);
     ui::LogCursor *cursor = logViewer_->cursor();
     auto *panel = new ui::TimelinePanel(cursor, this);
@@ -68,42 +63,21 @@ void MainWindow::createLogViewer() {
     connect(logViewer_, &LogViewer::exportFinished, this,
             [this](bool, const QString &message) { statusBar()->showMessage(message, 10000); });
 
-    auto *events = new ui::LogEventsView(cursor, registry_, this);
-    auto *eventsDock = addDock(events, tr("Events"), tr("Log events"), "logEventsDock",
-                               Qt::RightDockWidgetArea);
-    connect(events, &ui::LogEventsView::exportRequested, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(
-                this, tr("Save events"), QStringLiteral("events.csv"), tr("CSV (*.csv)"));
-        QString why;
-        if (!path.isEmpty() && !logViewer_->exportTo(LogViewer::Export::EventsCsv, path, &why))
-            statusBar()->showMessage(tr("Not exported: %1").arg(why), 8000);
+    logViewer_->lines()->setTimeZone(prefs_.display.time);
+    // A live source closes the log (the docks show one thing at a time).
+    connect(link_, &session::ReceiverLink::stateChanged, this, [this] {
+        const auto s = link_->state();
+        if (logViewer_->isOpen() && s != session::ReceiverLink::State::Disconnected &&
+            s != session::ReceiverLink::State::Failed)
+            closeLog();
     });
-    auto *summary = new ui::LogSummaryView(cursor, this);
-    connect(this, &MainWindow::displayPrefsChanged, summary, &ui::LogSummaryView::setDisplayPrefs);
-    auto *summaryDock = addDock(summary, tr("Log statistics"), tr("Log statistics (range)"),
-                                "logSummaryDock", Qt::RightDockWidgetArea);
-    connect(summary, &ui::LogSummaryView::exportRequested, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save statistics"),
-                                                          QStringLiteral("statistics.json"),
-                                                          tr("JSON (*.json)"));
-        QString why;
-        if (!path.isEmpty() && !logViewer_->exportTo(LogViewer::Export::StatsJson, path, &why))
-            statusBar()->showMessage(tr("Not exported: %1").arg(why), 8000);
-    });
-    auto *charts = new ui::LogChartsPanel(cursor, this);
-    connect(this, &MainWindow::displayPrefsChanged, charts->plot(), &ui::LogPlot::setDisplayPrefs);
-    auto *chartsDock = addDock(charts, tr("Log charts"), tr("Log charts (whole log)"),
-                               "logChartsDock", Qt::BottomDockWidgetArea);
-    auto *track = new ui::LogTrackPanel(cursor, this);
-    connect(this, &MainWindow::displayPrefsChanged, track->track(), &ui::LogTrack::setDisplayPrefs);
-    auto *trackDock = addDock(track, tr("Track"), tr("Track (whole log)"), "logTrackDock",
-                              Qt::LeftDockWidgetArea);
-    for (QDockWidget *d : {eventsDock, summaryDock, chartsDock, trackDock}) d->hide();
+    setAcceptDrops(true);
+}
 
+void MainWindow::wireLogConsole() {
     // The console shows the log's own lines while a log is open: filtered by the model (a whole
     // log, on a worker), the cursor's line kept in view, a line double-clicked is its moment.
     ui::LogLinesModel *lines = logViewer_->lines();
-    lines->setTimeZone(prefs_.display.time);
     connect(consoleView_, &ui::ConsoleView::filterChanged, lines, &ui::LogLinesModel::setFilter);
     connect(lines, &ui::LogLinesModel::cursorRowChanged, consoleView_, &ui::ConsoleView::showRow);
     connect(lines, &ui::LogLinesModel::noteChanged, consoleView_, &ui::ConsoleView::setNote);
@@ -113,15 +87,6 @@ void MainWindow::createLogViewer() {
         const auto epoch = offset && view ? view->epochAtOffset(*offset) : std::nullopt;
         if (epoch && !logViewer_->cursor()->empty()) logViewer_->cursor()->seek(*epoch, true);
     });
-
-    // A live source closes the log (the docks show one thing at a time).
-    connect(controller_, &ConnectionController::stateChanged, this, [this] {
-        const auto s = controller_->state();
-        if (logViewer_->isOpen() && s != ConnectionController::State::Disconnected &&
-            s != ConnectionController::State::Failed)
-            closeLog();
-    });
-    setAcceptDrops(true);
 }
 
 void MainWindow::createLogMenu(QMenu *file) {
@@ -191,8 +156,8 @@ void MainWindow::updateRecentMenu() {
 }
 
 void MainWindow::openLog(const QString &path, const QString &at) {
-    controller_->disconnectFromSource();
-    session_->reset();
+    link_->disconnectFromSource();
+    session_->feed()->reset();
     // Before open(): a small log is indexed by the time open() returns, and the `indexed` it
     // emits then enables these; disabling them after would leave Export greyed on a ready log.
     exportAction_->setEnabled(false);
@@ -209,16 +174,16 @@ void MainWindow::openLog(const QString &path, const QString &at) {
     if (!logDocksShown_) {
         // The first log of the session brings its docks forward, beside the live ones.
         logDocksShown_ = true;
-        for (const auto &[name, beside] : kLogDockPlaces) {
-            QDockWidget *d = dock(QString::fromLatin1(name));
-            QDockWidget *b = dock(QString::fromLatin1(beside));
-            if (!d) continue;
+        for (const DockRow &row : dockRows()) {
+            if (!row.log) continue;
+            QDockWidget *d = dock(dockObjectName(row));
+            QDockWidget *b = dock(groupLeader(row));
             // Beside a live dock the first time; where the user left it after that.
             if (!logDocksPlaced_ && b && b->isVisible() && !d->isVisible()) tabifyDockWidget(b, d);
             d->show();
         }
-        for (const char *front : {"logTrackDock", "logChartsDock"})
-            if (QDockWidget *d = dock(QString::fromLatin1(front))) d->raise();
+        for (const DockRow &row : dockRows())
+            if (row.log && row.front) dock(dockObjectName(row))->raise();
         logDocksPlaced_ = true;
     }
     updateStatus();
@@ -231,10 +196,10 @@ void MainWindow::openLog(const QString &path, const QString &at) {
 void MainWindow::putLogViewAway() {
     // Each log dock's live neighbour is brought back to the front of their tab group (Qt would
     // show the next tab, the deviation rather than the sky plot).
-    for (const auto &[name, beside] : kLogDockPlaces) {
-        QDockWidget *d = dock(QString::fromLatin1(name));
-        if (!d) continue;
-        QDockWidget *live = dock(QString::fromLatin1(beside));
+    for (const DockRow &row : dockRows()) {
+        if (!row.log) continue;
+        QDockWidget *d = dock(dockObjectName(row));
+        QDockWidget *live = dock(groupLeader(row));
         const bool tabbed = live && tabifiedDockWidgets(d).contains(live);
         if (!d->isHidden()) logDocksPlaced_ = true;
         d->hide();

@@ -4,11 +4,11 @@
 // to RTK fixed, the dock lists every message type with its rate and age, the base position and
 // the distance, the frames forwarded, and the receiver's own RTCM counts; the caster got the
 // receiver's fix as GGA. A refused request is said in the dock before anything starts.
-#include "connection_controller.h"
 #include "corrections_controller.h"
 #include "laptop_window.h"
 #include "models/receiver_state_model.h"
 #include "rtcm_fixtures.h"
+#include "session/receiver_link.h"
 #include "sim_process.h"
 #include "test_caster.h"
 
@@ -24,9 +24,9 @@
 #include <QTimer>
 
 using namespace gnss;
-using gnss::app::ConnectionController;
 using gnss::app::SourceSpec;
 using gnss::link::test::SimProcess;
+using gnss::session::ReceiverLink;
 
 class TstCorrectionsWindow : public QObject {
     Q_OBJECT
@@ -48,8 +48,7 @@ private slots:
         gnss::test::LaptopWindow window;
         app::MainWindow &w = window.w;
         w.connectAtStart(SourceSpec{SourceSpec::Kind::Serial, rover.device, 460800});
-        QTRY_COMPARE_WITH_TIMEOUT(w.controller()->state(), ConnectionController::State::Connected,
-                                  15000);
+        QTRY_COMPARE_WITH_TIMEOUT(w.link()->state(), ReceiverLink::State::Connected, 15000);
         QTRY_VERIFY_WITH_TIMEOUT(w.stateModel()->state().epoch.lat.has_value(), 15000);
         QTest::qWait(2000); // ten simulated seconds: still autonomous, no corrections yet
         QVERIFY(w.stateModel()->state().epoch.fix != FixType::RtkFloat &&

@@ -4,7 +4,6 @@
 // plot), the connection bar names the gpsd source, and the two places that send commands say
 // why they cannot: the console's send box is off with "gpsd owns the port" beside it, and the
 // settings dock says the same above its disabled buttons. Skipped when gpsd is not installed.
-#include "connection_controller.h"
 #include "gpsd_process.h"
 #include "laptop_window.h"
 #include "link/command_queue.h"
@@ -12,6 +11,7 @@
 #include "models/receiver_session.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
+#include "session/receiver_link.h"
 #include "sim_process.h"
 
 #include <QComboBox>
@@ -23,10 +23,10 @@
 #include <QTest>
 
 using namespace gnss;
-using gnss::app::ConnectionController;
 using gnss::app::SourceSpec;
 using gnss::link::test::GpsdProcess;
 using gnss::link::test::SimProcess;
+using gnss::session::ReceiverLink;
 
 class TstGpsdWindow : public QObject {
     Q_OBJECT
@@ -44,10 +44,8 @@ private slots:
         const SourceSpec spec{SourceSpec::Kind::Gpsd,
                               QStringLiteral("127.0.0.1:%1").arg(gpsd.port)};
         w.connectAtStart(spec);
-        QTRY_COMPARE_WITH_TIMEOUT(w.controller()->state(), ConnectionController::State::Connected,
-                                  10000);
-        QVERIFY2(w.controller()->stateText().contains("gpsd"),
-                 qPrintable(w.controller()->stateText()));
+        QTRY_COMPARE_WITH_TIMEOUT(w.link()->state(), ReceiverLink::State::Connected, 10000);
+        QVERIFY2(w.link()->stateText().contains("gpsd"), qPrintable(w.link()->stateText()));
         const auto *source = w.findChild<QComboBox *>("sourceCombo");
         QVERIFY(source);
         QVERIFY2(source->currentText().contains("gpsd"), qPrintable(source->currentText()));
@@ -76,11 +74,11 @@ private slots:
         QVERIFY2(note->text().contains("gpsd owns the port"), qPrintable(note->text()));
         QVERIFY2(input->placeholderText().contains("gpsd owns the port"),
                  qPrintable(input->placeholderText()));
-        // Nothing is sent: the controller refuses with the same words, before the queue.
+        // Nothing is sent: the receiver link refuses with the same words, before the queue.
         QString why;
-        QVERIFY(!w.controller()->send("$PNVGVER*4E", &why));
+        QVERIFY(!w.link()->send("$PNVGVER*4E", &why));
         QVERIFY2(why.contains("gpsd owns the port"), qPrintable(why));
-        QVERIFY(w.controller()->connection()->commands()->history().isEmpty()); // no probe either
+        QVERIFY(w.link()->connection()->commands()->history().isEmpty()); // no probe either
 
         // The settings dock: the form of the dialect recognised, its buttons off, the note above.
         QVERIFY(w.showDock("settings"));

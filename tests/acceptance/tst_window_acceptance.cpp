@@ -7,7 +7,6 @@
 #include "app_transports.h"
 #include "config/settings_engine.h"
 #include "connection_bar.h"
-#include "connection_controller.h"
 #include "dialects.h"
 #include "link/connection.h"
 #include "link/sentence_stream.h"
@@ -16,6 +15,7 @@
 #include "models/console_model.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
+#include "session/receiver_link.h"
 #include "settings/setting_editors.h"
 #include "settings/settings_view.h"
 #include "sim_process.h"
@@ -49,8 +49,8 @@
 #include <QTreeWidget>
 
 using namespace gnss;
-using gnss::app::ConnectionController;
 using gnss::app::SourceSpec;
+using gnss::session::ReceiverLink;
 
 namespace {
 
@@ -178,8 +178,8 @@ private slots:
     }
 
     void autoBaudFindsTheReceiverAndConnects() {
-        auto *c = w_->controller();
-        QTRY_VERIFY_WITH_TIMEOUT(c->state() == ConnectionController::State::Connected, 30000);
+        auto *c = w_->link();
+        QTRY_VERIFY_WITH_TIMEOUT(c->state() == ReceiverLink::State::Connected, 30000);
         QCOMPARE(c->detectedBaud(), 38400);
         QVERIFY2(c->stateText().contains("38400"), qPrintable(c->stateText()));
         QVERIFY2(c->detectionDetail().contains("38400 (valid NMEA)"),
@@ -356,13 +356,12 @@ private slots:
         const QString where = QStringLiteral("127.0.0.1:%1").arg(probe.serverPort());
         probe.close();
         gnss::test::LoopWatch watch;
-        w_->controller()->connectTo(SourceSpec{SourceSpec::Kind::Tcp, where});
-        QTRY_VERIFY_WITH_TIMEOUT(w_->controller()->stateText().contains("trying again"), 5000);
+        w_->link()->connectTo(SourceSpec{SourceSpec::Kind::Tcp, where});
+        QTRY_VERIFY_WITH_TIMEOUT(w_->link()->stateText().contains("trying again"), 5000);
         QTest::qWait(3000); // a few attempts, with growing waits
         QVERIFY2(watch.worst < 250, QByteArray::number(watch.worst));
-        QVERIFY2(w_->controller()->stateText().contains(where),
-                 qPrintable(w_->controller()->stateText()));
-        w_->controller()->disconnectFromSource();
+        QVERIFY2(w_->link()->stateText().contains(where), qPrintable(w_->link()->stateText()));
+        w_->link()->disconnectFromSource();
     }
 
     // A GeoS-5 sends only standard sentences until asked: the window asks each dialect's probe
@@ -370,12 +369,11 @@ private slots:
     void aReceiverWhoseOutputNamesNoVendorIsAsked() {
         link::test::SimProcess geostar(QStringList{"--dialect", "geostar", "--baud", "38400"});
         if (!geostar.ok()) QSKIP(qPrintable("gnss-sim: " + geostar.error));
-        w_->controller()->connectTo(SourceSpec{SourceSpec::Kind::Serial, geostar.device, 0});
-        QTRY_VERIFY_WITH_TIMEOUT(
-                w_->controller()->state() == ConnectionController::State::Connected, 30000);
+        w_->link()->connectTo(SourceSpec{SourceSpec::Kind::Serial, geostar.device, 0});
+        QTRY_VERIFY_WITH_TIMEOUT(w_->link()->state() == ReceiverLink::State::Connected, 30000);
         QTRY_COMPARE_WITH_TIMEOUT(QString::fromStdString(w_->stateModel()->state().identity.model),
                                   QString("GeoS-5M"), 20000);
-        auto *c = w_->controller()->connection();
+        auto *c = w_->link()->connection();
         QVERIFY(c->stream()->dialect() && c->stream()->dialect()->id == "geostar");
         // GeoStar's own numbering (2.x: Galileo as 101-136 in GPGSV) from then on: no satellite
         // of unknown system, Galileo's among them.
@@ -390,7 +388,7 @@ private slots:
         // Within two epochs: the satellites numbered before the dialect was known are not kept
         // beside them as recently lost (for ten seconds, as a satellite that set is).
         QTRY_VERIFY_WITH_TIMEOUT(galileoAndNoUnknown(), 3000);
-        w_->controller()->disconnectFromSource();
+        w_->link()->disconnectFromSource();
     }
 
     void cleanupTestCase() {

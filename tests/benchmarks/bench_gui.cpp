@@ -5,7 +5,7 @@
 #include "dialects.h"
 #include "models/console_model.h"
 #include "models/message_stats_model.h"
-#include "models/receiver_session.h"
+#include "models/model_feed.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
 #include "views/deviation_view.h"
@@ -65,7 +65,7 @@ struct Fixture {
     gnss::ui::SatelliteModel satellites;
     gnss::ui::MessageStatsModel messages;
     gnss::ui::ConsoleModel console;
-    gnss::ui::ReceiverSession session{registry, {&state, &satellites, &messages, &console}};
+    gnss::ui::ModelFeed session{registry, {&state, &satellites, &messages, &console}};
     gnss::StreamDecoder decoder{registry}; // the link's decoder, as in the application
     std::vector<QByteArray> epochs;
     Fixture() {

@@ -7,7 +7,6 @@
 
 #include "app_transports.h"
 #include "connection.h"
-#include "connection_controller.h"
 #include "dialects.h"
 #include "main_window.h"
 #include "models/console_model.h"
@@ -15,6 +14,7 @@
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
 #include "models/time_series_model.h"
+#include "session/receiver_link.h"
 #include "soak_probe.h"
 #include "soak_transport.h"
 #include "state/receiver_state.h"
@@ -128,7 +128,7 @@ std::vector<ListSize> listSizes(Window &win) {
     add("stats_rows", stats ? stats->rowCount() : -1, 100);
     add("stats_rate_history_max", historyMax, 200);
 
-    link::Connection *c = w.controller()->connection();
+    link::Connection *c = w.link()->connection();
     add("command_history", c ? c->commands()->history().size() : -1,
         link::CommandQueue::kHistoryLimit);
     add("commands_pending", c ? c->commands()->pendingCount() : -1, -1);
@@ -179,11 +179,11 @@ int runGuiSoak(const SoakOptions &o) {
         ++inViewCount;
         if (t >= nextCommand) {
             nextCommand += kCommandEverySeconds;
-            link::Connection *c = win.w->controller()->connection();
+            link::Connection *c = win.w->link()->connection();
             if (c && c->commands()->pendingCount() == 0) {
                 const QByteArray cmd = commandsSent % 2 ? QByteArrayLiteral("$PNVGRTK,ELGPS,5")
                                                         : QByteArrayLiteral("$PNVGVER");
-                if (win.w->controller()->send(cmd))
+                if (win.w->link()->send(cmd))
                     ++commandsSent;
                 else
                     ++commandsRefused;

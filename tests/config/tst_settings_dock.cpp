@@ -35,7 +35,7 @@ private slots:
                 15000);
         QCOMPARE(view->findChild<QSpinBox *>("rtk.ELGPS")->value(), 5);
         // Let the read finish: the window must not be destroyed with commands in flight (its
-        // connection controller reports them to a status bar already gone).
+        // receiver link reports them to a status bar already gone).
         QTRY_VERIFY_WITH_TIMEOUT(
                 view->findChild<QLabel *>("settingsStatus")->text().contains("done"), 15000);
     }

@@ -9,7 +9,7 @@
 #include "core/sentence_builder.h"
 #include "dialects.h"
 #include "fake_transport.h"
-#include "models/receiver_session.h"
+#include "models/model_feed.h"
 #include "nmea/nmea_rules.h"
 #include "vendor_detector.h"
 
@@ -57,14 +57,14 @@ private slots:
         BaudDetector baud(conn.stream());
         VendorDetector vendor(conn.stream());
         // The settings engine on the connection, and the views' session fed as the application's
-        // connection controller feeds it (its counts from the link's decoder).
+        // receiver session feeds it (its counts from the link's decoder).
         config::SettingsEngine engine;
         engine.attach(&conn, registry.find("counting"));
         ui::ReceiverStateModel stateModel;
         ui::SatelliteModel satellites;
         ui::MessageStatsModel messages;
         ui::ConsoleModel console;
-        ui::ReceiverSession session(registry, {&stateModel, &satellites, &messages, &console});
+        ui::ModelFeed session(registry, {&stateModel, &satellites, &messages, &console});
         session.setCounterSource(&conn.decoder());
         int consumed = 0;
         connect(conn.stream(), &SentenceStream::sentenceDecoded, &session,

@@ -6,12 +6,12 @@
 // what would reach standard error), no file of the session (the settings file, the recording
 // and its index) holds the password, "user:password" or their Base64. The password stays in
 // the password field and, when asked and the build has one, the system keychain.
-#include "connection_controller.h"
 #include "corrections_controller.h"
 #include "laptop_window.h"
 #include "models/receiver_state_model.h"
 #include "rtcm_fixtures.h"
 #include "secret_scan.h"
+#include "session/receiver_link.h"
 #include "test_caster.h"
 
 #include <QAbstractItemModel>
@@ -29,8 +29,8 @@
 #include <QTimer>
 
 using namespace gnss;
-using gnss::app::ConnectionController;
 using gnss::app::SourceSpec;
+using gnss::session::ReceiverLink;
 using gnss::test::kSecretPassword;
 using gnss::test::kSecretUser;
 using gnss::test::SecretForms;
@@ -129,10 +129,9 @@ private slots:
         app::MainWindow &w = window.w;
         // A receiver (the built-in simulator), recorded: the corrections go into it.
         w.connectAtStart(SourceSpec{SourceSpec::Kind::Simulator, QStringLiteral("nvs")});
-        QTRY_COMPARE_WITH_TIMEOUT(w.controller()->state(), ConnectionController::State::Connected,
-                                  20000);
+        QTRY_COMPARE_WITH_TIMEOUT(w.link()->state(), ReceiverLink::State::Connected, 20000);
         const QString recording = window.dir.filePath("receiver.nmea");
-        QVERIFY(w.controller()->startRecording(recording));
+        QVERIFY(w.link()->startRecording(recording));
         const auto epochsBefore = w.stateModel()->epochCount();
         QTRY_VERIFY_WITH_TIMEOUT(w.stateModel()->epochCount() > epochsBefore + 1, 20000);
 
@@ -166,7 +165,7 @@ private slots:
 
         // Everything is written out as when the window closes.
         QTest::mouseClick(start, Qt::LeftButton);
-        w.controller()->stopRecording();
+        w.link()->stopRecording();
         w.saveLayout();
         window.settings.sync();
         QTest::qWait(200); // the keychain's answer, when one was asked

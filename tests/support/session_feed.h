@@ -6,7 +6,7 @@
 #include "dialects.h"
 #include "models/console_model.h"
 #include "models/message_stats_model.h"
-#include "models/receiver_session.h"
+#include "models/model_feed.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
 
@@ -22,7 +22,7 @@ struct SessionFixture {
     ui::SatelliteModel satellites;
     ui::MessageStatsModel messages;
     ui::ConsoleModel console;
-    ui::ReceiverSession session{registry, {&state, &satellites, &messages, &console}};
+    ui::ModelFeed session{registry, {&state, &satellites, &messages, &console}};
     StreamDecoder decoder{registry};
 
     SessionFixture() { session.setCounterSource(&decoder); }

@@ -1,117 +1,45 @@
 #include "receiver_session.h"
-#include "refresh_intervals.h"
 
-#include "refusal_text.h"
-
-#include <QDateTime>
+#include "config/settings_engine.h"
+#include "link/connection.h"
+#include "link/sentence_stream.h"
+#include "session/receiver_link.h"
 
 namespace gnss::ui {
 
-ReceiverSession::ReceiverSession(const DialectRegistry &registry, SessionModels models,
-                                 QObject *parent)
-    : QObject(parent), registry_(registry), models_(models) {
-    reset();
-    refreshTimer_.setInterval(kLiveRefreshMs);
-    connect(&refreshTimer_, &QTimer::timeout, this, &ReceiverSession::refresh);
-    refreshTimer_.start();
-}
-
-void ReceiverSession::reset() {
-    counterSource_ = nullptr;
-    tracker_ = std::make_unique<StateTracker>(nullptr);
-    lastDialect_ = nullptr;
-    counters_ = {};
-    bytesAtLastRate_ = sentencesAtLastRate_ = 0;
-    lastRateMs_ = QDateTime::currentMSecsSinceEpoch();
-    if (models_.state) models_.state->clear();
-    if (models_.satellites) models_.satellites->clear();
-    if (models_.messages) models_.messages->clear();
-    if (models_.console) models_.console->clear();
-    emit dialectChanged(lastDialect_);
-}
-
-void ReceiverSession::noteBytes(const QByteArray &bytes) {
-    if (models_.console) models_.console->appendRaw(bytes);
-}
-
-void ReceiverSession::consume(const SentenceEvent &ev, const Dialect *dialect) {
-    if (dialect != lastDialect_) {
-        lastDialect_ = dialect;
-        tracker_->setDialect(dialect);
-        // The satellites seen so far were numbered without the dialect (a GeoS-5's Galileo at
-        // 101-136 read as satellites of no known system): kept as "recently lost", they would
-        // stand beside the same satellites renamed for ten seconds.
-        tracker_->forgetSatellites();
-        if (models_.satellites) models_.satellites->clear();
-        emit dialectChanged(dialect);
-    }
-    const Sentence &s = ev.sentence;
-    if (models_.console && !models_.console->paused()) {
-        ConsoleLine l;
-        l.ms = QDateTime::currentMSecsSinceEpoch();
-        l.text = QByteArray(s.line().data(), qsizetype(s.line().size()));
-        l.address = QByteArray(s.address().data(), qsizetype(s.address().size()));
-        l.checksumBad = s.checksum() == ChecksumStatus::Bad;
-        if (!ev.message) {
-            // The decoder's word in the user's language (core/refusal.h).
-            const QString why = config::refusalText(ev.error, ev.problem);
-            if (ev.unknown)
-                l.note = why; // not decoded, but nothing wrong with the line
-            else
-                l.error = why;
-        }
-        models_.console->append(std::move(l));
-    }
-    if (!ev.message) return;
-    tracker_->add(s, *ev.message, ev.dialect, [this](const ReceiverState &st) {
-        const qint64 now = QDateTime::currentMSecsSinceEpoch();
-        if (models_.satellites) models_.satellites->update(st.epoch, now);
-        if (models_.state) models_.state->publish(st, QDateTime::fromMSecsSinceEpoch(now, Qt::UTC));
+ReceiverSession::ReceiverSession(const DialectRegistry &registry,
+                                 const link::TransportFactory &transports, QObject *parent)
+    : QObject(parent), models_{new ReceiverStateModel(this), new SatelliteModel(this),
+                               new MessageStatsModel(this), new ConsoleModel(this)},
+      feed_(new ModelFeed(registry, models_, this)),
+      link_(new session::ReceiverLink(registry, transports, this)) {
+    // A new connection: the models start over and count what its decoder counts; its bytes and
+    // sentences reach them.
+    connect(link_, &session::ReceiverLink::connectionStarted, this, [this](link::Connection *c) {
+        feed_->reset();
+        feed_->setCounterSource(&c->decoder());
+        connect(c->transport(), &link::Transport::bytesReceived, feed_, &ModelFeed::noteBytes);
+        connect(c->stream(), &link::SentenceStream::sentenceDecoded, feed_,
+                [this, c](const SentenceEvent &ev) { feed_->consume(ev, c->stream()->dialect()); });
     });
+    connect(link_, &session::ReceiverLink::connectionEnded, feed_,
+            [this] { feed_->setCounterSource(nullptr); });
+    connect(link_, &session::ReceiverLink::sentenceSent, feed_, &ModelFeed::noteSent);
+    // The settings engine follows the connection and the dialect it speaks.
+    connect(feed_, &ModelFeed::dialectChanged, this, [this](const Dialect *d) {
+        link_->attachSettings(d);
+        emit dialectChanged(d);
+    });
+    connect(link_, &session::ReceiverLink::stateChanged, this,
+            [this] { link_->attachSettings(feed_->dialect()); });
 }
 
-void ReceiverSession::noteSent(const QByteArray &sentence) {
-    if (!models_.console) return;
-    ConsoleLine l;
-    l.ms = QDateTime::currentMSecsSinceEpoch();
-    l.text = sentence.trimmed();
-    const int comma = l.text.indexOf(',');
-    const int star = l.text.indexOf('*');
-    const int end = comma >= 0 ? comma : (star >= 0 ? star : l.text.size());
-    l.address = l.text.mid(1, end - 1);
-    l.sent = true;
-    models_.console->append(std::move(l));
-}
-
-void ReceiverSession::updateCounts() {
-    // The decoder's own counts: one place, whatever listens to it.
-    if (!counterSource_) return;
-    LinkCounters c = counters_;
-    c.bytes = counterSource_->framerStats().bytesIn;
-    c.sentences = c.checksumErrors = c.decodeErrors = 0;
-    for (const AddressStats &a : counterSource_->addressStats()) {
-        c.sentences += a.sentences;
-        c.checksumErrors += a.checksumBad;
-        c.decodeErrors += a.decodeErrors;
-    }
-    counters_ = c;
-}
-
-void ReceiverSession::refresh() {
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
-    if (models_.console) models_.console->flush();
-    updateCounts();
-    if (models_.messages && counterSource_)
-        models_.messages->refresh(counterSource_->addressStats(), now);
-    if (now - lastRateMs_ >= 1000) {
-        const double dt = double(now - lastRateMs_) / 1000.0;
-        counters_.bytesPerSecond = double(counters_.bytes - bytesAtLastRate_) / dt;
-        counters_.sentencesPerSecond = double(counters_.sentences - sentencesAtLastRate_) / dt;
-        bytesAtLastRate_ = counters_.bytes;
-        sentencesAtLastRate_ = counters_.sentences;
-        lastRateMs_ = now;
-    }
-    emit countersChanged();
+ReceiverSession::~ReceiverSession() {
+    // Closing the link fails a command still waiting for its answer and ends the connection:
+    // neither may reach this half-destroyed session.
+    link_->disconnect(this);
+    link_->disconnect(feed_);
+    link_->disconnectFromSource();
 }
 
 } // namespace gnss::ui

@@ -1,80 +1,49 @@
 #pragma once
-// ReceiverSession: decoded sentences in, models updated out.
-//
-//   link's decoder → sentence events → console lines (batched)
-//                                    → StateTracker → once per epoch: ReceiverStateModel,
-//                                                     SatelliteModel
-//   link's decoder counters → MessageStatsModel, byte/sentence/error counts (on a timer)
-//
-// The session decodes nothing: it listens to the one decoder of the link (or of a test), and
-// its counts are that decoder's. It knows no vendor; the dialect comes with each sentence.
-#include "console_model.h"
-#include "core/stream_decoder.h"
-#include "message_stats_model.h"
-#include "receiver_state_model.h"
-#include "satellite_model.h"
-#include "state/state_tracker.h"
+// ReceiverSession: everything one receiver needs, in one object. It owns the receiver's link half
+// (session::ReceiverLink: source, connection with its one decoder, command queue and recorder,
+// baud and vendor detection, settings engine, corrections forwarder) and the models the docks
+// read (state, satellites, message statistics, console), fed from that link's decoder by a
+// ModelFeed. The window holds a list of these; a dock is given the session it shows.
+#include "model_feed.h"
 
 #include <QObject>
-#include <QTimer>
-#include <memory>
+#include <QString>
+
+namespace gnss::link {
+class TransportFactory;
+}
+namespace gnss::session {
+class ReceiverLink;
+}
 
 namespace gnss::ui {
-
-struct SessionModels {
-    ReceiverStateModel *state = nullptr;
-    SatelliteModel *satellites = nullptr;
-    MessageStatsModel *messages = nullptr;
-    ConsoleModel *console = nullptr;
-};
-
-struct LinkCounters {
-    double bytesPerSecond = 0;
-    double sentencesPerSecond = 0;
-    quint64 bytes = 0;
-    quint64 sentences = 0;
-    quint64 checksumErrors = 0;
-    quint64 decodeErrors = 0;
-};
 
 class ReceiverSession : public QObject {
     Q_OBJECT
 public:
-    ReceiverSession(const DialectRegistry &registry, SessionModels models,
+    ReceiverSession(const DialectRegistry &registry, const link::TransportFactory &transports,
                     QObject *parent = nullptr);
+    ~ReceiverSession() override;
 
-    // Starts over (new connection): state and models are reset, the counts forgotten.
-    void reset();
+    session::ReceiverLink *link() const { return link_; }
+    ModelFeed *feed() const { return feed_; }
+    ReceiverStateModel *state() const { return models_.state; }
+    SatelliteModel *satellites() const { return models_.satellites; }
+    MessageStatsModel *messages() const { return models_.messages; }
+    ConsoleModel *console() const { return models_.console; }
+    const SessionModels &models() const { return models_; }
 
-    // The link's raw bytes (hex view), each sentence its decoder decoded, and that decoder (its
-    // counts are the session's: bytes, sentences, checksum and decode errors, per address).
-    void noteBytes(const QByteArray &bytes);
-    void consume(const SentenceEvent &ev, const Dialect *dialect);
-    void setCounterSource(const StreamDecoder *decoder) { counterSource_ = decoder; }
-    // A command sent to the receiver (shown in the console as sent).
-    void noteSent(const QByteArray &sentence);
-    // Flushes batched console lines and counters now (the timer does it every 100 ms).
-    void refresh();
-
-    const Dialect *dialect() const { return lastDialect_; }
-    const LinkCounters &counters() const { return counters_; }
+    // The dialect the receiver speaks (that of its last sentence; null: none known yet).
+    const Dialect *dialect() const { return feed_->dialect(); }
+    const LinkCounters &counters() const { return feed_->counters(); }
 
 signals:
     void dialectChanged(const gnss::Dialect *dialect);
-    void countersChanged();
 
 private:
-    void updateCounts();
-
-    const DialectRegistry &registry_;
     SessionModels models_;
-    const StreamDecoder *counterSource_ = nullptr;
-    std::unique_ptr<StateTracker> tracker_;
-    const Dialect *lastDialect_ = nullptr;
-    QTimer refreshTimer_;
-    LinkCounters counters_;
-    quint64 bytesAtLastRate_ = 0, sentencesAtLastRate_ = 0;
-    qint64 lastRateMs_ = 0;
+    ModelFeed *feed_;
+    session::ReceiverLink *link_;
 };
 
 } // namespace gnss::ui

@@ -1,7 +1,7 @@
 #pragma once
 // ReceiverStateModel: the latest receiver state, published once per navigation epoch.
 // Panels (fix, RTK, attitude, charts, deviation) read state() when updated() fires; they never
-// see a sentence. Fed by ReceiverSession (or directly by tests).
+// see a sentence. Fed by a ModelFeed (or directly by tests).
 #include "state/receiver_state.h"
 
 #include <QDateTime>

@@ -1,17 +1,29 @@
 #pragma once
-// ConnectionController: turns a SourceSpec into a live link::Connection wired to the session:
-// decoded sentences (from the link's one decoder) to the models, commands from the console
-// through the command queue, baud detection for serial ports with "auto" (LinkOpener: the port it
-// opened is handed over, open, at the rate found), connections made in the background,
-// reconnects with growing waits and recording, each step reported in words. Nothing here blocks
-// the thread it runs in.
+// ReceiverLink: one receiver's link half, everything about it that is not a model or a window.
+// It turns a SourceSpec into a live link::Connection (the one decoder, the command queue, the
+// recorder), with baud detection for serial ports with "auto" (LinkOpener: the port it opened is
+// handed over, open, at the rate found), vendor detection for a receiver whose output names no
+// vendor, connections made in the background and reconnects with growing waits, each step
+// reported in words. It owns the receiver's settings engine and the forwarder that writes
+// corrections into its link. Whoever shows the receiver (ui::ReceiverSession) listens to
+// connectionStarted() and to the connection's stream. Nothing here blocks the thread it runs in.
 #include "link/source_spec.h"
 
 #include <QObject>
 #include <memory>
 
+class QByteArray;
+
 namespace gnss {
 class DialectRegistry;
+struct Dialect;
+namespace config {
+class SettingsEngine;
+}
+namespace corrections {
+class CorrectionForwarder;
+struct ForwarderStats;
+} // namespace corrections
 namespace link {
 class Connection;
 class LinkOpener;
@@ -19,24 +31,21 @@ class VendorDetector;
 class TransportFactory;
 struct CommandResult;
 } // namespace link
-namespace ui {
-class ReceiverSession;
-}
 } // namespace gnss
 
-namespace gnss::app {
+namespace gnss::session {
 
 using link::SourceSpec;
 
-class ConnectionController : public QObject {
+class ReceiverLink : public QObject {
     Q_OBJECT
 public:
     enum class State { Disconnected, Detecting, Connecting, Connected, Reconnecting, Failed };
     Q_ENUM(State)
 
-    ConnectionController(const DialectRegistry &registry, const link::TransportFactory &transports,
-                         ui::ReceiverSession *session, QObject *parent = nullptr);
-    ~ConnectionController() override;
+    ReceiverLink(const DialectRegistry &registry, const link::TransportFactory &transports,
+                 QObject *parent = nullptr);
+    ~ReceiverLink() override;
 
     bool connectTo(const SourceSpec &spec);
     void disconnectFromSource();
@@ -66,8 +75,28 @@ public:
     void stopRecording();
     bool recording() const;
 
+    // The receiver's settings (read, apply, verify): attached to this link's command queue by
+    // whoever knows the dialect it speaks (attachSettings).
+    config::SettingsEngine *settings() const { return settings_; }
+    void attachSettings(const Dialect *dialect);
+
+    // Corrections into this receiver: whole RTCM frames written between commands, none while
+    // the link takes no writes (a replayed log, a receiver behind gpsd).
+    void forwardCorrections(const QByteArray &bytes);
+    // A new correction stream starts: a frame cut by the old one is not completed by the new.
+    void resetCorrectionFraming();
+    // Null while nothing is forwarded.
+    const corrections::ForwarderStats *forwarderStats() const;
+
 signals:
-    void stateChanged(gnss::app::ConnectionController::State state, const QString &text);
+    void stateChanged(gnss::session::ReceiverLink::State state, const QString &text);
+    // A new connection, not yet open: listeners wire themselves to its transport and stream
+    // (and start over) before the first byte.
+    void connectionStarted(gnss::link::Connection *connection);
+    // The connection is gone (closed by the user or replaced).
+    void connectionEnded();
+    // A sentence sent through the command queue (for the console).
+    void sentenceSent(const QByteArray &sentence);
     void commandFinished(const QString &summary, bool ok);
     // Baud detection: each rate tried, then the rate found (0: none).
     void detectingRate(int baud);
@@ -80,20 +109,23 @@ private:
     void onOpenerReady();
     void onOpenerFailed(const QString &why);
     void wire(link::Connection *c);
+    void updateForwarder();
 
     const DialectRegistry &registry_;
     const link::TransportFactory &transports_;
-    ui::ReceiverSession *session_;
+    config::SettingsEngine *settings_;
     SourceSpec spec_;
     std::unique_ptr<link::LinkOpener> opener_;
     std::unique_ptr<link::Connection> connection_;
     // Asks who is on a link whose output names no vendor (declared after connection_: it goes
     // first, it listens to the connection's stream).
     std::unique_ptr<link::VendorDetector> identifier_;
+    std::unique_ptr<corrections::CorrectionForwarder> forwarder_;
+    const link::Connection *forwardedTo_ = nullptr;
     int detectedBaud_ = 0;
     QString detectionDetail_;
     State state_ = State::Disconnected;
     QString stateText_;
 };
 
-} // namespace gnss::app
+} // namespace gnss::session

@@ -1,14 +1,15 @@
-#include "connection_controller.h"
+#include "session/receiver_link.h"
 
+#include "config/settings_engine.h"
 #include "core/dialect_registry.h"
+#include "corrections/correction_forwarder.h"
 #include "link/connection.h"
 #include "link/link_opener.h"
 #include "link/replay_transport.h"
 #include "link/sentence_stream.h"
 #include "link/vendor_detector.h"
-#include "models/receiver_session.h"
 
-namespace gnss::app {
+namespace gnss::session {
 
 namespace {
 QString seconds(int ms) {
@@ -16,10 +17,10 @@ QString seconds(int ms) {
 }
 } // namespace
 
-ConnectionController::ConnectionController(const DialectRegistry &registry,
-                                           const link::TransportFactory &transports,
-                                           ui::ReceiverSession *session, QObject *parent)
-    : QObject(parent), registry_(registry), transports_(transports), session_(session),
+ReceiverLink::ReceiverLink(const DialectRegistry &registry,
+                           const link::TransportFactory &transports, QObject *parent)
+    : QObject(parent), registry_(registry), transports_(transports),
+      settings_(new config::SettingsEngine(this)),
       opener_(std::make_unique<link::LinkOpener>(transports, registry)) {
     stateText_ = tr("Not connected");
     connect(opener_.get(), &link::LinkOpener::tryingRate, this, [this](int baud) {
@@ -34,21 +35,49 @@ ConnectionController::ConnectionController(const DialectRegistry &registry,
                                    .arg(baud));
         emit detectingRate(baud);
     });
-    connect(opener_.get(), &link::LinkOpener::ready, this, &ConnectionController::onOpenerReady);
-    connect(opener_.get(), &link::LinkOpener::failed, this, &ConnectionController::onOpenerFailed);
+    connect(opener_.get(), &link::LinkOpener::ready, this, &ReceiverLink::onOpenerReady);
+    connect(opener_.get(), &link::LinkOpener::failed, this, &ReceiverLink::onOpenerFailed);
 }
 
-ConnectionController::~ConnectionController() {
+ReceiverLink::~ReceiverLink() {
     disconnectFromSource();
 }
 
-void ConnectionController::setState(State s, const QString &text) {
+void ReceiverLink::setState(State s, const QString &text) {
     state_ = s;
     stateText_ = text;
+    updateForwarder();
     emit stateChanged(s, text);
 }
 
-bool ConnectionController::connectTo(const SourceSpec &spec) {
+void ReceiverLink::updateForwarder() {
+    link::Connection *c = connection_.get();
+    if (c == forwardedTo_ && forwarder_) return;
+    forwarder_.reset();
+    forwardedTo_ = c;
+    // A link that takes no writes (a replayed log, a receiver behind gpsd) gets no corrections.
+    if (c && c->transport()->canWrite())
+        forwarder_ =
+                std::make_unique<corrections::CorrectionForwarder>(c->transport(), c->commands());
+}
+
+void ReceiverLink::forwardCorrections(const QByteArray &bytes) {
+    if (forwarder_) forwarder_->feed(bytes);
+}
+
+void ReceiverLink::resetCorrectionFraming() {
+    if (forwarder_) forwarder_->resetFraming();
+}
+
+const corrections::ForwarderStats *ReceiverLink::forwarderStats() const {
+    return forwarder_ ? &forwarder_->stats() : nullptr;
+}
+
+void ReceiverLink::attachSettings(const Dialect *dialect) {
+    settings_->attach(connection_.get(), dialect);
+}
+
+bool ReceiverLink::connectTo(const SourceSpec &spec) {
     disconnectFromSource();
     spec_ = spec;
     detectedBaud_ = 0;
@@ -63,7 +92,7 @@ bool ConnectionController::connectTo(const SourceSpec &spec) {
     return state_ != State::Failed;
 }
 
-void ConnectionController::onOpenerFailed(const QString &why) {
+void ReceiverLink::onOpenerFailed(const QString &why) {
     if (opener_->detection().tried.empty()) {
         setState(State::Failed, tr("Cannot open %1: %2").arg(spec_.displayName(), why));
         return;
@@ -74,7 +103,7 @@ void ConnectionController::onOpenerFailed(const QString &why) {
     emit detectionFinished(0);
 }
 
-void ConnectionController::onOpenerReady() {
+void ReceiverLink::onOpenerReady() {
     if (!opener_->detection().tried.empty()) {
         detectedBaud_ = opener_->detection().baud;
         detectionDetail_ = tr("Baud rate detected: %1")
@@ -83,8 +112,7 @@ void ConnectionController::onOpenerReady() {
     }
     connection_ = opener_->takeConnection();
     link::Connection *c = connection_.get();
-    session_->reset();
-    session_->setCounterSource(&c->decoder());
+    emit connectionStarted(c);
     wire(c);
     // A log that cannot be replayed (an index that contradicts it) stays so: not retried.
     if (spec_.kind == SourceSpec::Kind::Replay) c->setAutoReconnect(false);
@@ -101,11 +129,7 @@ void ConnectionController::onOpenerReady() {
                                             : tr("Connecting to %1…").arg(spec_.displayName()));
 }
 
-void ConnectionController::wire(link::Connection *c) {
-    connect(c->transport(), &link::Transport::bytesReceived, session_,
-            &ui::ReceiverSession::noteBytes);
-    connect(c->stream(), &link::SentenceStream::sentenceDecoded, session_,
-            [this, c](const SentenceEvent &ev) { session_->consume(ev, c->stream()->dialect()); });
+void ReceiverLink::wire(link::Connection *c) {
     connect(c, &link::Connection::opened, this, [this](const QString &d) { setConnected(d); });
     connect(c, &link::Connection::openFailed, this, [this](const QString &why, int retryMs) {
         if (retryMs > 0)
@@ -150,25 +174,25 @@ void ConnectionController::wire(link::Connection *c) {
         });
 }
 
-void ConnectionController::setConnected(const QString &description) {
+void ReceiverLink::setConnected(const QString &description) {
     setState(State::Connected, detectedBaud_ > 0 ? tr("Connected: %1 (detected)").arg(description)
                                                  : tr("Connected: %1").arg(description));
     if (connection_) identify(connection_.get());
 }
 
-void ConnectionController::setBaudCandidates(const QList<int> &rates) {
+void ReceiverLink::setBaudCandidates(const QList<int> &rates) {
     opener_->setCandidateRates(rates);
 }
 
-QList<int> ConnectionController::baudCandidates() const {
+QList<int> ReceiverLink::baudCandidates() const {
     return opener_->candidateRates();
 }
 
-void ConnectionController::retryNow() {
+void ReceiverLink::retryNow() {
     if (connection_) connection_->retryNow();
 }
 
-void ConnectionController::identify(link::Connection *c) {
+void ReceiverLink::identify(link::Connection *c) {
     // A receiver whose output names no vendor (a GeoS-5 sends only standard sentences until it
     // is asked) is asked with each dialect's probe, as gnss-cli probe does, and the link speaks
     // the dialect that answers. Not through a link that takes no commands.
@@ -184,18 +208,20 @@ void ConnectionController::identify(link::Connection *c) {
     identifier_->start();
 }
 
-void ConnectionController::disconnectFromSource() {
+void ReceiverLink::disconnectFromSource() {
     identifier_.reset();
     opener_->cancel();
     if (connection_) {
+        forwarder_.reset();
+        forwardedTo_ = nullptr;
         connection_->close();
         connection_.reset();
-        session_->setCounterSource(nullptr);
+        emit connectionEnded();
     }
     if (state_ != State::Disconnected) setState(State::Disconnected, tr("Not connected"));
 }
 
-bool ConnectionController::send(const QByteArray &sentence, QString *error) {
+bool ReceiverLink::send(const QByteArray &sentence, QString *error) {
     if (!connection_) {
         if (error) *error = tr("Not connected: nothing was sent");
         return false;
@@ -210,27 +236,27 @@ bool ConnectionController::send(const QByteArray &sentence, QString *error) {
         if (error) *error = why;
         return false;
     }
-    session_->noteSent(sentence);
+    emit sentenceSent(sentence);
     return true;
 }
 
-QString ConnectionController::sendRefusal() const {
+QString ReceiverLink::sendRefusal() const {
     const link::Transport *t = connection_ ? connection_->transport() : nullptr;
     if (!t || t->canWrite()) return {};
     const QString why = t->readOnlyReason();
     return why.isEmpty() ? tr("%1 cannot take commands").arg(t->description()) : why;
 }
 
-bool ConnectionController::startRecording(const QString &path) {
+bool ReceiverLink::startRecording(const QString &path) {
     return connection_ && connection_->startRecording(path);
 }
 
-void ConnectionController::stopRecording() {
+void ReceiverLink::stopRecording() {
     if (connection_) connection_->stopRecording();
 }
 
-bool ConnectionController::recording() const {
+bool ReceiverLink::recording() const {
     return connection_ && connection_->recorder()->isOpen();
 }
 
-} // namespace gnss::app
+} // namespace gnss::session
