@@ -1,8 +1,8 @@
 // AttitudeView: roll/pitch/yaw and accelerations from the NVS IMU sentence; time-mark events in
 // a table, newest first; "—" for what the receiver did not send.
+#include "builtin/dialects.h"
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "label_text.h"
 #include "models/receiver_state_model.h"
 #include "screenshot.h"

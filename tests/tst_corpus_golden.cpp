@@ -2,8 +2,8 @@
 // into a position must give us the same latitude and longitude, and the satellites gpsd saw must
 // be the satellites we see (same constellation and PRN, same elevation and azimuth). Skipped
 // cleanly when the corpus is absent.
+#include "builtin/dialects.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "nmea/nmea_messages.h"
 
 #include <QDir>

@@ -1,7 +1,7 @@
 // EpochAssembler: one snapshot per fix time, GSV groups whole or not at all.
+#include "builtin/dialects.h"
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "state/epoch_assembler.h"
 
 #include <QTest>

@@ -1,8 +1,8 @@
 // scanLog: decoding a log on several threads counts exactly what one decoder reading it front to
 // back counts — including dialect detection and epochs cut at a segment boundary.
+#include "builtin/dialects.h"
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "log_scan_reference.h"
 #include "state/log_scan.h"
 

@@ -2,8 +2,9 @@
 // built-in simulated receiver reaching every model through the real connection path.
 #include "app_transports.h"
 #include "bad_input_files.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "config/settings_engine.h"
-#include "dialects.h"
 #include "main_window.h"
 #include "models/message_stats_model.h"
 #include "models/receiver_state_model.h"
@@ -39,7 +40,8 @@ class TestMainWindow : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     gnss::DialectRegistry registry_ = gnss::makeBuiltinRegistry();
-    gnss::link::TransportFactory transports_ = gnss::app::makeTransportFactory(registry_);
+    gnss::link::TransportFactory transports_ =
+            gnss::app::makeTransportFactory(gnss::sim::builtinSimulators());
 
     std::unique_ptr<QSettings> settings() {
         return std::make_unique<QSettings>(dir_.filePath("settings.ini"), QSettings::IniFormat);
@@ -246,7 +248,8 @@ private slots:
         QVERIFY(!log.isEmpty());
         QString err;
         auto o = parseStartupOptions({"gnss-workbench", log, "--show-dock", "sky"},
-                                     gnss::app::simulatedDialects(registry_), err);
+                                     gnss::app::simulatedDialects(gnss::sim::builtinSimulators()),
+                                     err);
         QVERIFY2(o, qPrintable(err));
         auto s = settings();
         gnss::app::MainWindow w(registry_, transports_, s.get());
@@ -314,29 +317,30 @@ private slots:
         QString err;
         auto o = parseStartupOptions({"gnss-workbench", "--sim", "nvs", "--screenshot",
                                       "/tmp/x.png", "--quit-after", "2.5"},
-                                     gnss::app::simulatedDialects(registry_), err);
+                                     gnss::app::simulatedDialects(gnss::sim::builtinSimulators()),
+                                     err);
         QVERIFY2(o, qPrintable(err));
         QCOMPARE(o->sim, QString("nvs"));
         QCOMPARE(o->quitAfter, 2.5);
         o = parseStartupOptions({"gnss-workbench", "--port", "/dev/ttyUSB0", "--baud", "115200"},
-                                gnss::app::simulatedDialects(registry_), err);
+                                gnss::app::simulatedDialects(gnss::sim::builtinSimulators()), err);
         QVERIFY(o);
         QCOMPARE(o->baud, 115200);
         // "auto", the default --help names, is accepted as such (0: detect).
         o = parseStartupOptions({"gnss-workbench", "--port", "/dev/ttyUSB0", "--baud", "auto"},
-                                gnss::app::simulatedDialects(registry_), err);
+                                gnss::app::simulatedDialects(gnss::sim::builtinSimulators()), err);
         QVERIFY2(o, qPrintable(err));
         QCOMPARE(o->baud, 0);
         QCOMPARE(SourceSpec::fromString("serial:/dev/ttyUSB0@115200").baud, 115200);
         QCOMPARE(SourceSpec::fromString("tcp:localhost:5000").name, QString("localhost:5000"));
         // gpsd: the URL form or the bare HOST[:PORT][/DEVICE]; the name is kept without scheme.
         o = parseStartupOptions({"gnss-workbench", "--gpsd", "gpsd://localhost:2947/dev/ttyACM0"},
-                                gnss::app::simulatedDialects(registry_), err);
+                                gnss::app::simulatedDialects(gnss::sim::builtinSimulators()), err);
         QVERIFY2(o, qPrintable(err));
         QCOMPARE(o->gpsd, QString("localhost:2947/dev/ttyACM0"));
         o = parseStartupOptions(
                 {"gnss-workbench", "--gpsd", "localhost", "--show-dock", "settings"},
-                gnss::app::simulatedDialects(registry_), err);
+                gnss::app::simulatedDialects(gnss::sim::builtinSimulators()), err);
         QVERIFY2(o, qPrintable(err));
         QCOMPARE(o->gpsd, QString("localhost"));
         QCOMPARE(o->showDock, QString("settings"));
@@ -374,7 +378,8 @@ private slots:
     void badStartupOptionsAreRefused() {
         QFETCH(QStringList, args);
         QString err;
-        QVERIFY(!parseStartupOptions(args, gnss::app::simulatedDialects(registry_), err));
+        QVERIFY(!parseStartupOptions(
+                args, gnss::app::simulatedDialects(gnss::sim::builtinSimulators()), err));
         QVERIFY(!err.isEmpty());
     }
 };

@@ -1,8 +1,8 @@
 // RtkView: RTK state decoded from NVS spec sentences shows in the panel's labels; missing values
 // show "—"; the correction-age watchdog turns red past its threshold; refresh is timer-driven.
+#include "builtin/dialects.h"
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "label_text.h"
 #include "models/receiver_state_model.h"
 #include "screenshot.h"

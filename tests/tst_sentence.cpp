@@ -1,9 +1,9 @@
 // Sentence: checksum, address, talker/type and fields.
-#include "nmea/nmea_rules.h"
+#include "builtin/dialects.h"
 #include "core/dialect_registry.h"
 #include "core/sentence.h"
 #include "core/sentence_builder.h"
-#include "dialects.h"
+#include "nmea/nmea_rules.h"
 
 #include <QTest>
 

@@ -1,8 +1,8 @@
 // StateTracker: vendor messages become vendor-neutral receiver state (RTK, attitude, time marks,
 // identity, reports) through each dialect's updateState hook.
+#include "builtin/dialects.h"
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "state/state_tracker.h"
 #include "track_state.h"
 

@@ -1,9 +1,9 @@
 // StreamDecoder: checksum policy, counting, dialect detection, aliases, and surviving any bytes.
-#include "nmea/nmea_rules.h"
+#include "builtin/dialects.h"
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "nmea/nmea_messages.h"
+#include "nmea/nmea_rules.h"
 
 #include <QTest>
 #include <random>

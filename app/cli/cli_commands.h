@@ -1,8 +1,8 @@
 #pragma once
 // gnss-cli subcommands. Each is a function from its parsed arguments to an exit code;
 // command_table.cpp names them, with the options each takes and its help.
+#include "builtin/dialects.h"
 #include "cli_args.h"
-#include "dialects.h"
 
 #include <string_view>
 

@@ -57,7 +57,8 @@ int help(const gnss::DialectRegistry &registry, int argc, char **argv) {
 
 namespace gnss::cli {
 
-int runCli(const DialectRegistry &registry, const char *programVersion, int argc, char **argv) {
+int runCli(const DialectRegistry &registry, const sim::SimulatorTable &simulators,
+           const char *programVersion, int argc, char **argv) {
     if (argc < 2) {
         print(stderr, overviewHelp(registry));
         return kExitUsage;
@@ -86,7 +87,7 @@ int runCli(const DialectRegistry &registry, const char *programVersion, int argc
     if (args.versionAsked()) return version(programVersion);
     if (!args.error().empty())
         return usageError(std::string(command->name) + ": " + args.error(), command->name);
-    const link::TransportFactory transports = app::makeTransportFactory(registry);
+    const link::TransportFactory transports = app::makeTransportFactory(simulators);
     return command->run(CliContext{registry, args, &transports});
 }
 

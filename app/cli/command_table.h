@@ -3,6 +3,7 @@
 // table so that parsing, `gnss-cli help COMMAND` and the overview cannot disagree.
 #include "cli_args.h"
 #include "cli_commands.h"
+#include "sim/simulator_table.h"
 
 #include <span>
 #include <string>
@@ -30,8 +31,10 @@ std::string overviewHelp(const DialectRegistry &registry);
 // `gnss-cli help COMMAND`, `gnss-cli COMMAND --help` (with the dialects where it takes one).
 std::string commandHelp(const CommandSpec &command, const DialectRegistry &registry);
 
-// gnss-cli itself, over `registry` (the built-in dialects, or more: a program that adds a family
-// calls this with its registry); --version prints `programVersion`. Returns the exit status.
-int runCli(const DialectRegistry &registry, const char *programVersion, int argc, char **argv);
+// gnss-cli itself, over `registry` and `simulators` (the built-in ones, or more: a program that
+// adds a family calls this with its own); --version prints `programVersion`. Returns the exit
+// status.
+int runCli(const DialectRegistry &registry, const sim::SimulatorTable &simulators,
+           const char *programVersion, int argc, char **argv);
 
 } // namespace gnss::cli

@@ -1,18 +1,20 @@
 #pragma once
-// The sources the applications know: the link library's (serial, TCP, replay) and the built-in
-// simulated receivers. One factory for the GUI and every gnss-cli command.
+// The sources the applications know: the link library's (serial, TCP, gpsd, replay) and the
+// simulated receivers of a table (the built-in one: protocol/builtin/simulators.h). One factory
+// for the GUI and every gnss-cli command.
 #include "transport_factory.h"
 
-#include "core/dialect_registry.h"
+#include "sim/simulator_table.h"
 
 #include <QStringList>
 
 namespace gnss::app {
 
-// The registry's records make the simulated receivers; it outlives the factory.
-link::TransportFactory makeTransportFactory(const DialectRegistry &registry);
+// `simulators` makes the simulated receivers (--sim NAME) and outlives the factory; the factory
+// names them (names(Kind::Simulator)) in the table's order.
+link::TransportFactory makeTransportFactory(const sim::SimulatorTable &simulators);
 
-// The dialects of `registry` the simulator can play (for source lists and option checks).
-QStringList simulatedDialects(const DialectRegistry &registry);
+// The dialects the simulator can play (for source lists and option checks).
+QStringList simulatedDialects(const sim::SimulatorTable &simulators);
 
 } // namespace gnss::app

@@ -1,15 +1,15 @@
 #include "simulator_transport.h"
 
-#include "receiver.h"
+#include "sim/simulator_table.h"
 
 namespace gnss::link {
 
 // The simulated receiver's bytes come in slices of 20 ms, as a serial driver hands them over.
 constexpr int kSimulatorTickMs = 20;
 
-SimulatorTransport::SimulatorTransport(const DialectRegistry &registry, QString dialect,
+SimulatorTransport::SimulatorTransport(const sim::SimulatorTable &simulators, QString dialect,
                                        std::uint32_t seed, int lineBaud, QObject *parent)
-    : Transport(parent), registry_(registry), dialect_(std::move(dialect)), seed_(seed),
+    : Transport(parent), simulators_(simulators), dialect_(std::move(dialect)), seed_(seed),
       lineBaud_(lineBaud) {
     timer_.setInterval(kSimulatorTickMs);
     connect(&timer_, &QTimer::timeout, this, &SimulatorTransport::tick);
@@ -22,7 +22,7 @@ bool SimulatorTransport::open() {
     options.seed = seed_;
     // The built-in receiver is a demonstration: an RTK rover shows RTK without a caster.
     options.internalBase = true;
-    receiver_ = sim::makeReceiver(registry_, dialect_.toStdString(), options);
+    receiver_ = simulators_.make(dialect_.toStdString(), options);
     if (!receiver_) {
         fail(tr("The simulator has no receiver of dialect '%1'").arg(dialect_), false);
         return false;

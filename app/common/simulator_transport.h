@@ -10,22 +10,20 @@
 
 #include <memory>
 
-namespace gnss {
-class DialectRegistry;
-namespace sim {
+namespace gnss::sim {
 class Receiver;
-}
-} // namespace gnss
+class SimulatorTable;
+} // namespace gnss::sim
 
 namespace gnss::link {
 
 class SimulatorTransport : public Transport {
     Q_OBJECT
 public:
-    // The simulated receiver of `dialect` ("nmea", "nvs", ...) that its record in `registry`
-    // makes (the registry outlives the transport); `lineBaud` 0 = the receiver's own.
-    SimulatorTransport(const DialectRegistry &registry, QString dialect, std::uint32_t seed = 1,
-                       int lineBaud = 0, QObject *parent = nullptr);
+    // The simulated receiver of `dialect` ("nmea", "nvs", ...) from `simulators` (which outlives
+    // the transport); `lineBaud` 0 = the receiver's own.
+    SimulatorTransport(const sim::SimulatorTable &simulators, QString dialect,
+                       std::uint32_t seed = 1, int lineBaud = 0, QObject *parent = nullptr);
     ~SimulatorTransport() override;
 
     bool open() override;
@@ -44,7 +42,7 @@ protected:
 private:
     void tick();
 
-    const DialectRegistry &registry_;
+    const sim::SimulatorTable &simulators_;
     QString dialect_;
     std::uint32_t seed_;
     int lineBaud_;

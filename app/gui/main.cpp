@@ -1,6 +1,7 @@
 // gnss-workbench: the GUI entry point.
 #include "app_transports.h"
-#include "dialects.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "main_window.h"
 #include "preferences.h"
 #include "startup_options.h"
@@ -46,14 +47,16 @@ int main(int argc, char **argv) {
     const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
     QString error;
     const auto options = gnss::app::parseStartupOptions(
-            QApplication::arguments(), gnss::app::simulatedDialects(registry), error);
+            QApplication::arguments(), gnss::app::simulatedDialects(gnss::sim::builtinSimulators()),
+            error);
     if (!options) {
         std::fprintf(stderr, "gnss-workbench: %s\n", qPrintable(error));
         return 2;
     }
 
     QApplication::setWindowIcon(gnss::style::appIcon());
-    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory(registry);
+    const gnss::link::TransportFactory transports =
+            gnss::app::makeTransportFactory(gnss::sim::builtinSimulators());
     gnss::app::MainWindow window(registry, transports, &settings);
     window.show();
     const QString startError = gnss::app::startWindow(window, *options);

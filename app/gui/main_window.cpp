@@ -54,7 +54,8 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
     corrections_ = new CorrectionsController(settings_, this);
     ports_ = new link::PortWatcher({}, this);
     ports_->start();
-    bar_ = new ConnectionBar(ports_, registry_, simulatedDialects(registry_), this);
+    bar_ = new ConnectionBar(ports_, registry_, transports_.names(SourceSpec::Kind::Simulator),
+                             this);
     addToolBar(Qt::TopToolBarArea, bar_);
     createLogViewer();
     createDocks();
@@ -367,7 +368,7 @@ void MainWindow::connectAtStart(const SourceSpec &spec) {
     if (!s.valid() && settings_)
         s = SourceSpec::fromString(settings_->value("connection/last").toString());
     // A first start: the first family the simulator plays.
-    const QStringList simulated = simulatedDialects(registry_);
+    const QStringList simulated = transports_.names(SourceSpec::Kind::Simulator);
     if (!s.valid() && !simulated.isEmpty())
         s = SourceSpec{SourceSpec::Kind::Simulator, simulated.front()};
     bar_->select(s);

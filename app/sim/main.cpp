@@ -13,7 +13,8 @@
 // attempt is refused, as by a serial-to-Ethernet server that is down); DOWN seconds later the
 // same port listens again, its address on a new line of standard output.
 // With --rtcm-base the same loop carries an RTCM 3 base station's stream instead.
-#include "dialects.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "sim_args.h"
 #include "termios_speed.h"
 
@@ -156,12 +157,13 @@ int main(int argc, char **argv) {
     const DialectRegistry registry = makeBuiltinRegistry();
     simapp::SimArgs args;
     std::string error;
-    if (!simapp::parseSimArgs(registry, argc, argv, args, error)) {
+    const sim::SimulatorTable &simulators = sim::builtinSimulators();
+    if (!simapp::parseSimArgs(simulators, argc, argv, args, error)) {
         std::fprintf(stderr, "gnss-sim: %s\nTry 'gnss-sim --help'.\n", error.c_str());
         return 2;
     }
     if (args.help) {
-        std::fputs(simapp::usage(registry).c_str(), stdout);
+        std::fputs(simapp::usage(registry, simulators).c_str(), stdout);
         return 0;
     }
     if (args.version) {
@@ -174,7 +176,7 @@ int main(int argc, char **argv) {
     if (args.rtcmBase)
         base = std::make_unique<sim::RtcmBaseStation>(args.base);
     else
-        rx = sim::makeReceiver(registry, args.dialect, args.options);
+        rx = simulators.make(args.dialect, args.options);
     // A base has no UART of its own: its line runs at --baud, 115200 by default.
     const int deviceBaud = rx ? rx->baud() : (args.options.baud > 0 ? args.options.baud : 115200);
     std::signal(SIGINT, onSignal);

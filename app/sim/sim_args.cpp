@@ -85,18 +85,19 @@ bool position(std::string_view s, sim::BaseStationConfig &base) {
 
 } // namespace
 
-std::string usage(const DialectRegistry &registry) {
+std::string usage(const DialectRegistry &registry, const sim::SimulatorTable &simulators) {
     std::string text = kUsageHead;
-    for (std::string_view id : sim::simulatedDialects(registry)) {
+    for (std::string_view id : simulators.dialects()) {
         const Dialect *d = registry.find(id);
         std::string line = "                   " + std::string(id);
         line.resize(std::max<std::size_t>(line.size() + 1, 28), ' ');
-        text += line + std::string(d->summary.empty() ? d->displayName : d->summary) + "\n";
+        const std::string_view what = !d ? id : d->summary.empty() ? d->displayName : d->summary;
+        text += line + std::string(what) + "\n";
     }
     return text + kUsageTail;
 }
 
-bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArgs &out,
+bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, SimArgs &out,
                   std::string &error) {
     // The first problem is kept and parsing goes on, so a --help or --version further on still
     // wins: they are how one finds out what is wrong.
@@ -210,11 +211,9 @@ bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArg
         error = "--faults: hangupon (the line drops and comes back) needs --pty or --tcp";
         return false;
     }
-    bool known = false;
-    for (auto d : sim::simulatedDialects(registry)) known = known || d == out.dialect;
-    if (!known) {
+    if (!simulators.has(out.dialect)) {
         error = "unknown dialect '" + out.dialect + "' (known:";
-        for (auto d : sim::simulatedDialects(registry)) error += " " + std::string(d);
+        for (auto d : simulators.dialects()) error += " " + std::string(d);
         error += ")";
         return false;
     }

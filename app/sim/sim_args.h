@@ -1,8 +1,8 @@
 #pragma once
 // gnss-sim's command line, parsed apart from main() so it stays small and readable.
 #include "core/dialect_registry.h"
-#include "receiver.h"
-#include "rtcm_base_station.h"
+#include "sim/rtcm_base_station.h"
+#include "sim/simulator_table.h"
 
 #include <string>
 
@@ -24,12 +24,12 @@ struct SimArgs {
     bool version = false; // --version
 };
 
-// The --help text; the receivers it offers are the registry's simulated ones.
-std::string usage(const DialectRegistry &registry);
+// The --help text; the receivers it offers are the table's, described by their records.
+std::string usage(const DialectRegistry &registry, const sim::SimulatorTable &simulators);
 
 // Returns false with `error` set on a bad command line; true with `help` or `version` set when
-// either was asked, whatever else is on the line. --dialect takes the registry's simulated ones.
-bool parseSimArgs(const DialectRegistry &registry, int argc, char **argv, SimArgs &out,
+// either was asked, whatever else is on the line. --dialect takes the table's ones.
+bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, SimArgs &out,
                   std::string &error);
 
 } // namespace gnss::simapp

@@ -2,8 +2,9 @@
 // Dialect: everything the program knows about one receiver family, as one constant record.
 //
 // A new receiver family is one folder (its messages, decoders, encoders, schema, reply rules)
-// plus one line in protocol/dialects.cpp. Nothing else names vendors: not the decoder, not the
-// views (docs/adding-a-dialect.md).
+// plus one line in protocol/builtin/dialects.cpp (and its simulated receiver, when it has one,
+// a row in protocol/builtin/simulators.cpp): the record knows no simulator. Nothing else names
+// vendors: not the decoder, not the views (docs/adding-a-dialect.md).
 #include "fix_type.h"
 #include "function_ref.h"
 #include "message.h"
@@ -19,11 +20,6 @@
 #include <vector>
 
 namespace gnss {
-
-namespace sim {
-class Receiver;
-struct SimOptions;
-} // namespace sim
 
 struct Dialect;
 struct ReceiverState;
@@ -207,9 +203,6 @@ struct Dialect {
 
     // One line for command-line help: "NVS NV08C-RTK (PNVG...): RTK rover and base".
     std::string_view summary;
-
-    // The simulated receiver of this family (gnss-sim, the built-in source); nullptr: none.
-    std::unique_ptr<sim::Receiver> (*makeSimulator)(const sim::SimOptions &options) = nullptr;
 };
 
 // The action of this kind a dialect offers, nullptr when it has none.

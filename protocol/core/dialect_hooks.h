@@ -4,13 +4,11 @@
 //
 //     namespace gnss::geostar {
 //     UpdateStateHook updateState;            // defined in geostar_state.cpp
-//     MakeSimulatorHook makeSimulatedReceiver; // defined in geostar_sim_receiver.cpp
 //     }
 //
 // (A function type declares a function of that signature; the definition is written out.)
 #include "dialect.h"
 
-#include <memory>
 #include <vector>
 
 namespace gnss {
@@ -19,7 +17,5 @@ namespace gnss {
 using UpdateStateHook = bool(const Message &m, ReceiverState &state);
 // Dialect::extractSettings: the setting values a decoded reply or command carries.
 using ExtractSettingsHook = void(const Message &reply, std::vector<KeyValue> &out);
-// Dialect::makeSimulator: the family's simulated receiver.
-using MakeSimulatorHook = std::unique_ptr<sim::Receiver>(const sim::SimOptions &options);
 
 } // namespace gnss

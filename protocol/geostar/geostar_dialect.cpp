@@ -1,7 +1,6 @@
 // GeoStar GeoS-5: sentence table and the dialect record.
 #include "geostar_dialect.h"
 #include "geostar_actions.h"
-#include "geostar_sim_receiver.h"
 #include "geostar_state.h"
 
 #include "geostar_gns.h"
@@ -61,7 +60,6 @@ const Dialect &dialect() {
             .presets = kPresets,
             .linkSpeed = {"GPSGG,BDR"},
             .summary = "GeoStar GeoS-5 ($GPSGG,...): GPS/GLONASS/Galileo receiver",
-            .makeSimulator = makeSimulatedReceiver,
     };
     return d;
 }

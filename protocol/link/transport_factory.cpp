@@ -44,8 +44,14 @@ TransportFactory::TransportFactory() {
     });
 }
 
-void TransportFactory::add(SourceSpec::Kind kind, Maker maker) {
+void TransportFactory::add(SourceSpec::Kind kind, Maker maker, QStringList names) {
     makers_[kind] = std::move(maker);
+    names_[kind] = std::move(names);
+}
+
+QStringList TransportFactory::names(SourceSpec::Kind kind) const {
+    const auto it = names_.find(kind);
+    return it == names_.end() ? QStringList() : it->second;
 }
 
 std::unique_ptr<Transport> TransportFactory::make(const SourceSpec &spec, QString *error) const {

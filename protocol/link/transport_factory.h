@@ -7,6 +7,7 @@
 #include "transport.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <map>
@@ -20,12 +21,16 @@ public:
     using Maker = std::function<std::unique_ptr<Transport>(const SourceSpec &, QString *error)>;
 
     TransportFactory(); // serial, TCP, gpsd and replay
-    void add(SourceSpec::Kind kind, Maker maker);
+    // `names`: the names a source of this kind takes, when they are a closed list (the dialects
+    // a simulator plays), for source lists and option checks.
+    void add(SourceSpec::Kind kind, Maker maker, QStringList names = {});
     bool supports(SourceSpec::Kind kind) const { return makers_.count(kind) != 0; }
+    QStringList names(SourceSpec::Kind kind) const;
     std::unique_ptr<Transport> make(const SourceSpec &spec, QString *error = nullptr) const;
 
 private:
     std::map<SourceSpec::Kind, Maker> makers_;
+    std::map<SourceSpec::Kind, QStringList> names_;
 };
 
 } // namespace gnss::link

@@ -1,7 +1,6 @@
 // The Nemerix VT002 dialect record.
 #include "nemerix_dialect.h"
 #include "nemerix_actions.h"
-#include "nemerix_sim_receiver.h"
 #include "nemerix_state.h"
 
 #include "nemerix_dialect_parts.h"
@@ -40,7 +39,6 @@ const Dialect &dialect() {
             .presets = kPresets,
             .linkSpeed = {"PNMRX100,"},
             .summary = "Nemerix VT002 (PNMRX...): GPS module",
-            .makeSimulator = makeSimulatedReceiver,
     };
     return d;
 }

@@ -1,7 +1,6 @@
 // The NVS NV08C-RTK dialect record: sentences, settings, commands and replies as one constant.
 #include "nvs_dialect.h"
 #include "nvs_actions.h"
-#include "nvs_sim_receiver.h"
 #include "nvs_state.h"
 
 #include "nvs_messages.h"
@@ -51,7 +50,6 @@ const Dialect &dialect() {
             .presets = kPresets,
             .linkSpeed = {"PNVGRZA,1,"}, // the host is on COM1
             .summary = "NVS NV08C-RTK (PNVG...): RTK rover, base and heading receiver",
-            .makeSimulator = makeSimulatedReceiver,
     };
     return d;
 }

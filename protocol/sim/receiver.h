@@ -3,13 +3,13 @@
 // whoever runs it (gnss-sim over a pseudo-terminal/TCP/stdout, a QIODevice in the link layer, a
 // test) feeds the host's bytes in, advances simulated time and takes the receiver's bytes out:
 //
-//     auto rx = sim::makeReceiver(registry, "nvs", options);
+//     auto rx = simulators.make("nvs", options); // a SimulatorTable (simulator_table.h)
 //     rx->receive("$PNVGRTK,PVTRATE,10*..\r\n");
 //     rx->advance(0.25);
 //     std::string bytes = rx->takeOutput();
 //
-// Each family's subclass, in its own folder (nvs/nvs_sim_receiver.cpp, ...) and made by its
-// dialect record (Dialect::makeSimulator), holds the spec's behaviour:
+// Each family's subclass, in its own folder (nvs/sim/nvs_sim_receiver.cpp, ...) and made by its
+// row in a SimulatorTable (protocol/builtin/simulators.cpp), holds the spec's behaviour:
 // default output list, rates and baud; how each command is answered; what is saved to flash.
 // Commands are read with the dialect's own decoders (gnss::StreamDecoder) and replies built with
 // its encoders, so the simulator and the rest of the program cannot disagree on syntax.
@@ -193,14 +193,5 @@ private:
     std::vector<Pending> pending_;
     std::string out_;
 };
-
-// The simulated receiver of a dialect in `registry` (its record's makeSimulator); nullptr when
-// the id is unknown or the family has no simulator.
-std::unique_ptr<Receiver> makeReceiver(const DialectRegistry &registry, std::string_view dialect,
-                                       const SimOptions &options = {});
-// The same over the built-in dialects (protocol/dialects.h; defined in gnss_dialects).
-std::unique_ptr<Receiver> makeReceiver(std::string_view dialect, const SimOptions &options = {});
-// The ids of the dialects in `registry` that have a simulated receiver, in registry order.
-std::vector<std::string_view> simulatedDialects(const DialectRegistry &registry);
 
 } // namespace gnss::sim

@@ -3,7 +3,8 @@
 // the application's transports, its settings in a file of its own (none saved yet), shown on the
 // 1280x800 offscreen screen (tests/acceptance/CMakeLists.txt).
 #include "app_transports.h"
-#include "dialects.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "main_window.h"
 
 #include <QSettings>
@@ -14,7 +15,7 @@ namespace gnss::test {
 struct LaptopWindow {
     QTemporaryDir dir;
     DialectRegistry registry = makeBuiltinRegistry();
-    link::TransportFactory transports = app::makeTransportFactory(registry);
+    link::TransportFactory transports = app::makeTransportFactory(gnss::sim::builtinSimulators());
     QSettings settings{settingsFile(), QSettings::IniFormat};
     app::MainWindow w{registry, transports, &settings};
 

@@ -5,9 +5,10 @@
 // in the form and applied reaches the simulator (read back from it), the sky plot's labels do
 // not collide, and a TCP source with nobody listening leaves the window responsive.
 #include "app_transports.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "config/settings_engine.h"
 #include "connection_bar.h"
-#include "dialects.h"
 #include "link/connection.h"
 #include "link/sentence_stream.h"
 #include "loop_watch.h"
@@ -96,7 +97,7 @@ QString cutOff(QWidget *w, QWidget *viewport) {
 class TstWindowAcceptance : public QObject {
     Q_OBJECT
     DialectRegistry registry_ = makeBuiltinRegistry();
-    link::TransportFactory transports_ = app::makeTransportFactory(registry_);
+    link::TransportFactory transports_ = app::makeTransportFactory(gnss::sim::builtinSimulators());
     QTemporaryDir dir_;
     std::unique_ptr<link::test::SimProcess> sim_;
     std::unique_ptr<QSettings> settings_;

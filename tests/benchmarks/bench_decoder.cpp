@@ -5,10 +5,10 @@
 #include "bench_throughput.h"
 #include "log_generator.h"
 
+#include "builtin/dialects.h"
 #include "core/framer.h"
 #include "core/sentence.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "state/epoch_assembler.h"
 #include "state/log_scan.h"
 

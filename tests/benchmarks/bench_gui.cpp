@@ -1,8 +1,8 @@
 // GUI cost at a 20 Hz receiver with 60 satellites in view: one epoch through the session into the
 // models (decode, state, satellite model update), and painting the sky plot and signal levels.
 // Prints each cost and what it means for the GUI thread at 20 epochs/s and 10 repaints/s.
+#include "builtin/dialects.h"
 #include "core/sentence_builder.h"
-#include "dialects.h"
 #include "models/console_model.h"
 #include "models/message_stats_model.h"
 #include "models/model_feed.h"

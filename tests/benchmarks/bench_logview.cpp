@@ -6,9 +6,9 @@
 //
 // Without FILE it writes gnss-loggen's 10 Hz multi-constellation log of 1 GB to $TMPDIR (in a
 // child process, so that its memory is not counted here) and deletes it at the end.
+#include "builtin/dialects.h"
 #include "core/framer.h"
 #include "core/sentence.h"
-#include "dialects.h"
 #include "log_generator.h"
 #include "log_view.h"
 #include "state/log_scan.h"

@@ -7,7 +7,8 @@
 //
 // Without FILE it writes gnss-loggen's 1 GB 10 Hz log to $TMPDIR and deletes it at the end.
 #include "app_transports.h"
-#include "dialects.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "log_generator.h"
 #include "log_viewer.h"
 #include "main_window.h"
@@ -82,7 +83,8 @@ int main(int argc, char **argv) {
     QTemporaryDir dir;
     QSettings settings(dir.filePath("settings.ini"), QSettings::IniFormat);
     const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
-    const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory(registry);
+    const gnss::link::TransportFactory transports =
+            gnss::app::makeTransportFactory(gnss::sim::builtinSimulators());
     gnss::app::MainWindow w(registry, transports, &settings);
     w.resize(1280, 800);
     w.show();

@@ -6,8 +6,9 @@
 #include "soak_gui.h"
 
 #include "app_transports.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "connection.h"
-#include "dialects.h"
 #include "main_window.h"
 #include "models/console_model.h"
 #include "models/message_stats_model.h"
@@ -46,7 +47,7 @@ constexpr double kCommandEverySeconds = 10;
 struct Window {
     QTemporaryDir dir;
     DialectRegistry registry = makeBuiltinRegistry();
-    link::TransportFactory transports = app::makeTransportFactory(registry);
+    link::TransportFactory transports = app::makeTransportFactory(gnss::sim::builtinSimulators());
     QSettings settings{dir.filePath("settings.ini"), QSettings::IniFormat};
     QPointer<SoakTransport> transport;
     std::unique_ptr<app::MainWindow> w;

@@ -1,7 +1,7 @@
 #include "soak_transport.h"
 
+#include "builtin/simulators.h"
 #include "core/sentence_builder.h"
-#include "receiver.h"
 
 #include <QElapsedTimer>
 
@@ -29,7 +29,7 @@ SoakTransport::~SoakTransport() = default;
 bool SoakTransport::open() {
     sim::SimOptions options;
     options.internalBase = true;
-    nvs_ = sim::makeReceiver(registry_, "nvs", options);
+    nvs_ = sim::makeReceiver("nvs", options);
     if (!nvs_) {
         fail(tr("The simulator has no NVS receiver"), false);
         return false;

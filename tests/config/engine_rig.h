@@ -1,7 +1,8 @@
 #pragma once
 // A settings engine on the in-process simulator: transport, its decoder, command queue, engine,
 // and a way to run one operation to its end.
-#include "dialects.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 
 #include "command_queue.h"
 #include "sentence_stream.h"
@@ -22,8 +23,9 @@ inline const DialectRegistry &registry() {
 
 struct EngineRig {
     explicit EngineRig(const QString &dialectId)
-        : dialect(registry().find(dialectId.toStdString())), sim(registry(), dialectId, 7),
-          stream(&sim, registry()), queue(&sim, &stream) {
+        : dialect(registry().find(dialectId.toStdString())),
+          sim(sim::builtinSimulators(), dialectId, 7), stream(&sim, registry()),
+          queue(&sim, &stream) {
         sim.setSpeed(2.0);
         opened = sim.open();
         queue.setDialect(dialect);

@@ -2,9 +2,9 @@
 // sent is the spec's own example where the spec prints one (GeoS-5 §4.2-4.5, checksums as
 // docs/spec-notes.md corrects the typeset "$GPGSGG, ..."), and every action of every dialect is a
 // well-formed sentence that its own dialect decodes.
+#include "builtin/dialects.h"
 #include "config/dialect_actions.h"
 #include "decode_helper.h"
-#include "dialects.h"
 
 #include <QTest>
 

@@ -6,7 +6,8 @@
 #include "core/settings_plan.h"
 #include "engine_rig.h"
 
-#include "dialects.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "refusal_text.h"
 #include "schema_catalog.h"
 #include "schema_texts.h"
@@ -51,8 +52,8 @@ private slots:
         QFile f(QStringLiteral(GNSS_SCHEMA_CATALOG));
         QVERIFY2(f.open(QIODevice::ReadOnly), GNSS_SCHEMA_CATALOG);
         const std::vector<const Dialect *> dialects = builtinDialects();
-        const QByteArray expected =
-                QByteArray::fromStdString(schemaCatalogSource(dialects, registry()));
+        const QByteArray expected = QByteArray::fromStdString(
+                schemaCatalogSource(dialects, registry(), sim::builtinSimulators()));
         QVERIFY2(f.readAll() == expected,
                  "translations/schema_texts.cpp is stale: run `cmake --build --preset dev "
                  "--target update_translations` and translate what it adds");
@@ -81,7 +82,7 @@ private slots:
         QStringList missing;
         std::size_t texts = 0;
         for (const Dialect *d : builtinDialects())
-            for (const std::string &t : reportTexts(*d, registry())) {
+            for (const std::string &t : reportTexts(*d, registry(), sim::builtinSimulators())) {
                 ++texts;
                 if (russian_.translate(kReportsContext, t.c_str()).isEmpty())
                     missing << QString::fromStdString(t);

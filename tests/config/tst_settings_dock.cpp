@@ -1,7 +1,8 @@
 // The settings dock in the main window: present, and filled from the simulated receiver as soon
 // as the connection knows its dialect (the real connection path, offscreen).
 #include "app_transports.h"
-#include "dialects.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "link/source_spec.h"
 #include "main_window.h"
 #include "settings/settings_view.h"
@@ -20,7 +21,8 @@ private slots:
         QTemporaryDir dir;
         QSettings settings(dir.filePath("settings.ini"), QSettings::IniFormat);
         const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();
-        const gnss::link::TransportFactory transports = gnss::app::makeTransportFactory(registry);
+        const gnss::link::TransportFactory transports =
+                gnss::app::makeTransportFactory(gnss::sim::builtinSimulators());
         gnss::app::MainWindow w(registry, transports, &settings);
         QDockWidget *dock = w.dock("settingsDock");
         QVERIFY(dock);

@@ -5,9 +5,9 @@
 #include "core/settings_plan.h"
 #include "engine_rig.h"
 
-#include "geostar/geostar_sim_receiver.h"
-#include "nemerix/nemerix_sim_receiver.h"
-#include "nvs/nvs_sim_receiver.h"
+#include "geostar/sim/geostar_sim_receiver.h"
+#include "nemerix/sim/nemerix_sim_receiver.h"
+#include "nvs/sim/nvs_sim_receiver.h"
 #include "presets.h"
 #include "setting_values.h"
 #include "vendor_test_rows.h"

@@ -2,7 +2,7 @@
 // keys as users write them, and nothing dropped on the way; a profile that cannot be applied
 // (malformed, another dialect or model) refused whole, saying why; values a command would not
 // take named before they are sent.
-#include "dialects.h"
+#include "builtin/dialects.h"
 #include "settings_profile.h"
 
 #include <QTest>

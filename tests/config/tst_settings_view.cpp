@@ -3,7 +3,7 @@
 // BASEXYZ ⇄ BASEBLH conversion, presets, confirmed actions, a profile's difference.
 #include "engine_rig.h"
 
-#include "nvs/nvs_sim_receiver.h"
+#include "nvs/sim/nvs_sim_receiver.h"
 #include "setting_editors.h"
 #include "settings/settings_view.h"
 

@@ -2,7 +2,6 @@
 // schema with its commands, reply rules, actions, presets, the receiver state it feeds.
 #include "acme_dialect.h"
 
-#include "acme_sim_receiver.h"
 #include "core/decode_with.h"
 #include "core/sentence_builder.h"
 #include "core/setting_command.h"
@@ -264,7 +263,6 @@ const Dialect &dialect() {
             .presets = kPresets,
             .linkSpeed = {"PACMC,BAUD,"},
             .summary = "ACME AX-1 (PACM...): a receiver family of the tests only",
-            .makeSimulator = makeSimulatedReceiver,
     };
     return d;
 }

@@ -1,9 +1,10 @@
 // gnss-cli with the test-only ACME family registered beside the built-in ones (acme_registry.h):
-// the same program as gnss-cli but for that one line.
+// the same program as gnss-cli but for those lines.
 #include "acme_registry.h"
 #include "command_table.h"
 
 int main(int argc, char **argv) {
     const gnss::DialectRegistry registry = gnss::acme::registryWithAcme();
-    return gnss::cli::runCli(registry, "test", argc, argv);
+    const gnss::sim::SimulatorTable simulators = gnss::acme::simulatorsWithAcme();
+    return gnss::cli::runCli(registry, simulators, "test", argc, argv);
 }

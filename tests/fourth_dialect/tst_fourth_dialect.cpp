@@ -57,7 +57,7 @@ Run cli(const QStringList &args) {
 
 // Ten seconds of the simulated ACME receiver's output.
 std::string simulatedLog() {
-    auto rx = sim::makeReceiver(acme::registryWithAcme(), "acme");
+    auto rx = acme::simulatorsWithAcme().make("acme");
     std::string out;
     for (int i = 0; i < 20; ++i) {
         rx->advance(0.5);
@@ -76,6 +76,7 @@ QString labelText(const QWidget *root, const char *name) {
 class TstFourthDialect : public QObject {
     Q_OBJECT
     const DialectRegistry registry_ = acme::registryWithAcme();
+    const sim::SimulatorTable simulators_ = acme::simulatorsWithAcme();
     QTemporaryDir dir_;
 
 private slots:
@@ -92,7 +93,7 @@ private slots:
     }
 
     void theSimulatorIsMadeByItsRecord() {
-        const auto ids = sim::simulatedDialects(registry_);
+        const auto ids = simulators_.dialects();
         QVERIFY(std::find(ids.begin(), ids.end(), "acme") != ids.end());
         const std::string log = simulatedLog();
         QVERIFY(log.find("$PACMS,2,") != std::string::npos); // a fix after the first seconds
@@ -174,7 +175,7 @@ private slots:
 
     void theRealWindowShowsItAndItsSettingsFormApplies() {
         QSettings settings(dir_.filePath("window.ini"), QSettings::IniFormat);
-        const link::TransportFactory transports = app::makeTransportFactory(registry_);
+        const link::TransportFactory transports = app::makeTransportFactory(simulators_);
         app::MainWindow w(registry_, transports, &settings);
         w.resize(1280, 800);
         w.show();

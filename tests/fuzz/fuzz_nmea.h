@@ -2,8 +2,8 @@
 // The NMEA side of the harnesses: decoder options from a control byte, and a StreamDecoder run
 // recorded as a transcript (every event as `gnss-cli decode` prints it, and every count) that
 // can be checked for its invariants and compared with another run of the same bytes.
+#include "builtin/dialects.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "fuzz_common.h"
 
 #include <string>

@@ -5,9 +5,9 @@
 // is the file. Checks that a refusal says why; that an accepted profile keeps every string
 // value of the file's "values" (none dropped silently), under the schema's own keys when a
 // dialect is given; and that writing it out and reading it back gives the same profile.
+#include "builtin/dialects.h"
 #include "config/setting_values.h"
 #include "config/settings_profile.h"
-#include "dialects.h"
 #include "fuzz_common.h"
 
 #include <QJsonDocument>

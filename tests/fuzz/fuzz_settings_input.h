@@ -8,10 +8,10 @@
 //                  as text; bit 7 set → the next 8 bytes derive a value from the setting's
 //                  type (typedValue), bit 6 set → the key is given by its spec name alone
 //                  ("MODE" for "rtk.MODE", as users type it)
+#include "builtin/dialects.h"
 #include "core/dialect.h"
 #include "core/sentence_builder.h"
 #include "core/settings_plan.h"
-#include "dialects.h"
 
 #include <cmath>
 #include <cstdint>

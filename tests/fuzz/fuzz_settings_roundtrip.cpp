@@ -12,10 +12,10 @@
 // (extractSettings), else read back from the simulated receiver (protocol/sim) — compared as
 // the schema's type: integers and booleans exactly, reals within the precision printed,
 // coordinates component by component, enums and text exactly, lists item by item.
+#include "builtin/simulators.h"
 #include "core/settings_plan.h"
 #include "fuzz_nmea.h"
 #include "fuzz_settings_input.h"
-#include "receiver.h"
 
 #include "core/field_parse.h"
 

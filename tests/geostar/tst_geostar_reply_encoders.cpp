@@ -6,8 +6,8 @@
 #include "examples_table.h"
 #include "vendor_refusal_rows.h"
 
+#include "builtin/dialects.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "geostar/geostar_encoders.h"
 #include "nmea/nmea_encoders.h"
 

@@ -3,10 +3,10 @@
 // (extractSettings) is the value written; a decoded set command carries the setting and value of
 // its row of the command table (what the simulator applies to its store), actions and queries
 // none; a value the schema refuses leaves the reply as it was.
+#include "builtin/dialects.h"
 #include "core/setting_command.h"
 #include "core/stream_decoder.h"
 #include "decode_helper.h"
-#include "dialects.h"
 #include "geostar/geostar_dialect.h"
 #include "geostar/geostar_encoders.h"
 #include "geostar/geostar_schema.h"

@@ -7,8 +7,8 @@
 #include "builtin_registry.h"
 #include "state/epoch_assembler.h"
 
+#include "builtin/dialects.h"
 #include "connection.h"
-#include "dialects.h"
 #include "gpsd_process.h"
 #include "gpsd_transport.h"
 #include "sentence_stream.h"

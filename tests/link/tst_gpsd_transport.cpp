@@ -2,10 +2,10 @@
 // keeps of gpsd's output (the receiver's sentences) and what it strips (gpsd's JSON, hex dumps of
 // binary packets), and the conversation with a scripted gpsd on 127.0.0.1 (greeting, watch
 // request, devices, refusals, a server that is not gpsd, gpsd going away).
+#include "builtin/dialects.h"
 #include "builtin_registry.h"
 #include "command_queue.h"
 #include "connection.h"
-#include "dialects.h"
 #include "gpsd_reader.h"
 #include "gpsd_transport.h"
 #include "sentence_stream.h"

@@ -4,10 +4,10 @@
 // simulator hangs up and comes back (same device path, now a new pseudo-terminal), recording
 // byte-exact.
 #include "baud_detector.h"
+#include "builtin/dialects.h"
 #include "builtin_registry.h"
 #include "command_queue.h"
 #include "connection.h"
-#include "dialects.h"
 #include "queue_checks.h"
 #include "rate_rows.h"
 #include "recording.h"

@@ -3,11 +3,11 @@
 // and decoded exactly once, and the byte and sentence counts come from that one place. Counted
 // with a test dialect whose decoder counts its calls.
 #include "baud_detector.h"
+#include "builtin/dialects.h"
 #include "command_queue.h"
 #include "config/settings_engine.h"
 #include "connection.h"
 #include "core/sentence_builder.h"
-#include "dialects.h"
 #include "fake_transport.h"
 #include "models/model_feed.h"
 #include "nmea/nmea_rules.h"

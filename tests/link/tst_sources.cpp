@@ -1,10 +1,10 @@
 // The other sources behind the same interface: the in-process simulator (baud detection, vendor
 // detection and a command without any serial port) and a TCP client against gnss-sim --tcp.
 #include "baud_detector.h"
+#include "builtin/dialects.h"
 #include "builtin_registry.h"
 #include "command_queue.h"
 #include "connection.h"
-#include "dialects.h"
 #include "local_port.h"
 #include "loop_watch.h"
 #include "run_to_finish.h"
@@ -71,7 +71,7 @@ class TstSources : public QObject {
     Q_OBJECT
 private slots:
     void inProcessSimulatorIsDetectedAndCommanded() {
-        SimulatorTransport sim(gnss::test::builtinRegistry(), QStringLiteral("nvs"), 3,
+        SimulatorTransport sim(gnss::sim::builtinSimulators(), QStringLiteral("nvs"), 3,
                                9600); // receiver at 115200
         QVERIFY2(sim.open(), qPrintable(sim.errorString()));
         SentenceStream stream(&sim, gnss::test::builtinRegistry());

@@ -1,6 +1,6 @@
 #pragma once
 // Files for the log viewer's tests, written by the tests into a temporary folder.
-#include "dialects.h"
+#include "builtin/dialects.h"
 #include "log_view.h"
 
 #include <QString>

@@ -1,10 +1,10 @@
 #pragma once
 // The log viewer's tests' yardstick: a plain front-to-back decode of a whole log (StreamDecoder
 // + StateTracker, fed in odd-sized chunks), with the receiver state at every epoch.
+#include "builtin/simulators.h"
 #include "core/stream_decoder.h"
 #include "log_generator.h"
 #include "scenario_log.h"
-#include "sim/receiver.h"
 #include "state/state_tracker.h"
 
 #include <string>

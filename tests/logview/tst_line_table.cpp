@@ -2,7 +2,7 @@
 // line k and the line holding an offset agree with a plain split of the text, whatever the line
 // ends, overlong lines and cuts of a growing file; the filter finds exactly the lines a plain
 // search finds; a whole generated log is counted and read back through LogView.
-#include "dialects.h"
+#include "builtin/dialects.h"
 #include "line_table.h"
 #include "log_generator.h"
 #include "log_view.h"

@@ -2,7 +2,7 @@
 // whatever the number of pieces and threads, the exact receiver state at every checkpoint and at
 // random epochs (seek), and a growing file followed line by line gives the same as reading it
 // whole.
-#include "dialects.h"
+#include "builtin/dialects.h"
 #include "log_index.h"
 #include "logview_reference.h"
 

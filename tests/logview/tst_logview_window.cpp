@@ -4,7 +4,8 @@
 // cursor moves (keys, the strip, an event, a typed time, the track, the chart, playing). Bad
 // files say so in the status bar; exports write what the engine writes.
 #include "app_transports.h"
-#include "dialects.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 #include "log_events_view.h"
 #include "log_generator.h"
 #include "log_player.h"
@@ -61,7 +62,7 @@ class TestLogviewWindow : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     DialectRegistry registry_ = makeBuiltinRegistry();
-    link::TransportFactory transports_ = app::makeTransportFactory(registry_);
+    link::TransportFactory transports_ = app::makeTransportFactory(gnss::sim::builtinSimulators());
     std::string scenario_;
 
     std::unique_ptr<QSettings> settings() {

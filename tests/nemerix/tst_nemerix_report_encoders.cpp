@@ -7,9 +7,9 @@
 // The spec prints no example of any of these reports: its only PNMRX600/603 examples
 // (examples.tsv) are the requests, checked here against the request encoders. The report lines
 // below are in the receiver's form (what the simulated VT002 sends).
+#include "builtin/dialects.h"
 #include "builtin_registry.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "examples_table.h"
 #include "nemerix/nemerix_commands.h"
 #include "nemerix/nemerix_dialect.h"

@@ -1,10 +1,10 @@
 // Every NVS encoder: byte-exact with the spec's examples where it prints them, correct checksums
 // everywhere, decode(encode(x)) == x, and out-of-range values refused with a message naming the
 // parameter and the accepted range (nothing built).
+#include "builtin/dialects.h"
 #include "core/sentence.h"
 #include "core/stream_decoder.h"
 #include "decode_helper.h"
-#include "dialects.h"
 #include "nvs/nvs_encoders.h"
 
 #include <QTest>

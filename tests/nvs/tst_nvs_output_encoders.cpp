@@ -3,10 +3,10 @@
 // sentences the spec prints no example of (their examples were images) go the other way round,
 // decode(encode(message)) == message field for field; and a value no receiver prints is refused
 // with a translatable reason, never printed.
+#include "builtin/dialects.h"
 #include "core/sentence.h"
 #include "core/stream_decoder.h"
 #include "decode_helper.h"
-#include "dialects.h"
 #include "examples_table.h"
 #include "nvs/nvs_encoders.h"
 

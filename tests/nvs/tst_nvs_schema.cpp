@@ -1,10 +1,10 @@
 // The NVS settings schema and dialect record: every Table 4 parameter with its default, every
 // group of the issue, generic encodeSettings / encodeQueries / extractSettings, and
 // `gnss-cli schema nvs` / `gnss-cli encode nvs` end to end.
+#include "builtin/dialects.h"
 #include "core/settings_plan.h"
 #include "core/stream_decoder.h"
 #include "decode_helper.h"
-#include "dialects.h"
 #include "nvs/nvs_dialect.h"
 #include "nvs/nvs_encoders.h"
 #include "nvs/nvs_schema.h"

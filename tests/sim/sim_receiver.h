@@ -1,7 +1,7 @@
 #pragma once
 // Test helper: a simulated receiver made by the registry's factory, as its own class (for the
 // suites that look at its settings store or state past the Receiver interface).
-#include "receiver.h"
+#include "builtin/simulators.h"
 
 #include <cstdint>
 #include <memory>

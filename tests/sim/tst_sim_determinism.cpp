@@ -1,11 +1,11 @@
 // Every simulated receiver is deterministic for a seed (same seed, same bytes; another seed,
 // another sky noise), and its output is limited to what its line speed carries.
+#include "builtin/simulators.h"
 #include "builtin_registry.h"
-#include "receiver.h"
 #include "sim_output.h"
 
+#include "builtin/dialects.h"
 #include "core/sentence_builder.h"
-#include "dialects.h"
 
 #include <QTest>
 
@@ -32,7 +32,7 @@ std::string run(std::string_view dialect, std::uint32_t seed, int baud = 0) {
 // A row for each dialect the registry can simulate, in a column "dialect".
 void dialectRows() {
     QTest::addColumn<QString>("dialect");
-    for (std::string_view d : simulatedDialects(builtinRegistry()))
+    for (std::string_view d : builtinSimulators().dialects())
         QTest::newRow(std::string(d).c_str()) << QString::fromUtf8(d.data(), d.size());
 }
 

@@ -2,8 +2,8 @@
 // section 4 command's reply or effect, RQUERY words read back with the geostar decoder, flash
 // persistence across a power cycle, v2.x / v4.10 numbering, baud switch; every set command lands
 // in the settings store and reads back through the query that reports it.
-#include "geostar/geostar_sim_receiver.h"
-#include "receiver.h"
+#include "builtin/simulators.h"
+#include "geostar/sim/geostar_sim_receiver.h"
 #include "sim_output.h"
 #include "sim_receiver.h"
 

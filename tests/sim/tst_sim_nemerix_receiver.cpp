@@ -1,8 +1,8 @@
 // The simulated VT002, in simulated time: default output (2.1.8), every PNMRX command's reply or
 // effect, PNMRX603 read back through the nemerix dialect, PNMRX300-304 decoded and consistent
 // with the sky model's orbits.
-#include "nemerix/nemerix_sim_receiver.h"
-#include "receiver.h"
+#include "builtin/simulators.h"
+#include "nemerix/sim/nemerix_sim_receiver.h"
 #include "sim_output.h"
 #include "sim_receiver.h"
 

@@ -1,6 +1,6 @@
 // The plain NMEA receiver, in simulated time: default sentence set and rate, fix sequence,
 // queries, baud mismatch and determinism.
-#include "receiver.h"
+#include "builtin/simulators.h"
 #include "sim_output.h"
 
 #include "core/sentence.h"

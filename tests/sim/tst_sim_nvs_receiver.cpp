@@ -1,7 +1,7 @@
 // The simulated NV08C-RTK(-A), in simulated time: default output, RTK sequence, every command's
 // reply (judged by the NVS dialect's own reply rules) and effect, flash persistence, baud change.
-#include "nvs/nvs_sim_receiver.h"
-#include "receiver.h"
+#include "builtin/simulators.h"
+#include "nvs/sim/nvs_sim_receiver.h"
 #include "rtcm_base_station.h"
 #include "sim_output.h"
 

@@ -2,8 +2,8 @@
 // commands applied through the dialect's own decoding, reports in the command's form, flash.
 #include "settings_store.h"
 
+#include "builtin/dialects.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "nvs/nvs_dialect.h"
 
 #include <QTest>

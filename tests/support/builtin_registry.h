@@ -1,6 +1,8 @@
 #pragma once
-// Test helper: the built-in dialects, made once for the whole suite.
-#include "dialects.h"
+// Test helper: the built-in dialects, made once for the whole suite (and the built-in simulated
+// receivers: sim::builtinSimulators()).
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
 
 namespace gnss::test {
 

@@ -1,9 +1,9 @@
 #pragma once
 // Test helper: models + session, fed with sentences (checksums added) through a decoder of
 // its own, as the link's decoder feeds the session in the application.
+#include "builtin/dialects.h"
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "models/console_model.h"
 #include "models/message_stats_model.h"
 #include "models/model_feed.h"

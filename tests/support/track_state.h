@@ -1,7 +1,7 @@
 #pragma once
 // Test helper: sentences → ReceiverState through the real decoder and StateTracker.
+#include "builtin/dialects.h"
 #include "core/stream_decoder.h"
-#include "dialects.h"
 #include "state/state_tracker.h"
 
 #include <string>

@@ -4,7 +4,7 @@
 #include "core/dialect_registry.h"
 #include "core/settings_plan.h"
 #include "core/stream_decoder.h"
-#include "sim/receiver.h"
+#include "sim/simulator_table.h"
 #include "state/state_tracker.h"
 
 #include <algorithm>
@@ -65,10 +65,10 @@ std::vector<std::string> schemaTexts(const Dialect &d) {
     return out;
 }
 
-std::vector<std::string> reportTexts(const Dialect &d, const DialectRegistry &registry) {
+std::vector<std::string> reportTexts(const Dialect &d, const DialectRegistry &registry,
+                                     const sim::SimulatorTable &simulators) {
     std::vector<std::string> out;
-    std::unique_ptr<sim::Receiver> rx =
-            d.makeSimulator ? d.makeSimulator(sim::SimOptions{}) : nullptr;
+    std::unique_ptr<sim::Receiver> rx = simulators.make(d.id);
     if (!rx) return out;
     // Everything the application asks: the identity, then every readable setting.
     std::string asked = std::string(d.probeCommand) + "\r\n";
@@ -104,7 +104,8 @@ std::vector<std::string> reportTexts(const Dialect &d, const DialectRegistry &re
 }
 
 std::string schemaCatalogSource(std::span<const Dialect *const> dialects,
-                                const DialectRegistry &registry) {
+                                const DialectRegistry &registry,
+                                const sim::SimulatorTable &simulators) {
     std::string out =
             "// Generated from the dialect records by the update_schema_catalog target (run by\n"
             "// update_translations): the texts of the settings schemas, actions and presets,\n"
@@ -123,7 +124,7 @@ std::string schemaCatalogSource(std::span<const Dialect *const> dialects,
     // Report titles and field names: one context for every dialect (many fields are shared).
     std::vector<std::string> reports;
     for (const Dialect *d : dialects)
-        for (std::string &t : reportTexts(*d, registry))
+        for (std::string &t : reportTexts(*d, registry, simulators))
             if (std::find(reports.begin(), reports.end(), t) == reports.end())
                 reports.push_back(std::move(t));
     if (!reports.empty()) {

@@ -23,7 +23,7 @@ private:
     unsigned epochs_ = 0;
 };
 
-// The plain NMEA record's simulator (Dialect::makeSimulator).
+// The plain NMEA receiver (its row in the built-in sim::SimulatorTable).
 std::unique_ptr<Receiver> makeNmeaReceiver(const SimOptions &options);
 
 } // namespace gnss::sim

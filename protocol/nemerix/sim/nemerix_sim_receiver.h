@@ -21,7 +21,6 @@
 //   PNMRX603 the five settings reports (messages 0..4) from the store.
 // Every PNMRX sentence it sends is built by the nemerix encoders (nemerix_commands.h).
 // The VT002 has no "save" command: a power cycle returns to the factory settings.
-#include "core/dialect_hooks.h"
 #include "nemerix/nemerix_messages.h"
 #include "sim/dialect_receiver.h"
 #include "sim/standard_output.h"
@@ -77,5 +76,6 @@ private:
 } // namespace gnss::sim
 
 namespace gnss::nemerix {
-MakeSimulatorHook makeSimulatedReceiver; // the record's simulator (Dialect::makeSimulator)
+// The family's simulated receiver (its row in a sim::SimulatorTable).
+std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
 } // namespace gnss::nemerix

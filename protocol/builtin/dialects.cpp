@@ -1,10 +1,9 @@
-#include "dialects.h"
+#include "builtin/dialects.h"
 
 // One line per receiver family in builtinDialects() below (docs/adding-a-dialect.md).
 #include "geostar/geostar_dialect.h"
 #include "nemerix/nemerix_dialect.h"
 #include "nmea/nmea_rules.h"
-#include "nmea_sim_receiver.h"
 #include "nvs/nvs_dialect.h"
 
 namespace gnss {
@@ -19,7 +18,6 @@ const Dialect &nmeaDialect() {
             // NMEA 0183 itself says 4800; receivers today (and the simulated one) start at 9600.
             .defaultBaud = 9600,
             .summary = "any NMEA-0183 receiver (2.x to 4.11): standard sentences only",
-            .makeSimulator = sim::makeNmeaReceiver,
     };
     return d;
 }
@@ -43,15 +41,5 @@ DialectRegistry makeRegistry(const std::vector<const Dialect *> &more) {
     all.insert(all.end() - 1, more.begin(), more.end());
     return DialectRegistry(standardSentenceRules(), std::move(all));
 }
-
-namespace sim {
-
-std::unique_ptr<Receiver> makeReceiver(std::string_view dialect, const SimOptions &options) {
-    for (const Dialect *d : builtinDialects())
-        if (d->id == dialect && d->makeSimulator) return d->makeSimulator(options);
-    return nullptr;
-}
-
-} // namespace sim
 
 } // namespace gnss

@@ -14,7 +14,6 @@
 //   the reply carries the value in force), PNVGIDL MODE/ADD/REMOVE/CLEAR/SHOW.
 // PNVGCFG,W saves to the simulated flash; a power cycle (Receiver::powerCycle(), SIGHUP to
 // gnss-sim) and PNVGCFG,R restore from it; PNVGRST keeps the settings in force (spec table 4.3).
-#include "core/dialect_hooks.h"
 #include "sim/dialect_receiver.h"
 #include "sim/standard_output.h"
 
@@ -89,5 +88,6 @@ private:
 } // namespace gnss::sim
 
 namespace gnss::nvs {
-MakeSimulatorHook makeSimulatedReceiver; // the record's simulator (Dialect::makeSimulator)
+// The family's simulated receiver (its row in a sim::SimulatorTable).
+std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
 } // namespace gnss::nvs

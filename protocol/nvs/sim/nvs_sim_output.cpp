@@ -2,7 +2,7 @@
 // sky's state as the standard sentences (sim/standard_output.h) and as the NVS messages, built by
 // the NVS encoders. The values are the simulator's own (the sky, the base 4.8 km away, the
 // heading antennas, time marks); the layouts are the encoders'.
-#include "nvs_sim_receiver.h"
+#include "nvs/sim/nvs_sim_receiver.h"
 
 #include "core/wgs84.h"
 #include "nvs/nvs_encoders.h"

@@ -1,4 +1,4 @@
-#include "geostar_sim_receiver.h"
+#include "geostar/sim/geostar_sim_receiver.h"
 
 #include "core/sentence_builder.h"
 #include "geostar/geostar_dialect.h"

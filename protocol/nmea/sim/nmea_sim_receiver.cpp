@@ -1,6 +1,6 @@
 #include "nmea_sim_receiver.h"
 
-#include "dialects.h"
+#include "builtin/dialects.h"
 #include "nmea/nmea_messages.h"
 
 namespace gnss::sim {

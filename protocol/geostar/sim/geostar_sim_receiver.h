@@ -26,7 +26,6 @@
 // NMEAV2 / NMEAV4 switch the numbering (3.4, 3.5): v2.x: GSV all under GP with three-digit ids
 // (Galileo 101-136), GSA per system (GP/GL/GA); v4.10: GN talkers, GSA with the system id,
 // GSV per system with the signal id (Galileo 7), GNS with per-system subsidiary sentences.
-#include "core/dialect_hooks.h"
 #include "geostar/geostar_messages.h"
 #include "sim/dialect_receiver.h"
 #include "sim/standard_output.h"
@@ -83,5 +82,6 @@ private:
 } // namespace gnss::sim
 
 namespace gnss::geostar {
-MakeSimulatorHook makeSimulatedReceiver; // the record's simulator (Dialect::makeSimulator)
+// The family's simulated receiver (its row in a sim::SimulatorTable).
+std::unique_ptr<sim::Receiver> makeSimulatedReceiver(const sim::SimOptions &options);
 } // namespace gnss::geostar

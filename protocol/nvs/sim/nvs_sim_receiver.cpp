@@ -1,4 +1,4 @@
-#include "nvs_sim_receiver.h"
+#include "nvs/sim/nvs_sim_receiver.h"
 
 #include "core/sentence_builder.h"
 #include "core/wgs84.h"

@@ -1,4 +1,4 @@
-#include "nemerix_sim_navdata.h"
+#include "nemerix/sim/nemerix_sim_navdata.h"
 
 #include "core/wgs84.h"
 

@@ -1,5 +1,7 @@
 #pragma once
-// The built-in dialects. A new receiver family adds its record to the list in dialects.cpp.
+// The built-in dialects: the composition root of the receiver families, the one place that
+// lists them. A new family adds its record to builtinDialects() in dialects.cpp (and, when it
+// has a simulated receiver, its row to simulators.cpp).
 #include "core/dialect_registry.h"
 
 namespace gnss {

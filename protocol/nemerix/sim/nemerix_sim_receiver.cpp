@@ -1,9 +1,9 @@
-#include "nemerix_sim_receiver.h"
+#include "nemerix/sim/nemerix_sim_receiver.h"
 
 #include "nemerix/nemerix_commands.h"
 #include "nemerix/nemerix_dialect.h"
 #include "nemerix/nemerix_dialect_parts.h"
-#include "nemerix_sim_navdata.h"
+#include "nemerix/sim/nemerix_sim_navdata.h"
 #include "nmea/nmea_messages.h"
 
 #include <algorithm>
