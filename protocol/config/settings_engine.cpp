@@ -8,6 +8,8 @@
 
 #include "settings_engine.h"
 
+#include "apply_plan.h"
+
 #include "connection.h"
 #include "refusal_text.h"
 #include "schema_texts.h"
@@ -19,50 +21,6 @@
 #include <algorithm>
 
 namespace gnss::config {
-
-namespace {
-
-bool succeeded(const link::CommandResult &r) {
-    return r.outcome == link::CommandOutcome::Accepted || r.outcome == link::CommandOutcome::Sent;
-}
-
-bool anyLinkLost(const QList<link::CommandResult> &commands) {
-    return std::any_of(commands.begin(), commands.end(), [](const link::CommandResult &c) {
-        return c.outcome == link::CommandOutcome::LinkLost;
-    });
-}
-
-// What became of one command of settings (its sentences) in an apply the link dropped in.
-enum class Fate {
-    Taken,       // every sentence answered yes (or sent, for those without an answer)
-    Unconfirmed, // one went out and its answer was lost, or only some went
-    NotSent,     // none went out, or the receiver refused or did not answer
-};
-
-Fate fateOf(const std::vector<std::string> &sentences, const QList<link::CommandResult> &commands) {
-    bool all = !sentences.empty(), anyGone = false, inFlight = false, lostUnsent = false;
-    for (const std::string &s : sentences) {
-        std::string why;
-        std::string line = completeSentence(s, why);
-        if (line.empty()) line = s;
-        const QString sentence = QString::fromStdString(line);
-        const auto r =
-                std::find_if(commands.begin(), commands.end(),
-                             [&](const link::CommandResult &c) { return c.sentence == sentence; });
-        const bool ok = r != commands.end() && succeeded(*r);
-        all = all && ok;
-        anyGone = anyGone || ok;
-        if (r == commands.end()) continue;
-        const bool lost = r->outcome == link::CommandOutcome::LinkLost;
-        inFlight = inFlight || (lost && r->attempts > 0);
-        lostUnsent = lostUnsent || (lost && r->attempts == 0);
-    }
-    if (all) return Fate::Taken;
-    if (inFlight || (anyGone && lostUnsent)) return Fate::Unconfirmed;
-    return Fate::NotSent;
-}
-
-} // namespace
 
 QString verdictName(Verdict v) {
     switch (v) {
@@ -310,42 +268,11 @@ bool SettingsEngine::enqueue(const std::vector<std::string> &sentences) {
     return true;
 }
 
-int SettingsEngine::effectRank(const std::string &sentence) const {
-    Sentence s;
-    if (!dialect_ || !s.parse(sentence)) return 0;
-    const ReplyRule *rule = link::CommandQueue::findRule(dialect_->replyRules, s);
-    if (!rule) return 0;
-    switch (rule->effect) {
-    case CommandEffect::None:
-    case CommandEffect::ChangesOutput: return 0;
-    case CommandEffect::ResetsReceiver: return 1;
-    case CommandEffect::ChangesBaud: {
-        // The host's own port last of the speed changes: the others go out at the speed in force.
-        const std::string_view host = dialect_->linkSpeed.commandPrefix;
-        return !host.empty() && std::string_view(sentence).substr(1).starts_with(host) ? 3 : 2;
-    }
-    case CommandEffect::ChangesProtocol: return 4;
-    }
-    return 0;
-}
-
 link::CommandOptions SettingsEngine::optionsFor(const std::string &sentence) const {
     link::CommandOptions o;
-    Sentence s;
-    if (!dialect_ || !transport_ || transport_->baud() <= 0 || !s.parse(sentence)) return o;
-    const ReplyRule *rule = link::CommandQueue::findRule(dialect_->replyRules, s);
-    if (!rule || rule->effect != CommandEffect::ChangesBaud) return o;
-    const std::string_view host = dialect_->linkSpeed.commandPrefix;
-    const std::string_view body = std::string_view(sentence).substr(1);
-    if (host.empty() || !body.starts_with(host)) {
-        // Another port's speed: the host's side of the line stays where it is.
-        o.newBaud = transport_->baud();
-        return o;
-    }
-    // The host's port: the link follows to the speed set ("BDR057" does not spell it out).
-    if (const SettingDef *speed = findSettingByRole(dialect_->settings, SettingRole::PortSpeed))
-        for (const auto &kv : applying_)
-            if (kv.key == speed->key) o.newBaud = QString::fromStdString(kv.value).toInt();
+    if (!dialect_ || !transport_) return o;
+    if (const auto to = lineBaudAfter(*dialect_, sentence, transport_->baud(), applying_))
+        o.newBaud = *to;
     return o;
 }
 
@@ -395,36 +322,6 @@ bool SettingsEngine::read(const std::vector<std::string> &keys) {
     return true;
 }
 
-std::vector<KeyValue> SettingsEngine::withCompanions(std::vector<KeyValue> changes) {
-    auto has = [&](std::string_view key) {
-        return std::any_of(changes.begin(), changes.end(),
-                           [&](const KeyValue &kv) { return kv.key == key; });
-    };
-    auto add = [&](const SettingDef &def) {
-        if (has(def.key) || !isWritable(def)) return false;
-        std::string v;
-        if (auto rv = receiverValue(def.key))
-            v = *rv;
-        else if (!def.defaultValue.empty())
-            v = std::string(def.defaultValue);
-        else
-            return false;
-        changes.push_back({std::string(def.key), v});
-        report_.companions.push_back(changes.back());
-        return true;
-    };
-    const std::vector<KeyValue> original = changes;
-    // The settings of one command go together (PNVGRZA,1: baud and protocol): the schema rows
-    // name their command, and the others' values in force complete the change.
-    for (const auto &kv : original) {
-        const SettingDef *def = findSetting(dialect_->settings, kv.key);
-        if (!def || !def->command || !def->command->together) continue;
-        for (const auto &other : dialect_->settings)
-            if (other.command == def->command) add(other);
-    }
-    return changes;
-}
-
 bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
     if (!begin(Operation::Apply, tr("Apply settings"))) return false;
     for (const auto &kv : values) {
@@ -443,7 +340,9 @@ bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
         end();
         return true;
     }
-    applying_ = withCompanions(changes);
+    applying_ = withCompanions(
+            *dialect_, changes, [this](std::string_view key) { return receiverValue(key); },
+            &report_.companions);
     EncodeResult enc = encodeSettings(*dialect_, applying_);
     refuseLongSentences(enc, dialect_->maxSentenceLength);
     if (!enc.ok()) {
@@ -460,10 +359,7 @@ bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
             written_.erase(kv.key);
     // Restarts, then speed changes, then protocol changes last: after them the rest would
     // not arrive, or not be answered on the same terms.
-    std::stable_sort(enc.sentences.begin(), enc.sentences.end(),
-                     [this](const std::string &a, const std::string &b) {
-                         return effectRank(a) < effectRank(b);
-                     });
+    orderForSending(*dialect_, enc.sentences);
     if (!enqueue(enc.sentences)) {
         cancel();
         if (pending_.empty()) end();
@@ -599,91 +495,62 @@ void SettingsEngine::startVerify() {
     }
 }
 
-void SettingsEngine::finishVerify() {
-    if (!report_.checks.empty()) return;
-    if (anyLinkLost(report_.commands)) {
-        finishLinkLost();
-        return;
-    }
-    // Commands of the set itself (not the read-back) that failed.
-    bool anyFailed = false;
-    for (const auto &c : report_.commands) anyFailed = anyFailed || !succeeded(c);
-    for (const auto &kv : applying_) {
-        const SettingDef *def = findSetting(dialect_->settings, kv.key);
-        if (!def) continue;
-        SettingCheck c{kv.key, kv.value, {}, Verdict::NotReported};
-        if (isReadable(*def)) {
-            if (auto it = reported_.find(kv.key); it != reported_.end()) {
-                c.reported = it->second;
-                c.verdict = sameValue(*def, kv.value, it->second) ? Verdict::Verified
-                                                                  : Verdict::NotTaken;
-            } else if (anyFailed) {
-                c.verdict = Verdict::NotSent;
-            }
-        } else if (auto it = written_.find(kv.key); it != written_.end()) {
-            // Known from the receiver's echo in this apply (PNVGRZA answers with the values in
-            // force): that is a read-back.
-            c.reported = it->second;
-            c.verdict =
-                    sameValue(*def, kv.value, it->second) ? Verdict::Verified : Verdict::NotTaken;
-        } else if (anyFailed) {
-            c.verdict = Verdict::NotSent;
-            written_.erase(kv.key);
-        } else {
-            c.verdict = Verdict::WrittenUnverified;
-            written_[kv.key] = kv.value;
-        }
-        report_.checks.push_back(std::move(c));
-    }
-    emit valuesChanged();
+std::optional<std::string> SettingsEngine::reportedInApply(const SettingDef &def) const {
+    // Readable: what the receiver reported. Write-only: its echo in this apply (PNVGRZA answers
+    // with the values in force; the apply forgot the values written before).
+    const auto &known = isReadable(def) ? reported_ : written_;
+    const auto it = known.find(def.key);
+    return it == known.end() ? std::nullopt : std::optional<std::string>(it->second);
 }
 
-void SettingsEngine::finishLinkLost() {
-    // The link went in the middle of the apply (or of its read-back). A setting is verified by
-    // a read-back only: values the receiver reported before the read-back (its old ones, or the
-    // echo of the set) are not taken for it.
-    const bool readBackRan = phase_ == Phase::Verify;
-    std::map<std::string, Fate, std::less<>> fates;
-    std::vector<PlannedCommand> plan;
-    if (planWrites(*dialect_, applying_, plan).empty())
-        for (const PlannedCommand &p : plan) {
-            const Fate f = fateOf(p.command->write(p.values).sentences, report_.commands);
-            for (const auto &kv : p.values) fates[kv.key] = f;
-        }
-    bool readable = false;
+void SettingsEngine::finishVerify() {
+    if (!report_.checks.empty()) return;
+    const bool linkLost = anyLinkLost(report_.commands);
+    // Without the link lost, a setting's command failed when any of the apply's did (the
+    // read-back's come after them); with it, each command's own outcome says.
+    std::map<std::string, CommandFate, std::less<>> fates;
+    if (linkLost) {
+        std::vector<PlannedCommand> plan;
+        if (planWrites(*dialect_, applying_, plan).empty())
+            for (const PlannedCommand &p : plan) {
+                const CommandFate f =
+                        fateOf(p.command->write(p.values).sentences, report_.commands);
+                for (const auto &kv : p.values) fates[kv.key] = f;
+            }
+    }
+    const CommandFate allFate =
+            std::all_of(report_.commands.begin(), report_.commands.end(), succeeded)
+                    ? CommandFate::Taken
+                    : CommandFate::NotSent;
+    bool readableLost = false;
     for (const auto &kv : applying_) {
         const SettingDef *def = findSetting(dialect_->settings, kv.key);
         if (!def) continue;
-        const auto found = fates.find(kv.key);
-        const Fate fate = found == fates.end() ? Fate::Unconfirmed : found->second;
-        SettingCheck c{kv.key, kv.value, {}, Verdict::NotSent};
-        if (isReadable(*def)) {
-            readable = true;
-            const auto it = reported_.find(kv.key);
-            if (readBackRan && it != reported_.end()) {
-                c.reported = it->second;
-                c.verdict = sameValue(*def, kv.value, it->second) ? Verdict::Verified
-                                                                  : Verdict::NotTaken;
-            } else {
-                c.verdict = fate == Fate::Taken         ? Verdict::NotReadBack
-                            : fate == Fate::Unconfirmed ? Verdict::Unconfirmed
-                                                        : Verdict::NotSent;
-                // What the receiver has now is not known until the read-back.
-                if (fate != Fate::NotSent) reported_.erase(kv.key);
-            }
-        } else if (auto it = written_.find(kv.key); it != written_.end()) {
-            c.reported = it->second; // its echo in this apply (PNVGRZA), as in finishVerify()
-            c.verdict =
-                    sameValue(*def, kv.value, it->second) ? Verdict::Verified : Verdict::NotTaken;
-        } else if (fate == Fate::Taken) {
-            c.verdict = Verdict::WrittenUnverified;
-            written_[kv.key] = kv.value;
+        SettingFacts facts;
+        facts.reported = reportedInApply(*def);
+        facts.linkLost = linkLost;
+        facts.readBackRan = phase_ == Phase::Verify;
+        if (linkLost) {
+            const auto found = fates.find(kv.key);
+            facts.fate = found == fates.end() ? CommandFate::Unconfirmed : found->second;
         } else {
-            c.verdict = fate == Fate::Unconfirmed ? Verdict::Unconfirmed : Verdict::NotSent;
+            facts.fate = allFate;
         }
-        report_.checks.push_back(std::move(c));
+        const SettingCheck c = judge(*def, kv.value, facts);
+        if (isReadable(*def)) {
+            readableLost = readableLost || linkLost;
+            // What the receiver has now is not known until the read-back.
+            const bool readBack = facts.reported && facts.readBackRan;
+            if (linkLost && !readBack && facts.fate != CommandFate::NotSent)
+                reported_.erase(kv.key);
+        } else if (c.verdict == Verdict::WrittenUnverified) {
+            written_[kv.key] = kv.value;
+        } else if (c.verdict == Verdict::NotSent) {
+            written_.erase(kv.key);
+        }
+        report_.checks.push_back(c);
     }
-    if (readable) {
+    if (readableLost) {
         // An earlier apply still waiting for its read-back keeps its other settings.
         std::vector<SettingCheck> earlier = std::move(interrupted_);
         interrupted_ = report_.checks;
@@ -711,20 +578,16 @@ void SettingsEngine::finishRead() {
 
 void SettingsEngine::finishReadBack() {
     const bool linkLost = anyLinkLost(report_.commands);
-    for (SettingCheck c : interrupted_) {
+    for (const SettingCheck &c : interrupted_) {
         const SettingDef *def = findSetting(dialect_->settings, c.key);
-        if (def && isReadable(*def)) {
-            if (auto it = reported_.find(c.key); it != reported_.end()) {
-                c.reported = it->second;
-                if (sameValue(*def, c.wanted, it->second))
-                    c.verdict = Verdict::Verified;
-                else if (c.verdict != Verdict::NotSent)
-                    c.verdict = Verdict::NotTaken;
-            } else if (!linkLost && c.verdict != Verdict::NotSent) {
-                c.verdict = Verdict::NotReported;
-            }
+        if (!def) {
+            report_.checks.push_back(c);
+            continue;
         }
-        report_.checks.push_back(std::move(c));
+        const auto it = reported_.find(c.key);
+        report_.checks.push_back(judgeReadBack(
+                *def, c, it == reported_.end() ? std::nullopt : std::optional(it->second),
+                linkLost));
     }
     // Lost again: read back at the next return. Done, or cancelled by the user: no more.
     if (linkLost && !cancelled_)

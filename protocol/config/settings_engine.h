@@ -21,6 +21,7 @@
 //   action save to flash / restore defaults / cold, warm, hot start, where the dialect has one.
 //
 // One operation at a time, with progress; cancel() stops it (queued commands are cancelled).
+#include "apply_verdicts.h"
 #include "dialect_actions.h"
 #include "settings_profile.h"
 
@@ -48,21 +49,7 @@ namespace gnss::config {
 
 enum class Operation { None, Read, Apply, Action, ReadBack };
 
-enum class Verdict {
-    Verified,          // read back with the value set
-    NotTaken,          // read back with another value
-    NotReported,       // readable, but the receiver did not report it after the change
-    WrittenUnverified, // write-only: the command went through, nothing can read it back
-    NotSent,           // its command failed (refused, timed out, link lost, cancelled)
-    NotReadBack,       // its command was taken, then the link went before the read-back
-    Unconfirmed,       // its command went out, the link went before the answer: it may be set
-};
 QString verdictName(Verdict v);
-
-struct SettingCheck {
-    std::string key, wanted, reported;
-    Verdict verdict = Verdict::NotReported;
-};
 
 struct OperationReport {
     Operation operation = Operation::None;
@@ -169,16 +156,15 @@ private:
     void absorb(const link::CommandResult &r);
     void phaseDone();
     void startVerify();
+    // The apply's checks, by the verdict rule (apply_verdicts.h), with or without the link lost.
     void finishVerify();
+    std::optional<std::string> reportedInApply(const SettingDef &def) const;
     void end();
-    void finishLinkLost();
     void finishRead();
     void finishReadBack();
     void onTransportState();
     void readBackIfDue();
-    std::vector<KeyValue> withCompanions(std::vector<KeyValue> changes);
     link::CommandOptions optionsFor(const std::string &sentence) const;
-    int effectRank(const std::string &sentence) const;
 
     QPointer<link::CommandQueue> queue_;
     QPointer<link::Transport> transport_;
