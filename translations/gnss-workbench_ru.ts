@@ -179,7 +179,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../protocol/config/settings_profile.cpp" line="+49"/>
+        <location filename="../protocol/config/settings_profile.cpp" line="+48"/>
         <source>not a settings profile: %1</source>
         <translation>это не профиль настроек: %1</translation>
     </message>
@@ -3935,111 +3935,9 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
-    <name>gnss::session::ReceiverLink</name>
-    <message>
-        <location filename="../app/gui/connection_controller.cpp" line="+24"/>
-        <location line="+171"/>
-        <source>Not connected</source>
-        <translation>Нет подключения</translation>
-    </message>
-    <message>
-        <location line="-138"/>
-        <source>No source chosen</source>
-        <translation>Источник не выбран</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <location line="+25"/>
-        <location line="+22"/>
-        <source>Cannot open %1: %2</source>
-        <translation>Не удаётся открыть %1: %2</translation>
-    </message>
-    <message>
-        <location line="+40"/>
-        <source>Connected: %1</source>
-        <translation>Подключено: %1</translation>
-    </message>
-    <message>
-        <location line="-82"/>
-        <location line="+67"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location line="-109"/>
-        <source>%1: detecting the baud rate: trying %2…</source>
-        <translation>%1: определение скорости: проверяется %2…</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1: detecting the baud rate: %2; trying %3…</source>
-        <translation>%1: определение скорости: %2; проверяется %3…</translation>
-    </message>
-    <message>
-        <location line="+29"/>
-        <source>%1: detecting the baud rate…</source>
-        <translation>%1: определение скорости…</translation>
-    </message>
-    <message>
-        <location line="+160"/>
-        <source>%1 cannot take commands</source>
-        <translation>%1 не принимает команды</translation>
-    </message>
-    <message>
-        <location line="-149"/>
-        <source>Baud rate not found: %1</source>
-        <translation>Скорость не найдена: %1</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Baud rate detected: %1</source>
-        <translation>Скорость определена: %1</translation>
-    </message>
-    <message>
-        <location line="+33"/>
-        <source>%1 — trying again in %2 s</source>
-        <translation>%1 — повтор через %2 с</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Link lost: %1 — trying again in %2 s</source>
-        <translation>Связь потеряна: %1 — повтор через %2 с</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Reconnecting to %1 (attempt %2)…</source>
-        <translation>Повторное подключение к %1 (попытка %2)…</translation>
-    </message>
-    <message>
-        <location line="+27"/>
-        <source>Opening %1… %2%</source>
-        <translation>Открытие %1… %2%</translation>
-    </message>
-    <message>
-        <location line="-49"/>
-        <source>Opening %1…</source>
-        <translation>Открытие %1…</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Connecting to %1…</source>
-        <translation>Подключение к %1…</translation>
-    </message>
-    <message>
-        <location line="+53"/>
-        <source>Connected: %1 (detected)</source>
-        <translation>Подключено: %1 (определено)</translation>
-    </message>
-    <message>
-        <location line="+46"/>
-        <source>Not connected: nothing was sent</source>
-        <translation>Нет подключения: ничего не отправлено</translation>
-    </message>
-</context>
-<context>
     <name>gnss::app::CorrectionsController</name>
     <message>
-        <location filename="../app/gui/corrections_controller.cpp" line="+40"/>
+        <location filename="../app/gui/corrections_controller.cpp" line="+39"/>
         <source>The password was not read from the keychain: %1</source>
         <translation>Пароль не прочитан из связки ключей: %1</translation>
     </message>
@@ -4049,7 +3947,7 @@ Serial number: %3</source>
         <translation>Пароль не сохранён в связке ключей: %1</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+79"/>
         <source>Stopped</source>
         <translation>Остановлено</translation>
     </message>
@@ -4220,18 +4118,18 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+59"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+255"/>
+        <location filename="../app/gui/main_window.cpp" line="+43"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+220"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+264"/>
+        <location line="+112"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-203"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-173"/>
         <source>Timeline</source>
         <translation>Шкала времени</translation>
     </message>
@@ -4241,17 +4139,17 @@ Serial number: %3</source>
         <translation>Шкала времени журнала</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../app/gui/dock_table.cpp" line="+72"/>
         <source>Events</source>
         <translation>События</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Log events</source>
         <translation>События журнала</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="+230"/>
         <source>Save events</source>
         <translation>Сохранить события</translation>
     </message>
@@ -4262,23 +4160,23 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+12"/>
-        <location line="+188"/>
+        <location line="+14"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+192"/>
         <source>Not exported: %1</source>
         <translation>Не экспортировано: %1</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location filename="../app/gui/dock_table.cpp" line="-7"/>
         <source>Log statistics</source>
         <translation>Статистика журнала</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Log statistics (range)</source>
         <translation>Статистика журнала (интервал)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="-5"/>
         <source>Save statistics</source>
         <translation>Сохранить статистику</translation>
     </message>
@@ -4288,27 +4186,27 @@ Serial number: %3</source>
         <translation>JSON (*.json)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location filename="../app/gui/dock_table.cpp" line="+2"/>
         <source>Log charts</source>
         <translation>Графики журнала</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Log charts (whole log)</source>
         <translation>Графики журнала (весь журнал)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-7"/>
         <source>Track</source>
         <translation>Трек</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Track (whole log)</source>
         <translation>Трек (весь журнал)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-151"/>
         <source>&amp;Open Log...</source>
         <translation>&amp;Открыть журнал...</translation>
     </message>
@@ -4443,7 +4341,7 @@ Serial number: %3</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-295"/>
+        <location filename="../app/gui/main_window.cpp" line="-108"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
@@ -4463,33 +4361,36 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location filename="../app/gui/dock_table.cpp" line="-40"/>
+        <location line="+1"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+9"/>
         <source>Fix and position</source>
         <translation>Решение и координаты</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-1"/>
         <source>Fix</source>
         <translation>Решение</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-6"/>
         <location line="+1"/>
         <source>Signal levels</source>
         <translation>Уровни сигналов</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+17"/>
+        <location line="+1"/>
         <source>Satellites</source>
         <translation>Спутники</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
+        <location line="+1"/>
         <source>Console</source>
         <translation>Консоль</translation>
     </message>
@@ -4504,7 +4405,7 @@ Serial number: %3</source>
         <translation>Статистика сообщений</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-16"/>
         <source>Receiver</source>
         <translation>Приёмник</translation>
     </message>
@@ -4514,42 +4415,45 @@ Serial number: %3</source>
         <translation>Сведения о приёмнике</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-7"/>
+        <location line="+1"/>
         <source>RTK</source>
         <translation>RTK</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+23"/>
+        <location line="+1"/>
         <source>Charts</source>
         <translation>Графики</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-31"/>
+        <location line="+1"/>
         <source>Deviation</source>
         <translation>Разброс</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+17"/>
         <source>Attitude</source>
         <translation>Ориентация</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Attitude and time marks</source>
         <translation>Ориентация и метки времени</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="-10"/>
         <source>Corrections</source>
         <translation>Поправки</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Corrections (RTCM)</source>
         <translation>Поправки (RTCM)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Settings</source>
         <translation>Настройки</translation>
     </message>
@@ -4559,12 +4463,12 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="-134"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location filename="../app/gui/main_window.cpp" line="+40"/>
         <source>&amp;Record...</source>
         <translation>&amp;Запись...</translation>
     </message>
@@ -4624,7 +4528,7 @@ Serial number: %3</source>
         <translation>О программе GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+41"/>
         <source>NMEA-0183 (no vendor sentences)</source>
         <translation>NMEA-0183 (без фирменных сообщений)</translation>
     </message>
@@ -4889,7 +4793,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::config::SettingsEngine</name>
     <message>
-        <location filename="../protocol/config/settings_engine.cpp" line="+71"/>
+        <location filename="../protocol/config/settings_engine.cpp" line="+27"/>
         <source>verified</source>
         <translation>проверено</translation>
     </message>
@@ -4959,13 +4863,13 @@ Serial number: %3</source>
         <translation>нет подключения к приёмнику</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+33"/>
         <source>Read settings</source>
         <translation>Чтение настроек</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+71"/>
+        <location line="+41"/>
         <source>unknown setting &apos;%1&apos; of the %2 dialect</source>
         <translation>неизвестная настройка «%1» диалекта %2</translation>
     </message>
@@ -4980,12 +4884,12 @@ Serial number: %3</source>
         <translation>%1 нельзя задать</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>nothing was sent: %1</source>
         <translation>ничего не отправлено: %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+24"/>
         <source>Action</source>
         <translation>Действие</translation>
     </message>
@@ -4995,13 +4899,13 @@ Serial number: %3</source>
         <translation>у приёмника %1 нет команды «%2»</translation>
     </message>
     <message>
-        <location line="-271"/>
-        <location line="+385"/>
+        <location line="-209"/>
+        <location line="+323"/>
         <source>could not read back: %1</source>
         <translation>не удалось прочитать обратно: %1</translation>
     </message>
     <message>
-        <location line="+190"/>
+        <location line="+157"/>
         <source>Apply profile</source>
         <translation>Применение профиля</translation>
     </message>
@@ -5505,7 +5409,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::GpsdTransport</name>
     <message>
-        <location filename="../protocol/link/gpsd_transport.cpp" line="+31"/>
+        <location filename="../protocol/link/gpsd_transport.cpp" line="+30"/>
         <location line="+3"/>
         <location line="+12"/>
         <source>a gpsd source is HOST[:PORT][/DEVICE], got &apos;%1&apos;</source>
@@ -5727,7 +5631,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::TcpTransport</name>
     <message>
-        <location filename="../protocol/link/tcp_transport.cpp" line="+23"/>
+        <location filename="../protocol/link/tcp_transport.cpp" line="+19"/>
         <source>Cannot connect to %1: no answer within %2 s</source>
         <translation>Не удаётся подключиться к %1: нет ответа за %2 с</translation>
     </message>
@@ -5755,7 +5659,7 @@ Serial number: %3</source>
         <translation>источник TCP задаётся как ХОСТ:ПОРТ, получено «%1»</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+30"/>
         <source>no source given</source>
         <translation>источник не указан</translation>
     </message>
@@ -5776,6 +5680,108 @@ Serial number: %3</source>
         <location line="+100"/>
         <source>No valid sentence and no answer to any probe: check the baud rate and that the receiver sends NMEA</source>
         <translation>Нет ни корректных сообщений, ни ответа на запросы: проверьте скорость и то, что приёмник передаёт NMEA</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::session::ReceiverLink</name>
+    <message>
+        <location filename="../protocol/session/receiver_link.cpp" line="+25"/>
+        <location line="+196"/>
+        <source>Not connected</source>
+        <translation>Нет подключения</translation>
+    </message>
+    <message>
+        <location line="-135"/>
+        <source>No source chosen</source>
+        <translation>Источник не выбран</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+24"/>
+        <location line="+18"/>
+        <source>Cannot open %1: %2</source>
+        <translation>Не удаётся открыть %1: %2</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>Connected: %1</source>
+        <translation>Подключено: %1</translation>
+    </message>
+    <message>
+        <location line="-77"/>
+        <location line="+62"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="-132"/>
+        <source>%1: detecting the baud rate: trying %2…</source>
+        <translation>%1: определение скорости: проверяется %2…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: detecting the baud rate: %2; trying %3…</source>
+        <translation>%1: определение скорости: %2; проверяется %3…</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>%1: detecting the baud rate…</source>
+        <translation>%1: определение скорости…</translation>
+    </message>
+    <message>
+        <location line="+157"/>
+        <source>%1 cannot take commands</source>
+        <translation>%1 не принимает команды</translation>
+    </message>
+    <message>
+        <location line="-146"/>
+        <source>Baud rate not found: %1</source>
+        <translation>Скорость не найдена: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Baud rate detected: %1</source>
+        <translation>Скорость определена: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 — trying again in %2 s</source>
+        <translation>%1 — повтор через %2 с</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Link lost: %1 — trying again in %2 s</source>
+        <translation>Связь потеряна: %1 — повтор через %2 с</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reconnecting to %1 (attempt %2)…</source>
+        <translation>Повторное подключение к %1 (попытка %2)…</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Opening %1… %2%</source>
+        <translation>Открытие %1… %2%</translation>
+    </message>
+    <message>
+        <location line="-45"/>
+        <source>Opening %1…</source>
+        <translation>Открытие %1…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connecting to %1…</source>
+        <translation>Подключение к %1…</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Connected: %1 (detected)</source>
+        <translation>Подключено: %1 (определено)</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>Not connected: nothing was sent</source>
+        <translation>Нет подключения: ничего не отправлено</translation>
     </message>
 </context>
 <context>
@@ -7330,14 +7336,102 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
-    <name>gnss::ui::SettingsView</name>
+    <name>gnss::ui::SettingsDetails</name>
     <message>
-        <location filename="../ui/settings/settings_view.cpp" line="+67"/>
+        <location filename="../ui/settings/settings_details.cpp" line="+21"/>
+        <source>Command / setting</source>
+        <translation>Команда / настройка</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Outcome</source>
+        <translation>Результат</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Detail</source>
+        <translation>Подробности</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Setting</source>
+        <translation>Параметр</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Profile</source>
+        <translation>Профиль</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Receiver</source>
+        <translation>Приёмник</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Help</source>
+        <translation>Справка</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outcomes</source>
+        <translation>Результаты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Profile difference</source>
+        <translation>Отличия профиля</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Range: %1 to %2 %3</source>
+        <translation>Диапазон: от %1 до %2 %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Default: %1</source>
+        <translation>По умолчанию: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Written with: %1</source>
+        <translation>Записывается командой: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read back: %1</source>
+        <translation>Чтение: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot be read back (write-only)</source>
+        <translation>не читается (только запись)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>done</source>
+        <translation>выполнено</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>problems</source>
+        <translation>есть ошибки</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>receiver reports %1</source>
+        <translation>приёмник сообщает %1</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::SettingsToolbar</name>
+    <message>
+        <location filename="../ui/settings/settings_toolbar.cpp" line="+19"/>
         <source>Read</source>
         <translation>Прочитать</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Read every setting the receiver reports</source>
         <translation>Прочитать все настройки, которые сообщает приёмник</translation>
     </message>
@@ -7347,7 +7441,7 @@ Serial number: %3</source>
         <translation>Применить</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Send the edited values (only what differs), then read them back</source>
         <translation>Отправить изменённые значения (только отличающиеся) и прочитать их обратно</translation>
     </message>
@@ -7357,7 +7451,7 @@ Serial number: %3</source>
         <translation>Отменить</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Forget the edits: show the receiver&apos;s values again</source>
         <translation>Отменить правки: снова показать значения приёмника</translation>
     </message>
@@ -7383,12 +7477,11 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+70"/>
         <source>Profile</source>
         <translation>Профиль</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="+3"/>
         <source>Import and compare...</source>
         <translation>Импортировать и сравнить...</translation>
     </message>
@@ -7399,17 +7492,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>Settings profiles (*.json)</source>
         <translation>Профили настроек (*.json)</translation>
     </message>
     <message>
-        <location line="-4"/>
-        <source>%1 was not imported: %2</source>
-        <translation>%1 не импортирован: %2</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="-2"/>
         <source>Export...</source>
         <translation>Экспорт...</translation>
     </message>
@@ -7419,57 +7507,35 @@ Serial number: %3</source>
         <translation>Экспорт профиля настроек</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+52"/>
+        <source>Write the settings in force to the receiver&apos;s flash</source>
+        <translation>Записать действующие настройки во флэш-память приёмника</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This receiver has no command to save its settings</source>
+        <translation>У этого приёмника нет команды сохранения настроек</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::SettingsView</name>
+    <message>
+        <location filename="../ui/settings/settings_view.cpp" line="+148"/>
+        <source>%1 was not imported: %2</source>
+        <translation>%1 не импортирован: %2</translation>
+    </message>
+    <message>
+        <location line="-15"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="-40"/>
         <source>Find a setting</source>
         <translation>Найти настройку</translation>
     </message>
     <message>
-        <location line="+25"/>
-        <source>Command / setting</source>
-        <translation>Команда / настройка</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Outcome</source>
-        <translation>Результат</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Detail</source>
-        <translation>Подробности</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Setting</source>
-        <translation>Параметр</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Receiver</source>
-        <translation>Приёмник</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Help</source>
-        <translation>Справка</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Outcomes</source>
-        <translation>Результаты</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Profile difference</source>
-        <translation>Отличия профиля</translation>
-    </message>
-    <message>
-        <location line="+154"/>
+        <location line="+187"/>
         <source>No setting matches &quot;%1&quot;.</source>
         <translation>Нет настроек, содержащих «%1».</translation>
     </message>
@@ -7484,7 +7550,7 @@ Serial number: %3</source>
         <translation>Подключите приёмник: здесь появятся его настройки.</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>From %1</source>
         <translation>Из %1</translation>
     </message>
@@ -7494,7 +7560,7 @@ Serial number: %3</source>
         <translation>Пересчитать положение %1 в эту форму (WGS-84)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+6"/>
         <source>%1: select a setting to see its help.</source>
         <translation>%1: выберите настройку, чтобы увидеть справку.</translation>
     </message>
@@ -7504,32 +7570,7 @@ Serial number: %3</source>
         <translation>в приёмнике: %1</translation>
     </message>
     <message>
-        <location line="+43"/>
-        <source>Range: %1 to %2 %3</source>
-        <translation>Диапазон: от %1 до %2 %3</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Default: %1</source>
-        <translation>По умолчанию: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Written with: %1</source>
-        <translation>Записывается командой: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Read back: %1</source>
-        <translation>Чтение: %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>cannot be read back (write-only)</source>
-        <translation>не читается (только запись)</translation>
-    </message>
-    <message>
-        <location line="+28"/>
+        <location line="+63"/>
         <source>Reading the receiver&apos;s settings...</source>
         <translation>Чтение настроек приёмника...</translation>
     </message>
@@ -7581,7 +7622,7 @@ Serial number: %3</source>
         </translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+43"/>
         <source>The receiver already has every setting of %1.</source>
         <translation>В приёмнике уже установлены все настройки из %1.</translation>
     </message>
@@ -7609,22 +7650,7 @@ Serial number: %3</source>
         </translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>done</source>
-        <translation>выполнено</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>problems</source>
-        <translation>есть ошибки</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>receiver reports %1</source>
-        <translation>приёмник сообщает %1</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -7658,17 +7684,7 @@ Serial number: %3</source>
         <translation>Связь потеряна: эти настройки будут прочитаны, когда она вернётся.</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>Write the settings in force to the receiver&apos;s flash</source>
-        <translation>Записать действующие настройки во флэш-память приёмника</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>This receiver has no command to save its settings</source>
-        <translation>У этого приёмника нет команды сохранения настроек</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+18"/>
         <source>%1. Settings can be neither read nor changed from here.</source>
         <translation>%1. Отсюда настройки нельзя ни прочитать, ни изменить.</translation>
     </message>

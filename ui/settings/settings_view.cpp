@@ -6,6 +6,8 @@
 #include "presets.h"
 #include "setting_editors.h"
 #include "setting_values.h"
+#include "settings_details.h"
+#include "settings_toolbar.h"
 #include "widgets/flow_layout.h"
 
 #include <QComboBox>
@@ -62,50 +64,8 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     };
     auto *top = new QVBoxLayout(this);
     top->setContentsMargins(4, 4, 4, 4);
-    // Buttons wrap onto a second line in a narrow dock rather than being cut.
-    auto *bar = new FlowLayout;
-    read_ = new QPushButton(tr("Read"), this);
-    read_->setToolTip(tr("Read every setting the receiver reports"));
-    apply_ = new QPushButton(tr("Apply"), this);
-    apply_->setToolTip(tr("Send the edited values (only what differs), then read them back"));
-    revert_ = new QPushButton(tr("Revert"), this);
-    revert_->setToolTip(tr("Forget the edits: show the receiver's values again"));
-    save_ = new QPushButton(tr("Save to flash"), this);
-    defaults_ = new QPushButton(tr("Restore defaults"), this);
-    reset_ = new QToolButton(this);
-    reset_->setObjectName("settingsReset");
-    reset_->setText(tr("Reset"));
-    reset_->setPopupMode(QToolButton::InstantPopup);
-    presets_ = new QToolButton(this);
-    presets_->setObjectName("settingsPresets");
-    presets_->setText(tr("Presets"));
-    presets_->setPopupMode(QToolButton::InstantPopup);
-    profiles_ = new QToolButton(this);
-    profiles_->setText(tr("Profile"));
-    profiles_->setPopupMode(QToolButton::InstantPopup);
-    auto *profileMenu = new QMenu(profiles_);
-    profileMenu->addAction(tr("Import and compare..."), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Import settings profile"), {},
-                                                          tr("Settings profiles (*.json)"));
-        QString error;
-        if (!path.isEmpty() && !importProfile(path, &error))
-            status(tr("%1 was not imported: %2").arg(path, error));
-    });
-    profileMenu->addAction(tr("Export..."), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export settings profile"), {},
-                                                          tr("Settings profiles (*.json)"));
-        QString error;
-        if (!path.isEmpty() && !exportProfile(path, &error)) status(error);
-    });
-    profiles_->setMenu(profileMenu);
-    cancel_ = new QPushButton(tr("Cancel"), this);
-    read_->setObjectName("settingsRead");
-    apply_->setObjectName("settingsApply");
-    revert_->setObjectName("settingsRevert");
-    for (QWidget *w : std::initializer_list<QWidget *>{read_, apply_, revert_, save_, defaults_,
-                                                       reset_, presets_, profiles_})
-        bar->addWidget(w);
-    top->addLayout(bar);
+    toolbar_ = new SettingsToolbar(this);
+    top->addWidget(toolbar_);
     // Why the buttons are off when the link takes no commands (a receiver that gpsd holds, a
     // replayed log): said above the form rather than leaving disabled buttons unexplained.
     sendNote_ = new QLabel(this);
@@ -114,6 +74,14 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     sendNote_->setVisible(false);
     top->addWidget(sendNote_);
 
+    createFormArea(top);
+    createFoot(top);
+    wireToolbar();
+    followEngine();
+    rebuild();
+}
+
+void SettingsView::createFormArea(QVBoxLayout *top) {
     // Group choice: a list beside the form when the dock is wide, a combo box above it when it
     // is narrow (the form always keeps the width it needs); a filter across every group.
     auto *chooser = new QHBoxLayout;
@@ -141,27 +109,19 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     formRow->addWidget(groups_);
     formRow->addWidget(pages_, 1);
     // Help, outcomes and a profile's difference share one pane below the form.
-    tabs_ = new QTabWidget(split_);
-    tabs_->setObjectName("settingDetails");
-    help_ = new QTextBrowser(tabs_);
-    help_->setObjectName("settingHelp");
-    outcomes_ = new QTreeWidget(tabs_);
-    outcomes_->setObjectName("settingOutcomes");
-    outcomes_->setHeaderLabels({tr("Command / setting"), tr("Outcome"), tr("Detail")});
-    outcomes_->setRootIsDecorated(true);
-    diff_ = new QTreeWidget(tabs_);
-    diff_->setObjectName("profileDiff");
-    diff_->setHeaderLabels({tr("Setting"), tr("Profile"), tr("Receiver")});
-    diff_->setRootIsDecorated(false);
-    tabs_->addTab(help_, tr("Help"));
-    tabs_->addTab(outcomes_, tr("Outcomes"));
-    tabs_->addTab(diff_, tr("Profile difference"));
+    details_ = new SettingsDetails(split_);
     split_->addWidget(formArea);
-    split_->addWidget(tabs_);
+    split_->addWidget(details_);
     split_->setStretchFactor(0, 3);
     split_->setStretchFactor(1, 1);
     split_->setCollapsible(0, false);
     top->addWidget(split_, 1);
+    connect(groups_, &QListWidget::currentRowChanged, this, &SettingsView::showGroup);
+    connect(groupCombo_, &QComboBox::currentIndexChanged, this, &SettingsView::showGroup);
+    connect(filter_, &QLineEdit::textChanged, this, &SettingsView::applyFilter);
+}
+
+void SettingsView::createFoot(QVBoxLayout *top) {
     auto *foot = new QHBoxLayout;
     status_ = new QLabel(this);
     status_->setObjectName("settingsStatus");
@@ -170,22 +130,31 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
     progress_ = new QProgressBar(this);
     progress_->setMaximumWidth(200);
     progress_->setVisible(false);
+    cancel_ = new QPushButton(tr("Cancel"), this);
     foot->addWidget(status_, 1);
     foot->addWidget(progress_);
     foot->addWidget(cancel_);
     top->addLayout(foot);
+}
 
-    connect(groups_, &QListWidget::currentRowChanged, this, &SettingsView::showGroup);
-    connect(groupCombo_, &QComboBox::currentIndexChanged, this, &SettingsView::showGroup);
-    connect(filter_, &QLineEdit::textChanged, this, &SettingsView::applyFilter);
-    connect(read_, &QPushButton::clicked, this, &SettingsView::readAll);
-    connect(apply_, &QPushButton::clicked, this, &SettingsView::applyEdits);
-    connect(revert_, &QPushButton::clicked, this, &SettingsView::revert);
-    connect(save_, &QPushButton::clicked, this, [this] { runAction(config::Action::SaveToFlash); });
-    connect(defaults_, &QPushButton::clicked, this,
-            [this] { runAction(config::Action::RestoreDefaults); });
+void SettingsView::wireToolbar() {
+    connect(toolbar_, &SettingsToolbar::readClicked, this, &SettingsView::readAll);
+    connect(toolbar_, &SettingsToolbar::applyClicked, this, &SettingsView::applyEdits);
+    connect(toolbar_, &SettingsToolbar::revertClicked, this, &SettingsView::revert);
+    connect(toolbar_, &SettingsToolbar::actionRequested, this, &SettingsView::runAction);
+    connect(toolbar_, &SettingsToolbar::presetChosen, this, &SettingsView::loadPreset);
+    connect(toolbar_, &SettingsToolbar::importRequested, this, [this](const QString &path) {
+        QString error;
+        if (!importProfile(path, &error)) status(tr("%1 was not imported: %2").arg(path, error));
+    });
+    connect(toolbar_, &SettingsToolbar::exportRequested, this, [this](const QString &path) {
+        QString error;
+        if (!exportProfile(path, &error)) status(error);
+    });
     connect(cancel_, &QPushButton::clicked, engine_, &config::SettingsEngine::cancel);
+}
 
+void SettingsView::followEngine() {
     connect(engine_, &config::SettingsEngine::dialectChanged, this, [this](const Dialect *d) {
         rebuild();
         if (d && engine_->canSend()) readAll(); // on connect: what the receiver is set to now
@@ -204,7 +173,6 @@ SettingsView::SettingsView(config::SettingsEngine *engine, QWidget *parent)
                 progress_->setFormat(QString("%1 %p%").arg(step));
             });
     connect(engine_, &config::SettingsEngine::finished, this, &SettingsView::showReport);
-    rebuild();
 }
 
 void SettingsView::showGroup(int index) {
@@ -327,14 +295,15 @@ void SettingsView::rebuild() {
     receiverLabels_.clear();
     rowLabels_.clear();
     edits_.clear();
-    diff_->clear();
+    details_->clearDifference();
     const Dialect *d = engine_->dialect();
     texts_ = d ? config::SchemaTexts(d->id) : config::SchemaTexts();
     if (!d || d->settings.empty()) {
-        help_->setPlainText(d ? tr("The %1 receiver has no settings this program knows.")
-                                            .arg(qs(d->displayName))
-                              : tr("Connect to a receiver: its settings appear here."));
-        tabs_->setCurrentWidget(help_);
+        details_->showText(d ? tr("The %1 receiver has no settings this program knows.")
+                                           .arg(qs(d->displayName))
+                             : tr("Connect to a receiver: its settings appear here."),
+                           true);
+        toolbar_->setDialect(d, texts_, {});
         updateGroupChooser();
         updateButtons();
         return;
@@ -383,28 +352,9 @@ void SettingsView::rebuild() {
         connect(c->convertButton(), &QPushButton::clicked, c,
                 [c, other] { c->setGeodetic(other->geodetic()); });
     }
-    // Presets of this dialect.
-    auto *menu = new QMenu(presets_);
-    for (const Preset &p : d->presets) {
-        QAction *a = menu->addAction(texts_(p.name));
-        a->setToolTip(texts_(p.description));
-        const QString name = qs(p.name);
-        connect(a, &QAction::triggered, this, [this, name] { loadPreset(name); });
-    }
-    delete presets_->menu();
-    presets_->setMenu(menu);
-    presets_->setEnabled(!menu->isEmpty());
-    // Restarts the dialect offers.
-    auto *resets = new QMenu(reset_);
-    for (config::Action a : engine_->availableActions()) {
-        if (a == config::Action::SaveToFlash || a == config::Action::RestoreDefaults) continue;
-        const ActionDef *def = findAction(*d, a);
-        resets->addAction(texts_(def->label), this, [this, a] { runAction(a); });
-    }
-    delete reset_->menu();
-    reset_->setMenu(resets);
+    toolbar_->setDialect(d, texts_, engine_->availableActions());
     showGroup(0);
-    help_->setPlainText(tr("%1: select a setting to see its help.").arg(qs(d->displayName)));
+    details_->showText(tr("%1: select a setting to see its help.").arg(qs(d->displayName)));
     applyFilter(filter_->text());
     updateGroupChooser();
     updateRowWrapping();
@@ -489,24 +439,7 @@ void SettingsView::onEdited(SettingEditor *e) {
 }
 
 void SettingsView::showHelp(const SettingDef &def) {
-    QString html = QString("<h3>%1</h3><p><code>%2</code></p><p>%3</p>")
-                           .arg(texts_(def.label).toHtmlEscaped(), qs(def.key).toHtmlEscaped(),
-                                texts_(def.help).toHtmlEscaped());
-    if (def.min || def.max)
-        html += "<p>" +
-                tr("Range: %1 to %2 %3")
-                        .arg(def.min ? QString::number(*def.min) : "-",
-                             def.max ? QString::number(*def.max) : "-", texts_(def.unit)) +
-                "</p>";
-    if (!def.defaultValue.empty())
-        html += "<p>" + tr("Default: %1").arg(qs(def.defaultValue).toHtmlEscaped()) + "</p>";
-    html += "<p>" + tr("Written with: %1").arg(texts_(def.write).toHtmlEscaped()) + "<br>" +
-            tr("Read back: %1")
-                    .arg(def.access == SettingAccess::WriteOnly
-                                 ? tr("cannot be read back (write-only)")
-                                 : texts_(def.readBack).toHtmlEscaped()) +
-            "</p>";
-    help_->setHtml(html);
+    details_->showHelp(def, texts_);
 }
 
 std::vector<KeyValue> SettingsView::edits() const {
@@ -555,7 +488,7 @@ void SettingsView::revert() {
         else
             e->setValue(qs(e->def().defaultValue));
     }
-    diff_->clear();
+    details_->clearDifference();
     status(tr("Edits reverted."));
 }
 
@@ -615,20 +548,18 @@ bool SettingsView::importProfile(const QString &path, QString *error) {
         if (error) *error = refused.join(QStringLiteral("; "));
         return false;
     }
-    diff_->clear();
+    details_->clearDifference();
     for (const auto &e : entries) {
-        auto *item = new QTreeWidgetItem(
-                diff_, {QString::fromStdString(e.key), QString::fromStdString(e.profileValue),
-                        e.receiverKnown ? QString::fromStdString(e.receiverValue)
-                                        : engine_->displayValue(e.key)});
-        item->setData(0, Qt::UserRole, QString::fromStdString(e.key));
+        details_->addDifference(QString::fromStdString(e.key),
+                                QString::fromStdString(e.profileValue),
+                                e.receiverKnown ? QString::fromStdString(e.receiverValue)
+                                                : engine_->displayValue(e.key));
         if (SettingEditor *ed = editor(e.key)) {
             ed->setValue(QString::fromStdString(e.profileValue));
             onEdited(ed);
         }
     }
-    diff_->header()->resizeSections(QHeaderView::ResizeToContents);
-    tabs_->setCurrentWidget(diff_);
+    details_->showDifference();
     status(entries.empty()
                    ? tr("The receiver already has every setting of %1.").arg(path)
                    : tr("%n setting(s) of the profile differ from the receiver (model %1, firmware "
@@ -652,29 +583,13 @@ bool SettingsView::exportProfile(const QString &path, QString *error) {
 }
 
 void SettingsView::showReport(const config::OperationReport &r) {
-    auto *top = new QTreeWidgetItem(outcomes_,
-                                    {r.title, r.ok() ? tr("done") : tr("problems"), r.error});
-    for (const auto &c : r.commands) {
-        auto *item = new QTreeWidgetItem(top, {c.sentence, link::outcomeName(c.outcome), c.detail});
-        for (const QString &reply : c.replies) new QTreeWidgetItem(item, {reply});
-    }
-    for (const auto &c : r.checks) {
-        const bool good = c.verdict == config::Verdict::Verified ||
-                          c.verdict == config::Verdict::WrittenUnverified;
-        auto *item = new QTreeWidgetItem(
-                top,
-                {QString::fromStdString(c.key + " = " + c.wanted), config::verdictName(c.verdict),
-                 c.reported.empty()
-                         ? QString()
-                         : tr("receiver reports %1").arg(QString::fromStdString(c.reported))});
-        if (!good) item->setForeground(1, style::cautionColor());
-        // A value that took is no longer an edit; one that did not stays highlighted.
-        if (good && editors_.count(c.key)) setEdited(c.key, false);
-    }
-    top->setExpanded(!r.ok());
-    outcomes_->scrollToItem(top);
-    outcomes_->header()->resizeSections(QHeaderView::ResizeToContents);
-    if (!r.ok()) tabs_->setCurrentWidget(outcomes_);
+    details_->addReport(r);
+    // A value that took is no longer an edit; one that did not stays highlighted.
+    for (const auto &c : r.checks)
+        if ((c.verdict == config::Verdict::Verified ||
+             c.verdict == config::Verdict::WrittenUnverified) &&
+            editors_.count(c.key))
+            setEdited(c.key, false);
     QString text;
     if (!r.error.isEmpty())
         text = tr("%1: %2").arg(r.title, r.error);
@@ -699,21 +614,13 @@ void SettingsView::showReport(const config::OperationReport &r) {
 
 void SettingsView::updateButtons() {
     const bool busy = engine_->isBusy();
-    const bool ready = engine_->dialect() && engine_->canSend() && !busy;
-    const auto actions = engine_->availableActions();
-    auto has = [&](config::Action a) {
-        return std::find(actions.begin(), actions.end(), a) != actions.end();
-    };
-    read_->setEnabled(ready);
-    apply_->setEnabled(ready && !edits_.empty());
-    revert_->setEnabled(!busy && !edits_.empty());
-    save_->setEnabled(ready && has(config::Action::SaveToFlash));
-    save_->setToolTip(has(config::Action::SaveToFlash)
-                              ? tr("Write the settings in force to the receiver's flash")
-                              : tr("This receiver has no command to save its settings"));
-    defaults_->setEnabled(ready && has(config::Action::RestoreDefaults));
-    reset_->setEnabled(ready && reset_->menu() && !reset_->menu()->isEmpty());
-    profiles_->setEnabled(engine_->dialect() != nullptr && !busy);
+    SettingsToolbar::State state;
+    state.busy = busy;
+    state.dialect = engine_->dialect() != nullptr;
+    state.ready = state.dialect && engine_->canSend() && !busy;
+    state.edited = !edits_.empty();
+    state.actions = engine_->availableActions();
+    toolbar_->setState(state);
     const QString refusal = engine_->sendRefusal();
     sendNote_->setText(
             refusal.isEmpty()

@@ -1,5 +1,7 @@
 #pragma once
-// SettingsView: the settings dock. Generated from the connected dialect's schema: one page per
+// SettingsView: the settings dock, its form pages and what ties them to the engine; the buttons
+// are SettingsToolbar, the pane below the form SettingsDetails. Generated from the connected
+// dialect's schema: one page per
 // group (a list beside the form when the dock is wide, a combo box above it when narrow), the
 // right editor per setting at its full size with the receiver's value beside it, labels beside
 // or above their editors as the width allows, help as tooltips and in a pane below the form. Edited
@@ -24,14 +26,13 @@ class QListWidget;
 class QProgressBar;
 class QPushButton;
 class QStackedWidget;
-class QTabWidget;
-class QTextBrowser;
-class QToolButton;
-class QTreeWidget;
+class QVBoxLayout;
 
 namespace gnss::ui {
 
 class SettingEditor;
+class SettingsDetails;
+class SettingsToolbar;
 
 class SettingsView : public QWidget {
     Q_OBJECT
@@ -62,6 +63,12 @@ protected:
     bool eventFilter(QObject *watched, QEvent *e) override;
 
 private:
+    // The constructor's parts: group choice, pages and details; status, progress and cancel;
+    // the toolbar's requests; the engine's news.
+    void createFormArea(QVBoxLayout *top);
+    void createFoot(QVBoxLayout *top);
+    void wireToolbar();
+    void followEngine();
     void rebuild();
     void addRow(QFormLayout *form, const SettingDef &def);
     void showGroup(int index);
@@ -85,15 +92,12 @@ private:
     QSplitter *split_;
     bool splitSized_ = false;
     QStackedWidget *pages_;
-    QTextBrowser *help_;
-    QTabWidget *tabs_;
-    QTreeWidget *outcomes_;
-    QTreeWidget *diff_;
+    SettingsToolbar *toolbar_;
+    SettingsDetails *details_;
     QLabel *status_;
     QLabel *sendNote_;
     QProgressBar *progress_;
-    QPushButton *read_, *apply_, *revert_, *save_, *defaults_, *cancel_;
-    QToolButton *reset_, *presets_, *profiles_;
+    QPushButton *cancel_;
     std::map<std::string, SettingEditor *> editors_;
     std::map<std::string, QLabel *> receiverLabels_, rowLabels_;
     std::map<std::string, QString> edits_;
