@@ -152,4 +152,62 @@ std::vector<std::string> readableKeys(const Dialect &d) {
     return keys;
 }
 
+namespace {
+
+// "$GPSGG,GGA ON*6A" -> "GPSGG,GGA ON"
+std::string bodyOf(std::string_view sentence) {
+    if (!sentence.empty() && (sentence.front() == '$' || sentence.front() == '!'))
+        sentence.remove_prefix(1);
+    if (const auto star = sentence.rfind('*'); star != std::string_view::npos)
+        sentence = sentence.substr(0, star);
+    while (!sentence.empty() && (sentence.back() == '\r' || sentence.back() == '\n'))
+        sentence.remove_suffix(1);
+    return std::string(sentence);
+}
+
+// The values a row can take, when they are few enough to list.
+std::vector<std::string> listedValues(const SettingDef &def) {
+    std::vector<std::string> out;
+    constexpr double kMaxRange = 64;
+    switch (def.type) {
+    case SettingType::Bool: out = {"1", "0"}; break;
+    case SettingType::Enum:
+        for (const auto &o : def.options) out.emplace_back(o.value);
+        break;
+    case SettingType::Integer:
+        if (def.min && def.max && *def.max - *def.min <= kMaxRange)
+            for (auto v = static_cast<long long>(*def.min); v <= static_cast<long long>(*def.max);
+                 ++v)
+                out.push_back(std::to_string(v));
+        break;
+    default: break;
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<std::string> commandBodies(const Dialect &d) {
+    std::vector<std::string> out;
+    auto add = [&out](std::string_view sentence) {
+        std::string body = bodyOf(sentence);
+        if (!body.empty() && std::find(out.begin(), out.end(), body) == out.end())
+            out.push_back(std::move(body));
+    };
+    if (!d.probeCommand.empty()) add(d.probeCommand);
+    if (const std::vector<std::string> keys = readableKeys(d); !keys.empty())
+        if (const EncodeResult q = encodeQueries(d, keys); q.ok())
+            for (const std::string &s : q.sentences) add(s);
+    for (const SettingDef &def : d.settings) {
+        if (def.access == SettingAccess::ReadOnly || !def.command || !def.command->write) continue;
+        for (const std::string &v : listedValues(def)) {
+            const KeyValue kv{std::string(def.key), v};
+            if (const EncodeResult w = encodeSettings(d, std::span(&kv, 1)); w.ok())
+                for (const std::string &s : w.sentences) add(s);
+        }
+    }
+    for (const ActionDef &a : d.actions) add(a.body);
+    return out;
+}
+
 } // namespace gnss

@@ -35,4 +35,12 @@ EncodeResult encodeQueries(const Dialect &d, std::span<const std::string> keys);
 // Every readable setting's key, in schema order.
 std::vector<std::string> readableKeys(const Dialect &d);
 
+// Every command the dialect's record can send, as sentence bodies without '$' and checksum
+// ("GPSGG,GGA ON"), each once, in first-seen order: its probe, the queries of its readable
+// settings, what its schema rows write for each value they can take (each option, on and off,
+// every integer of a range of at most 64), and its actions. Settings that take free values
+// (text, reals, wide ranges) give none. For a family whose console completion is its whole
+// command set (GeoStar's), the record's commandNames come from here.
+std::vector<std::string> commandBodies(const Dialect &d);
+
 } // namespace gnss

@@ -9,6 +9,12 @@
 #include "geostar_reply_rules.h"
 #include "geostar_schema.h"
 
+#include "core/sentence_builder.h"
+#include "core/settings_plan.h"
+
+#include <string>
+#include <vector>
+
 namespace gnss::geostar {
 namespace {
 
@@ -20,25 +26,12 @@ constexpr SentenceRule kRules[] = {
         {"GNS", AddressMatch::Type, decodeGns, "GNSS fix data (with GeoS-5 subsidiary sentences)"},
 };
 
-constexpr std::string_view kCommandNames[] = {
-        "GPSGG,RQUERY", "GPSGG,NQUERY", "GPSGG,CSTART", "GPSGG,WSTART", "GPSGG,HSTART",
-        "GPSGG,SAVEFL", "GPSGG,SWPROT", "GPSGG,BDR004", "GPSGG,BDR009", "GPSGG,BDR019",
-        "GPSGG,BDR038", "GPSGG,BDR057", "GPSGG,BDR115", "GPSGG,BDR230", "GPSGG,BDR460",
-        "GPSGG,BDR921", "GPSGG,STOP01", "GPSGG,STOP02", "GPSGG,GGA ON", "GPSGG,GGAOFF",
-        "GPSGG,GLL ON", "GPSGG,GLLOFF", "GPSGG,GSA ON", "GPSGG,GSAOFF", "GPSGG,GSV ON",
-        "GPSGG,GSVOFF", "GPSGG,RMC ON", "GPSGG,RMCOFF", "GPSGG,VTG ON", "GPSGG,VTGOFF",
-        "GPSGG,ZDA ON", "GPSGG,ZDAOFF", "GPSGG,DTM ON", "GPSGG,DTMOFF", "GPSGG,RLM ON",
-        "GPSGG,RLMOFF", "GPSGG,NMEAV2", "GPSGG,NMEAV4", "GPSGG,RATE01", "GPSGG,RATE02",
-        "GPSGG,RATE05", "GPSGG,RATE10", "GPSGG,PSM ON", "GPSGG,PSMOFF", "GPSGG,ELEV05",
-        "GPSGG,ELEV06", "GPSGG,ELEV07", "GPSGG,ELEV08", "GPSGG,ELEV09", "GPSGG,ELEV10",
-        "GPSGG,ELEV11", "GPSGG,ELEV12", "GPSGG,ELEV13", "GPSGG,ELEV14", "GPSGG,ELEV15",
-        "GPSGG,DATP90", "GPSGG,DATW84", "GPSGG,NVSGPS", "GPSGG,NVSGLN", "GPSGG,NVSMIX",
-};
-
-} // namespace
-
-const Dialect &dialect() {
-    static const Dialect d{
+// The record without its console names: they are every command it can send (commandBodies),
+// so they are made from it, never listed beside it.
+Dialect recordWithoutNames() {
+    // The probe's checksum is computed, not typed.
+    static const std::string probe = buildSentence("GPSGG,RQUERY");
+    return Dialect{
             .id = "geostar",
             .displayName = "GeoStar GeoS-5",
             .rules = kRules,
@@ -51,8 +44,7 @@ const Dialect &dialect() {
             .settings = settingsSchema(),
             .replyRules = replyRules(),
             .extractSettings = extractSettings,
-            .probeCommand = "$GPSGG,RQUERY*70",
-            .commandNames = kCommandNames,
+            .probeCommand = probe,
             .consoleExample = "$GPSGG,RQUERY",
             .defaultBaud = kDefaultBaud,
             .supportedBauds = kSupportedBauds,
@@ -61,6 +53,18 @@ const Dialect &dialect() {
             .linkSpeed = {"GPSGG,BDR"},
             .summary = "GeoStar GeoS-5 ($GPSGG,...): GPS/GLONASS/Galileo receiver",
     };
+}
+
+} // namespace
+
+const Dialect &dialect() {
+    static const Dialect d = [] {
+        Dialect r = recordWithoutNames();
+        static const std::vector<std::string> bodies = commandBodies(r);
+        static const std::vector<std::string_view> names(bodies.begin(), bodies.end());
+        r.commandNames = names;
+        return r;
+    }();
     return d;
 }
 

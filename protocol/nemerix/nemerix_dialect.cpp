@@ -1,5 +1,6 @@
 // The Nemerix VT002 dialect record.
 #include "nemerix_dialect.h"
+#include "core/sentence_builder.h"
 #include "nemerix_actions.h"
 #include "nemerix_state.h"
 
@@ -16,6 +17,8 @@ constexpr std::string_view kCommandNames[] = {
 } // namespace
 
 const Dialect &dialect() {
+    // The probe's checksum is computed, not typed.
+    static const std::string probe = buildSentence("PNMRX600");
     static const Dialect d{
             .id = "nemerix",
             .displayName = "Nemerix VT002",
@@ -27,7 +30,7 @@ const Dialect &dialect() {
             .replyRules = replyRules(),
             .extractSettings = extractSettings,
             // PNMRX600 with its real checksum (the spec prints *00).
-            .probeCommand = "$PNMRX600*6F",
+            .probeCommand = probe,
             .commandNames = kCommandNames,
             .consoleExample = "$PNMRX600",
             // "9600 baud rate, 8 bits data, 1 start, 1 stop, no parity" (2.1.8).

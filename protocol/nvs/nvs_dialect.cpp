@@ -1,5 +1,6 @@
 // The NVS NV08C-RTK dialect record: sentences, settings, commands and replies as one constant.
 #include "nvs_dialect.h"
+#include "core/sentence_builder.h"
 #include "nvs_actions.h"
 #include "nvs_state.h"
 
@@ -29,6 +30,8 @@ constexpr std::string_view kCommands[] = {
 } // namespace
 
 const Dialect &dialect() {
+    // The probe's checksum is computed, not typed.
+    static const std::string probe = buildSentence("PNVGVER");
     static const Dialect d{
             .id = "nvs",
             .displayName = "NVS NV08C-RTK",
@@ -41,7 +44,7 @@ const Dialect &dialect() {
             // that sets many parameters at once is longer. Bounded all the same.
             .maxSentenceLength = 512,
             .extractSettings = extractSettings,
-            .probeCommand = "$PNVGVER*4E",
+            .probeCommand = probe,
             .commandNames = kCommands,
             .consoleExample = "$PNVGVER",
             .defaultBaud = kDefaultBaud,

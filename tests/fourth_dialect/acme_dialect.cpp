@@ -246,6 +246,8 @@ bool updateState(const Message &m, ReceiverState &st) {
 } // namespace
 
 const Dialect &dialect() {
+    // The probe's checksum is computed, not typed.
+    static const std::string probe = buildSentence("PACMV");
     static const Dialect d{
             .id = "acme",
             .displayName = "ACME AX-1",
@@ -254,7 +256,7 @@ const Dialect &dialect() {
             .settings = kSchema,
             .replyRules = kReplyRules,
             .extractSettings = extractSettings,
-            .probeCommand = "$PACMV*49",
+            .probeCommand = probe,
             .commandNames = kCommandNames,
             .consoleExample = "$PACMV",
             .defaultBaud = 38400,
