@@ -57,6 +57,15 @@ int help(const gnss::DialectRegistry &registry, int argc, char **argv) {
 
 namespace gnss::cli {
 
+std::string dialectList(const DialectRegistry &registry, const sim::SimulatorTable &simulators) {
+    std::string out;
+    for (const Dialect *d : registry.dialects()) {
+        out += std::string(d->id) + (simulators.has(d->id) ? "\tsim\t" : "\t-\t");
+        out += std::string(d->displayName) + "\n";
+    }
+    return out;
+}
+
 int runCli(const DialectRegistry &registry, const sim::SimulatorTable &simulators,
            const char *programVersion, int argc, char **argv) {
     if (argc < 2) {
@@ -69,6 +78,10 @@ int runCli(const DialectRegistry &registry, const sim::SimulatorTable &simulator
         return 0;
     }
     if (first == "--version") return version(programVersion);
+    if (first == "--list-dialects") {
+        print(stdout, dialectList(registry, simulators));
+        return 0;
+    }
     if (first == "help") return help(registry, argc, argv);
     const CommandSpec *command = findCommand(first);
     if (!command) {

@@ -14,7 +14,10 @@ namespace {
 
 const Dialect *dialectArg(const CliContext &ctx, const std::vector<std::string> &pos) {
     if (pos.empty()) {
-        std::fprintf(stderr, "gnss-cli: name a dialect (nvs, geostar, nemerix, nmea)\n");
+        std::string known;
+        for (const Dialect *k : ctx.registry.dialects())
+            known += (known.empty() ? "" : ", ") + std::string(k->id);
+        std::fprintf(stderr, "gnss-cli: name a dialect (%s)\n", known.c_str());
         return nullptr;
     }
     const Dialect *d = ctx.registry.find(pos.front());

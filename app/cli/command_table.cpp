@@ -411,7 +411,7 @@ bool takesDialect(const CommandSpec &c) {
 std::string overviewHelp(const DialectRegistry &registry) {
     std::string out = "usage: gnss-cli COMMAND [OPTIONS] [ARGUMENTS]\n"
                       "       gnss-cli help [COMMAND]\n"
-                      "       gnss-cli --help | --version\n"
+                      "       gnss-cli --help | --version | --list-dialects\n"
                       "\nGNSS Workbench without the windows: logs decoded to JSON, live\n"
                       "receivers, settings.\n\ncommands:\n";
     for (const CommandSpec &c : kCommands) {
@@ -434,6 +434,8 @@ std::string overviewHelp(const DialectRegistry &registry) {
           "stream), messages to standard error.",
           "Exit status: 0 done, 1 failed (input unreadable, receiver refused or silent, value "
           "refused), 2 usage error, 130 interrupted.",
+          "--list-dialects prints one line per dialect for scripts and shell completion: its id, "
+          "'sim' when --sim plays it (else '-'), and its name, separated by tabs.",
           "See gnss-cli help COMMAND, gnss-cli(1) and docs/cli.md."})
         appendWrapped(out, paragraph, 0, 0);
     return out;

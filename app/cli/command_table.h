@@ -31,6 +31,10 @@ std::string overviewHelp(const DialectRegistry &registry);
 // `gnss-cli help COMMAND`, `gnss-cli COMMAND --help` (with the dialects where it takes one).
 std::string commandHelp(const CommandSpec &command, const DialectRegistry &registry);
 
+// `gnss-cli --list-dialects`: a line per dialect of `registry`, "ID\tsim\tNAME" when
+// `simulators` plays it, else "ID\t-\tNAME" (for shell completion and the manual pages).
+std::string dialectList(const DialectRegistry &registry, const sim::SimulatorTable &simulators);
+
 // gnss-cli itself, over `registry` and `simulators` (the built-in ones, or more: a program that
 // adds a family calls this with its own); --version prints `programVersion`. Returns the exit
 // status.

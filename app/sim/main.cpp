@@ -170,6 +170,15 @@ int main(int argc, char **argv) {
         std::printf("gnss-sim %s\n", GNSS_VERSION);
         return 0;
     }
+    if (args.listDialects) {
+        for (std::string_view id : simulators.dialects()) {
+            const Dialect *d = registry.find(id);
+            std::printf("%.*s\tsim\t%.*s\n", int(id.size()), id.data(),
+                        int(d ? d->displayName.size() : id.size()),
+                        d ? d->displayName.data() : id.data());
+        }
+        return 0;
+    }
     // Exactly one of the two: a receiver (dialect), or a base station's RTCM stream.
     std::unique_ptr<sim::Receiver> rx;
     std::unique_ptr<sim::RtcmBaseStation> base;

@@ -16,7 +16,7 @@ const char *const kUsageHead =
         "                [--seed N] [--speed X] [--baud B] [--faults SPEC] [--internal-base]\n"
         "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
         "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--baud B]\n"
-        "       gnss-sim --help | --version\n"
+        "       gnss-sim --help | --version | --list-dialects\n"
         "\n"
         "A simulated GNSS receiver that answers its dialect's commands.\n"
         "\n"
@@ -55,6 +55,8 @@ const char *const kUsageTail =
         "  --station ID   reference station id 0..4095 (default 1)\n"
         "  -h, --help     this help\n"
         "  --version      the program's version\n"
+        "  --list-dialects  a line per receiver for scripts and shell completion: its id, 'sim'\n"
+        "                 and its name, separated by tabs\n"
         "\n"
         "Options take their value as --opt VALUE or --opt=VALUE. Runs until killed or until\n"
         "standard input closes; SIGHUP power-cycles the receiver.\n"
@@ -136,6 +138,8 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
             out.help = flag();
         } else if (a == "--version") {
             out.version = flag();
+        } else if (a == "--list-dialects") {
+            out.listDialects = flag();
         } else if (a == "--dialect") {
             if (value(v)) out.dialect = std::string(v);
         } else if (a == "--pty") {
@@ -183,7 +187,7 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
                                     : "unexpected argument '" + std::string(a) + "'");
         }
     }
-    if (out.help || out.version) return true;
+    if (out.help || out.version || out.listDialects) return true;
     if (!error.empty()) return false;
     out.base.seed = out.options.seed;
     if (out.transport != Transport::Pty && !out.link.empty()) {

@@ -20,8 +20,9 @@ struct SimArgs {
     // --rtcm-base: an RTCM 3 base station's stream instead of a receiver (no --dialect).
     bool rtcmBase = false;
     sim::BaseStationConfig base;
-    bool help = false;    // --help, -h: print kUsage
-    bool version = false; // --version
+    bool help = false;         // --help, -h: print kUsage
+    bool version = false;      // --version
+    bool listDialects = false; // --list-dialects: "ID\tsim\tNAME" per simulated receiver
 };
 
 // The --help text; the receivers it offers are the table's, described by their records.

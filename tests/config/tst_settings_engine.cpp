@@ -3,6 +3,7 @@
 // reported, profiles carried back onto a changed receiver, save to flash across a power cycle,
 // restore defaults, cancel.
 #include "core/settings_plan.h"
+#include "dialect_rows.h"
 #include "engine_rig.h"
 
 #include "geostar/sim/geostar_sim_receiver.h"
@@ -134,10 +135,7 @@ bool unreportedByDefault(const std::string &key) {
 }
 
 void addDialectRows() {
-    QTest::addColumn<QString>("dialect");
-    QTest::newRow("nvs") << "nvs";
-    QTest::newRow("geostar") << "geostar";
-    QTest::newRow("nemerix") << "nemerix";
+    gnss::test::addSettingsDialectRows();
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // The settings dock, offscreen, on the in-process simulator: a page per schema group with the
 // right editor per type, receiver values and write-only marks, edits highlighted and applied,
 // BASEXYZ ⇄ BASEBLH conversion, presets, confirmed actions, a profile's difference.
+#include "dialect_rows.h"
 #include "engine_rig.h"
 
 #include "nvs/sim/nvs_sim_receiver.h"
@@ -52,12 +53,7 @@ OperationReport waitFor(SettingsEngine &engine, const std::function<void()> &sta
 class TstSettingsView : public QObject {
     Q_OBJECT
 private slots:
-    void everyDialectGetsAPagePerGroup_data() {
-        QTest::addColumn<QString>("dialect");
-        QTest::newRow("nvs") << "nvs";
-        QTest::newRow("geostar") << "geostar";
-        QTest::newRow("nemerix") << "nemerix";
-    }
+    void everyDialectGetsAPagePerGroup_data() { gnss::test::addSettingsDialectRows(); }
     void everyDialectGetsAPagePerGroup() {
         QFETCH(QString, dialect);
         EngineRig rig(dialect);

@@ -4,6 +4,7 @@
 // also after the recorder was killed with SIGKILL; config get reads gnss-sim --tcp.
 #include "bad_input_files.h"
 #include "cli_run.h"
+#include "dialect_rows.h"
 #include "sim_tcp_process.h"
 
 #include <QElapsedTimer>
@@ -15,6 +16,7 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+#include <algorithm>
 
 using gnss::link::test::SimProcess;
 using gnss::link::test::SimTcpProcess;
@@ -35,10 +37,25 @@ private slots:
     void probeFindsEachReceiverAtAnUnknownBaud_data() {
         QTest::addColumn<QString>("dialect");
         QTest::addColumn<int>("baud");
-        QTest::newRow("nvs") << "nvs" << 57600;
-        QTest::newRow("geostar") << "geostar" << 19200;
-        QTest::newRow("nemerix") << "nemerix" << 4800;
-        QTest::newRow("nmea") << "nmea" << 38400;
+        // Every simulated family, each at a rate it supports other than its own, the rates
+        // varied from row to row.
+        constexpr int kRates[] = {57600, 19200, 4800, 38400};
+        int row = 0;
+        for (std::string_view id : gnss::sim::builtinSimulators().dialects()) {
+            const gnss::Dialect *d = gnss::test::builtinRegistry().find(id);
+            QVERIFY(d);
+            int baud = 0;
+            for (int k = 0; k < 4 && !baud; ++k) {
+                const int r = kRates[(row + k) % 4];
+                const bool supported = d->supportedBauds.empty() ||
+                                       std::find(d->supportedBauds.begin(), d->supportedBauds.end(),
+                                                 r) != d->supportedBauds.end();
+                if (r != d->defaultBaud && supported) baud = r;
+            }
+            ++row;
+            const std::string name(id);
+            QTest::newRow(name.c_str()) << QString::fromStdString(name) << baud;
+        }
     }
     void probeFindsEachReceiverAtAnUnknownBaud() {
         QFETCH(QString, dialect);

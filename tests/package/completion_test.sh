@@ -50,7 +50,7 @@ listed_options() { sed -n 's/^  \(-[a-zA-Z], \)\{0,1\}\(--[a-z-]*\).*/\2/p' | so
 mapfile -t commands < <("$cli" --help | sed -n '/^commands:/,/^$/p' |
     sed -n 's/^  \([a-z][a-z]*\).*/\1/p' | sort -u)
 ((${#commands[@]} > 0)) || { echo "FAIL: no commands in gnss-cli --help"; exit 1; }
-expect "gnss-cli commands" "$(printf '%s\n' "${commands[@]}" help --help --version | sort)" \
+expect "gnss-cli commands" "$(printf '%s\n' "${commands[@]}" help --help --version --list-dialects | sort)" \
     "$(complete_words _gnss_cli "$cli" "")"
 
 for c in "${commands[@]}"; do
@@ -58,15 +58,20 @@ for c in "${commands[@]}"; do
         "$(complete_words _gnss_cli "$cli" "$c" --)"
 done
 
-dialects=$(printf '%s\n' auto nvs geostar nemerix nmea | sort)
+# The dialects are the program's registry's (gnss-cli --list-dialects), never a list kept here.
+known=$("$cli" --list-dialects | cut -f1 | sort)
+simulated=$("$cli" --list-dialects | awk -F'\t' '$2 == "sim" { print $1 }' | sort)
+[[ $(wc -l <<<"$known") -ge 2 && -n $simulated ]] ||
+    { echo "FAIL: gnss-cli --list-dialects lists no dialects"; exit 1; }
+dialects=$(printf '%s\n' auto $known | sort)
 expect "--dialect values" "$dialects" "$(complete_words _gnss_cli "$cli" decode --dialect "")"
-expect "--dialect=n (split at =)" "$(printf '%s\n' nemerix nmea nvs)" \
+expect "--dialect=n (split at =)" "$(grep '^n' <<<"$known")" \
     "$(complete_words _gnss_cli "$cli" monitor --dialect = n)"
-expect "--dialect=n (whole word)" "$(printf '%s\n' --dialect=nemerix --dialect=nmea --dialect=nvs)" \
+expect "--dialect=n (whole word)" "$(grep '^n' <<<"$known" | sed 's/^/--dialect=/')" \
     "$(complete_words _gnss_cli "$cli" stats --dialect=n)"
-expect "config --sim values" "$(printf '%s\n' geostar nemerix nvs)" \
+expect "config --sim values" "$simulated" \
     "$(complete_words _gnss_cli "$cli" config --sim "")"
-expect "schema DIALECT" "$(printf '%s\n' geostar nemerix nmea nvs)" \
+expect "schema DIALECT" "$known" \
     "$(complete_words _gnss_cli "$cli" schema "")"
 expect "help COMMAND" "$(printf '%s\n' "${commands[@]}")" "$(complete_words _gnss_cli "$cli" help "")"
 expect "config actions" "$(printf '%s\n' action apply diff export get set)" \
@@ -88,7 +93,7 @@ expect "--replay FILE" "$tmp/b.nmea" "$(complete_words _gnss_cli "$cli" monitor 
 
 expect "gnss-sim options" "$("$sim" --help | listed_options)" \
     "$(complete_words _gnss_sim "$sim" --)"
-expect "gnss-sim --dialect" "$(printf '%s\n' geostar nemerix nmea nvs)" \
+expect "gnss-sim --dialect" "$("$sim" --list-dialects | cut -f1 | sort)" \
     "$(complete_words _gnss_sim "$sim" --dialect "")"
 expect "gnss-sim --dialect=g (whole word)" "--dialect=geostar" \
     "$(complete_words _gnss_sim "$sim" --pty --dialect=g)"
