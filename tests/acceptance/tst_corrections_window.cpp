@@ -35,7 +35,7 @@ private slots:
         if (link::test::simPath().isEmpty()) QSKIP("gnss-sim is not built");
         SimProcess rover({"--dialect", "nvs", "--speed", "5", "--baud", "460800"});
         if (!rover.ok()) QSKIP(qPrintable("gnss-sim did not start: " + rover.error));
-        corrections_test::TestCaster caster;
+        corrections_test::TstCaster caster;
         QVERIFY(caster.listen());
         const QList<QByteArray> epochs = corrections_test::baseEpochs(60);
         int next = 0;

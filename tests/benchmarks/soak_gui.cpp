@@ -1,4 +1,4 @@
-// The GUI soak: the real MainWindow (as tests/acceptance/laptop_window.h builds it) with every
+// The GUI soak: the real MainWindow (as tests/support/laptop_window.h builds it) with every
 // dock floating and shown, the charts showing every series and the sky plot its tracks, on a
 // SoakTransport in place of the built-in simulator. A sampler on a 50 ms timer prints the table
 // at every --every simulated minutes and sends a command through the command queue every 10

@@ -39,7 +39,7 @@ void versionRows(const char *second = "NTRIP 2") {
     QTest::newRow(second) << "2";
 }
 
-QString casterArg(const TestCaster &c) {
+QString casterArg(const TstCaster &c) {
     return QStringLiteral("127.0.0.1:%1").arg(c.port());
 }
 
@@ -51,7 +51,7 @@ private slots:
     void theSourceTableIsPrintedWithDistances_data() { versionRows(); }
     void theSourceTableIsPrintedWithDistances() {
         QFETCH(QString, version);
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         const Run r = cli({"ntrip", "--caster", casterArg(caster), "--sourcetable",
                            "--ntrip-version", version, "--gga", "55.7512,37.6184,150"});
@@ -73,7 +73,7 @@ private slots:
     void aMountpointsRtcmIsPrintedAndWrittenByteExact_data() { versionRows("NTRIP 2, chunked"); }
     void aMountpointsRtcmIsPrintedAndWrittenByteExact() {
         QFETCH(QString, version);
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         QTemporaryDir dir;
         const QString file = dir.filePath("got.rtcm");
@@ -109,7 +109,7 @@ private slots:
     }
 
     void theNearestMountpointIsChosen() {
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         caster.user = "";
         int sent = 0;
@@ -146,7 +146,7 @@ private slots:
         QFETCH(QStringList, args);
         QFETCH(QString, password);
         QFETCH(QString, words);
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         const Run r = cli(QStringList{"ntrip", "--caster", casterArg(caster)} + args, {}, password);
         QCOMPARE(r.exitCode, 1);
@@ -169,7 +169,7 @@ private slots:
         gnss::link::test::SimProcess rover(
                 {"--dialect", "nvs", "--speed", "5", "--baud", "460800"});
         if (!rover.ok()) QSKIP("gnss-sim is not built");
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         const QList<QByteArray> epochs = baseEpochs(200);
         int next = 0;

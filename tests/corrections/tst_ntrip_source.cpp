@@ -18,7 +18,7 @@ using State = CorrectionSource::State;
 
 namespace {
 
-NtripSettings settingsFor(const TestCaster &caster, int version) {
+NtripSettings settingsFor(const TstCaster &caster, int version) {
     NtripSettings s;
     s.host = QStringLiteral("127.0.0.1");
     s.port = caster.port();
@@ -74,7 +74,7 @@ private slots:
         QFETCH(bool, v1Only);
         QFETCH(QString, requestLine);
         QFETCH(QString, status);
-        TestCaster caster;
+        TstCaster caster;
         caster.v1Only = v1Only;
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, version));
@@ -112,7 +112,7 @@ private slots:
     void wrongCredentialsAreSaidInWords() {
         QFETCH(int, version);
         QFETCH(QString, revision);
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         NtripSettings s = settingsFor(caster, version);
         s.password = QStringLiteral("wrong-pw-123");
@@ -141,7 +141,7 @@ private slots:
     void anUnknownMountpointIsSaidInWords() {
         QFETCH(int, version);
         QFETCH(QString, revision);
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         NtripSettings s = settingsFor(caster, version);
         s.mountpoint = QStringLiteral("NOSUCH");
@@ -157,7 +157,7 @@ private slots:
     }
 
     void aDroppedStreamIsRetriedWithGrowingWaitsUntilTheCasterIsBack() {
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         const quint16 port = caster.port();
         NtripSource source(settingsFor(caster, 2));
@@ -187,7 +187,7 @@ private slots:
     }
 
     void aMinuteOfDataMakesTheNextWaitShortAgain() {
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, 1));
         quickRetries(source);
@@ -213,7 +213,7 @@ private slots:
     }
 
     void aStalledStreamIsDroppedAndRetried() {
-        TestCaster caster;
+        TstCaster caster;
         caster.silent = true;
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, 2));
@@ -267,7 +267,7 @@ private slots:
         QFETCH(int, policy);
         QFETCH(bool, tableSaysWanted);
         QFETCH(bool, sent);
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         NtripSettings s = settingsFor(caster, version);
         s.gga = NtripSettings::Gga(policy);
@@ -290,7 +290,7 @@ private slots:
     }
 
     void aPositionArrivingLateIsSentAtOnce() {
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         NtripSettings s = settingsFor(caster, 2);
         s.ggaIntervalMs = 60000;
@@ -307,7 +307,7 @@ private slots:
     }
 
     void malformedChunksAreReportedAndRetried() {
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, 2));
         quickRetries(source);
@@ -325,7 +325,7 @@ private slots:
     }
 
     void corruptFramesAreCountedByTheMonitor() {
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, 2));
         SourceWatch watch(source);
@@ -352,7 +352,7 @@ private slots:
     }
     void theSourceTableIsFetchedAndParsed() {
         QFETCH(int, version);
-        TestCaster caster;
+        TstCaster caster;
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, version));
         QSignalSpy got(&source, &NtripSource::sourceTableReceived);
@@ -369,7 +369,7 @@ private slots:
     }
 
     void aSourceTableFromNoCasterIsRefusedInWords() {
-        TestCaster caster;
+        TstCaster caster;
         caster.rawReply = "HTTP/1.1 200 OK\r\nContent-Type: text/html\r\n\r\n<html></html>";
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, 2));
@@ -407,7 +407,7 @@ private slots:
         QFETCH(QByteArray, reply);
         QFETCH(QString, words);
         QFETCH(State, state);
-        TestCaster caster;
+        TstCaster caster;
         caster.rawReply = reply;
         QVERIFY(caster.listen());
         NtripSource source(settingsFor(caster, 2));

@@ -9,7 +9,7 @@
 //   OUT_DIR/fuzz_profile_import/     a profile per dialect (schema defaults, write-only list),
 //                                    as profileToJson writes it
 //   OUT_DIR/fuzz_ntrip_response/     caster replies in the NTRIP 1 and 2 forms of tests/ntrip
-//                                    and tests/corrections/test_caster.h (ICY, SOURCETABLE,
+//                                    and tests/support/test_caster.h (ICY, SOURCETABLE,
 //                                    HTTP with chunked gnss/data and tables, 401, 404, 503,
 //                                    ERROR lines, not a caster), RTCM from the encoder, chunked
 //                                    bodies, source tables
@@ -210,7 +210,7 @@ void ntripSeeds() {
     rtcm += encodeMsm(msm(System::Gps, 4));
     rtcm += encodeMsm(msm(System::Glonass, 4));
 
-    // The tables of tests/ntrip (source_table_examples.h) and tests/corrections/test_caster.h.
+    // The tables of tests/support/source_table_examples.h and tests/support/test_caster.h.
     const std::string table = ntrip_test::kSourceTable;
     const std::string casterTable =
             "STR;MOUNT;Test base;RTCM 3.2;1005(1),1074(1),1084(1);1;GPS+GLO;TEST;RUS;55.75;37.62;1;"

@@ -46,7 +46,7 @@ QString valueOf(const std::vector<KeyValue> &kv, const char *key) {
 
 } // namespace
 
-class TestGeostarCommands : public QObject {
+class TstGeostarCommands : public QObject {
     Q_OBJECT
 private slots:
     void everyCommandReproducesTheSpecChecksum_data();
@@ -63,7 +63,7 @@ private slots:
     void dialectRecord();
 };
 
-void TestGeostarCommands::everyCommandReproducesTheSpecChecksum_data() {
+void TstGeostarCommands::everyCommandReproducesTheSpecChecksum_data() {
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("expected");
     const auto examples = test::loadSpecExamples();
@@ -84,7 +84,7 @@ void TestGeostarCommands::everyCommandReproducesTheSpecChecksum_data() {
     QCOMPARE(commands().size(), std::size_t(60)); // the 24 commands of section 4, every value
 }
 
-void TestGeostarCommands::everyCommandReproducesTheSpecChecksum() {
+void TstGeostarCommands::everyCommandReproducesTheSpecChecksum() {
     QFETCH(QString, text);
     QFETCH(QString, expected);
     const CommandDef *c = findCommand(text.toStdString());
@@ -98,7 +98,7 @@ void TestGeostarCommands::everyCommandReproducesTheSpecChecksum() {
     QCOMPARE(d.data["command"].toString(), text);
 }
 
-void TestGeostarCommands::typedEncodersAreByteExact_data() {
+void TstGeostarCommands::typedEncodersAreByteExact_data() {
     QTest::addColumn<std::function<EncodeResult()>>("encode");
     QTest::addColumn<QString>("expected");
     using F = std::function<EncodeResult()>;
@@ -157,7 +157,7 @@ void TestGeostarCommands::typedEncodersAreByteExact_data() {
                                  << "$GPSGG,NVSMIX*7F";
 }
 
-void TestGeostarCommands::typedEncodersAreByteExact() {
+void TstGeostarCommands::typedEncodersAreByteExact() {
     QFETCH(std::function<EncodeResult()>, encode);
     QFETCH(QString, expected);
     const EncodeResult r = encode();
@@ -165,7 +165,7 @@ void TestGeostarCommands::typedEncodersAreByteExact() {
     QCOMPARE(sent(r), expected);
 }
 
-void TestGeostarCommands::valuesTheReceiverRejectsAreRefused_data() {
+void TstGeostarCommands::valuesTheReceiverRejectsAreRefused_data() {
     test::addRefusedSettingColumns();
     QTest::newRow("ELEV04") << "nav.ELEV"
                             << "4"
@@ -199,12 +199,12 @@ void TestGeostarCommands::valuesTheReceiverRejectsAreRefused_data() {
                              << "unknown setting 'output.GST'";
 }
 
-void TestGeostarCommands::valuesTheReceiverRejectsAreRefused() {
+void TstGeostarCommands::valuesTheReceiverRejectsAreRefused() {
     // Together with a valid setting: nothing at all is built.
     test::checkRefusedSetting([](const KeyValue &kv) { return settings({{"GGA", "1"}, kv}); });
 }
 
-void TestGeostarCommands::settingsComeWithTheirConfirmingQueryAndPortChangesLast() {
+void TstGeostarCommands::settingsComeWithTheirConfirmingQueryAndPortChangesLast() {
     const EncodeResult r = settings({{"BDR", "115200"},
                                      {"GGA", "on"},
                                      {"ELEV", "05"},
@@ -223,7 +223,7 @@ void TestGeostarCommands::settingsComeWithTheirConfirmingQueryAndPortChangesLast
              QString("$GPSGG,RLMOFF*74\n$GPSGG,NQUERY*6C\n$GPSGG,SWPROT*75"));
 }
 
-void TestGeostarCommands::readBackQueriesAndWriteOnlySettings() {
+void TstGeostarCommands::readBackQueriesAndWriteOnlySettings() {
     QCOMPARE(sent(queries({"GGA", "RATE", "NMEAV"})), QString("$GPSGG,NQUERY*6C"));
     QCOMPARE(sent(queries({"DAT", "NVS", "PSM", "GSV"})),
              QString("$GPSGG,RQUERY*70\n$GPSGG,NQUERY*6C"));
@@ -237,7 +237,7 @@ void TestGeostarCommands::readBackQueriesAndWriteOnlySettings() {
     }
 }
 
-void TestGeostarCommands::rqueryAndNqueryRepliesGiveSettingValues() {
+void TstGeostarCommands::rqueryAndNqueryRepliesGiveSettingValues() {
     const auto n = extracted("$GPSGG,NQUERY,1,3,2,R,0,R,1,0,0,0,1,1,0*71");
     QCOMPARE(valueOf(n, "output.RATE"), QString("1"));
     QCOMPARE(valueOf(n, "output.NMEAV"), QString("2"));
@@ -264,7 +264,7 @@ void TestGeostarCommands::rqueryAndNqueryRepliesGiveSettingValues() {
     QVERIFY(extracted("$GPSGG,CSTART*6B").empty());
 }
 
-void TestGeostarCommands::everySchemaOptionHasItsCommand() {
+void TstGeostarCommands::everySchemaOptionHasItsCommand() {
     for (const SettingDef &d : dialect().settings) {
         QVERIFY2(!d.readBack.empty() && !d.write.empty() && !d.help.empty(), d.key.data());
         if (d.type == SettingType::Bool) {
@@ -283,7 +283,7 @@ void TestGeostarCommands::everySchemaOptionHasItsCommand() {
                  c.text.data());
 }
 
-void TestGeostarCommands::replyRulesCoverEveryCommand() {
+void TstGeostarCommands::replyRulesCoverEveryCommand() {
     const auto rules = dialect().replyRules;
     QCOMPARE(rules.size(), commands().size());
     Sentence cmd, reply, other;
@@ -318,7 +318,7 @@ void TestGeostarCommands::replyRulesCoverEveryCommand() {
     QVERIFY(effectOf("RATE10") == CommandEffect::ChangesOutput);
 }
 
-void TestGeostarCommands::dialectRecord() {
+void TstGeostarCommands::dialectRecord() {
     const Dialect &d = dialect();
     QCOMPARE(d.id, std::string_view("geostar"));
     QCOMPARE(d.displayName, std::string_view("GeoStar GeoS-5"));
@@ -333,5 +333,5 @@ void TestGeostarCommands::dialectRecord() {
     QVERIFY(makeBuiltinRegistry().find("geostar") == &d);
 }
 
-QTEST_APPLESS_MAIN(TestGeostarCommands)
+QTEST_APPLESS_MAIN(TstGeostarCommands)
 #include "tst_geostar_commands.moc"

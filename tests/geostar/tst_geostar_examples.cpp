@@ -98,7 +98,7 @@ void checkSpecValues(const QString &s, const QJsonObject &d) {
 
 } // namespace
 
-class TestGeostarExamples : public QObject {
+class TstGeostarExamples : public QObject {
     Q_OBJECT
 private slots:
     void everySpecExampleDecodes_data();
@@ -109,7 +109,7 @@ private slots:
     void unknownGpsggCommandIsAnErrorNotACrash();
 };
 
-void TestGeostarExamples::everySpecExampleDecodes_data() {
+void TstGeostarExamples::everySpecExampleDecodes_data() {
     QTest::addColumn<QString>("sentence");
     QTest::addColumn<QString>("verdict");
     const auto examples = gnss::test::loadSpecExamples();
@@ -126,7 +126,7 @@ void TestGeostarExamples::everySpecExampleDecodes_data() {
     QCOMPARE(bad, 24);
 }
 
-void TestGeostarExamples::everySpecExampleDecodes() {
+void TstGeostarExamples::everySpecExampleDecodes() {
     QFETCH(QString, sentence);
     QFETCH(QString, verdict);
     const auto strict = decodeOne(sentence, geostar(false));
@@ -145,7 +145,7 @@ void TestGeostarExamples::everySpecExampleDecodes() {
     checkSpecValues(sentence, strict.data);
 }
 
-void TestGeostarExamples::rqueryExampleKeepsNameFirmwareAndDate() {
+void TstGeostarExamples::rqueryExampleKeepsNameFirmwareAndDate() {
     const auto d = decodeOne("$GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C",
                              geostar(false));
     QVERIFY2(d.ok, qPrintable(d.error));
@@ -158,7 +158,7 @@ void TestGeostarExamples::rqueryExampleKeepsNameFirmwareAndDate() {
     QCOMPARE(d.data["config2"].toObject()["raw"].toString(), QString("F7FF8064"));
 }
 
-void TestGeostarExamples::nqueryExampleShowsTheUnknownPositionAsSuch() {
+void TstGeostarExamples::nqueryExampleShowsTheUnknownPositionAsSuch() {
     // "Port 1, 1 Hz, NMEA v2.x, outputs GGA, GSA, GSV, ZDA, DTM" (3.12, order from
     // docs/spec-notes.md).
     const auto d = decodeOne("$GPSGG,NQUERY,1,3,2,R,0,R,1,0,0,0,1,1,0*71", geostar(false));
@@ -178,7 +178,7 @@ void TestGeostarExamples::nqueryExampleShowsTheUnknownPositionAsSuch() {
     QCOMPARE(m[0].toObject()["output"].toString(), QString("at the output rate"));
 }
 
-void TestGeostarExamples::subsidiaryGnsCarriesPerSystemCountAgeAndStation() {
+void TstGeostarExamples::subsidiaryGnsCarriesPerSystemCountAgeAndStation() {
     const auto d = decodeOne("$GLGNS,080606.00,,,,,09,,,,,001.0,0000,*7D", geostar(false));
     QVERIFY2(d.ok, qPrintable(d.error));
     QCOMPARE(d.data["sats_used"].toInt(), 9);
@@ -192,7 +192,7 @@ void TestGeostarExamples::subsidiaryGnsCarriesPerSystemCountAgeAndStation() {
     QVERIFY(rtk.data["geoid_sep"].isNull());
 }
 
-void TestGeostarExamples::unknownGpsggCommandIsAnErrorNotACrash() {
+void TstGeostarExamples::unknownGpsggCommandIsAnErrorNotACrash() {
     for (const char *line :
          {"$GPSGG,FOOBAR*00", "$GPSGG*00", "$GPSGG,RQUERY,GEOS-5*00",
           "$GPSGG,RQUERY,GEOS-5,V.5.102,100518,XYZ,802DC097,F7FF8064*00", "$GPSGG,NQUERY,1,9,2*00",
@@ -203,5 +203,5 @@ void TestGeostarExamples::unknownGpsggCommandIsAnErrorNotACrash() {
     }
 }
 
-QTEST_APPLESS_MAIN(TestGeostarExamples)
+QTEST_APPLESS_MAIN(TstGeostarExamples)
 #include "tst_geostar_examples.moc"

@@ -11,7 +11,7 @@ using namespace gnss;
 Q_DECLARE_METATYPE(gnss::Constellation)
 Q_DECLARE_METATYPE(gnss::FixType)
 
-class TestGeostarNumbering : public QObject {
+class TstGeostarNumbering : public QObject {
     Q_OBJECT
 private slots:
     void satelliteIdsMapToSystemAndPrn_data();
@@ -22,7 +22,7 @@ private slots:
     void ggaQualityMeansWhatTable2Says();
 };
 
-void TestGeostarNumbering::satelliteIdsMapToSystemAndPrn_data() {
+void TstGeostarNumbering::satelliteIdsMapToSystemAndPrn_data() {
     QTest::addColumn<Constellation>("context"); // from the talker or the GSA system id
     QTest::addColumn<int>("id");
     QTest::addColumn<Constellation>("system");
@@ -52,7 +52,7 @@ void TestGeostarNumbering::satelliteIdsMapToSystemAndPrn_data() {
     QTest::newRow("v4 GL 70") << C::Glonass << 70 << C::Glonass << 6;
 }
 
-void TestGeostarNumbering::satelliteIdsMapToSystemAndPrn() {
+void TstGeostarNumbering::satelliteIdsMapToSystemAndPrn() {
     QFETCH(Constellation, context);
     QFETCH(int, id);
     QFETCH(Constellation, system);
@@ -62,7 +62,7 @@ void TestGeostarNumbering::satelliteIdsMapToSystemAndPrn() {
     QCOMPARE(s.prn, prn);
 }
 
-void TestGeostarNumbering::threeDigitIdsInGsvAndGsa() {
+void TstGeostarNumbering::threeDigitIdsInGsvAndGsa() {
     DecoderOptions o;
     o.dialect = "geostar";
     const auto gsv = test::decodeOne(
@@ -80,7 +80,7 @@ void TestGeostarNumbering::threeDigitIdsInGsvAndGsa() {
     QCOMPARE(gsa.data["satellites"].toArray()[0].toObject()["system"].toString(), QString("GPS"));
 }
 
-void TestGeostarNumbering::v410GsaSystemIdSelectsTheConstellation() {
+void TstGeostarNumbering::v410GsaSystemIdSelectsTheConstellation() {
     DecoderOptions o;
     o.dialect = "geostar";
     // System id 15 = QZSS (GeoStar), ids 1-5.
@@ -98,7 +98,7 @@ void TestGeostarNumbering::v410GsaSystemIdSelectsTheConstellation() {
     QCOMPARE(gal.data["satellites"].toArray()[2].toObject()["prn"].toInt(), 30);
 }
 
-void TestGeostarNumbering::ggaQualityMeansWhatTable2Says_data() {
+void TstGeostarNumbering::ggaQualityMeansWhatTable2Says_data() {
     QTest::addColumn<int>("quality");
     QTest::addColumn<FixType>("fix");
     QTest::newRow("0 none") << 0 << FixType::None;
@@ -111,11 +111,11 @@ void TestGeostarNumbering::ggaQualityMeansWhatTable2Says_data() {
     QTest::newRow("9 GeoPath") << 9 << FixType::Fix3D;
 }
 
-void TestGeostarNumbering::ggaQualityMeansWhatTable2Says() {
+void TstGeostarNumbering::ggaQualityMeansWhatTable2Says() {
     QFETCH(int, quality);
     QFETCH(FixType, fix);
     QCOMPARE(toString(geostar::dialect().ggaQuality(quality)), toString(fix));
 }
 
-QTEST_APPLESS_MAIN(TestGeostarNumbering)
+QTEST_APPLESS_MAIN(TstGeostarNumbering)
 #include "tst_geostar_numbering.moc"

@@ -49,7 +49,7 @@ std::uint32_t reservedMask(const QString &word) {
 
 } // namespace
 
-class TestGeostarStatusWords : public QObject {
+class TstGeostarStatusWords : public QObject {
     Q_OBJECT
 private slots:
     void rqueryExampleDecodesToTheTableBits_data();
@@ -68,7 +68,7 @@ private slots:
 };
 
 // Status 00083037, config 1 802DC097, config 2 F7FF8064, worked out from tables 7-9 by hand.
-void TestGeostarStatusWords::rqueryExampleDecodesToTheTableBits_data() {
+void TstGeostarStatusWords::rqueryExampleDecodesToTheTableBits_data() {
     QTest::addColumn<QString>("word");
     QTest::addColumn<QString>("key");
     QTest::addColumn<QVariant>("expected");
@@ -132,7 +132,7 @@ void TestGeostarStatusWords::rqueryExampleDecodesToTheTableBits_data() {
     row("config2", "reserved_bits", "00000060");
 }
 
-void TestGeostarStatusWords::rqueryExampleDecodesToTheTableBits() {
+void TstGeostarStatusWords::rqueryExampleDecodesToTheTableBits() {
     QFETCH(QString, word);
     QFETCH(QString, key);
     QFETCH(QVariant, expected);
@@ -142,7 +142,7 @@ void TestGeostarStatusWords::rqueryExampleDecodesToTheTableBits() {
 }
 
 // One row per single-bit flag of tables 7-9: only that bit set → only that field true.
-void TestGeostarStatusWords::eachSingleBitSetsItsNamedField_data() {
+void TstGeostarStatusWords::eachSingleBitSetsItsNamedField_data() {
     QTest::addColumn<QString>("word");
     QTest::addColumn<int>("bit");
     QTest::addColumn<QString>("key");
@@ -224,7 +224,7 @@ void TestGeostarStatusWords::eachSingleBitSetsItsNamedField_data() {
     row("config2", 0, "reserved_bits", "00000001", "00000000");
 }
 
-void TestGeostarStatusWords::eachSingleBitSetsItsNamedField() {
+void TstGeostarStatusWords::eachSingleBitSetsItsNamedField() {
     QFETCH(QString, word);
     QFETCH(int, bit);
     QFETCH(QString, key);
@@ -237,7 +237,7 @@ void TestGeostarStatusWords::eachSingleBitSetsItsNamedField() {
     QCOMPARE(wordJson(w.constData(), 1u << bit)["raw"].toString().toUInt(nullptr, 16), 1u << bit);
 }
 
-void TestGeostarStatusWords::receiverTypesOfTable9() {
+void TstGeostarStatusWords::receiverTypesOfTable9() {
     QCOMPARE(ConfigRegister2::decode(0xF7FF0000).receiverType(), std::string_view("GeoS-5M"));
     QCOMPARE(ConfigRegister2::decode(0xF7FE0000).receiverType(), std::string_view("GeoS-5MR"));
     QCOMPARE(ConfigRegister2::decode(0xF7FD0000).receiverType(), std::string_view("GeoS-5MH"));
@@ -247,7 +247,7 @@ void TestGeostarStatusWords::receiverTypesOfTable9() {
     QCOMPARE(wordJson("config2", 0x12340000)["receiver_type_code"].toString(), QString("1234"));
 }
 
-void TestGeostarStatusWords::multiBitFieldsDecodeEveryValue() {
+void TstGeostarStatusWords::multiBitFieldsDecodeEveryValue() {
     const char *antenna[] = {"not_measured", "overloaded", "disconnected", "ok"};
     for (std::uint32_t v = 0; v < 4; ++v)
         QCOMPARE(wordJson("status", v << 6)["antenna"].toString(), QString(antenna[v]));
@@ -268,7 +268,7 @@ void TestGeostarStatusWords::multiBitFieldsDecodeEveryValue() {
 }
 
 // The spec example's words, every single bit of each table (reserved ones too), none and all.
-void TestGeostarStatusWords::encodeIsTheInverseOfDecode_data() {
+void TstGeostarStatusWords::encodeIsTheInverseOfDecode_data() {
     QTest::addColumn<QString>("word");
     QTest::addColumn<uint>("value");
     QTest::addRow("status example") << "status" << 0x00083037u;
@@ -284,7 +284,7 @@ void TestGeostarStatusWords::encodeIsTheInverseOfDecode_data() {
     }
 }
 
-void TestGeostarStatusWords::encodeIsTheInverseOfDecode() {
+void TstGeostarStatusWords::encodeIsTheInverseOfDecode() {
     QFETCH(QString, word);
     QFETCH(uint, value);
     const EncodedWord e = reencoded(word, value, true);
@@ -292,11 +292,11 @@ void TestGeostarStatusWords::encodeIsTheInverseOfDecode() {
     QCOMPARE(uint(e.word), value);
 }
 
-void TestGeostarStatusWords::theFieldsAloneGiveEveryBitButTheReservedOnes_data() {
+void TstGeostarStatusWords::theFieldsAloneGiveEveryBitButTheReservedOnes_data() {
     encodeIsTheInverseOfDecode_data();
 }
 
-void TestGeostarStatusWords::theFieldsAloneGiveEveryBitButTheReservedOnes() {
+void TstGeostarStatusWords::theFieldsAloneGiveEveryBitButTheReservedOnes() {
     QFETCH(QString, word);
     QFETCH(uint, value);
     const EncodedWord e = reencoded(word, value, false);
@@ -304,7 +304,7 @@ void TestGeostarStatusWords::theFieldsAloneGiveEveryBitButTheReservedOnes() {
     QCOMPARE(uint(e.word), value & ~reservedMask(word));
 }
 
-void TestGeostarStatusWords::everyValueOfAMultiBitFieldIsEncoded() {
+void TstGeostarStatusWords::everyValueOfAMultiBitFieldIsEncoded() {
     for (int v = 0; v < 4; ++v) {
         StatusWord s;
         s.antenna = static_cast<AntennaState>(v);
@@ -331,7 +331,7 @@ void TestGeostarStatusWords::everyValueOfAMultiBitFieldIsEncoded() {
 }
 
 // A code that does not fit its bits would spill into the next field: refused, naming the field.
-void TestGeostarStatusWords::aFieldWiderThanItsBitsIsRefused_data() {
+void TstGeostarStatusWords::aFieldWiderThanItsBitsIsRefused_data() {
     QTest::addColumn<QString>("word");
     QTest::addColumn<QString>("field");
     QTest::addColumn<int>("value");
@@ -348,7 +348,7 @@ void TestGeostarStatusWords::aFieldWiderThanItsBitsIsRefused_data() {
     row("datum 4", "config2", "datum", 4, "0..3");
 }
 
-void TestGeostarStatusWords::aFieldWiderThanItsBitsIsRefused() {
+void TstGeostarStatusWords::aFieldWiderThanItsBitsIsRefused() {
     QFETCH(QString, word);
     QFETCH(QString, field);
     QFETCH(int, value);
@@ -378,5 +378,5 @@ void TestGeostarStatusWords::aFieldWiderThanItsBitsIsRefused() {
     QVERIFY(e.refusal.form); // a translatable template
 }
 
-QTEST_APPLESS_MAIN(TestGeostarStatusWords)
+QTEST_APPLESS_MAIN(TstGeostarStatusWords)
 #include "tst_geostar_status_words.moc"

@@ -43,7 +43,7 @@ const Dialect kCounting{.id = "counting", .displayName = "Counting", .rules = kR
 
 } // namespace
 
-class TestOneDecoder : public QObject {
+class TstOneDecoder : public QObject {
     Q_OBJECT
 private slots:
     void eachSentenceIsDecodedOnceWhateverListens() {
@@ -108,5 +108,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestOneDecoder)
+QTEST_GUILESS_MAIN(TstOneDecoder)
 #include "tst_one_decoder.moc"

@@ -89,7 +89,7 @@ std::string manyLines(std::size_t n) {
 
 } // namespace
 
-class TestLineTable : public QObject {
+class TstLineTable : public QObject {
     Q_OBJECT
 private slots:
     void linesAgreeWithAPlainSplit_data() {
@@ -242,5 +242,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLineTable)
+QTEST_APPLESS_MAIN(TstLineTable)
 #include "tst_line_table.moc"

@@ -16,7 +16,7 @@ std::optional<TimeSpec> spec(const char *text) {
 }
 } // namespace
 
-class TestLogRange : public QObject {
+class TstLogRange : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     DialectRegistry registry_ = makeBuiltinRegistry();
@@ -159,5 +159,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLogRange)
+QTEST_GUILESS_MAIN(TstLogRange)
 #include "tst_log_range.moc"

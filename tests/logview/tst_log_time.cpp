@@ -7,7 +7,7 @@
 
 using namespace gnss::logview;
 
-class TestLogTime : public QObject {
+class TstLogTime : public QObject {
     Q_OBJECT
 private slots:
     void accepted_data() {
@@ -55,5 +55,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLogTime)
+QTEST_APPLESS_MAIN(TstLogTime)
 #include "tst_log_time.moc"

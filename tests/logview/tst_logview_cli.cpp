@@ -18,7 +18,7 @@
 
 using namespace gnss::test;
 
-class TestLogviewCli : public QObject {
+class TstLogviewCli : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     QString log_;
@@ -224,5 +224,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLogviewCli)
+QTEST_GUILESS_MAIN(TstLogviewCli)
 #include "tst_logview_cli.moc"

@@ -12,7 +12,7 @@
 using namespace gnss;
 using namespace gnss::logview;
 
-class TestLogviewEvents : public QObject {
+class TstLogviewEvents : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     DialectRegistry registry_ = makeBuiltinRegistry();
@@ -165,5 +165,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLogviewEvents)
+QTEST_APPLESS_MAIN(TstLogviewEvents)
 #include "tst_logview_events.moc"

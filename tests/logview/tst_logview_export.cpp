@@ -50,7 +50,7 @@ std::optional<std::string> exported(LogView &view, ExportFormat format, int firs
 
 } // namespace
 
-class TestLogviewExport : public QObject {
+class TstLogviewExport : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     DialectRegistry registry_ = makeBuiltinRegistry();
@@ -177,5 +177,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLogviewExport)
+QTEST_APPLESS_MAIN(TstLogviewExport)
 #include "tst_logview_export.moc"

@@ -47,7 +47,7 @@ struct FollowedScenario {
 
 } // namespace
 
-class TestLogviewIndex : public QObject {
+class TstLogviewIndex : public QObject {
     Q_OBJECT
 private slots:
     void indexAgreesWithFrontToBack_data() {
@@ -203,5 +203,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLogviewIndex)
+QTEST_APPLESS_MAIN(TstLogviewIndex)
 #include "tst_logview_index.moc"

@@ -16,7 +16,7 @@
 using namespace gnss;
 using namespace gnss::logview;
 
-class TestLogviewInputs : public QObject {
+class TstLogviewInputs : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     DialectRegistry registry_ = makeBuiltinRegistry();
@@ -441,5 +441,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLogviewInputs)
+QTEST_APPLESS_MAIN(TstLogviewInputs)
 #include "tst_logview_inputs.moc"

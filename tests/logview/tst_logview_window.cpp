@@ -58,7 +58,7 @@ using namespace gnss;
 using gnss::app::LogViewer;
 using gnss::app::MainWindow;
 
-class TestLogviewWindow : public QObject {
+class TstLogviewWindow : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     DialectRegistry registry_ = makeBuiltinRegistry();
@@ -911,5 +911,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestLogviewWindow)
+QTEST_MAIN(TstLogviewWindow)
 #include "tst_logview_window.moc"

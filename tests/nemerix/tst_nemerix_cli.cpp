@@ -19,7 +19,7 @@ Run cli(const QStringList &args, const QByteArray &stdinData = {}) {
 
 } // namespace
 
-class TestNemerixCli : public QObject {
+class TstNemerixCli : public QObject {
     Q_OBJECT
 private slots:
     void decodeEverySpecExample();
@@ -30,7 +30,7 @@ private slots:
     void encodeRefusesOutOfRange();
 };
 
-void TestNemerixCli::decodeEverySpecExample() {
+void TstNemerixCli::decodeEverySpecExample() {
     QByteArray input;
     int placeholders = 0, bad = 0;
     for (const auto &e : gnss::test::loadSpecExamples()) {
@@ -58,7 +58,7 @@ void TestNemerixCli::decodeEverySpecExample() {
         QVERIFY2(l.contains("data"), qPrintable(l["line"].toString()));
 }
 
-void TestNemerixCli::decodeRenamedPrefixWithAlias() {
+void TstNemerixCli::decodeRenamedPrefixWithAlias() {
     const Run r = cli({"decode", "--dialect", "nemerix", "--alias", "PXYZW=PNMRX", "-"},
                       "$PXYZW112, 1, 5\r\n");
     QCOMPARE(r.exitCode, 0);
@@ -67,7 +67,7 @@ void TestNemerixCli::decodeRenamedPrefixWithAlias() {
     QCOMPARE(l[0]["data"].toObject()["off_period_s"].toInt(), 5);
 }
 
-void TestNemerixCli::schemaListsEverySetting() {
+void TstNemerixCli::schemaListsEverySetting() {
     const Run r = cli({"schema", "nemerix"});
     QCOMPARE(r.exitCode, 0);
     const auto doc = QJsonDocument::fromJson(r.out);
@@ -78,7 +78,7 @@ void TestNemerixCli::schemaListsEverySetting() {
         QVERIFY2(keys.contains(k), k);
 }
 
-void TestNemerixCli::encodeSettings() {
+void TstNemerixCli::encodeSettings() {
     const Run r =
             cli({"encode", "nemerix", "fix.minSnr=35", "fix.timeZone=-2:0", "serial.baud=4800"});
     QCOMPARE(r.exitCode, 0);
@@ -86,13 +86,13 @@ void TestNemerixCli::encodeSettings() {
              QString("$PNMRX110,0,-2:0,4,35*7E\n$PNMRX100,0,4800,0*48"));
 }
 
-void TestNemerixCli::encodeQuery() {
+void TstNemerixCli::encodeQuery() {
     const Run r = cli({"encode", "nemerix", "--query", "fix.minSnr", "datum.mapDatum"});
     QCOMPARE(r.exitCode, 0);
     QCOMPARE(QString::fromUtf8(r.out).trimmed(), QString("$PNMRX603*6C"));
 }
 
-void TestNemerixCli::encodeRefusesOutOfRange() {
+void TstNemerixCli::encodeRefusesOutOfRange() {
     const Run r = cli({"encode", "nemerix", "fix.minSnr=50"});
     QVERIFY(r.exitCode != 0);
     QVERIFY(r.out.isEmpty());
@@ -100,5 +100,5 @@ void TestNemerixCli::encodeRefusesOutOfRange() {
              r.err.constData());
 }
 
-QTEST_APPLESS_MAIN(TestNemerixCli)
+QTEST_APPLESS_MAIN(TstNemerixCli)
 #include "tst_nemerix_cli.moc"

@@ -204,7 +204,7 @@ const std::vector<Case> &refusals() {
 
 } // namespace
 
-class TestNemerixEncoders : public QObject {
+class TstNemerixEncoders : public QObject {
     Q_OBJECT
 private slots:
     void everyEncoderIsByteExact_data();
@@ -214,13 +214,13 @@ private slots:
     void applyPrefixRenamesAndRecomputesTheChecksum();
 };
 
-void TestNemerixEncoders::everyEncoderIsByteExact_data() {
+void TstNemerixEncoders::everyEncoderIsByteExact_data() {
     QTest::addColumn<int>("index");
     for (std::size_t i = 0; i < encodings().size(); ++i)
         QTest::newRow(encodings()[i].name) << static_cast<int>(i);
 }
 
-void TestNemerixEncoders::everyEncoderIsByteExact() {
+void TstNemerixEncoders::everyEncoderIsByteExact() {
     QFETCH(int, index);
     const Case &c = encodings()[static_cast<std::size_t>(index)];
     const EncodeResult r = c.encode();
@@ -236,13 +236,13 @@ void TestNemerixEncoders::everyEncoderIsByteExact() {
     QCOMPARE(d.checksum, QString("ok"));
 }
 
-void TestNemerixEncoders::outOfRangeValuesAreRefused_data() {
+void TstNemerixEncoders::outOfRangeValuesAreRefused_data() {
     QTest::addColumn<int>("index");
     for (std::size_t i = 0; i < refusals().size(); ++i)
         QTest::newRow(refusals()[i].name) << static_cast<int>(i);
 }
 
-void TestNemerixEncoders::outOfRangeValuesAreRefused() {
+void TstNemerixEncoders::outOfRangeValuesAreRefused() {
     QFETCH(int, index);
     const Case &c = refusals()[static_cast<std::size_t>(index)];
     const EncodeResult r = c.encode();
@@ -251,7 +251,7 @@ void TestNemerixEncoders::outOfRangeValuesAreRefused() {
     QVERIFY2(r.error.find(c.expected) != std::string::npos, r.error.c_str());
 }
 
-void TestNemerixEncoders::applyPrefixRenamesAndRecomputesTheChecksum() {
+void TstNemerixEncoders::applyPrefixRenamesAndRecomputesTheChecksum() {
     QCOMPARE(QString::fromStdString(applyPrefix("$PNMRX110,4,35*5B", "PXYZW")),
              QString("$PXYZW110,4,35*5E"));
     QCOMPARE(QString::fromStdString(applyPrefix("$PNMRX603", "PXYZW")), QString("$PXYZW603*69"));
@@ -264,5 +264,5 @@ void TestNemerixEncoders::applyPrefixRenamesAndRecomputesTheChecksum() {
     QVERIFY(!checkPrefix("PABCDEFGHI").empty());
 }
 
-QTEST_APPLESS_MAIN(TestNemerixEncoders)
+QTEST_APPLESS_MAIN(TstNemerixEncoders)
 #include "tst_nemerix_encoders.moc"

@@ -104,7 +104,7 @@ bool subset(const QJsonValue &expected, const QJsonValue &actual, QString &where
 
 } // namespace
 
-class TestNemerixExamples : public QObject {
+class TstNemerixExamples : public QObject {
     Q_OBJECT
 private slots:
     void everySpecExampleDecodes_data();
@@ -119,7 +119,7 @@ private slots:
     void randomFieldsNeverCrash();
 };
 
-void TestNemerixExamples::everySpecExampleDecodes_data() {
+void TstNemerixExamples::everySpecExampleDecodes_data() {
     QTest::addColumn<QString>("sentence");
     QTest::addColumn<QString>("verdict");
     QTest::addColumn<QString>("computed");
@@ -135,7 +135,7 @@ void TestNemerixExamples::everySpecExampleDecodes_data() {
     if (n == 0) QSKIP("examples.tsv not found (shared folder absent)");
 }
 
-void TestNemerixExamples::everySpecExampleDecodes() {
+void TstNemerixExamples::everySpecExampleDecodes() {
     QFETCH(QString, sentence);
     QFETCH(QString, verdict);
     QFETCH(QString, computed);
@@ -169,7 +169,7 @@ void TestNemerixExamples::everySpecExampleDecodes() {
     QVERIFY2(subset(expected, lenient.data, where), qPrintable(where));
 }
 
-void TestNemerixExamples::everyExampleHasExpectedValues() {
+void TstNemerixExamples::everyExampleHasExpectedValues() {
     const auto examples = gnss::test::loadSpecExamples();
     if (examples.empty()) QSKIP("examples.tsv not found (shared folder absent)");
     int n = 0;
@@ -181,7 +181,7 @@ void TestNemerixExamples::everyExampleHasExpectedValues() {
     QCOMPARE(n, static_cast<int>(expectedValues().size()));
 }
 
-void TestNemerixExamples::sentenceWithoutChecksumIsAccepted() {
+void TstNemerixExamples::sentenceWithoutChecksumIsAccepted() {
     for (const char *line : {"$PNMRX110,4,35", "$PNMRX110,4,35*", "$PNMRX110,4,35*xx"}) {
         const auto d = decodeOne(line, nemerix());
         QVERIFY2(d.ok, line);
@@ -197,7 +197,7 @@ void TestNemerixExamples::sentenceWithoutChecksumIsAccepted() {
     QVERIFY2(gga.ok, qPrintable(gga.error));
 }
 
-void TestNemerixExamples::blanksAfterCommasAreTrimmed() {
+void TstNemerixExamples::blanksAfterCommasAreTrimmed() {
     const auto d =
             decodeOne("$PNMRX106, 0, 500, -2000, -2000, -2000, 8257224, 8137000 ", nemerix());
     QVERIFY2(d.ok, qPrintable(d.error));
@@ -205,7 +205,7 @@ void TestNemerixExamples::blanksAfterCommasAreTrimmed() {
     QCOMPARE(d.data["major_axis_raw"].toInt(), 8137000);
 }
 
-void TestNemerixExamples::lowerCaseChecksumHexIsAccepted() {
+void TstNemerixExamples::lowerCaseChecksumHexIsAccepted() {
     // $PNMRX300 upload-style sentence with lower-case hex fields and checksum.
     const std::string body = "PNMRX302,5,0c,ff,fe,01,7f,80,ff,00";
     char cs[3];
@@ -217,7 +217,7 @@ void TestNemerixExamples::lowerCaseChecksumHexIsAccepted() {
     QCOMPARE(d.data["alpha1"].toDouble(), -1.0 / (1 << 27));
 }
 
-void TestNemerixExamples::renamedPrefixDecodesThroughAlias() {
+void TstNemerixExamples::renamedPrefixDecodesThroughAlias() {
     auto o = nemerix();
     o.addressAliases = {{"PXYZW", "PNMRX"}};
     const auto d = decodeOne("$PXYZW110,4,35", o);
@@ -227,7 +227,7 @@ void TestNemerixExamples::renamedPrefixDecodesThroughAlias() {
     QVERIFY(!noAlias.ok);
 }
 
-void TestNemerixExamples::standardSentencesAsTheVt002SendsThem() {
+void TstNemerixExamples::standardSentencesAsTheVt002SendsThem() {
     // NMEA 3.0, GPS only, millisecond time, GSV with up to 12 satellites in three sentences.
     const char *lines[] = {
             "$GPGGA,092204.999,4250.5589,S,14718.5084,E,1,04,24.4,19.7,M,,,,0000*1F",
@@ -248,7 +248,7 @@ void TestNemerixExamples::standardSentencesAsTheVt002SendsThem() {
     QCOMPARE(gsv.data["satellites"].toArray().size(), 4);
 }
 
-void TestNemerixExamples::garbageNeverCrashes() {
+void TstNemerixExamples::garbageNeverCrashes() {
     const char *lines[] = {
             "$PNMRX301",
             "$PNMRX301,5",
@@ -280,7 +280,7 @@ void TestNemerixExamples::garbageNeverCrashes() {
     }
 }
 
-void TestNemerixExamples::randomFieldsNeverCrash() {
+void TstNemerixExamples::randomFieldsNeverCrash() {
     // Every PNMRX address with random field counts and tokens: decoded or refused, never a crash.
     const char *numbers[] = {"100", "101", "103", "104", "106", "107", "108", "110", "111", "112",
                              "113", "300", "301", "302", "303", "304", "600", "601", "602", "603"};
@@ -310,5 +310,5 @@ void TestNemerixExamples::randomFieldsNeverCrash() {
     QVERIFY(decoded > 0);
 }
 
-QTEST_APPLESS_MAIN(TestNemerixExamples)
+QTEST_APPLESS_MAIN(TstNemerixExamples)
 #include "tst_nemerix_examples.moc"

@@ -87,7 +87,7 @@ template <class T> std::optional<T> decodeTyped(const std::string &line) {
 
 } // namespace
 
-class TestNemerixNavData : public QObject {
+class TstNemerixNavData : public QObject {
     Q_OBJECT
 private slots:
     void everyFieldIsScaledAndSignExtended_data();
@@ -102,7 +102,7 @@ private slots:
     void almanacUploadRefusesBadValues();
 };
 
-void TestNemerixNavData::everyFieldIsScaledAndSignExtended_data() {
+void TstNemerixNavData::everyFieldIsScaledAndSignExtended_data() {
     QTest::addColumn<QString>("line");
     QTest::addColumn<QString>("key");
     QTest::addColumn<qint64>("raw");
@@ -128,7 +128,7 @@ void TestNemerixNavData::everyFieldIsScaledAndSignExtended_data() {
     add("utc", "$PNMRX303,7", kUtc);
 }
 
-void TestNemerixNavData::everyFieldIsScaledAndSignExtended() {
+void TstNemerixNavData::everyFieldIsScaledAndSignExtended() {
     QFETCH(QString, line);
     QFETCH(QString, key);
     QFETCH(qint64, raw);
@@ -140,7 +140,7 @@ void TestNemerixNavData::everyFieldIsScaledAndSignExtended() {
     QCOMPARE(d.data[key].toDouble(), std::ldexp(static_cast<double>(raw), scale));
 }
 
-void TestNemerixNavData::wordAlreadySignExtendedIsAccepted() {
+void TstNemerixNavData::wordAlreadySignExtendedIsAccepted() {
     // af0 (22-bit) = -5 printed as a sign-extended 32-bit word, and in lower case.
     QString line = sentence("$PNMRX301,3,1", kSf1, -1, 0);
     line.replace(line.lastIndexOf(",") + 1, 6, "fffffffb");
@@ -150,7 +150,7 @@ void TestNemerixNavData::wordAlreadySignExtendedIsAccepted() {
     QCOMPARE(d.data["af0_raw"].toString(), QString("3FFFFB"));
 }
 
-void TestNemerixNavData::valueWiderThanItsFieldIsRefused() {
+void TstNemerixNavData::valueWiderThanItsFieldIsRefused() {
     // toc is 16-bit unsigned: 0x1FFFF does not fit; af2 is 8-bit: 0x0180 neither.
     QString line = "$PNMRX301,3,1,000,00,0,00,000,1FFFF,00,0000,000000";
     QVERIFY(!decodeOne(line, nemerix()).ok);
@@ -160,7 +160,7 @@ void TestNemerixNavData::valueWiderThanItsFieldIsRefused() {
     QVERIFY2(d.error.contains("af2"), qPrintable(d.error));
 }
 
-void TestNemerixNavData::ephemerisWithKnownValuesDecodesToThem() {
+void TstNemerixNavData::ephemerisWithKnownValuesDecodesToThem() {
     // A plausible GPS ephemeris; each value is encoded here with the IS-GPS-200 scale.
     struct Known {
         const std::vector<Field> *sf;
@@ -238,7 +238,7 @@ void TestNemerixNavData::ephemerisWithKnownValuesDecodesToThem() {
     QVERIFY(eph->consistent());
 }
 
-void TestNemerixNavData::ephemerisAssembledOnceAllThreeSubframesArrived() {
+void TstNemerixNavData::ephemerisAssembledOnceAllThreeSubframesArrived() {
     using namespace gnss::nemerix;
     auto part = [](int sv, int sf, int iod) {
         EphemerisSubframe p;
@@ -274,7 +274,7 @@ void TestNemerixNavData::ephemerisAssembledOnceAllThreeSubframesArrived() {
     QVERIFY(!a.add(part(33, 1, 1)));
 }
 
-void TestNemerixNavData::ephemerisWithMismatchedIssueOfDataWaits() {
+void TstNemerixNavData::ephemerisWithMismatchedIssueOfDataWaits() {
     using namespace gnss::nemerix;
     auto part = [](int sf, int iod) {
         EphemerisSubframe p;
@@ -293,7 +293,7 @@ void TestNemerixNavData::ephemerisWithMismatchedIssueOfDataWaits() {
     QVERIFY(a.add(part(3, 10)));
 }
 
-void TestNemerixNavData::almanacUploadRoundTrips() {
+void TstNemerixNavData::almanacUploadRoundTrips() {
     using namespace gnss::nemerix;
     Almanac a;
     a.sv = 17;
@@ -327,7 +327,7 @@ void TestNemerixNavData::almanacUploadRoundTrips() {
              QString::fromStdString(renamed.sentences[0]));
 }
 
-void TestNemerixNavData::almanacWithoutTheDuplicatedMeanFieldDecodes() {
+void TstNemerixNavData::almanacWithoutTheDuplicatedMeanFieldDecodes() {
     // 11 hex fields: the IS-GPS-200 set, without the table's extra "Mean".
     const auto d = decodeOne("$PNMRX300,3,2A1F,00,90,F3B5,FF5B,A10D3A,C5E4D4,11F00E,EDCBAA,7FD,3FF",
                              nemerix());
@@ -338,7 +338,7 @@ void TestNemerixNavData::almanacWithoutTheDuplicatedMeanFieldDecodes() {
     QVERIFY(!decodeOne("$PNMRX300,3,2A1F,00,90", nemerix()).ok);
 }
 
-void TestNemerixNavData::almanacUploadRefusesBadValues() {
+void TstNemerixNavData::almanacUploadRefusesBadValues() {
     using namespace gnss::nemerix;
     Almanac a;
     a.sv = 33;
@@ -363,5 +363,5 @@ void TestNemerixNavData::almanacUploadRefusesBadValues() {
     QCOMPARE(*toRaw(-3.0 / (1 << 20), Almanac::fields()[Almanac::Af0], err), qint64(-3));
 }
 
-QTEST_APPLESS_MAIN(TestNemerixNavData)
+QTEST_APPLESS_MAIN(TstNemerixNavData)
 #include "tst_nemerix_navdata.moc"

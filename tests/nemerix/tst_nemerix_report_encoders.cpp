@@ -172,7 +172,7 @@ std::function<EncodeResult()> factoryWith(void (*change)(std::vector<KeyValue> &
 
 } // namespace
 
-class TestNemerixReportEncoders : public QObject {
+class TstNemerixReportEncoders : public QObject {
     Q_OBJECT
 private slots:
     void everyReportEncodesBackToItsLine_data();
@@ -188,7 +188,7 @@ private slots:
     void renamedPrefixKeepsWorking();
 };
 
-void TestNemerixReportEncoders::everyReportEncodesBackToItsLine_data() {
+void TstNemerixReportEncoders::everyReportEncodesBackToItsLine_data() {
     QTest::addColumn<QString>("line");
     QTest::addColumn<QString>("prefix");
     const char *const pnmrx = "PNMRX";
@@ -228,7 +228,7 @@ void TestNemerixReportEncoders::everyReportEncodesBackToItsLine_data() {
     for (const auto &r : rows) QTest::newRow(r.name) << r.line << r.prefix;
 }
 
-void TestNemerixReportEncoders::everyReportEncodesBackToItsLine() {
+void TstNemerixReportEncoders::everyReportEncodesBackToItsLine() {
     QFETCH(QString, line);
     QFETCH(QString, prefix);
     // The line's checksum is its own (computed here).
@@ -242,7 +242,7 @@ void TestNemerixReportEncoders::everyReportEncodesBackToItsLine() {
     QCOMPARE(QString::fromStdString(r.sentences.front()), line);
 }
 
-void TestNemerixReportEncoders::theSpecsRequestExamplesAreWhatTheQueryEncodersSend() {
+void TstNemerixReportEncoders::theSpecsRequestExamplesAreWhatTheQueryEncodersSend() {
     const auto examples = gnss::test::loadSpecExamples();
     if (examples.empty()) QSKIP("examples.tsv not found (shared folder absent)");
     int seen = 0;
@@ -268,7 +268,7 @@ void TestNemerixReportEncoders::theSpecsRequestExamplesAreWhatTheQueryEncodersSe
     QVERIFY(!encodeVersionReport(empty).ok());
 }
 
-void TestNemerixReportEncoders::messagesFromEngineeringUnitsDecodeBackToThem() {
+void TstNemerixReportEncoders::messagesFromEngineeringUnitsDecodeBackToThem() {
     // Klobuchar coefficients and GPS-UTC parameters in engineering units: the raw words are
     // IS-GPS-200's, and the decoder's values come back within half a step of the scale.
     Ionosphere iono;
@@ -344,7 +344,7 @@ void TestNemerixReportEncoders::messagesFromEngineeringUnitsDecodeBackToThem() {
     }));
 }
 
-void TestNemerixReportEncoders::settingsReportMessageDecodesBackFieldForField() {
+void TstNemerixReportEncoders::settingsReportMessageDecodesBackFieldForField() {
     for (int n = 0; n <= 4; ++n) {
         SettingsReport m = validReport(n);
         if (n == 1) m.tzHours = -5, m.tzMinutes = -30;
@@ -388,7 +388,7 @@ void TestNemerixReportEncoders::settingsReportMessageDecodesBackFieldForField() 
     }
 }
 
-void TestNemerixReportEncoders::factorySettingsReportAsTheSimulatedReceiverSendsThem() {
+void TstNemerixReportEncoders::factorySettingsReportAsTheSimulatedReceiverSendsThem() {
     const EncodeResult r = encodeSettingsReports(factorySettings(), simulatedState());
     QVERIFY2(r.ok(), r.error.c_str());
     const std::vector<std::string> expected = {
@@ -401,7 +401,7 @@ void TestNemerixReportEncoders::factorySettingsReportAsTheSimulatedReceiverSends
     QCOMPARE(r.sentences, expected);
 }
 
-void TestNemerixReportEncoders::settingsReportsReadBackAsTheSettings() {
+void TstNemerixReportEncoders::settingsReportsReadBackAsTheSettings() {
     std::vector<KeyValue> values = factorySettings();
     const std::vector<KeyValue> changed = {
             {"rate.GGA", "2"},
@@ -453,7 +453,7 @@ void TestNemerixReportEncoders::settingsReportsReadBackAsTheSettings() {
                                        "00204B00*"));
 }
 
-void TestNemerixReportEncoders::statusWordsHoldTheModesAndThePort() {
+void TstNemerixReportEncoders::statusWordsHoldTheModesAndThePort() {
     const int allNow[] = {1, 1, 1, 1, 1};
     QCOMPARE(nmrxEnabledWord(allNow), std::uint64_t(0x155));
     const int utcOnChange[] = {0, 0, 0, 2, 0};
@@ -463,12 +463,12 @@ void TestNemerixReportEncoders::statusWordsHoldTheModesAndThePort() {
     QCOMPARE(uartSettingsWord(9600, 0, 1), std::uint64_t(0x1002580));
 }
 
-void TestNemerixReportEncoders::invalidInputIsRefused_data() {
+void TstNemerixReportEncoders::invalidInputIsRefused_data() {
     QTest::addColumn<int>("index");
     for (int i = 0; i < 25; ++i) QTest::newRow(QByteArray::number(i)) << i;
 }
 
-void TestNemerixReportEncoders::invalidInputIsRefused() {
+void TstNemerixReportEncoders::invalidInputIsRefused() {
     static const std::vector<Refused> rows = {
             {"ephemeris SV 33",
              encoded(EphemerisSubframe{}, [](EphemerisSubframe &e) { e.sv = 33, e.subframe = 1; }),
@@ -566,7 +566,7 @@ void TestNemerixReportEncoders::invalidInputIsRefused() {
         QVERIFY2(r.refusal.form != nullptr, row.name); // the GUI shows it translated
 }
 
-void TestNemerixReportEncoders::renamedPrefixKeepsWorking() {
+void TstNemerixReportEncoders::renamedPrefixKeepsWorking() {
     std::vector<EncodeResult> (*const built)(std::string_view) = [](std::string_view prefix) {
         VersionReport v(VersionReport::kSoftwareType);
         v.fieldsText[v.count++] = "VT002";
@@ -594,5 +594,5 @@ void TestNemerixReportEncoders::renamedPrefixKeepsWorking() {
     QVERIFY(!built("P")[0].ok());
 }
 
-QTEST_APPLESS_MAIN(TestNemerixReportEncoders)
+QTEST_APPLESS_MAIN(TstNemerixReportEncoders)
 #include "tst_nemerix_report_encoders.moc"

@@ -50,7 +50,7 @@ gnss::ReplyVerdict classify(const char *command, const char *reply, gnss::ReplyP
 
 } // namespace
 
-class TestNemerixSettings : public QObject {
+class TstNemerixSettings : public QObject {
     Q_OBJECT
 private slots:
     void dialectRecordIsComplete();
@@ -74,7 +74,7 @@ private slots:
     void silentCommandsDeclareTheirEffect();
 };
 
-void TestNemerixSettings::dialectRecordIsComplete() {
+void TstNemerixSettings::dialectRecordIsComplete() {
     QCOMPARE(QString::fromUtf8(D().id.data(), D().id.size()), QString("nemerix"));
     QCOMPARE(QString::fromUtf8(D().displayName.data(), D().displayName.size()),
              QString("Nemerix VT002"));
@@ -89,7 +89,7 @@ void TestNemerixSettings::dialectRecordIsComplete() {
     for (const auto &r : D().rules) QVERIFY(r.match == gnss::AddressMatch::Whole);
 }
 
-void TestNemerixSettings::probeIsTheVersionRequestWithItsRealChecksum() {
+void TstNemerixSettings::probeIsTheVersionRequestWithItsRealChecksum() {
     QCOMPARE(QString::fromUtf8(D().probeCommand.data(), D().probeCommand.size()),
              QString("$PNMRX600*6F"));
     gnss::Sentence s;
@@ -100,7 +100,7 @@ void TestNemerixSettings::probeIsTheVersionRequestWithItsRealChecksum() {
     QVERIFY(classify("$PNMRX600*6F", "$PNMRX600,VT002,1.05", p) == gnss::ReplyVerdict::Accepted);
 }
 
-void TestNemerixSettings::everyCommandNameHasARuleAndAnEncoder() {
+void TstNemerixSettings::everyCommandNameHasARuleAndAnEncoder() {
     std::set<std::string_view> rules;
     for (const auto &r : D().rules) rules.insert(r.address);
     std::set<std::string_view> replies;
@@ -112,7 +112,7 @@ void TestNemerixSettings::everyCommandNameHasARuleAndAnEncoder() {
     QCOMPARE(D().commandNames.size(), std::size_t(15));
 }
 
-void TestNemerixSettings::schemaRowsAreConsistent() {
+void TstNemerixSettings::schemaRowsAreConsistent() {
     std::set<std::string_view> keys;
     QStringList groups;
     for (const auto &d : D().settings) {
@@ -133,7 +133,7 @@ void TestNemerixSettings::schemaRowsAreConsistent() {
         QVERIFY2(groups.contains(g), g);
 }
 
-void TestNemerixSettings::settingsEncodeToCommands_data() {
+void TstNemerixSettings::settingsEncodeToCommands_data() {
     QTest::addColumn<QStringList>("values");
     QTest::addColumn<QString>("sentences");
     QTest::newRow("baud alone") << QStringList{"serial.baud=4800"} << "$PNMRX100,0,4800,0*48";
@@ -171,7 +171,7 @@ void TestNemerixSettings::settingsEncodeToCommands_data() {
                                     << "$PNMRX110,5,10*5D $PNMRX100,0,19200,0*7E";
 }
 
-void TestNemerixSettings::settingsEncodeToCommands() {
+void TstNemerixSettings::settingsEncodeToCommands() {
     QFETCH(QStringList, values);
     QFETCH(QString, sentences);
     std::vector<gnss::KeyValue> kv;
@@ -184,7 +184,7 @@ void TestNemerixSettings::settingsEncodeToCommands() {
     QCOMPARE(joined(r.sentences), sentences);
 }
 
-void TestNemerixSettings::refusedSettingsBuildNothing_data() {
+void TstNemerixSettings::refusedSettingsBuildNothing_data() {
     gnss::test::addRefusedSettingColumns();
     textRow("unknown key", {"fix.nothing", "1", "unknown setting"});
     textRow("baud", {"serial.baud", "115200", "serial.baud"});
@@ -204,7 +204,7 @@ void TestNemerixSettings::refusedSettingsBuildNothing_data() {
     textRow("injection", {"fix.timeZone", "1:0*00", "not allowed"});
 }
 
-void TestNemerixSettings::refusedSettingsBuildNothing() {
+void TstNemerixSettings::refusedSettingsBuildNothing() {
     // A valid value next to the refused one: still nothing is built.
     gnss::test::checkRefusedSetting([](const gnss::KeyValue &refused) {
         std::vector<gnss::KeyValue> kv = {{"fix.minSnr", "30"}, refused};
@@ -213,7 +213,7 @@ void TestNemerixSettings::refusedSettingsBuildNothing() {
     });
 }
 
-void TestNemerixSettings::readableSettingsAreQueriedWithOneSettingsRequest() {
+void TstNemerixSettings::readableSettingsAreQueriedWithOneSettingsRequest() {
     const std::vector<std::string> keys = {"fix.minSnr", "datum.mapDatum", "rate.GSV",
                                            "fix.timeZone", "nav.channels"};
     const auto r = encodeQueries(D(), keys);
@@ -221,7 +221,7 @@ void TestNemerixSettings::readableSettingsAreQueriedWithOneSettingsRequest() {
     QCOMPARE(joined(r.sentences), QString("$PNMRX603*6C"));
 }
 
-void TestNemerixSettings::writeOnlySettingsCannotBeQueried() {
+void TstNemerixSettings::writeOnlySettingsCannotBeQueried() {
     for (const char *k : {"serial.baud", "power.mode", "output.sequence", "fix.maxVdop"}) {
         const std::vector<std::string> keys = {k};
         const auto r = encodeQueries(D(), keys);
@@ -233,7 +233,7 @@ void TestNemerixSettings::writeOnlySettingsCannotBeQueried() {
     QVERIFY(!encodeQueries(D(), unknown).ok());
 }
 
-void TestNemerixSettings::settingsReportMessagesGiveSettingsBack_data() {
+void TstNemerixSettings::settingsReportMessagesGiveSettingsBack_data() {
     QTest::addColumn<QString>("line");
     QTest::addColumn<QString>("settings");
     QTest::addColumn<QString>("json");
@@ -259,7 +259,7 @@ void TestNemerixSettings::settingsReportMessagesGiveSettingsBack_data() {
                                << R"("semi_major_axis_m":6378137)";
 }
 
-void TestNemerixSettings::settingsReportMessagesGiveSettingsBack() {
+void TstNemerixSettings::settingsReportMessagesGiveSettingsBack() {
     QFETCH(QString, line);
     QFETCH(QString, settings);
     QFETCH(QString, json);
@@ -272,7 +272,7 @@ void TestNemerixSettings::settingsReportMessagesGiveSettingsBack() {
     QVERIFY2(text.contains(json), qPrintable(text));
 }
 
-void TestNemerixSettings::readBackValuesEncodeAgain() {
+void TstNemerixSettings::readBackValuesEncodeAgain() {
     // Everything read back is a valid value for the same key: a profile saved from a receiver
     // can be written to another.
     for (const char *line :
@@ -287,7 +287,7 @@ void TestNemerixSettings::readBackValuesEncodeAgain() {
     }
 }
 
-void TestNemerixSettings::commandsCarryTheSettingsTheyWrite_data() {
+void TstNemerixSettings::commandsCarryTheSettingsTheyWrite_data() {
     // What a receiver applying the command holds afterwards (a simulated VT002 applies commands
     // through extractSettings).
     QTest::addColumn<QString>("line");
@@ -327,13 +327,13 @@ void TestNemerixSettings::commandsCarryTheSettingsTheyWrite_data() {
     textRow("603 request", {"$PNMRX603*6C", ""});
 }
 
-void TestNemerixSettings::commandsCarryTheSettingsTheyWrite() {
+void TstNemerixSettings::commandsCarryTheSettingsTheyWrite() {
     QFETCH(QString, line);
     QFETCH(QString, settings);
     QCOMPARE(joined(extract(line.toStdString())), settings);
 }
 
-void TestNemerixSettings::everyEncodedSettingComesBackFromItsCommand() {
+void TstNemerixSettings::everyEncodedSettingComesBackFromItsCommand() {
     // encodeSettings → the receiver's decoders → extractSettings gives each value back (a user
     // datum's fields with datum 500 only: PNMRX106 carries them for it alone).
     const std::vector<gnss::KeyValue> values = {
@@ -387,7 +387,7 @@ void TestNemerixSettings::everyEncodedSettingComesBackFromItsCommand() {
     }
 }
 
-void TestNemerixSettings::versionRequestIsAnsweredByVersionReport() {
+void TstNemerixSettings::versionRequestIsAnsweredByVersionReport() {
     gnss::ReplyProgress p;
     QVERIFY(classify("$PNMRX600*6F", "$GPGGA,1,2,3", p) == gnss::ReplyVerdict::NotMine);
     QVERIFY(classify("$PNMRX600*6F", "$PNMRX600", p) == gnss::ReplyVerdict::NotMine); // echo
@@ -403,7 +403,7 @@ void TestNemerixSettings::versionRequestIsAnsweredByVersionReport() {
     QCOMPARE(flash.data["fields"].toArray()[0].toString(), QString("FC-1.3"));
 }
 
-void TestNemerixSettings::settingsRequestIsAnsweredByFiveMessages() {
+void TstNemerixSettings::settingsRequestIsAnsweredByFiveMessages() {
     gnss::ReplyProgress p;
     for (int n = 0; n < 4; ++n) {
         const std::string line = "$PNMRX603," + std::to_string(n) + ",1";
@@ -416,7 +416,7 @@ void TestNemerixSettings::settingsRequestIsAnsweredByFiveMessages() {
     QCOMPARE(p.expected, 5);
 }
 
-void TestNemerixSettings::silentCommandsDeclareTheirEffect() {
+void TstNemerixSettings::silentCommandsDeclareTheirEffect() {
     auto effectOf = [](std::string_view address) {
         for (const auto &r : D().replyRules)
             if (r.commandAddress == address) return r.effect;
@@ -431,5 +431,5 @@ void TestNemerixSettings::silentCommandsDeclareTheirEffect() {
             QVERIFY(r.classify == nullptr);
 }
 
-QTEST_APPLESS_MAIN(TestNemerixSettings)
+QTEST_APPLESS_MAIN(TstNemerixSettings)
 #include "tst_nemerix_settings.moc"

@@ -11,7 +11,7 @@ using namespace rtcm_test;
 
 Q_DECLARE_METATYPE(GlonassBiases)
 
-class TestRtcmBiases : public QObject {
+class TstRtcmBiases : public QObject {
     Q_OBJECT
 private slots:
     void aHandBuiltPayloadDecodes() {
@@ -80,5 +80,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRtcmBiases)
+QTEST_GUILESS_MAIN(TstRtcmBiases)
 #include "tst_rtcm_biases.moc"

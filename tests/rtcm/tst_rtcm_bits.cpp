@@ -9,7 +9,7 @@
 
 using namespace gnss::rtcm;
 
-class TestRtcmBits : public QObject {
+class TstRtcmBits : public QObject {
     Q_OBJECT
 private slots:
     void theFirstFieldsOfThe1005ExampleReadAsPublished() {
@@ -111,5 +111,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRtcmBits)
+QTEST_GUILESS_MAIN(TstRtcmBits)
 #include "tst_rtcm_bits.moc"

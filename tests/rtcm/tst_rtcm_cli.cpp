@@ -68,7 +68,7 @@ QByteArray baseStationStream() {
 
 } // namespace
 
-class TestRtcmCli : public QObject {
+class TstRtcmCli : public QObject {
     Q_OBJECT
 private slots:
     void rtcmPrintsOneJsonObjectPerMessage() {
@@ -145,5 +145,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRtcmCli)
+QTEST_GUILESS_MAIN(TstRtcmCli)
 #include "tst_rtcm_cli.moc"

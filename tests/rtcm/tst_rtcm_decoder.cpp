@@ -12,7 +12,7 @@
 
 using namespace gnss::rtcm;
 
-class TestRtcmDecoder : public QObject {
+class TstRtcmDecoder : public QObject {
     Q_OBJECT
 private slots:
     void randomPayloadsNeverCrashAndPrintValidJson_data() {
@@ -60,5 +60,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRtcmDecoder)
+QTEST_GUILESS_MAIN(TstRtcmDecoder)
 #include "tst_rtcm_decoder.moc"

@@ -41,7 +41,7 @@ Ephemeris sample(unsigned number) {
 
 } // namespace
 
-class TestRtcmEphemeris : public QObject {
+class TstRtcmEphemeris : public QObject {
     Q_OBJECT
 private slots:
     void ephemerisRoundTrips_data() {
@@ -157,5 +157,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRtcmEphemeris)
+QTEST_GUILESS_MAIN(TstRtcmEphemeris)
 #include "tst_rtcm_ephemeris.moc"

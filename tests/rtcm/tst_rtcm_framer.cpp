@@ -79,7 +79,7 @@ void checkCountsAddUp(const RtcmFramerStats &s) {
 
 } // namespace
 
-class TestRtcmFramer : public QObject {
+class TstRtcmFramer : public QObject {
     Q_OBJECT
 private slots:
     void crc24qMatchesKnownValues_data() {
@@ -371,5 +371,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRtcmFramer)
+QTEST_GUILESS_MAIN(TstRtcmFramer)
 #include "tst_rtcm_framer.moc"

@@ -33,7 +33,7 @@ QJsonObject objectOf(const std::string &json) {
 
 } // namespace
 
-class TestRtcmJson : public QObject {
+class TstRtcmJson : public QObject {
     Q_OBJECT
 private slots:
     void theExample1005PrintsItsFieldsAsPublished() {
@@ -171,5 +171,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRtcmJson)
+QTEST_GUILESS_MAIN(TstRtcmJson)
 #include "tst_rtcm_json.moc"

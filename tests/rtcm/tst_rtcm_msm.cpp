@@ -53,7 +53,7 @@ const MsmHeader *msmOf(const RtcmMessage &m) {
 
 } // namespace
 
-class TestRtcmMsm : public QObject {
+class TstRtcmMsm : public QObject {
     Q_OBJECT
 private slots:
     void everyMsmHeaderRoundTrips_data() {
@@ -247,5 +247,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRtcmMsm)
+QTEST_GUILESS_MAIN(TstRtcmMsm)
 #include "tst_rtcm_msm.moc"

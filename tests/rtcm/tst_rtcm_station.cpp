@@ -30,7 +30,7 @@ const StationArp &decodedArp(const RtcmMessage &m) {
 
 } // namespace
 
-class TestRtcmStation : public QObject {
+class TstRtcmStation : public QObject {
     Q_OBJECT
 private slots:
     void thePublished1005ExampleDecodes() {
@@ -197,5 +197,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRtcmStation)
+QTEST_GUILESS_MAIN(TstRtcmStation)
 #include "tst_rtcm_station.moc"

@@ -103,7 +103,7 @@ private slots:
         QFETCH(int, exitCode);
         QFETCH(QString, words);
 
-        TestCaster caster;
+        TstCaster caster;
         caster.user = kSecretUser;
         caster.password = kSecretPassword;
         caster.rawReply = rawReply;

@@ -112,7 +112,7 @@ private slots:
             QMutexLocker lock(&messagesLock);
             messages.clear();
         }
-        corrections_test::TestCaster caster;
+        corrections_test::TstCaster caster;
         caster.user = kSecretUser;
         caster.password = kSecretPassword;
         caster.rawReply = rawReply;

@@ -133,7 +133,7 @@ private slots:
     }
 
     void theTestCaster() {
-        corrections_test::TestCaster caster;
+        corrections_test::TstCaster caster;
         QVERIFY(caster.listen());
         checkLoopbackOnly(caster.port());
     }
