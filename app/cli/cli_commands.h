@@ -2,7 +2,7 @@
 // gnss-cli subcommands. Each is a function from its parsed arguments to an exit code;
 // command_table.cpp names them, with the options each takes and its help.
 #include "builtin/dialects.h"
-#include "cli_args.h"
+#include "cli/cli_args.h"
 
 #include <string_view>
 

@@ -1,6 +1,6 @@
 // gnss-cli's entry: the command line read, the command run over the registry it is given.
-#include "app_transports.h"
-#include "command_table.h"
+#include "cli/command_table.h"
+#include "common/app_transports.h"
 
 #include <cstdio>
 #include <string>

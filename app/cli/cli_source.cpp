@@ -1,11 +1,11 @@
-#include "cli_source.h"
+#include "cli/cli_source.h"
 
-#include "cli_output.h"
+#include "cli/cli_output.h"
 #include "core/json_writer.h"
-#include "gpsd_transport.h"
-#include "link_opener.h"
-#include "tcp_transport.h"
-#include "transport_factory.h"
+#include "link/gpsd_transport.h"
+#include "link/link_opener.h"
+#include "link/tcp_transport.h"
+#include "link/transport_factory.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>

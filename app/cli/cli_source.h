@@ -7,12 +7,12 @@
 //   --sim DIALECT [--baud B]   a built-in simulated receiver
 // and opened through the application's one TransportFactory, as the GUI does (LinkOpener).
 // Qt Core: only the commands that need an event loop include this.
-#include "baud_detector.h"
-#include "cli_args.h"
-#include "cli_commands.h"
-#include "command_queue.h"
-#include "connection.h"
-#include "source_spec.h"
+#include "cli/cli_args.h"
+#include "cli/cli_commands.h"
+#include "link/baud_detector.h"
+#include "link/command_queue.h"
+#include "link/connection.h"
+#include "link/source_spec.h"
 
 #include <memory>
 #include <optional>

@@ -14,14 +14,14 @@
 #include "core/json_writer.h"
 #include "core/stream_decoder.h"
 
-#include "cli_args.h"
-#include "cli_commands.h"
-#include "cli_output.h"
-#include "cli_source.h"
-#include "command_queue.h"
-#include "sentence_stream.h"
-#include "settings_engine.h"
-#include "vendor_detector.h"
+#include "cli/cli_args.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_output.h"
+#include "cli/cli_source.h"
+#include "config/settings_engine.h"
+#include "link/command_queue.h"
+#include "link/sentence_stream.h"
+#include "link/vendor_detector.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>

@@ -1,9 +1,9 @@
 // gnss-cli decode | epochs | stats: read a log (or standard input) through the decoder.
-#include "cli_args.h"
-#include "cli_commands.h"
+#include "cli/cli_args.h"
+#include "cli/cli_commands.h"
+#include "cli/input_reader.h"
 #include "core/sentence_builder.h"
 #include "core/stream_decoder.h"
-#include "input_reader.h"
 #include "state/epoch_assembler.h"
 #include "state/log_scan.h"
 

@@ -1,5 +1,5 @@
 // gnss-cli export: a log or a range of it as GPX, KML, CSV or its own NMEA bytes.
-#include "log_open.h"
+#include "cli/log_open.h"
 
 #include <cerrno>
 #include <cstdio>

@@ -4,19 +4,19 @@
 // Before any Qt header: it has a member named emit, which Qt defines as a macro.
 #include "state/epoch_assembler.h"
 
-#include "baud_detector.h"
-#include "cli_args.h"
-#include "cli_commands.h"
-#include "cli_output.h"
-#include "cli_source.h"
-#include "connection.h"
+#include "cli/cli_args.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_output.h"
+#include "cli/cli_source.h"
+#include "cli/event_loop.h"
 #include "core/json_writer.h"
 #include "core/sentence_builder.h"
-#include "event_loop.h"
-#include "port_watcher.h"
-#include "replay_transport.h"
-#include "sentence_stream.h"
-#include "vendor_detector.h"
+#include "link/baud_detector.h"
+#include "link/connection.h"
+#include "link/port_watcher.h"
+#include "link/replay_transport.h"
+#include "link/sentence_stream.h"
+#include "link/vendor_detector.h"
 
 #include <QCoreApplication>
 #include <QTimer>

@@ -2,9 +2,9 @@
 // clients on 127.0.0.1 or a serial port, like gpsd's gpsfake but timed by the log: the host
 // times of a recording's index when it has them, else the epochs' UTC times. The bytes sent are
 // exactly the file's.
-#include "log_open.h"
-#include "play_schedule.h"
-#include "termios_speed.h"
+#include "cli/log_open.h"
+#include "logview/play_schedule.h"
+#include "posix/termios_speed.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,7 +1,7 @@
 // gnss-cli rtcm: an RTCM 3 stream (file or standard input) as JSON, one object per message on
 // standard output, the counts at the end on standard error.
-#include "cli_commands.h"
-#include "input_reader.h"
+#include "cli/cli_commands.h"
+#include "cli/input_reader.h"
 #include "rtcm/rtcm_json.h"
 #include "rtcm/rtcm_stream_decoder.h"
 

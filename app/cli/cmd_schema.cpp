@@ -1,7 +1,7 @@
 // gnss-cli schema DIALECT | encode DIALECT KEY=VALUE... | encode DIALECT --query KEY...
 // Generic over every dialect's settings schema and encoders: no vendor is named here.
-#include "cli_args.h"
-#include "cli_commands.h"
+#include "cli/cli_args.h"
+#include "cli/cli_commands.h"
 #include "core/json_writer.h"
 #include "core/sentence_builder.h"
 #include "core/settings_plan.h"

@@ -1,6 +1,6 @@
 // gnss-cli summary: what a log holds, in a few lines (or one JSON object).
+#include "cli/log_open.h"
 #include "core/json_writer.h"
-#include "log_open.h"
 
 #include <cstdio>
 

@@ -1,8 +1,8 @@
 #pragma once
 // The commands gnss-cli knows: name, function, the options it takes and its help text, in one
 // table so that parsing, `gnss-cli help COMMAND` and the overview cannot disagree.
-#include "cli_args.h"
-#include "cli_commands.h"
+#include "cli/cli_args.h"
+#include "cli/cli_commands.h"
 #include "sim/simulator_table.h"
 
 #include <span>

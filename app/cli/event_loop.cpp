@@ -1,4 +1,4 @@
-#include "event_loop.h"
+#include "cli/event_loop.h"
 
 #include <csignal>
 

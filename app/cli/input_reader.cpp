@@ -1,4 +1,4 @@
-#include "input_reader.h"
+#include "cli/input_reader.h"
 
 #include <cerrno>
 #include <cstdio>

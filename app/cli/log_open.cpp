@@ -1,6 +1,6 @@
-#include "log_open.h"
+#include "cli/log_open.h"
 
-#include "log_range.h"
+#include "logview/log_range.h"
 
 #include <cstdio>
 #include <thread>

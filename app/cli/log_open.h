@@ -1,8 +1,8 @@
 #pragma once
 // What export, summary and play share: the log viewer's engine opened on FILE (with --dialect
 // and --lenient), and the epochs between --from and --to.
-#include "cli_commands.h"
-#include "log_view.h"
+#include "cli/cli_commands.h"
+#include "logview/log_view.h"
 
 #include <memory>
 

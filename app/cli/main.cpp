@@ -1,7 +1,7 @@
 // gnss-cli: headless GNSS Workbench. See docs/cli.md; the commands are in command_table.cpp.
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
-#include "command_table.h"
+#include "cli/command_table.h"
 
 int main(int argc, char **argv) {
     const gnss::DialectRegistry registry = gnss::makeBuiltinRegistry();

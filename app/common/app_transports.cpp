@@ -1,6 +1,6 @@
-#include "app_transports.h"
+#include "common/app_transports.h"
 
-#include "simulator_transport.h"
+#include "common/simulator_transport.h"
 
 namespace gnss::app {
 

@@ -2,7 +2,7 @@
 // The sources the applications know: the link library's (serial, TCP, gpsd, replay) and the
 // simulated receivers of a table (the built-in one: protocol/builtin/simulators.h). One factory
 // for the GUI and every gnss-cli command.
-#include "transport_factory.h"
+#include "link/transport_factory.h"
 
 #include "sim/simulator_table.h"
 

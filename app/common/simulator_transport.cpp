@@ -1,4 +1,4 @@
-#include "simulator_transport.h"
+#include "common/simulator_transport.h"
 
 #include "sim/simulator_table.h"
 

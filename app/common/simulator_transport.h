@@ -3,7 +3,7 @@
 // a timer: commands go to the simulated receiver, its output comes back as received bytes. The
 // line speed set here is the host side's: at another speed than the receiver's, output is garbage
 // (as on a real UART), so baud detection and baud changes work as with hardware.
-#include "transport.h"
+#include "link/transport.h"
 
 #include <QElapsedTimer>
 #include <QTimer>

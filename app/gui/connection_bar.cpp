@@ -1,4 +1,4 @@
-#include "connection_bar.h"
+#include "gui/connection_bar.h"
 
 #include "core/baud_rates.h"
 #include "core/dialect_registry.h"

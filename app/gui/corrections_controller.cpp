@@ -1,9 +1,9 @@
-#include "corrections_controller.h"
+#include "gui/corrections_controller.h"
 
-#include "ntrip_source.h"
-#include "password_keychain.h"
-#include "rover_position.h"
-#include "tcp_correction_source.h"
+#include "corrections/ntrip_source.h"
+#include "corrections/rover_position.h"
+#include "corrections/tcp_correction_source.h"
+#include "gui/password_keychain.h"
 
 #include "session/receiver_link.h"
 #include "state/epoch.h"

@@ -8,7 +8,7 @@
 // used for this session only and never written anywhere.
 #include "views/corrections_view.h"
 
-#include "corrections_monitor.h"
+#include "corrections/corrections_monitor.h"
 
 #include <QObject>
 #include <QPointer>

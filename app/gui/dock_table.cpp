@@ -1,6 +1,6 @@
-#include "dock_table.h"
+#include "gui/dock_table.h"
 
-#include "main_window.h"
+#include "gui/main_window.h"
 
 #include <QCoreApplication>
 

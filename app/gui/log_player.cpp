@@ -1,7 +1,7 @@
-#include "log_player.h"
+#include "gui/log_player.h"
 
 #include "core/baud_rates.h"
-#include "play_schedule.h"
+#include "logview/play_schedule.h"
 
 #include <QHostAddress>
 #include <QSerialPort>

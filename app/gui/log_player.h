@@ -5,7 +5,7 @@
 // file's; the pace is the one `gnss-cli play` uses (logview::playSchedule). Runs on the GUI
 // thread's event loop with non-blocking writes: a reader that does not keep up loses bytes (and
 // they are counted), never the window.
-#include "log_view.h"
+#include "logview/log_view.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -1,9 +1,9 @@
-#include "log_viewer.h"
+#include "gui/log_viewer.h"
 
 #include "core/dialect_registry.h"
 #include "core/json_writer.h"
-#include "log_time.h"
-#include "timeline_panel.h"
+#include "logview/log_time.h"
+#include "logview/timeline_panel.h"
 
 #include <QDateTime>
 #include <QFile>

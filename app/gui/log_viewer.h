@@ -6,8 +6,8 @@
 // that moment. It plays (paced by the log's own times, 0.1x to 100x, or as fast as the views
 // draw), follows a file still being written (what it gained indexed on a worker thread), and
 // exports on a worker thread. Nothing on the GUI thread waits for the disk or for indexing.
-#include "log_cursor.h"
-#include "log_lines_model.h"
+#include "logview/log_cursor.h"
+#include "logview/log_lines_model.h"
 #include "models/receiver_session.h"
 
 #include <QElapsedTimer>

@@ -1,13 +1,13 @@
 // gnss-workbench: the GUI entry point.
-#include "app_transports.h"
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
-#include "main_window.h"
-#include "preferences.h"
-#include "startup_options.h"
+#include "common/app_transports.h"
+#include "gui/main_window.h"
+#include "gui/preferences.h"
+#include "gui/startup_options.h"
+#include "gui/window_screenshot.h"
+#include "gui/window_start.h"
 #include "style/app_icon.h"
-#include "window_screenshot.h"
-#include "window_start.h"
 
 #include <QApplication>
 #include <QLibraryInfo>

@@ -2,9 +2,9 @@
 // MainWindow: menus, docks, the connection bar and the status bar. It holds the receiver
 // sessions (ui::ReceiverSession: one per receiver, one for now) and gives each dock the session
 // it shows; its docks are the rows of dock_table.h. It does not decode or draw.
-#include "dock_table.h"
+#include "gui/dock_table.h"
+#include "gui/preferences.h"
 #include "link/source_spec.h"
-#include "preferences.h"
 
 #include <QList>
 #include <QMainWindow>

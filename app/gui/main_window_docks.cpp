@@ -1,10 +1,11 @@
 // MainWindow's docks: each made from its row of the dock table (dock_table.h) for the session it
 // shows, laid out by the table, and the wiring each view needs in its own maker.
-#include "corrections_controller.h"
-#include "log_events_view.h"
-#include "log_summary_view.h"
-#include "log_viewer.h"
-#include "main_window.h"
+#include "gui/corrections_controller.h"
+#include "gui/log_viewer.h"
+#include "gui/main_window.h"
+#include "logview/log_events_view.h"
+#include "logview/log_summary_view.h"
+#include "logview/whole_log_panels.h"
 #include "models/receiver_session.h"
 #include "session/receiver_link.h"
 #include "settings/settings_view.h"
@@ -19,7 +20,6 @@
 #include "views/rtk_view.h"
 #include "views/signal_levels_view.h"
 #include "views/sky_plot_view.h"
-#include "whole_log_panels.h"
 #include "widgets/fitted_columns.h"
 
 #include <QAction>

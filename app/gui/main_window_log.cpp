@@ -2,15 +2,15 @@
 // range statistics, whole-log charts, track), File → Open Log / Open Recent / Export / Close,
 // drag and drop. The live docks are the same ones: LogViewer publishes the state at the cursor
 // into their models.
-#include "log_player.h"
-#include "log_view.h"
-#include "log_viewer.h"
-#include "main_window.h"
+#include "gui/log_player.h"
+#include "gui/log_viewer.h"
+#include "gui/main_window.h"
+#include "gui/play_out_dialog.h"
+#include "logview/log_view.h"
+#include "logview/timeline_panel.h"
+#include "logview/timeline_strip.h"
 #include "models/receiver_session.h"
-#include "play_out_dialog.h"
 #include "session/receiver_link.h"
-#include "timeline_panel.h"
-#include "timeline_strip.h"
 #include "views/console_view.h"
 
 #include <QAction>

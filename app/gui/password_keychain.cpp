@@ -1,4 +1,4 @@
-#include "password_keychain.h"
+#include "gui/password_keychain.h"
 
 #ifdef GNSS_HAVE_KEYCHAIN
 #include <qt6keychain/keychain.h>

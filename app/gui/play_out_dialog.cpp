@@ -1,8 +1,8 @@
-#include "play_out_dialog.h"
+#include "gui/play_out_dialog.h"
 
 #include "core/baud_rates.h"
-#include "log_player.h"
-#include "log_viewer.h"
+#include "gui/log_player.h"
+#include "gui/log_viewer.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,4 +1,4 @@
-#include "preferences.h"
+#include "gui/preferences.h"
 
 #include "core/baud_rates.h"
 

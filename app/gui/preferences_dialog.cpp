@@ -1,4 +1,4 @@
-#include "preferences_dialog.h"
+#include "gui/preferences_dialog.h"
 #include "style/gnss_style.h"
 
 #include <QComboBox>

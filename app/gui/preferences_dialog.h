@@ -1,7 +1,7 @@
 #pragma once
 // The Preferences dialog (Edit → Preferences…): language, theme, units, coordinate format, time
 // zone and the baud rates "auto" tries. It edits a copy; the caller applies what it returns.
-#include "preferences.h"
+#include "gui/preferences.h"
 
 #include <QDialog>
 

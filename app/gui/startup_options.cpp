@@ -1,7 +1,7 @@
-#include "startup_options.h"
+#include "gui/startup_options.h"
 
 #include "link/gpsd_transport.h"
-#include "log_time.h"
+#include "logview/log_time.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

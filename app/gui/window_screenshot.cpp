@@ -1,4 +1,4 @@
-#include "window_screenshot.h"
+#include "gui/window_screenshot.h"
 
 #include <QCoreApplication>
 #include <QDockWidget>

@@ -1,7 +1,7 @@
-#include "window_start.h"
+#include "gui/window_start.h"
 
-#include "main_window.h"
-#include "startup_options.h"
+#include "gui/main_window.h"
+#include "gui/startup_options.h"
 
 #include <QApplication>
 

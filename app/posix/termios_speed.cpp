@@ -1,4 +1,4 @@
-#include "termios_speed.h"
+#include "posix/termios_speed.h"
 
 #include <utility>
 

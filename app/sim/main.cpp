@@ -15,8 +15,8 @@
 // With --rtcm-base the same loop carries an RTCM 3 base station's stream instead.
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
-#include "sim_args.h"
-#include "termios_speed.h"
+#include "posix/termios_speed.h"
+#include "sim/sim_args.h"
 
 #include <arpa/inet.h>
 #include <cerrno>

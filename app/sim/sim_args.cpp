@@ -1,4 +1,4 @@
-#include "sim_args.h"
+#include "sim/sim_args.h"
 
 #include <algorithm>
 #include <charconv>

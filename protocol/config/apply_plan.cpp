@@ -1,9 +1,9 @@
-#include "apply_plan.h"
+#include "config/apply_plan.h"
 
-#include "command_queue.h"
+#include "config/setting_values.h"
 #include "core/sentence.h"
 #include "core/setting_command.h"
-#include "setting_values.h"
+#include "link/command_queue.h"
 
 #include <QString>
 

@@ -1,7 +1,7 @@
-#include "apply_verdicts.h"
+#include "config/apply_verdicts.h"
 
+#include "config/setting_values.h"
 #include "core/sentence_builder.h"
-#include "setting_values.h"
 
 #include <algorithm>
 

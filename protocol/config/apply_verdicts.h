@@ -4,8 +4,8 @@
 // link went in the middle), and again when the settings of an interrupted apply are read back.
 // Pure functions of their arguments: tested without a queue (tests/config/tst_apply_verdicts).
 // SettingsEngine gathers the facts and keeps its own memory (reported and written values).
-#include "command_queue.h"
 #include "core/settings_schema.h"
+#include "link/command_queue.h"
 
 #include <QList>
 

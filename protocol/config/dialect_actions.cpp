@@ -1,4 +1,4 @@
-#include "dialect_actions.h"
+#include "config/dialect_actions.h"
 
 #include "core/sentence_builder.h"
 

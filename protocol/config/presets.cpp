@@ -1,4 +1,4 @@
-#include "presets.h"
+#include "config/presets.h"
 
 #include <string>
 

@@ -1,6 +1,6 @@
-#include "refusal_text.h"
+#include "config/refusal_text.h"
 
-#include "schema_texts.h"
+#include "config/schema_texts.h"
 
 #include <QCoreApplication>
 

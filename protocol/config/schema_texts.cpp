@@ -1,4 +1,4 @@
-#include "schema_texts.h"
+#include "config/schema_texts.h"
 
 #include <QCoreApplication>
 

@@ -6,15 +6,15 @@
 #include "core/settings_plan.h"
 #include "core/stream_decoder.h"
 
-#include "settings_engine.h"
+#include "config/settings_engine.h"
 
-#include "apply_plan.h"
+#include "config/apply_plan.h"
 
-#include "connection.h"
-#include "refusal_text.h"
-#include "schema_texts.h"
-#include "setting_values.h"
-#include "transport.h"
+#include "config/refusal_text.h"
+#include "config/schema_texts.h"
+#include "config/setting_values.h"
+#include "link/connection.h"
+#include "link/transport.h"
 
 #include <QDateTime>
 

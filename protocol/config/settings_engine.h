@@ -21,13 +21,13 @@
 //   action save to flash / restore defaults / cold, warm, hot start, where the dialect has one.
 //
 // One operation at a time, with progress; cancel() stops it (queued commands are cancelled).
-#include "apply_verdicts.h"
-#include "dialect_actions.h"
-#include "settings_profile.h"
+#include "config/apply_verdicts.h"
+#include "config/dialect_actions.h"
+#include "config/settings_profile.h"
 
-#include "command_queue.h"
 #include "core/dialect.h"
 #include "core/stream_decoder.h"
+#include "link/command_queue.h"
 #include "state/receiver_state.h"
 
 #include <QObject>

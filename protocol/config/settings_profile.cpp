@@ -1,9 +1,9 @@
-#include "settings_profile.h"
+#include "config/settings_profile.h"
 
 #include "config/utf8_text.h"
 
-#include "refusal_text.h"
-#include "setting_values.h"
+#include "config/refusal_text.h"
+#include "config/setting_values.h"
 
 #include "core/settings_plan.h"
 

@@ -2,7 +2,7 @@
 // The frame of every field-reading decoder: a FieldReader over the sentence, an empty message,
 // `read` filling it when the sentence has at least `required` fields, then finishDecode (the
 // message delivered, or the reader's first problem reported).
-#include "finish_decode.h"
+#include "core/finish_decode.h"
 
 #include <cstddef>
 

@@ -5,12 +5,12 @@
 // plus one line in protocol/builtin/dialects.cpp (and its simulated receiver, when it has one,
 // a row in protocol/builtin/simulators.cpp): the record knows no simulator. Nothing else names
 // vendors: not the decoder, not the views (docs/adding-a-dialect.md).
-#include "fix_type.h"
-#include "function_ref.h"
-#include "message.h"
-#include "satellite.h"
-#include "sentence.h"
-#include "settings_schema.h"
+#include "core/fix_type.h"
+#include "core/function_ref.h"
+#include "core/message.h"
+#include "core/satellite.h"
+#include "core/sentence.h"
+#include "core/settings_schema.h"
 
 #include <cstdint>
 #include <memory>

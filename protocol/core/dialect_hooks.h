@@ -7,7 +7,7 @@
 //     }
 //
 // (A function type declares a function of that signature; the definition is written out.)
-#include "dialect.h"
+#include "core/dialect.h"
 
 #include <vector>
 

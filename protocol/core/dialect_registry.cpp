@@ -1,4 +1,4 @@
-#include "dialect_registry.h"
+#include "core/dialect_registry.h"
 
 namespace gnss {
 

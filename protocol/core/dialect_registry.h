@@ -1,7 +1,7 @@
 #pragma once
 // DialectRegistry: the dialects the program knows, and sentence lookup across them.
 // Built once by the application (see protocol/dialects.h) and injected where needed.
-#include "dialect.h"
+#include "core/dialect.h"
 
 #include <string>
 #include <unordered_map>

@@ -1,6 +1,6 @@
-#include "field_parse.h"
+#include "core/field_parse.h"
 
-#include "hex_digit.h"
+#include "core/hex_digit.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,7 +1,7 @@
 #pragma once
 // Field parsers: text → numbers, coordinates, times, dates. No allocation, no exceptions, no
 // locale: these run for every field of every sentence.
-#include "field_types.h"
+#include "core/field_types.h"
 
 #include <cstdint>
 #include <string_view>

@@ -1,4 +1,4 @@
-#include "field_reader.h"
+#include "core/field_reader.h"
 
 #include <climits>
 

@@ -4,9 +4,9 @@
 // Empty fields read as std::nullopt; a field that is present but malformed records an error
 // (the first one wins) and also reads as std::nullopt, so a decoder reads every field straight
 // through and checks ok() once at the end. Nothing throws.
-#include "field_parse.h"
-#include "refusal.h"
-#include "sentence.h"
+#include "core/field_parse.h"
+#include "core/refusal.h"
+#include "core/sentence.h"
 
 #include <optional>
 #include <string>

@@ -8,10 +8,10 @@
 // (writeFieldsJson) and, where a dialect has an encoder, tell it how each field is printed
 // (decimals, range). A message that is nothing but its rows derives from FieldMessage and is
 // decoded by decodeMessage<M>.
-#include "decode_with.h"
-#include "field_reader.h"
-#include "json_writer.h"
-#include "message.h"
+#include "core/decode_with.h"
+#include "core/field_reader.h"
+#include "core/json_writer.h"
+#include "core/message.h"
 
 #include <cstddef>
 #include <cstdint>

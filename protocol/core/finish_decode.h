@@ -1,8 +1,8 @@
 #pragma once
 // The step every field-reading decoder ends with: deliver the message, or report the reader's
 // first problem (the field and what it holds) and deliver nothing.
-#include "dialect.h"
-#include "field_reader.h"
+#include "core/dialect.h"
+#include "core/field_reader.h"
 
 namespace gnss {
 

@@ -1,4 +1,4 @@
-#include "fix_type.h"
+#include "core/fix_type.h"
 
 namespace gnss {
 

@@ -12,7 +12,7 @@
 //  - a byte that cannot be in an NMEA sentence (control or 8-bit) inside a sentence means we were
 //    not in a sentence at all (binary data that happened to contain 0x24): the bytes are counted
 //    as skipped binary and we resynchronise → binaryAborted++.
-#include "function_ref.h"
+#include "core/function_ref.h"
 
 #include <cstddef>
 #include <cstdint>

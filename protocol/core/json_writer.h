@@ -1,7 +1,7 @@
 #pragma once
 // A minimal streaming JSON writer (objects, arrays, strings, numbers, null). Commas are placed
 // automatically. Used by `gnss-cli` output and by each message's writeJson().
-#include "field_types.h"
+#include "core/field_types.h"
 
 #include <cstdint>
 #include <optional>

@@ -4,7 +4,7 @@
 // Each message struct derives from Message, names its MessageType (a static tag, so a new
 // message needs no central enum) and writes its decoded values as JSON. Consumers that need one
 // type use message_cast<T>(m); the rest treat messages generically.
-#include "json_writer.h"
+#include "core/json_writer.h"
 
 #include <string_view>
 

@@ -6,7 +6,7 @@
 //
 //     constexpr int kSupportedBauds[] = {4800, 9600};
 //     ... .options = kNumberOptions<kSupportedBauds>, ...
-#include "settings_schema.h"
+#include "core/settings_schema.h"
 
 #include <array>
 #include <cstddef>

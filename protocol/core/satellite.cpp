@@ -1,4 +1,4 @@
-#include "satellite.h"
+#include "core/satellite.h"
 
 #include <array>
 #include <cstdio>

@@ -1,8 +1,8 @@
 #pragma once
 // One satellite in view as JSON, the same keys wherever a satellite is written (a GSV sentence's
 // satellites, an epoch's sky).
-#include "json_writer.h"
-#include "satellite.h"
+#include "core/json_writer.h"
+#include "core/satellite.h"
 
 #include <string_view>
 

@@ -1,7 +1,7 @@
-#include "sentence.h"
+#include "core/sentence.h"
 
-#include "hex_digit.h"
-#include "refusal.h"
+#include "core/hex_digit.h"
+#include "core/refusal.h"
 
 #include <array>
 #include <cstring>

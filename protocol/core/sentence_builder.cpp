@@ -1,7 +1,7 @@
-#include "sentence_builder.h"
+#include "core/sentence_builder.h"
 
-#include "framer.h"
-#include "sentence.h"
+#include "core/framer.h"
+#include "core/sentence.h"
 
 #include <cstdio>
 

@@ -5,7 +5,7 @@
 // engine, `gnss-cli encode`, profiles and the simulator plan from these rows: which sentences
 // write a change, in what order, which settings must go out together, and which queries read
 // them back (settings_plan.h). Nothing plans from help or error text.
-#include "settings_schema.h"
+#include "core/settings_schema.h"
 
 #include <span>
 #include <string>

@@ -1,6 +1,6 @@
-#include "settings_plan.h"
+#include "core/settings_plan.h"
 
-#include "dialect.h"
+#include "core/dialect.h"
 
 #include <algorithm>
 

@@ -2,8 +2,8 @@
 // Settings plans from the schema's rows: a change or a read-back becomes the sentences of the
 // commands the rows name (setting_command.h), in the commands' order. The one implementation
 // behind every dialect's settings: the engine, `gnss-cli encode`, profiles and the simulator.
-#include "setting_command.h"
-#include "settings_schema.h"
+#include "core/setting_command.h"
+#include "core/settings_schema.h"
 
 #include <span>
 #include <string>

@@ -1,7 +1,7 @@
-#include "settings_schema.h"
+#include "core/settings_schema.h"
 
-#include "field_parse.h"
-#include "sentence_builder.h"
+#include "core/field_parse.h"
+#include "core/sentence_builder.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 //
 // One table per dialect is the single source of truth that the settings forms, `gnss-cli schema`,
 // `gnss-cli encode`, configuration profiles and the simulator all read.
-#include "refusal.h"
+#include "core/refusal.h"
 
 #include <cstdint>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "stream_decoder.h"
+#include "core/stream_decoder.h"
 
 #include <cstring>
 

@@ -5,9 +5,9 @@
 //
 // Never throws and never stops: every line ends up either decoded or reported with the reason
 // (unknown address, checksum bad or missing, malformed field), and counted per address.
-#include "dialect_registry.h"
-#include "framer.h"
-#include "function_ref.h"
+#include "core/dialect_registry.h"
+#include "core/framer.h"
+#include "core/function_ref.h"
 
 #include <array>
 #include <cstdint>

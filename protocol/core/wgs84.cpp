@@ -1,4 +1,4 @@
-#include "wgs84.h"
+#include "core/wgs84.h"
 
 #include <cmath>
 #include <numbers>

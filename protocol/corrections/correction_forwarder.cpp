@@ -1,8 +1,8 @@
-#include "correction_forwarder.h"
+#include "corrections/correction_forwarder.h"
 
-#include "command_queue.h"
+#include "link/command_queue.h"
+#include "link/transport.h"
 #include "rtcm/rtcm_framer.h"
-#include "transport.h"
 
 namespace {
 // A frame is written once the port holds less than this much not yet sent: one largest frame.

@@ -1,4 +1,4 @@
-#include "correction_source.h"
+#include "corrections/correction_source.h"
 
 namespace gnss::corrections {
 

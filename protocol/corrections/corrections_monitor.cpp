@@ -1,6 +1,6 @@
-#include "corrections_monitor.h"
+#include "corrections/corrections_monitor.h"
 
-#include "rtcm_message_names.h"
+#include "corrections/rtcm_message_names.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "file_correction_source.h"
+#include "corrections/file_correction_source.h"
 
 #include <QFile>
 #include <QFileInfo>

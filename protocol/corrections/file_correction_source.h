@@ -3,8 +3,8 @@
 // rtcm_file_plan.h: grouped by MSM epoch, or one 1005 a second), faster or slower by a speed
 // factor, once or in a loop. For trying a receiver's RTK without a base, and for tests.
 // The file is read when started; groups are sent from a timer, never by waiting.
-#include "correction_source.h"
-#include "rtcm_file_plan.h"
+#include "corrections/correction_source.h"
+#include "corrections/rtcm_file_plan.h"
 
 #include <QElapsedTimer>
 

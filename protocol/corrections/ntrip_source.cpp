@@ -1,7 +1,7 @@
-#include "ntrip_source.h"
+#include "corrections/ntrip_source.h"
 
-#include "source_table_request.h"
-#include "while_closing.h"
+#include "corrections/source_table_request.h"
+#include "link/while_closing.h"
 
 namespace gnss::corrections {
 

@@ -12,13 +12,13 @@
 // mountpoint wants it (the source table's nmea flag; when unknown, whenever a position is set).
 // Credentials go into the Authorization header and nowhere else: no status, error or
 // description holds them.
-#include "correction_source.h"
+#include "corrections/correction_source.h"
+#include "corrections/source_table_request.h"
 #include "ntrip/chunked_decoder.h"
 #include "ntrip/gga_upload.h"
 #include "ntrip/ntrip_request.h"
 #include "ntrip/response_head.h"
 #include "ntrip/source_table.h"
-#include "source_table_request.h"
 
 #include <QDateTime>
 #include <QTcpSocket>

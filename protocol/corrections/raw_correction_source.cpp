@@ -1,4 +1,4 @@
-#include "raw_correction_source.h"
+#include "corrections/raw_correction_source.h"
 
 namespace gnss::corrections {
 

@@ -3,7 +3,7 @@
 // radio modem on a serial port): what it reads while receiving is delivered as it comes, with no
 // framing to take off. Holds what the TCP and serial sources share: the read handler and the
 // `closing_` flag (link/while_closing.h) their device's handlers check.
-#include "correction_source.h"
+#include "corrections/correction_source.h"
 
 #include <QIODevice>
 

@@ -1,4 +1,4 @@
-#include "rover_position.h"
+#include "corrections/rover_position.h"
 
 namespace gnss::corrections {
 

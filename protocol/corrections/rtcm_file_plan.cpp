@@ -1,4 +1,4 @@
-#include "rtcm_file_plan.h"
+#include "corrections/rtcm_file_plan.h"
 
 #include "rtcm/rtcm_framer.h"
 #include "rtcm/rtcm_messages.h"

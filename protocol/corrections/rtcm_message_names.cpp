@@ -1,4 +1,4 @@
-#include "rtcm_message_names.h"
+#include "corrections/rtcm_message_names.h"
 
 #include "rtcm/rtcm_messages.h"
 

@@ -1,6 +1,6 @@
-#include "serial_correction_source.h"
+#include "corrections/serial_correction_source.h"
 
-#include "while_closing.h"
+#include "link/while_closing.h"
 
 namespace gnss::corrections {
 

@@ -2,7 +2,7 @@
 // SerialCorrectionSource: RTCM from a radio modem (or any device) on a second serial port,
 // beside the receiver's own. The port is opened read-only at the given speed; when it fails or
 // vanishes (USB unplugged) it is opened again after the backoff's wait.
-#include "raw_correction_source.h"
+#include "corrections/raw_correction_source.h"
 
 #include <QSerialPort>
 

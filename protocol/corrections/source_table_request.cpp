@@ -1,6 +1,6 @@
-#include "source_table_request.h"
+#include "corrections/source_table_request.h"
 
-#include "correction_source.h"
+#include "corrections/correction_source.h"
 #include "ntrip/redact.h"
 
 namespace gnss::corrections {

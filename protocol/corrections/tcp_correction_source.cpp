@@ -1,6 +1,6 @@
-#include "tcp_correction_source.h"
+#include "corrections/tcp_correction_source.h"
 
-#include "while_closing.h"
+#include "link/while_closing.h"
 
 namespace gnss::corrections {
 

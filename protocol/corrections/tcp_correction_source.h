@@ -2,7 +2,7 @@
 // TcpCorrectionSource: raw RTCM from a TCP server, e.g. a base receiver's port or a serial
 // server in front of a radio. Connects in the background; a drop, a refusal or a stall is
 // retried with the backoff.
-#include "raw_correction_source.h"
+#include "corrections/raw_correction_source.h"
 
 #include <QTcpSocket>
 

@@ -1,10 +1,10 @@
 // Section 4 of the GeoS-5 NMEA protocol v4.0: every input command, as data, and its encoders.
-#include "geostar_commands.h"
+#include "geostar/geostar_commands.h"
 
 #include "core/sentence_builder.h"
 #include "core/settings_plan.h"
-#include "geostar_dialect.h"
-#include "geostar_schema.h"
+#include "geostar/geostar_dialect.h"
+#include "geostar/geostar_schema.h"
 
 namespace gnss::geostar {
 namespace {

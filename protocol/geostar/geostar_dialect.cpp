@@ -1,13 +1,13 @@
 // GeoStar GeoS-5: sentence table and the dialect record.
-#include "geostar_dialect.h"
-#include "geostar_actions.h"
-#include "geostar_state.h"
+#include "geostar/geostar_dialect.h"
+#include "geostar/geostar_actions.h"
+#include "geostar/geostar_state.h"
 
-#include "geostar_gns.h"
-#include "geostar_messages.h"
-#include "geostar_numbering.h"
-#include "geostar_reply_rules.h"
-#include "geostar_schema.h"
+#include "geostar/geostar_gns.h"
+#include "geostar/geostar_messages.h"
+#include "geostar/geostar_numbering.h"
+#include "geostar/geostar_reply_rules.h"
+#include "geostar/geostar_schema.h"
 
 #include "core/sentence_builder.h"
 #include "core/settings_plan.h"

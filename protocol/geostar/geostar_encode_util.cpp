@@ -1,4 +1,4 @@
-#include "geostar_encode_util.h"
+#include "geostar/geostar_encode_util.h"
 
 #include "core/sentence_builder.h"
 #include "nmea/nmea_encoders.h"

@@ -6,8 +6,8 @@
 //
 // Each returns one complete sentence "$...*hh" (no CR LF), or refuses a value the sentence cannot
 // carry (EncodeResult::error names the field and what it accepts) and builds nothing.
-#include "geostar_commands.h"
-#include "geostar_messages.h"
+#include "geostar/geostar_commands.h"
+#include "geostar/geostar_messages.h"
 #include "nmea/nmea_messages.h"
 
 #include <string_view>

@@ -11,10 +11,10 @@
 // The spec prints the RTK subsidiaries one comma short ($GPGNS,153632.00,,,,,09,,,,000.8,0100;
 // restoring the comma gives the printed checksum): with 11 fields, age and station are 9 and 10.
 // Anything else (main sentences, single-system sentences) goes to the standard decoder.
-#include "geostar_gns.h"
+#include "geostar/geostar_gns.h"
 
-#include "geostar_encode_util.h"
-#include "geostar_encoders.h"
+#include "geostar/geostar_encode_util.h"
+#include "geostar/geostar_encoders.h"
 #include "nmea/nmea_messages.h"
 
 #include <cstdio>

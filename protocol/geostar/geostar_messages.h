@@ -4,8 +4,8 @@
 #include "core/dialect.h"
 #include "core/field_types.h"
 #include "core/message.h"
-#include "geostar_commands.h"
-#include "geostar_status_words.h"
+#include "geostar/geostar_commands.h"
+#include "geostar/geostar_status_words.h"
 
 #include <array>
 #include <cstdint>

@@ -10,9 +10,9 @@
 // unknown and shown as such.
 //   $GPSGG,NQUERY,1,3,2,R,0,R,1,0,0,0,1,1,0*71
 #include "core/decode_with.h"
-#include "geostar_encode_util.h"
-#include "geostar_encoders.h"
-#include "geostar_messages.h"
+#include "geostar/geostar_encode_util.h"
+#include "geostar/geostar_encoders.h"
+#include "geostar/geostar_messages.h"
 #include "nmea/nmea_messages.h"
 
 namespace gnss::geostar {

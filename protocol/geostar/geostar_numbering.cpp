@@ -1,4 +1,4 @@
-#include "geostar_numbering.h"
+#include "geostar/geostar_numbering.h"
 
 namespace gnss::geostar {
 

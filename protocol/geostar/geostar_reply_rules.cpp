@@ -2,9 +2,9 @@
 // are answered by their replies. No other command is acknowledged: a set command is confirmed by
 // the RQUERY/NQUERY reading that follows it (encodeSettings appends that query), restarts, port
 // speed changes and SWPROT are not answered at all.
-#include "geostar_reply_rules.h"
+#include "geostar/geostar_reply_rules.h"
 
-#include "geostar_commands.h"
+#include "geostar/geostar_commands.h"
 
 #include <string>
 #include <vector>

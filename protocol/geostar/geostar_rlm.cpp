@@ -7,9 +7,9 @@
 //   $GPRLM,123456789ABCD12,000128.00,3,333344445555666677778888*64
 // Message codes: 0 reserved, 1 acknowledgement, 2 command, 3 message, 4-E reserved, F test.
 #include "core/decode_with.h"
-#include "geostar_encode_util.h"
-#include "geostar_encoders.h"
-#include "geostar_messages.h"
+#include "geostar/geostar_encode_util.h"
+#include "geostar/geostar_encoders.h"
+#include "geostar/geostar_messages.h"
 #include "nmea/nmea_messages.h"
 
 namespace gnss::geostar {

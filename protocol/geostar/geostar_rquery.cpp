@@ -8,9 +8,9 @@
 // Example (docs/spec-notes.md, "RQUERY"; the spec prints the address as $GPGSGG):
 //   $GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C
 #include "core/decode_with.h"
-#include "geostar_encode_util.h"
-#include "geostar_encoders.h"
-#include "geostar_messages.h"
+#include "geostar/geostar_encode_util.h"
+#include "geostar/geostar_encoders.h"
+#include "geostar/geostar_messages.h"
 #include "nmea/nmea_messages.h"
 
 #include <cstdio>

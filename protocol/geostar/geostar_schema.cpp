@@ -1,12 +1,12 @@
 // GeoS-5 settings schema (section 4 commands; read back from RQUERY 3.11 / NQUERY 3.12).
 // The spec gives no factory defaults, so defaultValue stays empty.
-#include "geostar_schema.h"
+#include "geostar/geostar_schema.h"
 
 #include "core/field_parse.h"
 #include "core/number_options.h"
 #include "core/setting_command.h"
-#include "geostar_actions.h"
-#include "geostar_commands.h"
+#include "geostar/geostar_actions.h"
+#include "geostar/geostar_commands.h"
 
 #include <algorithm>
 

@@ -2,8 +2,8 @@
 // set command (extractSettings: the settings engine's read-back, the simulator's store) and
 // written into a reply (reportSettings: the simulator's answers). One table per mapping, so the
 // two directions cannot disagree.
-#include "geostar_messages.h"
-#include "geostar_schema.h"
+#include "geostar/geostar_messages.h"
+#include "geostar/geostar_schema.h"
 
 namespace gnss::geostar {
 namespace {

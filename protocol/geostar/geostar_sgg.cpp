@@ -6,9 +6,9 @@
 //   $GPSGG,NQUERY,<port>,...   reply (3.12)      $GPSGG,NQUERY   query (4.7)
 //   $GPSGG,JAMDET,             jamming detected (3.13; the trailing comma is part of it)
 //   $GPSGG,<command>           any other input command of section 4 (CSTART, BDR115, GGA ON...)
-#include "geostar_encode_util.h"
-#include "geostar_encoders.h"
-#include "geostar_messages.h"
+#include "geostar/geostar_encode_util.h"
+#include "geostar/geostar_encoders.h"
+#include "geostar/geostar_messages.h"
 #include "nmea/nmea_messages.h"
 
 namespace gnss::geostar {

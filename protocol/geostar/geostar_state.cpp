@@ -1,7 +1,7 @@
 // GeoStar messages → the vendor-neutral receiver state: identity from RQUERY (the module named by
 // configuration register 2), the status word and registers as reports, the jamming flag.
-#include "geostar_state.h"
-#include "geostar_messages.h"
+#include "geostar/geostar_state.h"
+#include "geostar/geostar_messages.h"
 #include "state/receiver_state.h"
 #include "state/report_json.h"
 

@@ -1,5 +1,5 @@
 // RQUERY words, tables 7-9 of the GeoS-5 NMEA protocol v4.0 (section 3.11).
-#include "geostar_status_words.h"
+#include "geostar/geostar_status_words.h"
 
 #include <cstdio>
 #include <span>

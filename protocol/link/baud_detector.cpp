@@ -1,9 +1,9 @@
-#include "baud_detector.h"
+#include "link/baud_detector.h"
 
 #include "core/baud_rates.h"
 #include "core/sentence.h"
-#include "sentence_stream.h"
-#include "transport.h"
+#include "link/sentence_stream.h"
+#include "link/transport.h"
 
 #include <QStringList>
 

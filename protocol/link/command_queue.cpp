@@ -1,11 +1,11 @@
-#include "command_queue.h"
+#include "link/command_queue.h"
 
-#include "sentence_stream.h"
+#include "link/sentence_stream.h"
 
 #include "core/baud_rates.h"
 
 #include "core/sentence_builder.h"
-#include "transport.h"
+#include "link/transport.h"
 
 #include <array>
 

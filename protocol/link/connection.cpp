@@ -1,4 +1,4 @@
-#include "connection.h"
+#include "link/connection.h"
 
 namespace gnss::link {
 

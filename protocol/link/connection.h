@@ -5,11 +5,11 @@
 // background fails, it says so and tries again after 1, 2, 4 ... 30 s (a serial device is looked
 // up by its serial number, so it is found again under a new port name); nothing waits in the
 // caller's thread. The recording continues into the same files with a gap mark.
-#include "command_queue.h"
 #include "core/stream_decoder.h"
-#include "recorder.h"
-#include "sentence_stream.h"
-#include "transport.h"
+#include "link/command_queue.h"
+#include "link/recorder.h"
+#include "link/sentence_stream.h"
+#include "link/transport.h"
 
 #include <QObject>
 #include <QTimer>

@@ -1,4 +1,4 @@
-#include "gpsd_reader.h"
+#include "link/gpsd_reader.h"
 
 #include <QJsonDocument>
 

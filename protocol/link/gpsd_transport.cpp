@@ -1,6 +1,6 @@
-#include "gpsd_transport.h"
+#include "link/gpsd_transport.h"
 
-#include "while_closing.h"
+#include "link/while_closing.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -11,8 +11,8 @@
 // receiver's sentences reach bytesReceived (GpsdReader strips gpsd's JSON and the hex dumps of
 // binary packets). Commands cannot be sent: gpsd owns the port and relays nothing to it, so
 // canWrite() is false and readOnlyReason() says so.
-#include "gpsd_reader.h"
-#include "transport.h"
+#include "link/gpsd_reader.h"
+#include "link/transport.h"
 
 #include <QStringList>
 #include <QTcpSocket>

@@ -1,7 +1,7 @@
-#include "link_opener.h"
+#include "link/link_opener.h"
 
 #include "core/baud_rates.h"
-#include "sentence_stream.h"
+#include "link/sentence_stream.h"
 
 #include <QStringList>
 

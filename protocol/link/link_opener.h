@@ -7,10 +7,10 @@
 // connection open, at the rate found, so nothing reopens a device a lock could refuse. Every
 // other source is made by the TransportFactory. The connection is returned unopened (open() it
 // after connecting to its signals): it opens at once or in the background.
-#include "baud_detector.h"
-#include "connection.h"
-#include "source_spec.h"
-#include "transport_factory.h"
+#include "link/baud_detector.h"
+#include "link/connection.h"
+#include "link/source_spec.h"
+#include "link/transport_factory.h"
 
 #include <QObject>
 

@@ -1,4 +1,4 @@
-#include "port_watcher.h"
+#include "link/port_watcher.h"
 
 #include <QSerialPortInfo>
 

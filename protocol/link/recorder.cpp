@@ -1,6 +1,6 @@
-#include "recorder.h"
+#include "link/recorder.h"
 
-#include "transport.h"
+#include "link/transport.h"
 
 #include <QDateTime>
 

@@ -3,7 +3,7 @@
 // received is written and flushed before the next one is taken, so bytes logged == bytes
 // received, also when the program ends or the link drops; a dropped link leaves a gap mark and
 // recording carries on into the same files.
-#include "recording.h"
+#include "link/recording.h"
 
 #include <QFile>
 #include <QObject>

@@ -1,4 +1,4 @@
-#include "recording.h"
+#include "link/recording.h"
 
 #include <QCoreApplication>
 #include <QFile>

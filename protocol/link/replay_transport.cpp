@@ -1,4 +1,4 @@
-#include "replay_transport.h"
+#include "link/replay_transport.h"
 
 #include "core/sentence.h"
 

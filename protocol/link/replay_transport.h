@@ -6,8 +6,8 @@
 // open() maps the file and times it on a worker thread (Connecting, with progress), so opening a
 // big log never holds up the thread the transport lives in; it turns Open when the timeline is
 // ready. Nothing of the log is copied into memory but the bytes being delivered.
-#include "recording.h"
-#include "transport.h"
+#include "link/recording.h"
+#include "link/transport.h"
 
 #include <QElapsedTimer>
 #include <QTimer>

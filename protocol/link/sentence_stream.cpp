@@ -1,6 +1,6 @@
-#include "sentence_stream.h"
+#include "link/sentence_stream.h"
 
-#include "transport.h"
+#include "link/transport.h"
 
 namespace gnss::link {
 

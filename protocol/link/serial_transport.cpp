@@ -1,4 +1,4 @@
-#include "serial_transport.h"
+#include "link/serial_transport.h"
 
 #include <QFile>
 #include <QFileInfo>

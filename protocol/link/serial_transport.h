@@ -2,8 +2,8 @@
 // SerialTransport: a receiver on a serial port (QSerialPort). When the port errors or vanishes
 // (USB unplug) the transport goes Lost and closes the device; reopening it is the Connection's
 // job. A port known by its USB serial number is found again under a new name (ttyUSB0 → ttyUSB1).
-#include "port_watcher.h"
-#include "transport.h"
+#include "link/port_watcher.h"
+#include "link/transport.h"
 
 #include <QSerialPort>
 

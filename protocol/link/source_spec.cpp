@@ -1,4 +1,4 @@
-#include "source_spec.h"
+#include "link/source_spec.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
-#include "tcp_transport.h"
+#include "link/tcp_transport.h"
 
-#include "while_closing.h"
+#include "link/while_closing.h"
 
 namespace gnss::link {
 

@@ -3,7 +3,7 @@
 // receivers, gnss-sim --tcp). open() starts connecting and returns at once: the transport is
 // Connecting until the socket connects (Open) or fails or times out (Closed, with the reason).
 // Nothing here waits, so a GUI stays responsive with an unreachable host.
-#include "transport.h"
+#include "link/transport.h"
 
 #include <QTcpSocket>
 #include <QTimer>

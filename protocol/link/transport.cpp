@@ -1,4 +1,4 @@
-#include "transport.h"
+#include "link/transport.h"
 
 namespace gnss::link {
 

@@ -1,10 +1,10 @@
-#include "transport_factory.h"
+#include "link/transport_factory.h"
 
 #include "core/baud_rates.h"
-#include "gpsd_transport.h"
-#include "replay_transport.h"
-#include "serial_transport.h"
-#include "tcp_transport.h"
+#include "link/gpsd_transport.h"
+#include "link/replay_transport.h"
+#include "link/serial_transport.h"
+#include "link/tcp_transport.h"
 
 #include <QCoreApplication>
 

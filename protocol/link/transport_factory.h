@@ -3,8 +3,8 @@
 // recorded logs are built in; the application adds what the link library does not know (the
 // built-in simulator) with add(). The GUI and every gnss-cli command use one
 // factory, so each command accepts every source the application knows.
-#include "source_spec.h"
-#include "transport.h"
+#include "link/source_spec.h"
+#include "link/transport.h"
 
 #include <QString>
 #include <QStringList>

@@ -1,10 +1,10 @@
-#include "vendor_detector.h"
+#include "link/vendor_detector.h"
 
-#include "command_queue.h"
 #include "core/json_writer.h"
-#include "sentence_stream.h"
+#include "link/command_queue.h"
+#include "link/sentence_stream.h"
+#include "link/transport.h"
 #include "state/receiver_state.h"
-#include "transport.h"
 
 namespace gnss::link {
 

@@ -1,4 +1,4 @@
-#include "epoch_runner.h"
+#include "logview/epoch_runner.h"
 
 #include "state/log_scan.h"
 

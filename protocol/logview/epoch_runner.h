@@ -8,7 +8,7 @@
 // tile the file: epoch k is [offset_k, offset_k+1).
 #include "core/framer.h"
 #include "core/stream_decoder.h"
-#include "epoch_record.h"
+#include "logview/epoch_record.h"
 #include "state/state_tracker.h"
 
 #include <atomic>

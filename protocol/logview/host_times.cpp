@@ -1,4 +1,4 @@
-#include "host_times.h"
+#include "logview/host_times.h"
 
 #include <algorithm>
 #include <charconv>

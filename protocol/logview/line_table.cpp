@@ -1,4 +1,4 @@
-#include "line_table.h"
+#include "logview/line_table.h"
 
 #include "core/framer.h"
 

@@ -1,7 +1,7 @@
-#include "log_events.h"
+#include "logview/log_events.h"
 
 #include "core/dialect_registry.h"
-#include "log_time.h"
+#include "logview/log_time.h"
 
 #include <cstdio>
 

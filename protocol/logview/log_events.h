@@ -2,8 +2,8 @@
 // Events of a log, found in its epoch records: what a timeline marks and a user jumps between.
 // Vendor matters (time marks, jamming, base station) come through ReceiverState, filled by each
 // dialect's updateState: nothing here names a vendor's sentence or field.
-#include "epoch_record.h"
-#include "host_times.h"
+#include "logview/epoch_record.h"
+#include "logview/host_times.h"
 
 #include <span>
 #include <string>

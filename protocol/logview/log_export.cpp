@@ -1,6 +1,6 @@
-#include "log_export.h"
+#include "logview/log_export.h"
 
-#include "log_time.h"
+#include "logview/log_time.h"
 
 #include <cmath>
 #include <cstdio>

@@ -2,7 +2,7 @@
 // Export of a log or a range of its epochs: GPX 1.1, KML (the track coloured by fix type, in the
 // views' fix colours), CSV (one row per epoch, docs/export.md) and the NMEA bytes exactly as they
 // are in the file. Written through a sink in pieces, so a whole log never sits in memory twice.
-#include "epoch_record.h"
+#include "logview/epoch_record.h"
 
 #include <functional>
 #include <optional>

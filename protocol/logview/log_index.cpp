@@ -1,4 +1,4 @@
-#include "log_index.h"
+#include "logview/log_index.h"
 
 #include "state/log_scan.h"
 

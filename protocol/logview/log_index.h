@@ -10,7 +10,7 @@
 // both states are the same (StateTracker::sameFuture): from there on, the piece's own epochs and
 // checkpoints are exact. A piece that never agrees (a dialect recognised differently, vendor
 // state sent once at the start of the log) is decoded again whole: slower, never wrong.
-#include "epoch_runner.h"
+#include "logview/epoch_runner.h"
 
 #include <atomic>
 #include <functional>

@@ -1,6 +1,6 @@
-#include "log_range.h"
+#include "logview/log_range.h"
 
-#include "log_view.h"
+#include "logview/log_view.h"
 
 namespace gnss::logview {
 

@@ -2,7 +2,7 @@
 // Where a typed time lies in a log, and a range of epochs cut to the log. The command line's
 // --from/--to, the window's --at and the timeline's Go to box all ask here, so a time or epoch
 // outside the log is refused the same way everywhere (docs/cli.md, "Times and ranges").
-#include "log_time.h"
+#include "logview/log_time.h"
 
 #include <cstddef>
 #include <optional>

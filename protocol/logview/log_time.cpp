@@ -1,6 +1,6 @@
-#include "log_time.h"
+#include "logview/log_time.h"
 
-#include "epoch_runner.h"
+#include "logview/epoch_runner.h"
 
 #include <charconv>
 #include <cstdio>

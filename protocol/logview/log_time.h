@@ -1,6 +1,6 @@
 #pragma once
 // Times of the log viewer in text: what epochs show, and what users type for --from/--to.
-#include "epoch_record.h"
+#include "logview/epoch_record.h"
 
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-#include "log_timeline.h"
+#include "logview/log_timeline.h"
 
 #include <algorithm>
 

@@ -2,8 +2,8 @@
 // The flags of an epoch that depend on its neighbours (gaps, time going back, midnight without a
 // date, fix/station/jamming/dialect changes) and the host times of a recording, applied to the
 // records in file order. Incremental: a followed file goes on from the state kept.
-#include "epoch_record.h"
-#include "host_times.h"
+#include "logview/epoch_record.h"
+#include "logview/host_times.h"
 
 #include <cstdint>
 #include <vector>

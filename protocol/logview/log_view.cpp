@@ -1,4 +1,4 @@
-#include "log_view.h"
+#include "logview/log_view.h"
 
 #include "state/log_scan.h"
 

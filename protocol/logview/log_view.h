@@ -35,14 +35,14 @@
 //                                           // (from a worker thread: readers go on meanwhile)
 //
 // Problems are reported, never thrown: error() (nothing usable) and warnings() (what was kept).
-#include "line_table.h"
-#include "log_events.h"
-#include "log_export.h"
-#include "log_index.h"
-#include "log_time.h"
-#include "log_timeline.h"
-#include "mapped_log.h"
-#include "range_stats.h"
+#include "logview/line_table.h"
+#include "logview/log_events.h"
+#include "logview/log_export.h"
+#include "logview/log_index.h"
+#include "logview/log_time.h"
+#include "logview/log_timeline.h"
+#include "logview/mapped_log.h"
+#include "logview/range_stats.h"
 
 #include <condition_variable>
 #include <mutex>

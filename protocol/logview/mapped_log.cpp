@@ -1,4 +1,4 @@
-#include "mapped_log.h"
+#include "logview/mapped_log.h"
 
 #include <algorithm>
 #include <cerrno>

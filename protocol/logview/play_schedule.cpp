@@ -1,4 +1,4 @@
-#include "play_schedule.h"
+#include "logview/play_schedule.h"
 
 namespace gnss::logview {
 

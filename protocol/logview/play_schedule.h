@@ -2,7 +2,7 @@
 // When each epoch of a log is played out: seconds from the first epoch, by the recording's host
 // times when it has them, else the epochs' own times; a time that goes back (a reset) or is
 // missing adds nothing. Shared by `gnss-cli play` and the window's Play Out.
-#include "epoch_record.h"
+#include "logview/epoch_record.h"
 
 #include <span>
 #include <vector>

@@ -1,7 +1,7 @@
-#include "range_stats.h"
+#include "logview/range_stats.h"
 
 #include "core/wgs84.h"
-#include "log_time.h"
+#include "logview/log_time.h"
 
 #include <algorithm>
 #include <charconv>

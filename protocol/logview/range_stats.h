@@ -2,7 +2,7 @@
 // Statistics of a log or of a range of its epochs: how long, how good the fix, how steady the
 // position. Computed from the index alone (no decoding).
 #include "core/json_writer.h"
-#include "epoch_record.h"
+#include "logview/epoch_record.h"
 
 #include <array>
 #include <optional>

@@ -12,8 +12,8 @@
 //     mean anomaly. A sentence with 12 hex fields is read per the table (the "Mean" field kept
 //     as-is); one with 11 hex fields is read without it. Encoding writes the table's 12 fields,
 //     "Mean" = M0 unless set.
-#include "nemerix_commands.h"
-#include "nemerix_fields.h"
+#include "nemerix/nemerix_commands.h"
+#include "nemerix/nemerix_fields.h"
 
 namespace gnss::nemerix {
 

@@ -9,7 +9,7 @@
 // (e.g. the output of Dialect::encodeSettings) and recomputes its checksum. Decoding a renamed
 // prefix uses DecoderOptions::addressAliases {"PXYZW", "PNMRX"}.
 #include "core/settings_schema.h"
-#include "nemerix_messages.h"
+#include "nemerix/nemerix_messages.h"
 
 #include <cstdint>
 #include <optional>

@@ -10,7 +10,7 @@
 #include "core/decode_with.h"
 #include "core/field_table.h"
 #include "core/sentence_builder.h"
-#include "nemerix_commands.h"
+#include "nemerix/nemerix_commands.h"
 
 #include <cmath>
 

@@ -1,10 +1,10 @@
 // The Nemerix VT002 dialect record.
-#include "nemerix_dialect.h"
+#include "nemerix/nemerix_dialect.h"
 #include "core/sentence_builder.h"
-#include "nemerix_actions.h"
-#include "nemerix_state.h"
+#include "nemerix/nemerix_actions.h"
+#include "nemerix/nemerix_state.h"
 
-#include "nemerix_dialect_parts.h"
+#include "nemerix/nemerix_dialect_parts.h"
 
 namespace gnss::nemerix {
 

@@ -14,10 +14,10 @@
 // Every message stands alone here; EphemerisAssembler (nemerix_ephemeris.h) joins the three.
 // encodeEphemerisSubframe writes one message as the receiver sends it (each word in its
 // field's width: "$PNMRX301,5,1,3FC,00,0,00,0A4,0E10,00,0000,000000*hh").
-#include "nemerix_ephemeris.h"
+#include "nemerix/nemerix_ephemeris.h"
 #include "core/decode_with.h"
-#include "nemerix_commands.h"
-#include "nemerix_fields.h"
+#include "nemerix/nemerix_commands.h"
+#include "nemerix/nemerix_fields.h"
 
 namespace gnss::nemerix {
 

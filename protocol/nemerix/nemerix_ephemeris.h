@@ -2,7 +2,7 @@
 // Ephemeris assembly: PNMRX301 arrives as three messages per satellite (subframes 1, 2, 3);
 // EphemerisAssembler joins them and hands out one Ephemeris per satellite once all three have
 // arrived with a matching issue of data. Plain C++, usable by the GUI and the simulator.
-#include "nemerix_messages.h"
+#include "nemerix/nemerix_messages.h"
 
 #include <array>
 #include <optional>

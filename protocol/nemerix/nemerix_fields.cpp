@@ -1,4 +1,4 @@
-#include "nemerix_fields.h"
+#include "nemerix/nemerix_fields.h"
 
 #include "core/refusal.h"
 

@@ -14,8 +14,8 @@
 //     10  maximum altitude  metres, up to 6 digits
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"
-#include "nemerix_commands.h"
-#include "nemerix_fields.h"
+#include "nemerix/nemerix_commands.h"
+#include "nemerix/nemerix_fields.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "nemerix_hex.h"
+#include "nemerix/nemerix_hex.h"
 
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"

@@ -16,8 +16,8 @@
 //
 // The encoders write what the receiver sends: each hex word in its field's width (IS-GPS-200),
 // the SV id in decimal, the health codes as given.
-#include "nemerix_commands.h"
-#include "nemerix_fields.h"
+#include "nemerix/nemerix_commands.h"
+#include "nemerix/nemerix_fields.h"
 
 namespace gnss::nemerix {
 

@@ -8,7 +8,7 @@
 #include "core/field_reader.h"
 #include "core/finish_decode.h"
 #include "core/message.h"
-#include "nemerix_hex.h"
+#include "nemerix/nemerix_hex.h"
 
 #include <array>
 #include <cstdint>

@@ -11,7 +11,7 @@
 //             0-1 latitude, 2-3 longitude, 4 altitude MSL (m) — all or none —, 5 clock offset,
 //             6 time of week, 7 week number, 8 channel count
 #include "core/sentence_builder.h"
-#include "nemerix_commands.h"
+#include "nemerix/nemerix_commands.h"
 
 #include <cmath>
 

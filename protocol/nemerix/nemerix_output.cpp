@@ -6,8 +6,8 @@
 //   $PNMRX103, GSV, 2, GGA, 1, ZDA, 0,*28 fixed length (trailing comma)
 //   $PNMRX107,code,mode,...*hh   code: 300..304 ALL; mode: 0 off, 1 now, 2 on change, 3 both
 //   $PNMRX108,id,id,...*hh       the listed messages in this order, every second; others off
-#include "nemerix_commands.h"
-#include "nemerix_fields.h"
+#include "nemerix/nemerix_commands.h"
+#include "nemerix/nemerix_fields.h"
 
 #include <array>
 

@@ -2,7 +2,7 @@
 //
 //   $PNMRX112,m,t*hh   0 mode (0 fully active, 1 LDCM1 low duty cycle), 1 RF off time, 5..10 s
 //   $PNMRX112, 1, 5*6F low power mode with 5 s off time between two fixes
-#include "nemerix_commands.h"
+#include "nemerix/nemerix_commands.h"
 
 namespace gnss::nemerix {
 

@@ -1,6 +1,6 @@
 // The address prefix of outgoing commands, and the helpers every encoder ends with.
 #include "core/sentence_builder.h"
-#include "nemerix_commands.h"
+#include "nemerix/nemerix_commands.h"
 
 namespace gnss::nemerix {
 

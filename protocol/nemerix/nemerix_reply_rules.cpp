@@ -2,7 +2,7 @@
 // software version) and PNMRX603 (the settings, messages 0 to 4); every other command is taken
 // silently, so it counts as sent once written. Replies are matched on the number after the
 // prefix, so a renamed prefix ($PXYZW600) is recognised too.
-#include "nemerix_dialect_parts.h"
+#include "nemerix/nemerix_dialect_parts.h"
 
 namespace gnss::nemerix {
 

@@ -8,7 +8,7 @@
 //   $PNMRX111,COLD*hh         FACTORY, COLD, WARM or HOT
 //   $PNMRX113*6A              stops data extraction and fix generation until a reset
 #include "core/field_parse.h"
-#include "nemerix_commands.h"
+#include "nemerix/nemerix_commands.h"
 
 #include <algorithm>
 

@@ -1,8 +1,8 @@
 // The Nemerix sentence table: one row per PNMRX address (outputs and commands alike). The
 // standard sentences (GGA, GSA, GSV, RMC, VTG, GLL, ZDA: NMEA 3.0, GPS only) come from the
 // standard table. A renamed prefix is mapped back to PNMRX by DecoderOptions::addressAliases.
-#include "nemerix_dialect_parts.h"
-#include "nemerix_messages.h"
+#include "nemerix/nemerix_dialect_parts.h"
+#include "nemerix/nemerix_messages.h"
 
 namespace gnss::nemerix {
 

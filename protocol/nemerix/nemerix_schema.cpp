@@ -7,8 +7,8 @@
 // navigation modes, VDOP/altitude limits and power mode are not reported (or only in words whose
 // layout the spec does not give): those are write-only.
 #include "core/number_options.h"
-#include "nemerix_actions.h"
-#include "nemerix_dialect_parts.h"
+#include "nemerix/nemerix_actions.h"
+#include "nemerix/nemerix_dialect_parts.h"
 
 namespace gnss::nemerix {
 

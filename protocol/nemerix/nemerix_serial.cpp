@@ -6,8 +6,8 @@
 #include "core/baud_rates.h"
 #include "core/decode_with.h"
 #include "core/field_table.h"
-#include "nemerix_actions.h"
-#include "nemerix_commands.h"
+#include "nemerix/nemerix_actions.h"
+#include "nemerix/nemerix_commands.h"
 
 #include <algorithm>
 

@@ -8,9 +8,9 @@
 #include "core/field_parse.h"
 #include "core/sentence.h"
 #include "core/sentence_builder.h"
-#include "nemerix_actions.h"
-#include "nemerix_commands.h"
-#include "nemerix_dialect_parts.h"
+#include "nemerix/nemerix_actions.h"
+#include "nemerix/nemerix_commands.h"
+#include "nemerix/nemerix_dialect_parts.h"
 
 #include <map>
 

@@ -16,8 +16,8 @@
 // and the one-digit hex fields (valid, blocks, Kalman mode) of one; each value within the width
 // the spec's table gives its field. The spec prints no example of a report.
 #include "core/sentence_builder.h"
-#include "nemerix_commands.h"
-#include "nemerix_fields.h"
+#include "nemerix/nemerix_commands.h"
+#include "nemerix/nemerix_fields.h"
 
 #include <cmath>
 

@@ -9,8 +9,8 @@
 // has no command that reads a setting back: what a command sets is what it says.
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"
-#include "nemerix_commands.h"
-#include "nemerix_dialect_parts.h"
+#include "nemerix/nemerix_commands.h"
+#include "nemerix/nemerix_dialect_parts.h"
 
 #include <algorithm>
 #include <cmath>

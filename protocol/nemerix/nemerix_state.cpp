@@ -1,7 +1,7 @@
 // Nemerix messages → the vendor-neutral receiver state: version reports and the settings report
 // (PNMRX603) shown as status reports.
-#include "nemerix_state.h"
-#include "nemerix_messages.h"
+#include "nemerix/nemerix_state.h"
+#include "nemerix/nemerix_messages.h"
 #include "state/receiver_state.h"
 #include "state/report_json.h"
 

@@ -6,8 +6,8 @@
 //   $PNMRX602,...*hh    flash content version report, fields as sent
 //
 // encodeVersionReport writes a report's fields back as they were given.
-#include "nemerix_commands.h"
-#include "nemerix_fields.h"
+#include "nemerix/nemerix_commands.h"
+#include "nemerix/nemerix_fields.h"
 
 namespace gnss::nemerix {
 

@@ -4,7 +4,7 @@
 //          0 local datum (W84, W72, S85, P90, 999 user), 1 subdivision,
 //          2 latitude offset (minutes), 3 N/S, 4 longitude offset (minutes), 5 E/W,
 //          6 altitude offset (m), 7 reference datum
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

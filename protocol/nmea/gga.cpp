@@ -4,7 +4,7 @@
 //          0 time    1 lat  2  3 lon  4  5 quality
 //                                         6 sats used, 7 HDOP, 8 altitude MSL, 9 M,
 //                                         10 geoid separation, 11 M, 12 DGPS age, 13 station
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

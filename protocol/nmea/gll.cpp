@@ -2,7 +2,7 @@
 //
 //   $--GLL,llll.ll,a,yyyyy.yy,a,hhmmss.ss,A,a*hh
 //          0 lat  1  2 lon   3  4 time   5 status 6 mode (2.3+)
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

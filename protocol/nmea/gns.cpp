@@ -6,7 +6,7 @@
 //                                           9 geoid separation, 10 DGPS age, 11 station,
 //                                           12 navigational status (4.10+)
 // Subsidiary per-system sentences (GP/GL/GA talkers after a GN one) have empty position fields.
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

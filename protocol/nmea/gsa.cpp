@@ -5,7 +5,7 @@
 //          PDOP, HDOP, VDOP, then the GNSS system id (4.10+).
 // Receivers differ in the number of id slots, so the DOPs are found from the end: the system
 // id, when present, is a bare integer after three DOP fields.
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 #include "core/fixed_digits.h"
 

@@ -3,7 +3,7 @@
 //   $--GST,hhmmss.ss,x.x,x.x,x.x,x.x,x.x,x.x,x.x*hh
 //          0 time, 1 RMS of range residuals, 2 error ellipse semi-major (m), 3 semi-minor (m),
 //          4 orientation (deg), 5 sd latitude (m), 6 sd longitude (m), 7 sd altitude (m)
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

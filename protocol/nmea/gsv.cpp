@@ -6,7 +6,7 @@
 //          up to four per sentence, then the signal id (4.10+).
 // The constellation comes from the talker (GP, GL, GA, GB/BD, GQ, GI); GN and GP fall back to
 // the 2.x numbering ranges (see core/satellite.h).
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 #include "core/fixed_digits.h"
 #include "core/satellite_json.h"

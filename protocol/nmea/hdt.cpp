@@ -2,7 +2,7 @@
 //
 //   $--HDT,x.x,T*hh
 //          0 heading (degrees true), 1 T
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

@@ -1,6 +1,6 @@
 // Standard sentence encoders (see nmea_encoders.h). Layouts follow NMEA 0183 4.11 and the field
 // diagrams above each decoder in this folder.
-#include "nmea_encoders.h"
+#include "nmea/nmea_encoders.h"
 
 #include "core/sentence_builder.h"
 

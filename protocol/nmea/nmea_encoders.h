@@ -6,7 +6,7 @@
 //
 // Every function returns one complete sentence "$ttXXX,...*HH" (no CR LF). Empty optionals are
 // written as empty fields. The talker ("GP", "GN", "GL", ...) is chosen by the caller.
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 #include <optional>
 #include <span>

@@ -1,7 +1,7 @@
 // The standard sentence table: one row per sentence type.
-#include "nmea_rules.h"
+#include "nmea/nmea_rules.h"
 
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss {
 

@@ -1,6 +1,6 @@
 // Query: $ttllQ,c--c — talker tt asks listener ll for sentence c--c (NMEA 0183 4.11 §5.3.4).
 // NVS uses it to request single sentences: $GPGPQ,PNVGTST*21.
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

@@ -3,7 +3,7 @@
 //   $--RMC,hhmmss.ss,A,llll.ll,a,yyyyy.yy,a,x.x,x.x,ddmmyy,x.x,a,a,a*hh
 //          0 time  1 status 2 lat 3 4 lon 5 6 SOG (knots) 7 COG (deg true) 8 date
 //          9 magnetic variation, 10 E/W, 11 mode (2.3+), 12 navigational status (4.10+)
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

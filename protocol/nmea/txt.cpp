@@ -2,7 +2,7 @@
 //
 //   $--TXT,xx,xx,xx,c--c*hh
 //          0 total sentences, 1 sentence number, 2 text identifier, 3 text
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

@@ -3,7 +3,7 @@
 //   $--VTG,x.x,T,x.x,M,x.x,N,x.x,K,a*hh
 //          0 COG true, 1 T, 2 COG magnetic, 3 M, 4 SOG knots, 5 N, 6 SOG km/h, 7 K, 8 mode
 // NMEA 1.x form without the unit letters: $--VTG,x.x,x.x,x.x,x.x (true, magnetic, knots, km/h).
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

@@ -2,7 +2,7 @@
 //
 //   $--ZDA,hhmmss.ss,xx,xx,xxxx,xx,xx*hh
 //          0 time, 1 day, 2 month, 3 year, 4 local zone hours, 5 local zone minutes
-#include "nmea_messages.h"
+#include "nmea/nmea_messages.h"
 
 namespace gnss::nmea {
 

@@ -1,4 +1,4 @@
-#include "base64.h"
+#include "ntrip/base64.h"
 
 #include <cstdint>
 

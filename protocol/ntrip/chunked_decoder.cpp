@@ -1,4 +1,4 @@
-#include "chunked_decoder.h"
+#include "ntrip/chunked_decoder.h"
 
 #include "core/hex_digit.h"
 

@@ -1,4 +1,4 @@
-#include "gga_upload.h"
+#include "ntrip/gga_upload.h"
 
 #include "core/sentence_builder.h"
 

@@ -1,4 +1,4 @@
-#include "mountpoint_distance.h"
+#include "ntrip/mountpoint_distance.h"
 
 #include "core/wgs84.h"
 

@@ -2,7 +2,7 @@
 // How far a mountpoint's base is from the rover, and which one is nearest: great-circle
 // distance on a sphere of the Earth's mean radius, wgs84::kMeanRadius (the source table gives
 // positions to a hundredth of a degree at best, so an ellipsoid would add nothing).
-#include "source_table.h"
+#include "ntrip/source_table.h"
 
 #include "core/wgs84.h"
 

@@ -1,6 +1,6 @@
-#include "ntrip_request.h"
+#include "ntrip/ntrip_request.h"
 
-#include "base64.h"
+#include "ntrip/base64.h"
 
 namespace gnss::ntrip {
 

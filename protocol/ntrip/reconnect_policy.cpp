@@ -1,4 +1,4 @@
-#include "reconnect_policy.h"
+#include "ntrip/reconnect_policy.h"
 
 #include <algorithm>
 

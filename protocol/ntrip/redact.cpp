@@ -1,6 +1,6 @@
-#include "redact.h"
+#include "ntrip/redact.h"
 
-#include "base64.h"
+#include "ntrip/base64.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
-#include "response_head.h"
+#include "ntrip/response_head.h"
 
-#include "text_util.h"
+#include "ntrip/text_util.h"
 
 #include <array>
 

@@ -1,6 +1,6 @@
-#include "source_table.h"
+#include "ntrip/source_table.h"
 
-#include "text_util.h"
+#include "ntrip/text_util.h"
 
 #include <charconv>
 #include <cmath>

@@ -5,8 +5,8 @@
 //            0 time, 1 north, 2 east, 3 vertical projection (m), 4 length (m),
 //            5 course (deg from north), 6 pitch (deg from horizon), 7 mode (A D F R E N)
 //   PNVGBLS before rev 1.5: no time tag (fields 1-7 only).
-#include "nvs_encoders.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encoders.h"
+#include "nvs/nvs_output_fields.h"
 
 #include <span>
 

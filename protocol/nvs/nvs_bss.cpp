@@ -4,8 +4,8 @@
 //            0 RTCM messages received, 1 received with errors, 2 received without errors,
 //            3 distance to base station (m), 4 RTCM data age (s, 0-999.9; blank before the
 //            first RTCM message)
-#include "nvs_encoders.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encoders.h"
+#include "nvs/nvs_output_fields.h"
 
 namespace gnss::nvs {
 

@@ -4,7 +4,7 @@
 //
 //   $PNVGCFG,a*hh
 //            0 W save to flash, E erase (restore defaults), R erase and restart
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 namespace gnss::nvs {
 

@@ -1,6 +1,6 @@
 // Helpers shared by the NVS decoders.
 #include "core/field_parse.h"
-#include "nvs_messages.h"
+#include "nvs/nvs_messages.h"
 
 namespace gnss::nvs {
 

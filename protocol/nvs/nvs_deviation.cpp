@@ -4,8 +4,8 @@
 //   $PNVGSDP,hhmmss.ss,x.x,x.x,x.x,a*hh   0 time, 1 latitude, 2 longitude, 3 height (m), 4 mode
 //   $PNVGSDV,hhmmss.ss,x.x,x.x,x.x,a*hh   0 time, 1 north, 2 east, 3 vertical (m/s), 4 mode
 //   $PNVGSDH,hhmmss.ss,x.x,a*hh           0 time, 1 heading (deg), 2 mode
-#include "nvs_encoders.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encoders.h"
+#include "nvs/nvs_output_fields.h"
 
 namespace gnss::nvs {
 

@@ -1,12 +1,12 @@
 // The NVS NV08C-RTK dialect record: sentences, settings, commands and replies as one constant.
-#include "nvs_dialect.h"
+#include "nvs/nvs_dialect.h"
 #include "core/sentence_builder.h"
-#include "nvs_actions.h"
-#include "nvs_state.h"
+#include "nvs/nvs_actions.h"
+#include "nvs/nvs_state.h"
 
-#include "nvs_messages.h"
-#include "nvs_reply_rules.h"
-#include "nvs_schema.h"
+#include "nvs/nvs_messages.h"
+#include "nvs/nvs_reply_rules.h"
+#include "nvs/nvs_schema.h"
 
 namespace gnss::nvs {
 

@@ -3,8 +3,8 @@
 //
 //   $PNVGDOP,hhmmss.ss,x.x,x.x,x.x,x.x,x.x,x.x,x.x,a*hh
 //            0 time, 1 GDOP, 2 PDOP, 3 HDOP, 4 VDOP, 5 TDOP, 6 nDOP, 7 eDOP, 8 mode
-#include "nvs_encoders.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encoders.h"
+#include "nvs/nvs_output_fields.h"
 
 namespace gnss::nvs {
 

@@ -1,4 +1,4 @@
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 namespace gnss::nvs {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Private helpers of the NVS encoders: validation against the schema and result building.
-#include "nvs_encoders.h"
-#include "nvs_schema.h"
+#include "nvs/nvs_encoders.h"
+#include "nvs/nvs_schema.h"
 
 #include "core/sentence_builder.h"
 

@@ -6,7 +6,7 @@
 // the spec's range first (the settings schema rows where one exists) and builds nothing on
 // error: EncodeResult.error then names the parameter and the accepted range.
 #include "core/settings_schema.h"
-#include "nvs_messages.h"
+#include "nvs/nvs_messages.h"
 
 #include <cstddef>
 #include <optional>

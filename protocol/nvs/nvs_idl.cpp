@@ -7,8 +7,8 @@
 //   $PNVGIDL,CLEAR*hh           reply $PNVGIDL,CLEAR,OK*13
 //   $PNVGIDL,SHOW*hh            reply: one item per station:
 //   $PNVGIDL,x,x,xxxx,x.xxxx*hh 0 list length, 1 index (1-based), 2 station id, 3 ICB
-#include "nvs_encode_util.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encode_util.h"
+#include "nvs/nvs_output_fields.h"
 
 #include "core/field_parse.h"
 

@@ -3,8 +3,8 @@
 //   rev 1.5+  $PNVGIMU,hhmmss.ss,x,x,x,x,x,x*hh
 //             0 time, 1 roll, 2 pitch, 3 yaw (deg), 4 an, 5 ae, 6 ad (m/s^2, north/east/down)
 //   pre-1.5   $PNVGIMU,x,x,x,x,x,x*hh   (no time tag: the same fields shifted by one)
-#include "nvs_encoders.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encoders.h"
+#include "nvs/nvs_output_fields.h"
 
 #include <span>
 

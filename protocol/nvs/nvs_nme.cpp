@@ -3,7 +3,7 @@
 //
 //   $PNVGNME,x,x[,x]*hh
 //            0 time decimals (0-6), 1 position decimals (0-9), 2 talker mode (0/1, optional)
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 #include "core/field_table.h"
 

@@ -1,4 +1,4 @@
-#include "nvs_output_fields.h"
+#include "nvs/nvs_output_fields.h"
 
 #include "core/sentence_builder.h"
 #include "nmea/nmea_encoders.h"

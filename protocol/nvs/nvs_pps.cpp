@@ -5,7 +5,7 @@
 //            0 type (P software, A hardware), 1 mode (I interval, S 1PPS),
 //            2 reference (U UTC, S UTC(SU), G GLONASS, N GPS), 3 timescale adjustment (1/0),
 //            4 duration (1-1000 us), 5 validity control (E/D), 6 cable delay (ns)
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 #include "core/field_table.h"
 

@@ -4,7 +4,7 @@
 //   $ccGPQ,c-c*hh      $GPGPQ,PNVGTST*21
 //    cc requester talker (any), GP the receiver's talker (always GP), c-c the address wanted:
 //    3 characters for standard sentences, all 7 for proprietary ones
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 namespace gnss::nvs {
 

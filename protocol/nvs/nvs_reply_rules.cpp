@@ -7,7 +7,7 @@
 // - PNVGRTK answers with every parameter named in the request.
 // - PNVGIDL MODE/ADD echo, REMOVE/CLEAR answer "OK", SHOW answers with one item per station.
 // - PNVGRST and PNVGRZB have no reply.
-#include "nvs_reply_rules.h"
+#include "nvs/nvs_reply_rules.h"
 
 #include "core/field_parse.h"
 

@@ -2,7 +2,7 @@
 //
 //   $PNVGRST,a*hh
 //            0 reset type: F keep user settings + cold start, W keep user settings + warm restart
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 namespace gnss::nvs {
 

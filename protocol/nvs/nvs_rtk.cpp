@@ -6,7 +6,7 @@
 //   $PNVGRTK,MODE,1,BASEXYZ,4268995.2112,721584.9731,4668481.3737*1D
 //   $PNVGRTK,BASEBLH,0.8263954319,0.1674465031,467.7040*04
 //   $PNVGRTK,BASEXYZ*hh   (query)
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 #include "core/field_parse.h"
 #include "core/wgs84.h"

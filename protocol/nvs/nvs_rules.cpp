@@ -1,6 +1,6 @@
 // The NVS sentence table: one row per proprietary address (whole-address rules). Standard
 // sentences (GGA, RMC, GSA, GSV, VTG, ZDA, HDT, the Q query) come from the standard table.
-#include "nvs_messages.h"
+#include "nvs/nvs_messages.h"
 
 namespace gnss::nvs {
 

@@ -4,7 +4,7 @@
 //   $PNVGRZA,x,x,x*hh      $PNVGRZA,1,115200,1*6D
 //            0 port (0 current, 1 COM1, 2 COM2, 3 USB), 1 baud (4800-460800),
 //            2 protocol (0 disable, 1 NMEA 0183, 7 RTCM)
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 #include "core/field_table.h"
 

@@ -6,7 +6,7 @@
 //            PORT,x: 0 current, 1 UART1, 2 UART2, 3 USB (optional)
 //            c-c: 3 last characters of a standard address, or a proprietary address (all 7
 //            characters or the 3 last ones); x: output every x-th PVT
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 namespace gnss::nvs {
 

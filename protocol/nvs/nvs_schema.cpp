@@ -1,7 +1,7 @@
 // The NVS settings schema: every configurable parameter of the NV08C-RTK, as data.
 // Labels, ranges, defaults and help are the spec's (nvs-nv08c-rtk-nmea-v1.6.txt); where the spec
 // gives no range the row says what was inferred and from what.
-#include "nvs_schema.h"
+#include "nvs/nvs_schema.h"
 
 namespace gnss::nvs {
 namespace {

@@ -4,7 +4,7 @@
 #include "core/message.h"
 #include "core/setting_command.h"
 #include "core/settings_schema.h"
-#include "nvs_messages.h"
+#include "nvs/nvs_messages.h"
 
 #include <optional>
 

@@ -1,7 +1,7 @@
 // The commands the NVS schema's rows name (nvs_schema.cpp): how each group of settings is
 // written and read back (core/settings_plan.h plans from them), and decoded replies back to
 // KEY=VALUE pairs.
-#include "nvs_encode_util.h"
+#include "nvs/nvs_encode_util.h"
 
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"

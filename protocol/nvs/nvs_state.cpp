@@ -1,7 +1,7 @@
 // NVS messages → the vendor-neutral receiver state (RTK status, RTA heading, IMU attitude, time
 // marks, identity, self-test), so the views never see a PNVG sentence.
-#include "nvs_state.h"
-#include "nvs_messages.h"
+#include "nvs/nvs_state.h"
+#include "nvs/nvs_messages.h"
 #include "state/receiver_state.h"
 #include "state/report_json.h"
 

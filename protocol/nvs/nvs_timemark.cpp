@@ -6,8 +6,8 @@
 //            as GGA: 0 time, 1-2 latitude, 3-4 longitude, 5 quality (NVS: 4 RTK, 5 float,
 //            6 estimated), 6 satellites, 7 HDOP, 8 altitude MSL, 10 geoid separation,
 //            12 differential age, 13 station id
-#include "nvs_encode_util.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encode_util.h"
+#include "nvs/nvs_output_fields.h"
 
 #include "nmea/nmea_encoders.h"
 

@@ -3,8 +3,8 @@
 //   $PNVGTST,sx,cx[,sx,cx]...*hh
 //            name/result pairs: ID = device ID (decimal), ANT = antenna (0 active antenna
 //            connected, 1 no antenna, 2 short circuit)
-#include "nvs_encoders.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encoders.h"
+#include "nvs/nvs_output_fields.h"
 
 #include "core/field_parse.h"
 

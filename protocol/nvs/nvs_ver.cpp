@@ -4,8 +4,8 @@
 //   reply    $PNVGVER,c-c,c-c,xxxx,c-c,xxxx*hh
 //                     0 manufacturer (NVS), 1 device (RTK / RTA), 2 RTK FW version,
 //                     3 CSM HW (CSM24), 4 CSM FW version
-#include "nvs_encoders.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encoders.h"
+#include "nvs/nvs_output_fields.h"
 
 #include "core/sentence_builder.h"
 

@@ -2,8 +2,8 @@
 //
 //   $PNVGVOG,hhmmss.ss,x.x,x.x,x.x,a*hh
 //            0 time, 1 north, 2 east, 3 vertical velocity (m/s), 4 mode (A D F R E N)
-#include "nvs_encoders.h"
-#include "nvs_output_fields.h"
+#include "nvs/nvs_encoders.h"
+#include "nvs/nvs_output_fields.h"
 
 namespace gnss::nvs {
 

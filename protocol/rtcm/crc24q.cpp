@@ -1,4 +1,4 @@
-#include "crc24q.h"
+#include "rtcm/crc24q.h"
 
 #include <array>
 

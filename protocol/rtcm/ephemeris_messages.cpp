@@ -1,6 +1,6 @@
 // Broadcast ephemerides: which satellite, which issue (week, IODE/IODC, toc/toe, health). The
 // orbit and clock terms in between are skipped by their widths; the payload must hold them all.
-#include "message_decoders.h"
+#include "rtcm/message_decoders.h"
 
 namespace gnss::rtcm {
 namespace {

@@ -1,5 +1,5 @@
 // 1230: GLONASS L1 and L2 code-phase biases (what a rover needs to mix GLONASS receivers).
-#include "message_decoders.h"
+#include "rtcm/message_decoders.h"
 
 namespace gnss::rtcm {
 

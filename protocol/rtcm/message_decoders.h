@@ -1,8 +1,8 @@
 #pragma once
 // The per-family decoders behind decodeMessage() (one file each). Internal to gnss_rtcm: each
 // is called with the reader just past DF002 and fills the message's station, body or error.
-#include "bit_reader.h"
-#include "rtcm_messages.h"
+#include "rtcm/bit_reader.h"
+#include "rtcm/rtcm_messages.h"
 
 namespace gnss::rtcm {
 

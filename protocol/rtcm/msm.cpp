@@ -1,5 +1,5 @@
 // Multiple Signal Messages (MSM1..MSM7) of every system: header decoded, body length checked.
-#include "message_decoders.h"
+#include "rtcm/message_decoders.h"
 
 #include <bit>
 

@@ -1,7 +1,7 @@
 // MSM signal ids → RINEX 3 observation codes, per system (RTCM 10403.3 tables 3.5-91 GPS,
 // 3.5-96 GLONASS, 3.5-99 Galileo, 3.5-102 SBAS, 3.5-105 QZSS, 3.5-108 BeiDou, NavIC table of
 // amendment 2). Ids the tables leave reserved have no name: they are printed by number.
-#include "rtcm_messages.h"
+#include "rtcm/rtcm_messages.h"
 
 #include <array>
 

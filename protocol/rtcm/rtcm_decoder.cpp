@@ -1,5 +1,5 @@
 // decodeMessage: reads DF002 and hands the payload to the family's decoder.
-#include "message_decoders.h"
+#include "rtcm/message_decoders.h"
 
 namespace gnss::rtcm {
 namespace {

@@ -1,8 +1,8 @@
-#include "rtcm_encoder.h"
+#include "rtcm/rtcm_encoder.h"
 
-#include "bit_writer.h"
-#include "crc24q.h"
-#include "rtcm_framer.h"
+#include "rtcm/bit_writer.h"
+#include "rtcm/crc24q.h"
+#include "rtcm/rtcm_framer.h"
 
 #include <bit>
 #include <cmath>

@@ -3,7 +3,7 @@
 // the whole frame (0xD3, length, payload, CRC-24Q) as bytes in a std::string, or an empty string
 // when the payload would not fit a frame (over 1023 bytes). Fields out of range are cut to their
 // width, as the wire would carry them.
-#include "rtcm_messages.h"
+#include "rtcm/rtcm_messages.h"
 
 #include <cstdint>
 #include <span>

@@ -1,6 +1,6 @@
-#include "rtcm_framer.h"
+#include "rtcm/rtcm_framer.h"
 
-#include "crc24q.h"
+#include "rtcm/crc24q.h"
 
 #include <algorithm>
 #include <cstring>

@@ -1,6 +1,6 @@
-#include "rtcm_json.h"
+#include "rtcm/rtcm_json.h"
 
-#include "rtcm_stream_decoder.h"
+#include "rtcm/rtcm_stream_decoder.h"
 
 #include <string>
 

@@ -2,7 +2,7 @@
 // JSON of RTCM messages, as `gnss-cli rtcm` prints them: one object per message,
 // {"type":1005,"length":19,"station":2003,...decoded fields...}, "error" when not decoded.
 #include "core/json_writer.h"
-#include "rtcm_messages.h"
+#include "rtcm/rtcm_messages.h"
 
 namespace gnss::rtcm {
 

@@ -1,4 +1,4 @@
-#include "rtcm_stream_decoder.h"
+#include "rtcm/rtcm_stream_decoder.h"
 
 namespace gnss::rtcm {
 

@@ -5,8 +5,8 @@
 //
 // Like the NMEA StreamDecoder: never throws, never stops; a frame whose payload cannot be read
 // whole is still handed over (with its error) and counted.
-#include "rtcm_framer.h"
-#include "rtcm_messages.h"
+#include "rtcm/rtcm_framer.h"
+#include "rtcm/rtcm_messages.h"
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,6 @@
 // Reference station messages: 1005/1006 (antenna reference point) and 1007/1008/1033 (antenna
 // and receiver descriptors).
-#include "message_decoders.h"
+#include "rtcm/message_decoders.h"
 
 namespace gnss::rtcm {
 

@@ -1,4 +1,4 @@
-#include "dialect_receiver.h"
+#include "sim/dialect_receiver.h"
 
 namespace gnss::sim {
 

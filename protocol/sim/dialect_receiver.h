@@ -5,8 +5,8 @@
 // brings it back from flash; a command that changes it switches the port), the output rate (the
 // epoch interval) and the elevation and SNR masks (the satellites used). The family's subclass
 // holds the rest: what it sends, how it answers, what a reset clears.
-#include "receiver.h"
-#include "settings_store.h"
+#include "sim/receiver.h"
+#include "sim/settings_store.h"
 
 #include <string_view>
 

@@ -1,4 +1,4 @@
-#include "receiver.h"
+#include "sim/receiver.h"
 
 #include "nmea/nmea_rules.h"
 

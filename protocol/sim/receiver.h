@@ -17,8 +17,8 @@
 #include "core/dialect_registry.h"
 #include "core/field_types.h"
 #include "core/stream_decoder.h"
-#include "faults.h"
-#include "sky_model.h"
+#include "sim/faults.h"
+#include "sim/sky_model.h"
 
 #include <cstdint>
 #include <memory>

@@ -1,4 +1,4 @@
-#include "rtcm_base_station.h"
+#include "sim/rtcm_base_station.h"
 #include "core/wgs84.h"
 
 #include "rtcm/bit_writer.h"

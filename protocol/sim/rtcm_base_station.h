@@ -11,7 +11,7 @@
 //
 // Driven like a Receiver (advance time, take the bytes), without commands: whatever a client
 // sends to a base is ignored. Plain C++, deterministic for a seed.
-#include "sky_model.h"
+#include "sim/sky_model.h"
 
 #include <cstdint>
 #include <string>

@@ -1,4 +1,4 @@
-#include "settings_store.h"
+#include "sim/settings_store.h"
 
 #include "core/field_parse.h"
 #include "core/settings_plan.h"

@@ -1,4 +1,4 @@
-#include "simulator_table.h"
+#include "sim/simulator_table.h"
 
 #include <algorithm>
 

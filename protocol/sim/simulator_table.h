@@ -5,7 +5,7 @@
 //
 //     const sim::SimulatorTable &table = sim::builtinSimulators();
 //     auto rx = table.make("nvs", options); // nullptr: no simulator of that id
-#include "receiver.h"
+#include "sim/receiver.h"
 
 #include <memory>
 #include <string_view>

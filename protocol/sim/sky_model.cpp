@@ -1,4 +1,4 @@
-#include "sky_model.h"
+#include "sim/sky_model.h"
 
 #include "core/wgs84.h"
 

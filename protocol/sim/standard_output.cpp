@@ -1,4 +1,4 @@
-#include "standard_output.h"
+#include "sim/standard_output.h"
 
 #include "core/wgs84.h"
 
@@ -38,22 +38,22 @@ constexpr Constellation kGroups[] = {Constellation::Gps, Constellation::Glonass,
 
 } // namespace
 
-int satelliteId(const SimSatellite &s, Numbering n) {
+int satelliteId(const SimSatellite &s, Numbering) {
     switch (s.system) {
     case Constellation::Gps: return s.prn;
     case Constellation::Sbas: return s.prn - 87;
     case Constellation::Glonass: return s.prn + 64;
-    case Constellation::Galileo: return n == Numbering::GeoStarV2 ? s.prn + 100 : s.prn;
+    case Constellation::Galileo: return s.prn;
     case Constellation::BeiDou: return s.prn;
-    case Constellation::Qzss: return n == Numbering::GeoStarV2 ? s.prn + 192 : s.prn;
+    case Constellation::Qzss: return s.prn;
     default: return s.prn;
     }
 }
 
-std::string_view gsvTalker(Constellation c, Numbering n) {
+std::string_view gsvTalker(Constellation c, Numbering) {
     switch (group(c)) {
     case Constellation::Glonass: return "GL";
-    case Constellation::Galileo: return n == Numbering::GeoStarV2 ? "GP" : "GA";
+    case Constellation::Galileo: return "GA";
     case Constellation::BeiDou: return "GB";
     default: return "GP";
     }

@@ -2,7 +2,7 @@
 // Standard sentences (GGA, RMC, GSA, GSV, VTG, ZDA, GLL, GNS, HDT) of one epoch of the sky model,
 // in the numbering and talker conventions a receiver uses. Built with nmea/nmea_encoders.h.
 #include "nmea/nmea_encoders.h"
-#include "sky_model.h"
+#include "sim/sky_model.h"
 
 #include <string>
 #include <vector>
@@ -10,10 +10,11 @@
 namespace gnss::sim {
 
 enum class Numbering : std::uint8_t {
-    Nmea40,    // GP GPS 1-32 + SBAS 33-64, GL GLONASS 65-96, GA Galileo 1-36; no system ids
-    Nmea41,    // as 4.0 plus GB BeiDou 1-63, GSA system id and GSV signal id
-    GeoStarV2, // GeoS-5 NMEA v2.x: Galileo 101-136 and QZSS 193-197 under GP, no system ids
+    Nmea40, // GP GPS 1-32 + SBAS 33-64, GL GLONASS 65-96, GA Galileo 1-36; no system ids
+    Nmea41, // as 4.0 plus GB BeiDou 1-63, GSA system id and GSV signal id
 };
+// (A family's own numbering, other than these, is written by its simulated receiver in its own
+// folder.)
 
 struct StandardStyle {
     nmea::EncodeFormat format;

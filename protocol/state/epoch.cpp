@@ -1,4 +1,4 @@
-#include "epoch.h"
+#include "state/epoch.h"
 
 #include "core/satellite_json.h"
 

@@ -1,4 +1,4 @@
-#include "epoch_assembler.h"
+#include "state/epoch_assembler.h"
 
 #include "nmea/nmea_messages.h"
 

@@ -7,7 +7,7 @@
 // multi-part group is applied whole or not at all; groups not refreshed for a while expire.
 #include "core/dialect.h"
 #include "core/function_ref.h"
-#include "epoch.h"
+#include "state/epoch.h"
 
 #include <array>
 #include <bitset>

@@ -1,6 +1,6 @@
-#include "log_scan.h"
+#include "state/log_scan.h"
 
-#include "epoch_assembler.h"
+#include "state/epoch_assembler.h"
 
 #include <atomic>
 #include <thread>

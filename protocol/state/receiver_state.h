@@ -4,7 +4,7 @@
 // reports come from each dialect's `updateState` hook, which translates its own messages here.
 // Views read this (through Qt models) and never see a vendor sentence.
 #include "core/field_types.h"
-#include "epoch.h"
+#include "state/epoch.h"
 
 #include <cstdint>
 #include <deque>

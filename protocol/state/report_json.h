@@ -1,7 +1,7 @@
 #pragma once
 // Helpers for the dialects' updateState hooks: a message's JSON, for ReceiverState::reports.
 #include "core/message.h"
-#include "receiver_state.h"
+#include "state/receiver_state.h"
 
 #include <string>
 

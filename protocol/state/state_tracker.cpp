@@ -1,4 +1,4 @@
-#include "state_tracker.h"
+#include "state/state_tracker.h"
 
 #include "nmea/nmea_messages.h"
 

@@ -2,8 +2,8 @@
 // StateTracker: decoded messages in, one ReceiverState snapshot per navigation epoch out.
 // Standard messages go to the EpochAssembler (plus HDT heading and GST deviations); vendor
 // messages go to the dialect's updateState hook.
-#include "epoch_assembler.h"
-#include "receiver_state.h"
+#include "state/epoch_assembler.h"
+#include "state/receiver_state.h"
 
 namespace gnss {
 

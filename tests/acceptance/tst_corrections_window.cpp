@@ -4,7 +4,7 @@
 // to RTK fixed, the dock lists every message type with its rate and age, the base position and
 // the distance, the frames forwarded, and the receiver's own RTCM counts; the caster got the
 // receiver's fix as GGA. A refused request is said in the dock before anything starts.
-#include "corrections_controller.h"
+#include "gui/corrections_controller.h"
 #include "laptop_window.h"
 #include "models/receiver_state_model.h"
 #include "rtcm_fixtures.h"

@@ -4,15 +4,15 @@
 // label whole, every editor at its size and inside the view, docked and floated), an edit made
 // in the form and applied reaches the simulator (read back from it), the sky plot's labels do
 // not collide, and a TCP source with nobody listening leaves the window responsive.
-#include "app_transports.h"
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
+#include "common/app_transports.h"
 #include "config/settings_engine.h"
-#include "connection_bar.h"
+#include "gui/connection_bar.h"
+#include "gui/main_window.h"
 #include "link/connection.h"
 #include "link/sentence_stream.h"
 #include "loop_watch.h"
-#include "main_window.h"
 #include "models/console_model.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"

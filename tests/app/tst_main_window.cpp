@@ -1,19 +1,19 @@
 // The main window: menus and docks present, start-up options, layout saved and restored, and the
 // built-in simulated receiver reaching every model through the real connection path.
-#include "app_transports.h"
 #include "bad_input_files.h"
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
+#include "common/app_transports.h"
 #include "config/settings_engine.h"
-#include "main_window.h"
+#include "gui/main_window.h"
+#include "gui/preferences_dialog.h"
+#include "gui/startup_options.h"
+#include "gui/window_start.h"
 #include "models/message_stats_model.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
-#include "preferences_dialog.h"
 #include "session/receiver_link.h"
-#include "startup_options.h"
 #include "views/sky_plot_view.h"
-#include "window_start.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -10,7 +10,7 @@
 #include "core/framer.h"
 #include "core/sentence.h"
 #include "log_generator.h"
-#include "log_view.h"
+#include "logview/log_view.h"
 #include "state/log_scan.h"
 
 #include <algorithm>

@@ -6,12 +6,12 @@
 //   bench_logview_window [FILE] [--seeks N] [--play-seconds S] [--keep]
 //
 // Without FILE it writes gnss-loggen's 1 GB 10 Hz log to $TMPDIR and deletes it at the end.
-#include "app_transports.h"
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
+#include "common/app_transports.h"
+#include "gui/log_viewer.h"
+#include "gui/main_window.h"
 #include "log_generator.h"
-#include "log_viewer.h"
-#include "main_window.h"
 #include "models/receiver_state_model.h"
 
 #include <QApplication>

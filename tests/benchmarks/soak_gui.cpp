@@ -5,11 +5,11 @@
 // simulated seconds (a poll and a setting in turn).
 #include "soak_gui.h"
 
-#include "app_transports.h"
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
-#include "connection.h"
-#include "main_window.h"
+#include "common/app_transports.h"
+#include "gui/main_window.h"
+#include "link/connection.h"
 #include "models/console_model.h"
 #include "models/message_stats_model.h"
 #include "models/receiver_state_model.h"

@@ -5,8 +5,8 @@
 // and its answers to commands. Simulated time runs as fast as the GUI thread takes it: every
 // pass of the event loop (a zero-interval timer) delivers slices of kSliceSeconds for
 // kPassBudgetMs of real time, then the loop runs its timers and repaints before the next pass.
+#include "link/transport.h"
 #include "soak_sky.h"
-#include "transport.h"
 
 #include <QTimer>
 

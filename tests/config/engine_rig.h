@@ -4,10 +4,10 @@
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
 
-#include "command_queue.h"
-#include "sentence_stream.h"
-#include "settings_engine.h"
-#include "simulator_transport.h"
+#include "common/simulator_transport.h"
+#include "config/settings_engine.h"
+#include "link/command_queue.h"
+#include "link/sentence_stream.h"
 
 #include <QSignalSpy>
 #include <QTest>

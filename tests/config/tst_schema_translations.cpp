@@ -8,9 +8,9 @@
 
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
-#include "refusal_text.h"
+#include "config/refusal_text.h"
+#include "config/schema_texts.h"
 #include "schema_catalog.h"
-#include "schema_texts.h"
 #include "session_feed.h"
 #include "settings/settings_view.h"
 #include "vendor_test_rows.h"

@@ -1,10 +1,10 @@
 // The settings dock in the main window: present, and filled from the simulated receiver as soon
 // as the connection knows its dialect (the real connection path, offscreen).
-#include "app_transports.h"
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
+#include "common/app_transports.h"
+#include "gui/main_window.h"
 #include "link/source_spec.h"
-#include "main_window.h"
 #include "settings/settings_view.h"
 
 #include <QDockWidget>

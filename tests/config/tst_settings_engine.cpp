@@ -6,11 +6,11 @@
 #include "dialect_rows.h"
 #include "engine_rig.h"
 
+#include "config/presets.h"
+#include "config/setting_values.h"
 #include "geostar/sim/geostar_sim_receiver.h"
 #include "nemerix/sim/nemerix_sim_receiver.h"
 #include "nvs/sim/nvs_sim_receiver.h"
-#include "presets.h"
-#include "setting_values.h"
 #include "vendor_test_rows.h"
 
 #include <QTemporaryDir>

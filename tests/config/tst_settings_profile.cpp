@@ -3,7 +3,7 @@
 // (malformed, another dialect or model) refused whole, saying why; values a command would not
 // take named before they are sent.
 #include "builtin/dialects.h"
-#include "settings_profile.h"
+#include "config/settings_profile.h"
 
 #include <QTest>
 

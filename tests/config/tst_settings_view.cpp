@@ -5,7 +5,7 @@
 #include "engine_rig.h"
 
 #include "nvs/sim/nvs_sim_receiver.h"
-#include "setting_editors.h"
+#include "settings/setting_editors.h"
 #include "settings/settings_view.h"
 
 #include <QApplication>

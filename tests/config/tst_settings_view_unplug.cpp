@@ -7,10 +7,10 @@
 #include "builtin_registry.h"
 #include "sim_process.h"
 
-#include "connection.h"
-#include "serial_transport.h"
+#include "config/settings_engine.h"
+#include "link/connection.h"
+#include "link/serial_transport.h"
 #include "settings/settings_view.h"
-#include "settings_engine.h"
 
 #include <QApplication>
 #include <QComboBox>

@@ -1,7 +1,7 @@
 #pragma once
 // A watcher that records what a CorrectionSource says and delivers, for the tests to look at.
-#include "correction_source.h"
-#include "corrections_monitor.h"
+#include "corrections/correction_source.h"
+#include "corrections/corrections_monitor.h"
 
 #include <QList>
 #include <QStringList>

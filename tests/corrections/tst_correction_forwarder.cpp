@@ -1,13 +1,13 @@
 // CorrectionForwarder: whole RTCM frames only, one write each, never while a command waits for
 // its reply; a bounded queue that drops the oldest and counts; nothing but frames goes through.
-#include "correction_forwarder.h"
+#include "corrections/correction_forwarder.h"
 #include "rtcm_fixtures.h"
 
-#include "command_queue.h"
 #include "core/sentence_builder.h"
 #include "fake_transport.h"
+#include "link/command_queue.h"
+#include "link/sentence_stream.h"
 #include "rtcm/rtcm_framer.h"
-#include "sentence_stream.h"
 
 #include <QTest>
 

@@ -1,13 +1,13 @@
 // The other correction sources: a raw TCP port (a test server, then gnss-sim --rtcm-base
 // --tcp), a radio modem's serial port (gnss-sim --rtcm-base --pty) and a recorded file played
 // at its pace with a speed factor.
-#include "corrections_monitor.h"
-#include "file_correction_source.h"
+#include "corrections/corrections_monitor.h"
+#include "corrections/file_correction_source.h"
+#include "corrections/serial_correction_source.h"
+#include "corrections/tcp_correction_source.h"
 #include "rtcm_fixtures.h"
-#include "serial_correction_source.h"
 #include "sim_tcp_process.h"
 #include "source_watch.h"
-#include "tcp_correction_source.h"
 #include "test_caster.h"
 
 #include <QElapsedTimer>

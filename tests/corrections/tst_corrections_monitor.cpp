@@ -1,10 +1,10 @@
 // The corrections monitor on a fake clock: counts, rates over ten seconds, ages, the meaning
 // of each type, the base position from 1005 and 1006 and the rover's baseline, corrupt frames
 // and skipped bytes counted, and a bounded history of the correction age.
-#include "corrections_monitor.h"
+#include "corrections/corrections_monitor.h"
+#include "corrections/rtcm_message_names.h"
 #include "rtcm/rtcm_encoder.h"
 #include "rtcm_fixtures.h"
-#include "rtcm_message_names.h"
 
 #include <QTest>
 

@@ -2,8 +2,8 @@
 // data byte-exact (chunks cut inside RTCM frames), every refusal said in words that name the
 // revision that answered and never the credentials, drops and stalls retried with growing
 // waits, the GGA upload, the source table, corrupt frames counted by the monitor.
-#include "corrections_monitor.h"
-#include "ntrip_source.h"
+#include "corrections/corrections_monitor.h"
+#include "corrections/ntrip_source.h"
 #include "rtcm_fixtures.h"
 #include "source_watch.h"
 #include "test_caster.h"

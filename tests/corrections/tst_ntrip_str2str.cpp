@@ -6,8 +6,8 @@
 // table for an unknown mountpoint; bytes a client sends after the OK (the GGA) are relayed back
 // to the input (-b 1), while bytes sent with the request are lost (so the GGA goes up after the
 // reply). Skipped when str2str is not installed.
-#include "corrections_monitor.h"
-#include "ntrip_source.h"
+#include "corrections/corrections_monitor.h"
+#include "corrections/ntrip_source.h"
 #include "rtcm_fixtures.h"
 #include "sim_tcp_process.h"
 #include "source_watch.h"

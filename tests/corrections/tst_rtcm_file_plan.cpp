@@ -1,8 +1,8 @@
 // The playback plan of a recorded RTCM file: one group per MSM epoch (GPS and GLONASS of an
 // epoch together), 1 Hz per 1005 without MSMs, gaps capped, clocks going backwards tolerated,
 // and every byte of the file in exactly one group, in order.
+#include "corrections/rtcm_file_plan.h"
 #include "rtcm/rtcm_encoder.h"
-#include "rtcm_file_plan.h"
 #include "rtcm_fixtures.h"
 
 #include <QTest>

@@ -21,8 +21,8 @@
 // the epochs sought. The rest is the log, at most 64 KB (longer inputs are cut).
 #include "fuzz_files.h"
 #include "fuzz_nmea.h"
-#include "log_index.h"
-#include "log_view.h"
+#include "logview/log_index.h"
+#include "logview/log_view.h"
 #include "state/log_scan.h"
 #include "state/state_tracker.h"
 

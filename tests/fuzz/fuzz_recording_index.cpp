@@ -16,10 +16,10 @@
 // the index, then the data.
 #include "fuzz_files.h"
 #include "fuzz_nmea.h"
-#include "host_times.h"
-#include "log_view.h"
-#include "play_schedule.h"
-#include "recording.h"
+#include "link/recording.h"
+#include "logview/host_times.h"
+#include "logview/log_view.h"
+#include "logview/play_schedule.h"
 
 #include <QString>
 

@@ -21,7 +21,7 @@
 #include "config/settings_profile.h"
 #include "core/sentence_builder.h"
 #include "fuzz_settings_input.h"
-#include "recorder.h"
+#include "link/recorder.h"
 #include "rtcm/rtcm_encoder.h"
 #include "rtcm_test_support.h"
 #include "source_table_examples.h"

@@ -1,8 +1,8 @@
 // BaudDetector against a fake line that talks only at one speed (garbage at the others): settles
 // on that speed, and says "no data" or "wrong framing?" when no speed works.
-#include "baud_detector.h"
 #include "core/sentence_builder.h"
 #include "fake_transport.h"
+#include "link/baud_detector.h"
 #include "rate_rows.h"
 #include "run_to_finish.h"
 

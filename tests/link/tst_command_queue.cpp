@@ -1,9 +1,9 @@
 // CommandQueue against a fake link: every outcome (accepted, refused with the receiver's words,
 // timed out after retries, cancelled, link lost), one command at a time, baud changes end to end.
 #include "builtin/dialects.h"
-#include "command_queue.h"
 #include "core/sentence_builder.h"
 #include "fake_transport.h"
+#include "link/command_queue.h"
 #include "queue_checks.h"
 
 #include <QSignalSpy>

@@ -8,10 +8,10 @@
 #include "state/epoch_assembler.h"
 
 #include "builtin/dialects.h"
-#include "connection.h"
 #include "gpsd_process.h"
-#include "gpsd_transport.h"
-#include "sentence_stream.h"
+#include "link/connection.h"
+#include "link/gpsd_transport.h"
+#include "link/sentence_stream.h"
 #include "sim_process.h"
 
 #include <QSignalSpy>

@@ -4,13 +4,13 @@
 // request, devices, refusals, a server that is not gpsd, gpsd going away).
 #include "builtin/dialects.h"
 #include "builtin_registry.h"
-#include "command_queue.h"
-#include "connection.h"
-#include "gpsd_reader.h"
-#include "gpsd_transport.h"
-#include "sentence_stream.h"
-#include "source_spec.h"
-#include "transport_factory.h"
+#include "link/command_queue.h"
+#include "link/connection.h"
+#include "link/gpsd_reader.h"
+#include "link/gpsd_transport.h"
+#include "link/sentence_stream.h"
+#include "link/source_spec.h"
+#include "link/transport_factory.h"
 
 #include <QJsonDocument>
 #include <QSignalSpy>

@@ -3,19 +3,19 @@
 // refused, timed out via the simulator's faults), a baud change round trip, reconnect after the
 // simulator hangs up and comes back (same device path, now a new pseudo-terminal), recording
 // byte-exact.
-#include "baud_detector.h"
 #include "builtin/dialects.h"
 #include "builtin_registry.h"
-#include "command_queue.h"
-#include "connection.h"
+#include "link/baud_detector.h"
+#include "link/command_queue.h"
+#include "link/connection.h"
+#include "link/recording.h"
+#include "link/sentence_stream.h"
+#include "link/serial_transport.h"
+#include "link/vendor_detector.h"
 #include "queue_checks.h"
 #include "rate_rows.h"
-#include "recording.h"
 #include "run_to_finish.h"
-#include "sentence_stream.h"
-#include "serial_transport.h"
 #include "sim_process.h"
-#include "vendor_detector.h"
 
 #include <QFile>
 #include <QSignalSpy>

@@ -2,16 +2,16 @@
 // detection, the views' session, a recorder, the command line), each sentence received is framed
 // and decoded exactly once, and the byte and sentence counts come from that one place. Counted
 // with a test dialect whose decoder counts its calls.
-#include "baud_detector.h"
 #include "builtin/dialects.h"
-#include "command_queue.h"
 #include "config/settings_engine.h"
-#include "connection.h"
 #include "core/sentence_builder.h"
 #include "fake_transport.h"
+#include "link/baud_detector.h"
+#include "link/command_queue.h"
+#include "link/connection.h"
+#include "link/vendor_detector.h"
 #include "models/model_feed.h"
 #include "nmea/nmea_rules.h"
-#include "vendor_detector.h"
 
 #include <QTest>
 

@@ -1,6 +1,6 @@
 // PortWatcher: plugged and unplugged devices are signalled without a restart; a device is
 // recognised by its serial number under a new port name.
-#include "port_watcher.h"
+#include "link/port_watcher.h"
 
 #include <QSignalSpy>
 #include <QTest>

@@ -1,11 +1,11 @@
 // Recorder: the .nmea file holds exactly the bytes received (across a lost link and at
 // destruction), the index says when each chunk came, what was sent and where the gaps are, and
 // loadRecording reads it all back.
-#include "connection.h"
 #include "core/sentence_builder.h"
 #include "fake_transport.h"
-#include "recorder.h"
-#include "recording.h"
+#include "link/connection.h"
+#include "link/recorder.h"
+#include "link/recording.h"
 
 #include <QFile>
 #include <QSignalSpy>

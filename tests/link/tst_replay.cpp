@@ -1,8 +1,8 @@
 // ReplayTransport: a recording played back byte-exact, at its recorded pace (host timestamps or
 // sentence times) times a speed factor, paused, stepped and sought.
 #include "core/sentence_builder.h"
-#include "recorder.h"
-#include "replay_transport.h"
+#include "link/recorder.h"
+#include "link/replay_transport.h"
 
 #include <QElapsedTimer>
 #include <QFile>

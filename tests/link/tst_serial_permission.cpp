@@ -6,7 +6,7 @@
 // mode, so when the tests run as root the opening is done as the user "nobody": in this process
 // by switching the effective user for the moment of the open (seteuid, then back), and gnss-cli
 // is started as nobody.
-#include "serial_transport.h"
+#include "link/serial_transport.h"
 
 #include <QFileInfo>
 #include <QProcess>

@@ -1,18 +1,18 @@
 // The other sources behind the same interface: the in-process simulator (baud detection, vendor
 // detection and a command without any serial port) and a TCP client against gnss-sim --tcp.
-#include "baud_detector.h"
 #include "builtin/dialects.h"
 #include "builtin_registry.h"
-#include "command_queue.h"
-#include "connection.h"
+#include "common/simulator_transport.h"
+#include "link/baud_detector.h"
+#include "link/command_queue.h"
+#include "link/connection.h"
+#include "link/sentence_stream.h"
+#include "link/tcp_transport.h"
+#include "link/vendor_detector.h"
 #include "local_port.h"
 #include "loop_watch.h"
 #include "run_to_finish.h"
-#include "sentence_stream.h"
 #include "sim_tcp_process.h"
-#include "simulator_transport.h"
-#include "tcp_transport.h"
-#include "vendor_detector.h"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>

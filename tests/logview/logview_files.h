@@ -1,7 +1,7 @@
 #pragma once
 // Files for the log viewer's tests, written by the tests into a temporary folder.
 #include "builtin/dialects.h"
-#include "log_view.h"
+#include "logview/log_view.h"
 
 #include <QString>
 #include <QTemporaryDir>

@@ -3,9 +3,9 @@
 // ends, overlong lines and cuts of a growing file; the filter finds exactly the lines a plain
 // search finds; a whole generated log is counted and read back through LogView.
 #include "builtin/dialects.h"
-#include "line_table.h"
 #include "log_generator.h"
-#include "log_view.h"
+#include "logview/line_table.h"
+#include "logview/log_view.h"
 #include "logview_files.h"
 
 #include <QTemporaryDir>

@@ -2,7 +2,7 @@
 // epoch wholly outside the log is refused, a range that only reaches past an end is cut and says
 // so. The log: 600 epochs at 1 Hz from 10:00:00 (#0) to 10:10:29 (#599), epochs 10:05:00-10:05:29
 // missing (a gap), no receiver reset.
-#include "log_range.h"
+#include "logview/log_range.h"
 #include "logview_files.h"
 #include "scenario_log.h"
 

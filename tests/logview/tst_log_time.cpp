@@ -1,7 +1,7 @@
 // The times users type for --at, --from, --to and the timeline's "Go to" box (parseTimeSpec):
 // every accepted form gives its exact milliseconds, and anything else is refused, so that the
 // caller can say so before seeking.
-#include "log_time.h"
+#include "logview/log_time.h"
 
 #include <QTest>
 

@@ -3,7 +3,7 @@
 // random epochs (seek), and a growing file followed line by line gives the same as reading it
 // whole.
 #include "builtin/dialects.h"
-#include "log_index.h"
+#include "logview/log_index.h"
 #include "logview_reference.h"
 
 #include <QTest>

@@ -6,7 +6,7 @@
 // what would reach standard error), no file of the session (the settings file, the recording
 // and its index) holds the password, "user:password" or their Base64. The password stays in
 // the password field and, when asked and the build has one, the system keychain.
-#include "corrections_controller.h"
+#include "gui/corrections_controller.h"
 #include "laptop_window.h"
 #include "models/receiver_state_model.h"
 #include "rtcm_fixtures.h"

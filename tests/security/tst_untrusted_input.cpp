@@ -8,8 +8,8 @@
 #include "builtin_registry.h"
 #include "cli_run.h"
 #include "core/sentence_builder.h"
-#include "log_events.h"
-#include "log_view.h"
+#include "logview/log_events.h"
+#include "logview/log_view.h"
 
 #include <QDir>
 #include <QDirIterator>

@@ -7,8 +7,8 @@
 #include "sim_process.h"
 #include "sim_tcp_process.h"
 
-#include "serial_transport.h"
-#include "tcp_transport.h"
+#include "link/serial_transport.h"
+#include "link/tcp_transport.h"
 
 #include <QTemporaryDir>
 

@@ -4,7 +4,7 @@
 #include "rtcm/bit_reader.h"
 #include "rtcm/rtcm_framer.h"
 #include "rtcm/rtcm_messages.h"
-#include "rtcm_base_station.h"
+#include "sim/rtcm_base_station.h"
 
 #include <QTest>
 

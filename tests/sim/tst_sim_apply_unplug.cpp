@@ -9,12 +9,12 @@
 // when the link is back the engine reads the apply's settings back by itself and then has the
 // receiver's values.
 #include "builtin_registry.h"
-#include "dialect_receiver.h"
-#include "faults.h"
+#include "sim/dialect_receiver.h"
+#include "sim/faults.h"
 #include "sim_line.h"
 
-#include "connection.h"
-#include "settings_engine.h"
+#include "config/settings_engine.h"
+#include "link/connection.h"
 
 #include "core/sentence_builder.h"
 

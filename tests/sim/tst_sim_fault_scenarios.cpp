@@ -6,10 +6,10 @@
 // unplugs also over TCP (gnss-sim drops its client and listens again, as a serial-to-Ethernet
 // server whose receiver went away; the link reconnects as it does to a serial port).
 #include "builtin_registry.h"
-#include "dialect_receiver.h"
-#include "faults.h"
 #include "queue_checks.h"
 #include "recorded_link.h"
+#include "sim/dialect_receiver.h"
+#include "sim/faults.h"
 #include "sim_line.h"
 #include "sim_process.h"
 

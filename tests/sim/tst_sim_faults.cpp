@@ -1,6 +1,6 @@
 // Fault injection: the --faults grammar, and each fault's effect on a receiver's output.
 #include "builtin/simulators.h"
-#include "faults.h"
+#include "sim/faults.h"
 
 #include "core/framer.h"
 #include "core/sentence.h"

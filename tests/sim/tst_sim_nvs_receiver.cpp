@@ -2,7 +2,7 @@
 // reply (judged by the NVS dialect's own reply rules) and effect, flash persistence, baud change.
 #include "builtin/simulators.h"
 #include "nvs/sim/nvs_sim_receiver.h"
-#include "rtcm_base_station.h"
+#include "sim/rtcm_base_station.h"
 #include "sim_output.h"
 
 #include "core/sentence.h"

@@ -1,6 +1,6 @@
 // The simulator's settings store: the schema's defaults, values the schema refuses kept out,
 // commands applied through the dialect's own decoding, reports in the command's form, flash.
-#include "settings_store.h"
+#include "sim/settings_store.h"
 
 #include "builtin/dialects.h"
 #include "core/stream_decoder.h"

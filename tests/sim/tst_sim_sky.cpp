@@ -1,6 +1,6 @@
 // The simulator's sky: plausible tracks, rise and set, SNR from elevation, elevation mask, DOPs
 // from the used geometry, position noise by fix type, and determinism with a seed.
-#include "sky_model.h"
+#include "sim/sky_model.h"
 
 #include <QTest>
 

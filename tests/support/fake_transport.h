@@ -2,8 +2,8 @@
 // A transport for unit tests: what is written is kept (and can be answered by a script), what the
 // test feeds is "received", and the link can be dropped on demand.
 #include "builtin_registry.h"
-#include "sentence_stream.h"
-#include "transport.h"
+#include "link/sentence_stream.h"
+#include "link/transport.h"
 
 #include <functional>
 

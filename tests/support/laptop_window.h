@@ -2,10 +2,10 @@
 // The real MainWindow as a user first starts it, for the window tests: the built-in dialects,
 // the application's transports, its settings in a file of its own (none saved yet), shown on the
 // 1280x800 offscreen screen (tests/acceptance/CMakeLists.txt).
-#include "app_transports.h"
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
-#include "main_window.h"
+#include "common/app_transports.h"
+#include "gui/main_window.h"
 
 #include <QSettings>
 #include <QTemporaryDir>

@@ -1,7 +1,7 @@
 #pragma once
 // For the suites that drive a CommandQueue: outcomes printed by name when a QCOMPARE fails, and
 // waiting for the queue's results.
-#include "command_queue.h"
+#include "link/command_queue.h"
 
 #include <QTest>
 

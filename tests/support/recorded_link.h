@@ -3,9 +3,9 @@
 // dialects) recording to a file, with every byte its transport delivered kept to hold the
 // recording against. (tst_link_pty's hang-up and recording tests build the same by hand.)
 #include "builtin_registry.h"
-#include "connection.h"
-#include "recording.h"
-#include "transport.h"
+#include "link/connection.h"
+#include "link/recording.h"
+#include "link/transport.h"
 
 #include <memory>
 

@@ -1,6 +1,6 @@
 #pragma once
 // RTCM fixtures made by our own code: epochs of the simulator's base station.
-#include "rtcm_base_station.h"
+#include "sim/rtcm_base_station.h"
 
 #include <QByteArray>
 #include <QList>

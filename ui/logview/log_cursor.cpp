@@ -1,4 +1,4 @@
-#include "log_cursor.h"
+#include "logview/log_cursor.h"
 
 #include <algorithm>
 

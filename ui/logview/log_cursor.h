@@ -3,7 +3,7 @@
 // the epoch under the cursor and the selected range; every log view (timeline strip, whole-log
 // charts, track, events, range statistics) reads it and moves it, and the application publishes
 // the receiver state at the cursor to the live docks. Knows no widget.
-#include "log_view.h"
+#include "logview/log_view.h"
 
 #include <QObject>
 #include <utility>

@@ -1,5 +1,5 @@
-#include "log_events_view.h"
-#include "panel_layout.h"
+#include "logview/log_events_view.h"
+#include "logview/panel_layout.h"
 #include "widgets/read_only_table.h"
 
 #include "core/dialect_registry.h"

@@ -2,7 +2,7 @@
 // LogEventsView: the log's events in a list (fix changes, gaps, checksum bursts, time jumps,
 // dialect changes, time marks, jamming, base station changes), filtered by kind; a click moves
 // the cursor there, and the list can be saved as CSV.
-#include "log_cursor.h"
+#include "logview/log_cursor.h"
 
 #include <QWidget>
 

@@ -1,8 +1,8 @@
-#include "log_lines_model.h"
+#include "logview/log_lines_model.h"
 
 #include "core/framer.h"
 #include "core/sentence.h"
-#include "log_view.h"
+#include "logview/log_view.h"
 #include "style/gnss_style.h"
 
 #include <QColor>

@@ -17,7 +17,7 @@
 #include <functional>
 #include <memory>
 
-#include "line_table.h"
+#include "logview/line_table.h"
 
 namespace gnss::logview {
 class LogView;

@@ -1,4 +1,4 @@
-#include "log_plot.h"
+#include "logview/log_plot.h"
 
 #include "style/gnss_style.h"
 

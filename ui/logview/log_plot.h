@@ -3,8 +3,8 @@
 // SNR) against the epochs, decimated per pixel column (its minimum to maximum, coloured by the
 // column's fix type), so a day at 10 Hz draws as fast as a minute. Wheel zooms about the mouse,
 // dragging pans, a click moves the cursor, a double click shows the whole log again.
-#include "drag_gesture.h"
-#include "log_cursor.h"
+#include "logview/drag_gesture.h"
+#include "logview/log_cursor.h"
 #include "models/value_format.h"
 
 #include <QImage>

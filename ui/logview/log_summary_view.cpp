@@ -1,4 +1,4 @@
-#include "log_summary_view.h"
+#include "logview/log_summary_view.h"
 #include "widgets/read_only_table.h"
 
 #include "style/gnss_style.h"

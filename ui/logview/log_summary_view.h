@@ -3,7 +3,7 @@
 // of each fix type, time to first fix and to RTK fixed, gaps, time jumps, checksum errors, the
 // position spread (CEP50, CEP95, 2DRMS about the mean) and the worst HDOP. Computed from the
 // index alone, so it follows a range being dragged.
-#include "log_cursor.h"
+#include "logview/log_cursor.h"
 #include "models/value_format.h"
 
 #include <QWidget>

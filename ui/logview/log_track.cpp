@@ -1,6 +1,6 @@
-#include "log_track.h"
+#include "logview/log_track.h"
 
-#include "range_stats.h"
+#include "logview/range_stats.h"
 #include "style/gnss_style.h"
 
 #include <QMouseEvent>

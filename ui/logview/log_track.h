@@ -4,8 +4,8 @@
 // cursor's epoch ringed. Wheel zooms about the mouse, dragging pans, a click moves the cursor to
 // the nearest epoch, a double click fits the whole track. The dots are drawn once into an image
 // and only redrawn when the view or the log changes, so the cursor moves cheaply.
-#include "drag_gesture.h"
-#include "log_cursor.h"
+#include "logview/drag_gesture.h"
+#include "logview/log_cursor.h"
 #include "models/value_format.h"
 
 #include <QImage>

@@ -1,8 +1,8 @@
-#include "timeline_panel.h"
+#include "logview/timeline_panel.h"
 
+#include "logview/timeline_strip.h"
+#include "logview/transport_icons.h"
 #include "style/gnss_style.h"
-#include "timeline_strip.h"
-#include "transport_icons.h"
 
 #include <QAction>
 #include <QCheckBox>

@@ -5,9 +5,9 @@
 // next event, to the start or end, to a typed time, and to mark a range. It moves the cursor
 // itself; playing and following a growing file are the application's (it owns the timers).
 // While a log is being indexed it offers a Cancel button (Esc while the timeline has focus).
-#include "log_cursor.h"
-#include "log_range.h"
-#include "transport_icons.h"
+#include "logview/log_cursor.h"
+#include "logview/log_range.h"
+#include "logview/transport_icons.h"
 
 #include <QWidget>
 

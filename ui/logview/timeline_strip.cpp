@@ -1,4 +1,4 @@
-#include "timeline_strip.h"
+#include "logview/timeline_strip.h"
 
 #include "style/gnss_style.h"
 

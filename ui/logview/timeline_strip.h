@@ -4,7 +4,7 @@
 // bursts red ticks below, events small marks on top; the selected range is shaded and the cursor
 // is a line. Click or drag to seek; Shift+drag selects a range. While the log is being indexed it
 // shows the progress instead.
-#include "log_cursor.h"
+#include "logview/log_cursor.h"
 
 #include <QWidget>
 #include <vector>

@@ -1,5 +1,5 @@
-#include "whole_log_panels.h"
-#include "panel_layout.h"
+#include "logview/whole_log_panels.h"
+#include "logview/panel_layout.h"
 
 #include "style/gnss_style.h"
 

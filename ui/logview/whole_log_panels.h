@@ -1,8 +1,8 @@
 #pragma once
 // The whole-log views with their few controls: LogChartsPanel (which quantity to plot, a button
 // to show the whole log again) and LogTrackPanel (the reference point, a button to fit).
-#include "log_plot.h"
-#include "log_track.h"
+#include "logview/log_plot.h"
+#include "logview/log_track.h"
 
 #include <QWidget>
 

@@ -1,4 +1,4 @@
-#include "console_model.h"
+#include "models/console_model.h"
 #include "style/gnss_style.h"
 
 #include <QColor>

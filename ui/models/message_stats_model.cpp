@@ -1,4 +1,4 @@
-#include "message_stats_model.h"
+#include "models/message_stats_model.h"
 #include "style/gnss_style.h"
 
 #include <QColor>

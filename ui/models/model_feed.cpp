@@ -1,7 +1,7 @@
-#include "model_feed.h"
-#include "refresh_intervals.h"
+#include "models/model_feed.h"
+#include "models/refresh_intervals.h"
 
-#include "refusal_text.h"
+#include "config/refusal_text.h"
 
 #include <QDateTime>
 

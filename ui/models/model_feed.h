@@ -8,11 +8,11 @@
 //
 // The feed decodes nothing: it listens to the one decoder of the link (or of a test), and
 // its counts are that decoder's. It knows no vendor; the dialect comes with each sentence.
-#include "console_model.h"
 #include "core/stream_decoder.h"
-#include "message_stats_model.h"
-#include "receiver_state_model.h"
-#include "satellite_model.h"
+#include "models/console_model.h"
+#include "models/message_stats_model.h"
+#include "models/receiver_state_model.h"
+#include "models/satellite_model.h"
 #include "state/state_tracker.h"
 
 #include <QObject>

@@ -1,4 +1,4 @@
-#include "position_scatter.h"
+#include "models/position_scatter.h"
 
 #include "core/wgs84.h"
 

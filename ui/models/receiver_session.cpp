@@ -1,4 +1,4 @@
-#include "receiver_session.h"
+#include "models/receiver_session.h"
 
 #include "config/settings_engine.h"
 #include "link/connection.h"

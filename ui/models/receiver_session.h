@@ -4,7 +4,7 @@
 // baud and vendor detection, settings engine, corrections forwarder) and the models the docks
 // read (state, satellites, message statistics, console), fed from that link's decoder by a
 // ModelFeed. The window holds a list of these; a dock is given the session it shows.
-#include "model_feed.h"
+#include "models/model_feed.h"
 
 #include <QObject>
 #include <QString>

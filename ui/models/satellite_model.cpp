@@ -1,4 +1,4 @@
-#include "satellite_model.h"
+#include "models/satellite_model.h"
 
 #include "style/gnss_style.h"
 

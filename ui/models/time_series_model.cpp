@@ -1,6 +1,6 @@
-#include "time_series_model.h"
+#include "models/time_series_model.h"
 
-#include "receiver_state_model.h"
+#include "models/receiver_state_model.h"
 
 #include <algorithm>
 #include <iterator>

@@ -1,4 +1,4 @@
-#include "value_format.h"
+#include "models/value_format.h"
 
 #include "core/field_types.h"
 

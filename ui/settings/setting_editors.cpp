@@ -1,4 +1,4 @@
-#include "setting_editors.h"
+#include "settings/setting_editors.h"
 
 #include "config/utf8_text.h"
 

@@ -3,9 +3,9 @@
 // (integer, real), a combo box (enum), a check box (bool), a coordinate editor (BASEXYZ / BASEBLH:
 // X, Y, Z in metres or latitude, longitude with hemispheres and height, converting between the
 // two on WGS-84), a line edit otherwise. Every editor reads and writes the schema's value text.
+#include "config/schema_texts.h"
 #include "core/settings_schema.h"
 #include "core/wgs84.h"
-#include "schema_texts.h"
 
 #include <QWidget>
 

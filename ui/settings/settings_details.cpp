@@ -1,4 +1,4 @@
-#include "settings_details.h"
+#include "settings/settings_details.h"
 
 #include "config/setting_values.h"
 #include "config/utf8_text.h"

@@ -1,4 +1,4 @@
-#include "settings_toolbar.h"
+#include "settings/settings_toolbar.h"
 
 #include "config/utf8_text.h"
 #include "core/dialect.h"

@@ -1,13 +1,13 @@
-#include "settings_view.h"
+#include "settings/settings_view.h"
 
 #include "config/utf8_text.h"
 #include "style/gnss_style.h"
 
-#include "presets.h"
-#include "setting_editors.h"
-#include "setting_values.h"
-#include "settings_details.h"
-#include "settings_toolbar.h"
+#include "config/presets.h"
+#include "config/setting_values.h"
+#include "settings/setting_editors.h"
+#include "settings/settings_details.h"
+#include "settings/settings_toolbar.h"
 #include "widgets/flow_layout.h"
 
 #include <QComboBox>

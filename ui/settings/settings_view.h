@@ -9,8 +9,8 @@
 // defaults / Reset (confirmed), presets, profile import (with its difference) and export; each
 // command's outcome and each setting's verification listed. Knows no vendor: the schema, the engine
 // and the presets table say everything.
-#include "schema_texts.h"
-#include "settings_engine.h"
+#include "config/schema_texts.h"
+#include "config/settings_engine.h"
 
 #include <QWidget>
 

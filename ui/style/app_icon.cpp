@@ -1,6 +1,6 @@
-#include "app_icon.h"
+#include "style/app_icon.h"
 
-#include "gnss_style.h"
+#include "style/gnss_style.h"
 
 #include <QPainter>
 #include <QPainterPath>

@@ -1,6 +1,6 @@
-#include "dark_palette.h"
+#include "style/dark_palette.h"
 
-#include "gnss_style.h"
+#include "style/gnss_style.h"
 
 namespace gnss::style {
 

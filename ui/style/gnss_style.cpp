@@ -1,4 +1,4 @@
-#include "gnss_style.h"
+#include "style/gnss_style.h"
 
 #include <QCoreApplication>
 

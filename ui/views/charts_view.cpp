@@ -1,4 +1,4 @@
-#include "charts_view.h"
+#include "views/charts_view.h"
 #include "models/refresh_intervals.h"
 
 #include "views/chart_palette.h"

@@ -1,4 +1,4 @@
-#include "console_view.h"
+#include "views/console_view.h"
 #include "models/refresh_intervals.h"
 #include "style/gnss_style.h"
 

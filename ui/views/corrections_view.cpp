@@ -1,4 +1,4 @@
-#include "corrections_view.h"
+#include "views/corrections_view.h"
 
 #include "models/receiver_state_model.h"
 #include "models/value_format.h"
@@ -7,8 +7,8 @@
 #include "widgets/fitted_columns.h"
 #include "widgets/read_only_table.h"
 
-#include "correction_forwarder.h"
-#include "corrections_monitor.h"
+#include "corrections/correction_forwarder.h"
+#include "corrections/corrections_monitor.h"
 
 #include <QChart>
 #include <QChartView>

@@ -1,4 +1,4 @@
-#include "fix_view.h"
+#include "views/fix_view.h"
 #include "models/refresh_intervals.h"
 
 #include "models/receiver_state_model.h"

@@ -1,4 +1,4 @@
-#include "message_stats_view.h"
+#include "views/message_stats_view.h"
 
 #include "models/message_stats_model.h"
 

@@ -1,4 +1,4 @@
-#include "receiver_info_view.h"
+#include "views/receiver_info_view.h"
 #include "models/refresh_intervals.h"
 #include "style/gnss_style.h"
 

@@ -1,4 +1,4 @@
-#include "signal_levels_view.h"
+#include "views/signal_levels_view.h"
 #include "models/refresh_intervals.h"
 
 #include "models/satellite_model.h"

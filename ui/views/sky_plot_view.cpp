@@ -1,4 +1,4 @@
-#include "sky_plot_view.h"
+#include "views/sky_plot_view.h"
 #include "models/refresh_intervals.h"
 
 #include "models/satellite_model.h"

@@ -1,4 +1,4 @@
-#include "value_grid.h"
+#include "views/value_grid.h"
 
 #include "models/value_format.h"
 

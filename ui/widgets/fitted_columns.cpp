@@ -1,4 +1,4 @@
-#include "fitted_columns.h"
+#include "widgets/fitted_columns.h"
 
 #include <QAbstractItemView>
 #include <QHeaderView>

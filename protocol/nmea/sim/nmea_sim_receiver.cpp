@@ -1,4 +1,4 @@
-#include "nmea_sim_receiver.h"
+#include "nmea/sim/nmea_sim_receiver.h"
 
 #include "builtin/dialects.h"
 #include "nmea/nmea_messages.h"
