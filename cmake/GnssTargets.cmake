@@ -5,6 +5,8 @@
 # gnss_qt_library(NAME SOURCES ... [LINKS ...])
 #   a library of the Qt side of protocol/ (link, config, corrections, session): moc on for it
 #   alone (the top level switches it on for app/ and ui/ later, with qt_standard_project_setup).
+# gnss_ui_library(NAME FOLDER UNITS ... [HEADERS ...] LINKS ...)
+#   a library of ui/ (FOLDER/<unit>.cpp and .h per unit), its headers included from ui/.
 # gnss_check_layers()
 #   at the end of configuring: fails when a library that names no vendor links a vendor's, or
 #   when a Qt-free library links Qt (the lists below).
@@ -22,6 +24,23 @@ function(gnss_qt_library name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "SOURCES;LINKS")
   add_library(${name} STATIC ${arg_SOURCES})
   set_target_properties(${name} PROPERTIES AUTOMOC ON POSITION_INDEPENDENT_CODE ON)
+  target_link_libraries(${name} PUBLIC ${arg_LINKS})
+endfunction()
+
+# gnss_ui_library(NAME FOLDER UNITS ... [HEADERS ...] LINKS ...): one of the libraries below,
+# made of FOLDER/<unit>.cpp and FOLDER/<unit>.h for each of UNITS and FOLDER/<header>.h for each
+# of HEADERS (header only), its headers included by folder from here.
+function(gnss_ui_library name folder)
+  cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "UNITS;HEADERS;LINKS")
+  set(sources)
+  foreach(unit IN LISTS arg_UNITS)
+    list(APPEND sources ${folder}/${unit}.cpp ${folder}/${unit}.h)
+  endforeach()
+  foreach(header IN LISTS arg_HEADERS)
+    list(APPEND sources ${folder}/${header}.h)
+  endforeach()
+  add_library(${name} STATIC ${sources})
+  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/ui)
   target_link_libraries(${name} PUBLIC ${arg_LINKS})
 endfunction()
 
