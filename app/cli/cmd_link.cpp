@@ -257,14 +257,17 @@ int cmdSend(const CliContext &ctx) {
     // Every sentence is checked before anything is sent (its length too, when the dialect is
     // given: the queue would refuse what the receiver does not take).
     std::vector<std::string> lines;
+    const bool fixChecksum = args.flag("fix-checksum");
     for (const auto &typed : args.positionals()) {
-        std::string error;
-        lines.push_back(completeSentence(typed, error));
+        std::string error, note;
+        lines.push_back(checkTypedSentence(typed, fixChecksum, error, &note));
         if (lines.back().empty()) {
             std::fprintf(stderr, "gnss-cli: not a sentence: '%s' (%s); nothing was sent\n",
                          typed.c_str(), error.c_str());
             return 2;
         }
+        if (!note.empty())
+            std::fprintf(stderr, "gnss-cli: '%s': %s\n", typed.c_str(), note.c_str());
     }
     const std::string dialectId = args.option("dialect").value_or("auto");
     const Dialect *dialect = dialectId == "auto" ? nullptr : ctx.registry.find(dialectId);

@@ -75,6 +75,8 @@ constexpr OptionSpec kSendOptions[] = {
         {"dialect", "D",
          "whose reply rules to wait by: auto (default) or one of the dialects below"},
         {"timeout", "S", "seconds to wait for each reply (default: the dialect's rule)"},
+        {"fix-checksum", "",
+         "replace a wrong checksum typed in a SENTENCE (and say so) rather than refuse it"},
 };
 constexpr OptionSpec kConfigOptions[] = {
         kPort,
@@ -232,12 +234,14 @@ constexpr CommandSpec kCommands[] = {
          "error, 130 interrupted (Ctrl-C; 143 for SIGTERM).\n"},
         {"send", cmdSend, "send --port P|--tcp HOST:PORT|--sim D [OPTIONS] SENTENCE...",
          "send commands, print replies and outcomes", kSendOptions,
-         "Sends each SENTENCE in turn ($ and checksum added when missing), waits for its reply as "
+         "Sends each SENTENCE in turn ($ and checksum added when missing; a wrong checksum is "
+         "refused unless --fix-checksum), waits for its reply as "
          "the dialect's reply rules say, retries on silence, and prints one JSON object per "
          "command: sentence, outcome (accepted, refused, timed out, link lost, sent, failed), "
          "detail, attempts, ms, replies, and baud after a baud change. What is sent (> ...) and "
          "received (< ...) is echoed on standard error. Every SENTENCE is checked before the "
-         "port is opened.\n"
+         "port is opened: an address of upper-case letters and digits, no character NMEA does "
+         "not allow or reserves, a right checksum.\n"
          "Exit status: 0 every command accepted, 1 any refused, timed out or failed, or the "
          "source cannot be opened, 2 usage error or a malformed SENTENCE, 130 interrupted.\n"},
         {"config", cmdConfig,

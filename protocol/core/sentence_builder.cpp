@@ -3,6 +3,7 @@
 #include "core/framer.h"
 #include "core/sentence.h"
 
+#include <cctype>
 #include <cstdio>
 
 namespace gnss {
@@ -55,6 +56,73 @@ std::string completeSentence(std::string_view typed, std::string &error) {
         return {};
     }
     return buildSentence(typed, start);
+}
+
+namespace {
+bool isHex(char c) {
+    return (c >= '0' && c <= '9') || (c >= 'A' && c <= 'F') || (c >= 'a' && c <= 'f');
+}
+} // namespace
+
+std::string checkTypedSentence(std::string_view typed, bool fixChecksum, std::string &error,
+                               std::string *note) {
+    while (!typed.empty() && (typed.back() == '\r' || typed.back() == '\n' || typed.back() == ' '))
+        typed.remove_suffix(1);
+    while (!typed.empty() && typed.front() == ' ') typed.remove_prefix(1);
+    char start = '$';
+    if (!typed.empty() && (typed.front() == '$' || typed.front() == '!')) {
+        start = typed.front();
+        typed.remove_prefix(1);
+    }
+    std::string_view given; // the checksum typed, if any
+    if (const auto star = typed.find('*'); star != std::string_view::npos) {
+        given = typed.substr(star + 1);
+        typed = typed.substr(0, star);
+        if (given.size() != 2 || !isHex(given[0]) || !isHex(given[1])) {
+            error = "the checksum '*" + std::string(given) + "' is not two hex digits";
+            return {};
+        }
+    }
+    if (typed.empty()) {
+        error = "empty sentence";
+        return {};
+    }
+    for (char c : typed) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u >= 0x7F || c == '$' || c == '!' || c == '*' || c == '\\' || c == '~') {
+            error = u < 0x20 || u >= 0x7F
+                            ? "a character NMEA does not allow (code " + std::to_string(u) + ")"
+                            : std::string("a character NMEA reserves: '") + c + "'";
+            return {};
+        }
+    }
+    const std::string_view address = typed.substr(0, typed.find(','));
+    if (address.empty()) {
+        error = "the sentence has no address";
+        return {};
+    }
+    for (char c : address)
+        if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) {
+            error = "the address '" + std::string(address) +
+                    "' is not upper-case letters and digits";
+            return {};
+        }
+    if (typed.size() + 4 > Framer::kMaxLine) {
+        error = "sentence too long";
+        return {};
+    }
+    std::string sentence = buildSentence(typed, start);
+    const std::string_view right = std::string_view(sentence).substr(sentence.size() - 2);
+    if (!given.empty() && (std::toupper(static_cast<unsigned char>(given[0])) != right[0] ||
+                           std::toupper(static_cast<unsigned char>(given[1])) != right[1])) {
+        if (!fixChecksum) {
+            error = "the checksum *" + std::string(given) + " is wrong: it is *" +
+                    std::string(right) + " (leave it out and it is added)";
+            return {};
+        }
+        if (note) *note = "checksum *" + std::string(given) + " replaced by *" + std::string(right);
+    }
+    return sentence;
 }
 
 std::string checkAddressPrefix(std::string_view prefix) {

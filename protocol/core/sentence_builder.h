@@ -14,6 +14,14 @@ std::string buildSentence(std::string_view body, char start = '$');
 // sentence (empty, non-printable characters, too long).
 std::string completeSentence(std::string_view typed, std::string &error);
 
+// A sentence a person typed, checked as NMEA 0183 asks before anything is sent: '$' (or '!')
+// optional, an address of upper-case letters and digits, only printable characters outside the
+// reserved ones ($ ! * \ ~), and a checksum that is either left out (it is added) or right.
+// A wrong checksum is refused, naming the right one, unless `fixChecksum`: then it is replaced
+// and `note` says so. Returns the sentence to send, or an empty string with `error` set.
+std::string checkTypedSentence(std::string_view typed, bool fixChecksum, std::string &error,
+                               std::string *note = nullptr);
+
 // A proprietary prefix a user may configure: 'P' followed by 1 to 8 upper-case letters or
 // digits. Returns an empty string when valid, else why not.
 std::string checkAddressPrefix(std::string_view prefix);

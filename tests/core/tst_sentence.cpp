@@ -157,6 +157,68 @@ private slots:
         QVERIFY(gnss::completeSentence("PNVG\x01", err).empty());
         QVERIFY(gnss::completeSentence(",1,2", err).empty());
     }
+
+    // What a person types for gnss-cli send and the console: refused with the cause before
+    // anything is sent, or the sentence to send (its checksum added or checked).
+    void typedSentencesAreCheckedBeforeSending_data() {
+        QTest::addColumn<QByteArray>("typed");
+        QTest::addColumn<bool>("fix");
+        QTest::addColumn<QString>("sent");  // empty: refused
+        QTest::addColumn<QString>("words"); // in the error, or in the note when fixed
+        QTest::newRow("body only") << QByteArray("PNVGVER") << false << "$PNVGVER*4E"
+                                   << "";
+        QTest::newRow("right checksum") << QByteArray("$PNVGVER*4E") << false << "$PNVGVER*4E"
+                                        << "";
+        QTest::newRow("right checksum, lower case")
+                << QByteArray("$PNVGVER*4e") << false << "$PNVGVER*4E"
+                << "";
+        QTest::newRow("line end and blanks")
+                << QByteArray("  $PNVGVER*4E\r\n") << false << "$PNVGVER*4E"
+                << "";
+        QTest::newRow("a field with a blank")
+                << QByteArray("$GPSGG,GGA ON") << false << "$GPSGG,GGA ON*08"
+                << "";
+        QTest::newRow("encapsulation") << QByteArray("!AIVDM,1") << false << "!AIVDM,1*4A"
+                                       << "";
+        QTest::newRow("wrong checksum") << QByteArray("$PNVGVER*00") << false << ""
+                                        << "it is *4E";
+        QTest::newRow("wrong checksum, fixed") << QByteArray("$PNVGVER*00") << true << "$PNVGVER*4E"
+                                               << "replaced by *4E";
+        QTest::newRow("checksum not hex") << QByteArray("PNVG*ZZ") << true << ""
+                                          << "two hex digits";
+        QTest::newRow("checksum of one digit") << QByteArray("PNVGVER*4") << false << ""
+                                               << "two hex digits";
+        QTest::newRow("lower-case address") << QByteArray("hello world") << false << ""
+                                            << "address";
+        QTest::newRow("blank in the address") << QByteArray("PNVG VER,1") << false << ""
+                                              << "address";
+        QTest::newRow("no address") << QByteArray(",1,2") << false << ""
+                                    << "no address";
+        QTest::newRow("empty") << QByteArray("  ") << false << ""
+                               << "empty";
+        QTest::newRow("tab") << QByteArray("PNVG\tVER") << false << ""
+                             << "does not allow";
+        QTest::newRow("eight-bit") << QByteArray("PNVG,\xE9") << false << ""
+                                   << "does not allow";
+        QTest::newRow("reserved backslash") << QByteArray("PNVG,a\\b") << false << ""
+                                            << "reserves";
+        QTest::newRow("reserved tilde") << QByteArray("PNVG,~") << false << ""
+                                        << "reserves";
+        QTest::newRow("a second start") << QByteArray("PNVG,$GPGGA") << false << ""
+                                        << "reserves";
+    }
+
+    void typedSentencesAreCheckedBeforeSending() {
+        QFETCH(QByteArray, typed);
+        QFETCH(bool, fix);
+        QFETCH(QString, sent);
+        QFETCH(QString, words);
+        std::string error, note;
+        const std::string out = gnss::checkTypedSentence(typed.toStdString(), fix, error, &note);
+        QCOMPARE(QString::fromStdString(out), sent);
+        const QString said = QString::fromStdString(sent.isEmpty() ? error : note);
+        QVERIFY2(words.isEmpty() ? said.isEmpty() : said.contains(words), qPrintable(said));
+    }
 };
 
 QTEST_APPLESS_MAIN(TstSentence)

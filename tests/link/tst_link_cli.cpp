@@ -98,6 +98,29 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("nothing was sent"), r.err.constData());
         QVERIFY(!r.err.contains("Cannot open")); // the port was never opened
+        // Not an address, a checksum that is not one, a wrong one: each refused with its cause.
+        for (const auto &[typed, cause] :
+             {std::pair<QString, QByteArray>{"hello world", "is not upper-case letters"},
+              {"PNVG*ZZ", "not two hex digits"},
+              {"$PNVGVER*00", "it is *4E"}}) {
+            const Run bad = cli({"send", "--port", "/dev/null-no-such-port", typed});
+            QVERIFY2(bad.exitCode == 2, bad.err.constData());
+            QVERIFY2(bad.err.contains(cause) && bad.err.contains("nothing was sent"),
+                     bad.err.constData());
+            QVERIFY(!bad.err.contains("Cannot open"));
+        }
+    }
+
+    // --fix-checksum: the wrong checksum is replaced, and the replacement said.
+    void aWrongChecksumIsFixedWhenAsked() {
+        SimProcess sim({"--dialect", "nvs"});
+        REQUIRE_SIM(sim);
+        const Run r = cli({"send", "--port", sim.device, "--baud", "115200", "--fix-checksum",
+                           "$PNVGVER*00"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY2(r.err.contains("checksum *00 replaced by *4E"), r.err.constData());
+        QCOMPARE(QJsonDocument::fromJson(r.out.trimmed()).object().value("sentence").toString(),
+                 QStringLiteral("$PNVGVER*4E"));
     }
 
     void sendPrintsRepliesAndOutcomes() {

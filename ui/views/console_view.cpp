@@ -215,7 +215,8 @@ bool ConsoleView::submit() {
     const QString typed = input_->text().trimmed();
     if (typed.isEmpty() || !refusal_.isEmpty()) return false;
     std::string error;
-    const std::string sentence = completeSentence(typed.toStdString(), error);
+    // Checked as gnss-cli send checks it; a wrong checksum is refused, naming the right one.
+    const std::string sentence = checkTypedSentence(typed.toStdString(), false, error);
     if (sentence.empty()) {
         showNotSent(QString::fromStdString(error));
         return false;

@@ -138,6 +138,12 @@ private slots:
         input->setText("$PNVG\tBAD");
         QVERIFY(!view.submit());
         QVERIFY(spy.isEmpty());
+        // A wrong checksum is refused, the right one named; nothing is sent.
+        input->setText("$PNVGVER*00");
+        QVERIFY(!view.submit());
+        QVERIFY(spy.isEmpty());
+        QVERIFY2(view.findChild<QLabel *>("consoleInputError")->text().contains("*4E"),
+                 qPrintable(view.findChild<QLabel *>("consoleInputError")->text()));
         QVERIFY(!view.findChild<QLabel *>("consoleInputError")->text().isEmpty());
         QCOMPARE(view.history(), QStringList{"PNVGVER"});
     }
