@@ -150,25 +150,28 @@ constexpr CommandSpec kCommands[] = {
          "long, epochs, the dialect recognised and the decoding speed. A regular file is decoded "
          "on every core with the same counts as one front-to-back pass.\n"
          "Exit status: 0 the input was read to its end, 1 it could not be read, 2 usage error.\n"},
-        {"export", cmdExport, "export --format gpx|kml|csv|nmea [--from T] [--to T] FILE -o OUT",
+        {"export", cmdExport, "export --format gpx|kml|csv|nmea [--from T] [--to T] FILE|- -o OUT",
          "a log or a range of it as GPX, KML, CSV or its NMEA bytes", kExportOptions,
-         "Indexes FILE (any NMEA log, a recording, a .gz log) and writes the epochs from --from to "
+         "Indexes FILE (any NMEA log, a recording, a .gz log; - reads standard input whole first) "
+         "and writes the epochs from --from to "
          "--to: GPX 1.1 (a track point per epoch with a position: time, ele, fix, sat, hdop), "
          "KML (the track coloured by fix type), CSV (one row per epoch, columns in "
          "docs/export.md) or nmea (the bytes of those epochs exactly as they are in FILE).\n"
          "Exit status: 0 written, 1 FILE unreadable or OUT not writable, 2 usage error.\n"},
-        {"summary", cmdSummary, "summary [--json] [--from T] [--to T] FILE",
+        {"summary", cmdSummary, "summary [--json] [--from T] [--to T] FILE|-",
          "what a log holds: duration, fix availability, gaps, CEP, events", kSummaryOptions,
-         "Indexes FILE and prints its duration, epochs, availability per fix type, gaps, time "
+         "Indexes FILE (- reads standard input whole first) and prints its duration, epochs, "
+         "availability per fix type, gaps, time "
          "jumps, time to first fix and to RTK fixed, CEP50/CEP95/2DRMS of the stationary part "
          "(speed under 0.5 m/s; every position when no speed is known), the largest HDOP and "
          "the events (fix changes, gaps, resets, checksum-error bursts, dialect changes, time "
          "marks, jamming, base station changes). --json prints one JSON object.\n"
          "Exit status: 0 done, 1 FILE unreadable, 2 usage error.\n"},
         {"play", cmdPlay,
-         "play FILE --pty|--tcp PORT|--port P [--speed X] [--loop] [--from T] [--to T]",
+         "play FILE|- --pty|--tcp PORT|--port P [--speed X] [--loop] [--from T] [--to T]",
          "play a log out at its own pace, like gpsfake", kPlayOptions,
-         "Sends the bytes of FILE (or of the epochs from --from to --to) exactly as they are, "
+         "Sends the bytes of FILE (- reads standard input whole first), or of its epochs from "
+         "--from to --to, exactly as they are, "
          "each epoch when it is due: at the pace of the recording's host times (FILE.idx) when "
          "there are some, else of the epochs' UTC times (a reset's step back and missing times "
          "add no wait); --speed X plays X times faster. --pty prints the new pseudo-terminal's "

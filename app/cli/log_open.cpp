@@ -2,11 +2,57 @@
 
 #include "logview/log_range.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <thread>
 #include <unistd.h>
 
 namespace gnss::cli {
+
+OpenedLog::TempFile::~TempFile() {
+    if (!path.empty()) ::unlink(path.c_str());
+}
+
+namespace {
+
+// Standard input, whole, into a new temporary file; its path, or empty with `error` set.
+std::string copyStandardInput(std::string &error) {
+    const char *dir = std::getenv("TMPDIR");
+    std::string path = std::string(dir && *dir ? dir : "/tmp") + "/gnss-cli-stdin-XXXXXX";
+    const int fd = ::mkstemp(path.data());
+    if (fd < 0) {
+        error = "cannot make a temporary file for standard input in " + path + ": " +
+                std::strerror(errno);
+        return {};
+    }
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(STDIN_FILENO, buffer, sizeof buffer);
+        if (n == 0) break;
+        if (n < 0 && errno == EINTR) continue;
+        bool written = n > 0;
+        for (ssize_t done = 0; written && done < n;) {
+            const ssize_t w = ::write(fd, buffer + done, static_cast<std::size_t>(n - done));
+            if (w < 0 && errno == EINTR) continue;
+            written = w > 0;
+            done += w > 0 ? w : 0;
+        }
+        if (!written) {
+            error = std::string(n < 0 ? "cannot read standard input: "
+                                      : "cannot write the copy of standard input: ") +
+                    std::strerror(errno);
+            ::close(fd);
+            ::unlink(path.c_str());
+            return {};
+        }
+    }
+    ::close(fd);
+    return path;
+}
+
+} // namespace
 
 int openLogForCommand(const CliContext &ctx, OpenedLog &out) {
     const Args &args = ctx.args;
@@ -15,6 +61,7 @@ int openLogForCommand(const CliContext &ctx, OpenedLog &out) {
         return 2;
     }
     out.path = args.positionals().front();
+    std::string openPath = out.path;
     logview::LogViewOptions options;
     options.index.decoder.dialect = args.option("dialect").value_or("auto");
     if (options.index.decoder.dialect != "auto" &&
@@ -38,8 +85,18 @@ int openLogForCommand(const CliContext &ctx, OpenedLog &out) {
             (name[0] == 'f' ? from : to) = t;
         }
     }
+    // The request is checked before standard input is read.
+    if (out.path == "-") {
+        std::string error;
+        out.stdinCopy.path = copyStandardInput(error);
+        if (out.stdinCopy.path.empty()) {
+            std::fprintf(stderr, "gnss-cli: %s\n", error.c_str());
+            return 1;
+        }
+        openPath = out.stdinCopy.path;
+    }
     out.view = std::make_unique<logview::LogView>(ctx.registry, options);
-    out.view->open(out.path);
+    out.view->open(openPath);
     const bool tty = ::isatty(STDERR_FILENO);
     while (!out.view->waitUntilIndexed(tty ? 200 : -1)) {
         const auto p = out.view->progress();
@@ -48,12 +105,20 @@ int openLogForCommand(const CliContext &ctx, OpenedLog &out) {
                      out.path.c_str(), p.fraction * 100);
     }
     if (tty) std::fprintf(stderr, "\r\033[K");
+    // The engine's words name the file it opened: the copy of standard input is "standard input".
+    auto said = [&out](std::string text) {
+        const std::string &copy = out.stdinCopy.path;
+        for (auto at = copy.empty() ? std::string::npos : text.find(copy); at != std::string::npos;
+             at = text.find(copy, at))
+            text.replace(at, copy.size(), "standard input");
+        return text;
+    };
     if (out.view->progress().phase != logview::LogView::Phase::Ready) {
-        std::fprintf(stderr, "gnss-cli: %s\n", out.view->error().c_str());
+        std::fprintf(stderr, "gnss-cli: %s\n", said(out.view->error()).c_str());
         return 1;
     }
     for (const std::string &w : out.view->warnings())
-        std::fprintf(stderr, "gnss-cli: %s\n", w.c_str());
+        std::fprintf(stderr, "gnss-cli: %s\n", said(w).c_str());
     const logview::EpochRange range = logview::resolveRange(*out.view, from, to);
     const std::string fromText = args.option("from").value_or(""),
                       toText = args.option("to").value_or("");

@@ -4,6 +4,7 @@
 #include "raw_pty.h"
 #include "scenario_log.h"
 
+#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -92,6 +93,37 @@ private slots:
         QVERIFY(runCli({"summary", plain}).out.contains("dialect: nmea (no vendor sentences)"));
         QCOMPARE(runCli({"summary", dir_.filePath("missing.nmea")}).exitCode, 1);
         QCOMPARE(runCli({"summary"}).exitCode, 2);
+    }
+
+    // "-": standard input, read whole (through a temporary file, removed after), as a file is.
+    void logCommandsReadStandardInput() {
+        QFile f(log_);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray bytes = f.readAll();
+        const Run fromFile = runCli({"summary", "--json", log_});
+        const Run fromPipe = runCli({"summary", "--json", "-"}, bytes);
+        QVERIFY2(fromPipe.exitCode == 0, fromPipe.err.constData());
+        QJsonObject a = QJsonDocument::fromJson(fromFile.out).object();
+        QJsonObject b = QJsonDocument::fromJson(fromPipe.out).object();
+        QVERIFY(!b.isEmpty());
+        a.remove("file");
+        b.remove("file");
+        QCOMPARE(b, a);
+        const QString out = dir_.filePath("from-stdin.csv");
+        const Run exported = runCli(
+                {"export", "--format", "csv", "--from", "#10", "--to", "#19", "-", "-o", out},
+                bytes);
+        QVERIFY2(exported.exitCode == 0, exported.err.constData());
+        QFile csv(out);
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        QCOMPARE(csv.readAll().count('\n'), 11); // a header and ten epochs
+        // An empty pipe is an empty log, said so; a bad request reads nothing first.
+        const Run empty = runCli({"summary", "-"}, {});
+        QCOMPARE(empty.exitCode, 0);
+        QVERIFY2(empty.err.contains("standard input is empty"), empty.err.constData());
+        QCOMPARE(runCli({"summary", "--from", "soon", "-"}, bytes).exitCode, 2);
+        // No copy of standard input is left behind.
+        QVERIFY(QDir(QDir::tempPath()).entryList({"gnss-cli-stdin-*"}).isEmpty());
     }
 
     // A time or epoch wholly outside the log is refused with the log's first and last epoch;
