@@ -191,7 +191,8 @@ int cmdStats(const CliContext &ctx) {
     if (opt.json) {
         JsonWriter w(o);
         w.beginObject().field("input", opt.input);
-        w.field("dialect", dec.dialect() ? dec.dialect()->id : std::string_view("unknown"));
+        // As summary names it: a log without vendor sentences is a standard NMEA one.
+        w.field("dialect", dec.dialect() ? dec.dialect()->id : std::string_view("nmea"));
         w.field("bytes", fs.bytesIn).field("bytes_skipped", fs.bytesSkipped);
         w.field("sentences", sentences).field("decoded", decoded).field("decode_errors", errors);
         w.field("unknown", unknown).field("checksum_bad", bad).field("checksum_missing", missing);
@@ -231,7 +232,8 @@ int cmdStats(const CliContext &ctx) {
                       "\ndialect: %s\nbytes: %llu (skipped %llu)\nlines truncated: %llu, too long: "
                       "%llu, binary aborted: %llu\nrejected by checksum policy: %llu\nepochs: "
                       "%llu\n",
-                      dec.dialect() ? std::string(dec.dialect()->id).c_str() : "unknown",
+                      dec.dialect() ? std::string(dec.dialect()->id).c_str()
+                                    : "nmea (no vendor sentences)",
                       (unsigned long long)fs.bytesIn, (unsigned long long)fs.bytesSkipped,
                       (unsigned long long)fs.truncated, (unsigned long long)fs.tooLong,
                       (unsigned long long)fs.binaryAborted, (unsigned long long)rejected,

@@ -167,7 +167,13 @@ int cmdPlay(const CliContext &ctx) {
     const int kinds =
             args.flag("pty") + args.option("tcp").has_value() + args.option("port").has_value();
     if (kinds != 1) {
-        std::fprintf(stderr, "gnss-cli: play needs one of --pty, --tcp PORT, --port P\n");
+        if (kinds == 0)
+            std::fprintf(stderr, "gnss-cli: play needs one of --pty, --tcp PORT, --port P\n");
+        else
+            std::fprintf(stderr,
+                         "gnss-cli: play takes one of --pty, --tcp PORT, --port P, not %d of "
+                         "them\n",
+                         kinds);
         return 2;
     }
     double speed = 1;

@@ -7,6 +7,9 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 
+#include <cstdio>
+#include <cstdlib>
+
 namespace gnss::app {
 
 std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
@@ -81,7 +84,12 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
         return std::nullopt;
     }
     if (p.isSet("help")) p.showHelp(0);
-    if (p.isSet("version")) p.showVersion();
+    if (p.isSet("version")) {
+        // As gnss-cli and gnss-sim print theirs: the program's name, then its version.
+        std::printf("gnss-workbench %s\n", qPrintable(QCoreApplication::applicationVersion()));
+        std::fflush(stdout);
+        ::exit(0);
+    }
     const QStringList files = p.positionalArguments();
     if (files.size() > 1 || (files.size() == 1 && p.isSet(openLog))) {
         error = QCoreApplication::translate("StartupOptions", "Unexpected argument '%1'")

@@ -132,7 +132,8 @@ int listenOn(int port) {
     addr.sin_port = htons(static_cast<std::uint16_t>(port));
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     if (::bind(fd, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 || ::listen(fd, 1) != 0) {
-        std::perror("gnss-sim: listen");
+        std::fprintf(stderr, "gnss-sim: cannot listen on 127.0.0.1:%d: %s\n", port,
+                     std::strerror(errno));
         ::close(fd);
         return -1;
     }

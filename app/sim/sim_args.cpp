@@ -59,7 +59,8 @@ const char *const kUsageTail =
         "                 and its name, separated by tabs\n"
         "\n"
         "Options take their value as --opt VALUE or --opt=VALUE. Runs until killed or until\n"
-        "standard input closes; SIGHUP power-cycles the receiver.\n"
+        "standard input closes (not watched when it is /dev/null: `gnss-sim --pty < /dev/null &`\n"
+        "runs until killed); SIGHUP power-cycles the receiver.\n"
         "Exit status: 0 standard input closed or the hangup fault, 1 the pseudo-terminal or\n"
         "port could not be opened, 2 usage error, 128 + N stopped by signal N (130 Ctrl-C).\n";
 

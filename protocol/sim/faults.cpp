@@ -170,7 +170,7 @@ std::optional<FaultSpec> parseFaults(std::string_view spec, std::string &error) 
         } else {
             error = "unknown fault '" + std::string(key) +
                     "' (known: badcs, truncate, binary, silence, noreply, slowreply, hangup, "
-                    "powercut)";
+                    "hangupon, powercut)";
             return std::nullopt;
         }
     }

@@ -279,6 +279,33 @@ private slots:
 #endif
     }
 
+    // Messages say the cause: the busy port by number, every fault there is, how many outputs
+    // were given, the same dialect name as summary's for a log without vendor sentences.
+    void messagesSayTheCause() {
+#ifdef GNSS_SIM_PATH
+        const QString sim = QStringLiteral(GNSS_SIM_PATH);
+        QTcpServer busy;
+        QVERIFY(busy.listen(QHostAddress::LocalHost));
+        const QString port = QString::number(busy.serverPort());
+        const Run taken = run(sim, {"--dialect", "nmea", "--tcp", port});
+        QVERIFY2(taken.exitCode != 0 && taken.err.contains("127.0.0.1:" + port.toUtf8()),
+                 why(taken));
+        const Run fault = run(sim, {"--dialect", "nmea", "--faults", "nosuch=1"});
+        QVERIFY2(fault.exitCode == 2 && fault.err.contains("hangupon"), why(fault));
+#endif
+        QTemporaryDir dir;
+        const QString log = dir.filePath("plain.nmea");
+        QFile f(log);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(kNmea.repeated(3));
+        f.close();
+        const Run two = cli({"play", log, "--pty", "--tcp", "17002"});
+        QVERIFY2(two.exitCode == 2 && two.err.contains("not 2 of them"), why(two));
+        const Run stats = cli({"stats", "--json", log});
+        QVERIFY2(stats.out.contains("\"dialect\":\"nmea\""), why(stats));
+        QVERIFY2(cli({"summary", "--json", log}).out.contains("\"dialect\":\"nmea\""), why(stats));
+    }
+
     void gnssWorkbenchHelpAndVersionNeedNoDisplay() {
 #ifndef GNSS_WORKBENCH_PATH
         QSKIP("the GUI is not built");
@@ -293,7 +320,7 @@ private slots:
         env.remove("LANGUAGE");
         const QString gui = QStringLiteral(GNSS_WORKBENCH_PATH);
         const Run version = run(gui, {"--version"}, {}, env);
-        QVERIFY2(version.exitCode == 0 && version.out == "GNSS Workbench " GNSS_VERSION "\n",
+        QVERIFY2(version.exitCode == 0 && version.out == "gnss-workbench " GNSS_VERSION "\n",
                  why(version));
         const Run help = run(gui, {"--help"}, {}, env);
         QVERIFY2(help.exitCode == 0 && help.out.contains("--port") &&
