@@ -98,7 +98,7 @@ echo "== the programs, from /usr/bin"
 upstream=${version%-*}
 # No display: --version must not need one.
 check "gnss-workbench --version" test "$(env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM \
-    /usr/bin/gnss-workbench --version 2>/dev/null)" = "GNSS Workbench $upstream"
+    /usr/bin/gnss-workbench --version 2>/dev/null)" = "gnss-workbench $upstream"
 check "gnss-cli --version" test "$(/usr/bin/gnss-cli --version)" = "gnss-cli $upstream"
 check "gnss-sim --version" test "$(/usr/bin/gnss-sim --version)" = "gnss-sim $upstream"
 # shellcheck disable=SC2016 # a sentence, not an expansion
