@@ -101,7 +101,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/cli/cmd_config.cpp" line="+85"/>
+        <location filename="../app/cli/cmd_config.cpp" line="+87"/>
         <source>reading the settings failed: %1</source>
         <translation>не удалось прочитать настройки: %1</translation>
     </message>
@@ -130,12 +130,7 @@
         <translation>у диалекта %1 нет настроек</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>unknown setting &apos;%1&apos; (gnss-cli schema %2 lists them)</source>
-        <translation>неизвестная настройка «%1» (список настроек выводит gnss-cli schema %2)</translation>
-    </message>
-    <message>
-        <location line="+47"/>
+        <location line="+67"/>
         <source>config needs an action: get, set, export, apply, diff or action</source>
         <translation>для config нужно действие: get, set, export, apply, diff или action</translation>
     </message>
@@ -165,7 +160,7 @@
         <translation>неизвестное действие config «%1»: get, set, export, apply, diff или action</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>unknown action &apos;%1&apos;: save, defaults, cold, warm or hot</source>
         <translation>неизвестное действие «%1»: save, defaults, cold, warm или hot</translation>
     </message>
@@ -232,7 +227,7 @@
 <context>
     <name>Refusal</name>
     <message>
-        <location filename="../protocol/core/settings_schema.cpp" line="+77"/>
+        <location filename="../protocol/core/settings_schema.cpp" line="+150"/>
         <location filename="../protocol/geostar/geostar_encode_util.cpp" line="+11"/>
         <location filename="../protocol/geostar/geostar_status_words.cpp" line="+61"/>
         <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+78"/>
@@ -800,12 +795,22 @@
         <translation>не F и не W</translation>
     </message>
     <message>
-        <location filename="../protocol/core/settings_plan.cpp" line="+11"/>
+        <location filename="../protocol/core/settings_plan.cpp" line="+44"/>
+        <source>&apos;%1&apos; names several settings of the %2 dialect: %3</source>
+        <translation>«%1» — имя нескольких настроек диалекта %2: %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown setting &apos;%1&apos; of the %2 dialect: did you mean %3?</source>
+        <translation>неизвестная настройка «%1» диалекта %2: может быть, %3?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>unknown setting &apos;%1&apos; of the %2 dialect (gnss-cli schema %2 lists them)</source>
         <translation>неизвестная настройка «%1» диалекта %2 (их список выводит gnss-cli schema %2)</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+13"/>
         <source>%1 is read-only: the receiver reports it but no command sets it</source>
         <translation>%1 только для чтения: приёмник сообщает её, но ни одна команда её не задаёт</translation>
     </message>
@@ -3673,7 +3678,7 @@
 <context>
     <name>StartupOptions</name>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="+16"/>
+        <location filename="../app/gui/startup_options.cpp" line="+19"/>
         <source>Configure and monitor GNSS receivers.</source>
         <translation>Настройка и мониторинг приёмников ГНСС.</translation>
     </message>
@@ -3733,7 +3738,7 @@
         <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info; при открытом журнале также logTrack, logSummary, logCharts, logEvents.</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+39"/>
         <source>--at needs a log to open</source>
         <translation>--at указывается вместе с журналом</translation>
     </message>
@@ -3758,7 +3763,7 @@
         <translation>Укажите не более одного источника: --port, --tcp, --gpsd, --replay, --sim или журнал.</translation>
     </message>
     <message>
-        <location line="-83"/>
+        <location line="-88"/>
         <source>Save an image of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
@@ -3768,7 +3773,7 @@
         <translation>Выйти через указанное число секунд.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>Unexpected argument &apos;%1&apos;</source>
         <translation>Лишний аргумент «%1»</translation>
     </message>
@@ -4868,18 +4873,12 @@ Serial number: %3</source>
         <translation>Чтение настроек</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <location line="+41"/>
-        <source>unknown setting &apos;%1&apos; of the %2 dialect</source>
-        <translation>неизвестная настройка «%1» диалекта %2</translation>
-    </message>
-    <message>
-        <location line="-5"/>
+        <location line="+46"/>
         <source>Apply settings</source>
         <translation>Применение настроек</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>%1 cannot be set</source>
         <translation>%1 нельзя задать</translation>
     </message>
@@ -4899,8 +4898,8 @@ Serial number: %3</source>
         <translation>у приёмника %1 нет команды «%2»</translation>
     </message>
     <message>
-        <location line="-209"/>
-        <location line="+323"/>
+        <location line="-212"/>
+        <location line="+326"/>
         <source>could not read back: %1</source>
         <translation>не удалось прочитать обратно: %1</translation>
     </message>
@@ -5972,7 +5971,7 @@ Serial number: %3</source>
         <translation>Команда для отправки, например %1 (контрольная сумма добавляется)</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+80"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>

@@ -12,12 +12,14 @@
 // Without --baud the speed is detected; without --dialect the receiver is identified.
 // Before any Qt header: core headers have members named emit, which Qt defines as a macro.
 #include "core/json_writer.h"
+#include "core/settings_plan.h"
 #include "core/stream_decoder.h"
 
 #include "cli/cli_args.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_output.h"
 #include "cli/cli_source.h"
+#include "config/refusal_text.h"
 #include "config/settings_engine.h"
 #include "link/command_queue.h"
 #include "link/sentence_stream.h"
@@ -158,14 +160,22 @@ Link openLink(const CliContext &ctx, const Args &args) {
     return l;
 }
 
-int get(SettingsEngine &engine, const std::vector<std::string> &keys) {
-    for (const auto &k : keys)
-        if (!findSetting(engine.dialect()->settings, k)) {
-            say(QObject::tr("unknown setting '%1' (gnss-cli schema %2 lists them)")
-                        .arg(QString::fromStdString(k),
-                             QString::fromStdString(std::string(engine.dialect()->id))));
-            return 2;
+// The schema keys of `typed` ("PVTRATE", "rtk.elgps": the forms findSetting takes), or false
+// with the unknown or ambiguous one said (and the keys it could mean).
+bool schemaKeys(const Dialect &d, std::vector<std::string> &keys) {
+    for (auto &k : keys) {
+        const SettingDef *def = findSetting(d.settings, k);
+        if (!def) {
+            say(config::refusalText(unknownSetting(d, k), d.id));
+            return false;
         }
+        k = std::string(def->key);
+    }
+    return true;
+}
+
+int get(SettingsEngine &engine, std::vector<std::string> keys) {
+    if (!schemaKeys(*engine.dialect(), keys)) return 2;
     const auto r = run(engine, [&] { return engine.read(keys); });
     const bool ok = reportRead(r);
     std::string out;
@@ -255,10 +265,12 @@ int cmdConfig(const CliContext &ctx) {
 
     if (action == "get") return get(engine, rest);
     if (action == "set") {
-        // Only what differs is sent: the engine reads the receiver first.
+        // Each by its schema key, however it was typed; an unknown one refused before sending.
         std::vector<std::string> keys;
-        for (const auto &kv : sets)
-            if (findSetting(l.dialect->settings, kv.key)) keys.push_back(kv.key);
+        for (const auto &kv : sets) keys.push_back(kv.key);
+        if (!schemaKeys(*l.dialect, keys)) return 2;
+        for (std::size_t i = 0; i < sets.size(); ++i) sets[i].key = keys[i];
+        // Only what differs is sent: the engine reads the receiver first.
         if (!keys.empty()) run(engine, [&] { return engine.read(keys); });
         return applyValues(engine, [&] { return engine.apply(sets); });
     }

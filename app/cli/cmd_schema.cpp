@@ -87,6 +87,15 @@ int cmdEncode(const CliContext &ctx) {
                      std::string(d->id).c_str());
         return 2;
     }
+    // Every key in the forms people write it ("PVTRATE", "rtk.pvtrate"); an unknown or ambiguous
+    // one is a wrong request (exit 2), said with the keys it could mean.
+    for (const auto &k : rest) {
+        const std::string key = args.flag("query") ? k : k.substr(0, k.find('='));
+        if (!key.empty() && key != "all" && !findSetting(d->settings, key)) {
+            std::fprintf(stderr, "gnss-cli: %s\n", unknownSetting(*d, key).text.c_str());
+            return 2;
+        }
+    }
     if (args.flag("query")) {
         result = encodeQueries(*d, rest);
     } else {

@@ -286,12 +286,12 @@ bool SettingsEngine::read(const std::vector<std::string> &keys) {
         for (const auto &k : keys) {
             const SettingDef *def = findSetting(dialect_->settings, k);
             if (!def) {
-                report_.error =
-                        tr("unknown setting '%1' of the %2 dialect").arg(qs(k), qs(dialect_->id));
+                report_.error = refusalText(unknownSetting(*dialect_, k), dialect_->id);
                 end();
                 return false;
             }
-            if (isReadable(*def)) wanted.push_back(k);
+            // By its schema key, however it was typed ("ELGPS", "rtk.elgps").
+            if (isReadable(*def)) wanted.emplace_back(def->key);
         }
     }
     std::vector<std::string> sentences;
@@ -322,17 +322,20 @@ bool SettingsEngine::read(const std::vector<std::string> &keys) {
     return true;
 }
 
-bool SettingsEngine::apply(const std::vector<KeyValue> &values) {
+bool SettingsEngine::apply(const std::vector<KeyValue> &typed) {
     if (!begin(Operation::Apply, tr("Apply settings"))) return false;
-    for (const auto &kv : values) {
+    // Each by its schema key, however it was typed ("PVTRATE", "rtk.pvtrate"): the read-back
+    // that verifies it reports it so.
+    std::vector<KeyValue> values;
+    for (const auto &kv : typed) {
         const SettingDef *def = findSetting(dialect_->settings, kv.key);
         if (!def || !isWritable(*def)) {
             report_.error = def ? tr("%1 cannot be set").arg(qs(kv.key))
-                                : tr("unknown setting '%1' of the %2 dialect")
-                                            .arg(qs(kv.key), qs(dialect_->id));
+                                : refusalText(unknownSetting(*dialect_, kv.key), dialect_->id);
             end();
             return false;
         }
+        values.push_back({std::string(def->key), kv.value});
     }
     const std::vector<KeyValue> changes = changesFrom(values);
     if (changes.empty()) {

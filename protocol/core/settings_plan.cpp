@@ -7,12 +7,6 @@
 namespace gnss {
 namespace {
 
-Refusal unknownSetting(const Dialect &d, std::string_view key) {
-    return refusal(QT_TRANSLATE_NOOP("Refusal", "unknown setting '%1' of the %2 dialect (gnss-cli "
-                                                "schema %2 lists them)"),
-                   {std::string(key), std::string(d.id)});
-}
-
 // Commands that change the link last, then by order; the plan is built in the order the
 // settings were given, which the stable sort keeps among equals.
 void sortByPlan(std::vector<PlannedCommand> &plan) {
@@ -43,6 +37,21 @@ void appendOnce(std::vector<std::string> &to, std::vector<std::string> &&from) {
 }
 
 } // namespace
+
+Refusal unknownSetting(const Dialect &d, std::string_view key) {
+    const SettingKeyHint hint = settingKeyHint(d.settings, key);
+    if (hint.ambiguous)
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "'%1' names several settings of the %2 "
+                                                    "dialect: %3"),
+                       {std::string(key), std::string(d.id), hint.list()});
+    if (!hint.keys.empty())
+        return refusal(QT_TRANSLATE_NOOP("Refusal", "unknown setting '%1' of the %2 dialect: did "
+                                                    "you mean %3?"),
+                       {std::string(key), std::string(d.id), hint.list()});
+    return refusal(QT_TRANSLATE_NOOP("Refusal", "unknown setting '%1' of the %2 dialect (gnss-cli "
+                                                "schema %2 lists them)"),
+                   {std::string(key), std::string(d.id)});
+}
 
 Refusal planWrites(const Dialect &d, std::span<const KeyValue> values,
                    std::vector<PlannedCommand> &out) {

@@ -20,6 +20,10 @@ struct PlannedCommand {
     std::vector<KeyValue> values;
 };
 
+// An unknown or ambiguous setting of `d`, refused with the keys it could mean (several rows
+// share the name) or the nearest ones.
+Refusal unknownSetting(const Dialect &d, std::string_view key);
+
 // Groups `values` by command, in plan order. Refuses an unknown key, a setting that cannot be
 // set, a value its command does not take, or a setting given twice; plans nothing then.
 Refusal planWrites(const Dialect &d, std::span<const KeyValue> values,

@@ -3,7 +3,9 @@
 #include "core/field_parse.h"
 #include "core/sentence_builder.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace gnss {
 
@@ -29,19 +31,95 @@ std::string_view toString(SettingAccess a) {
     return "read-write";
 }
 
-const SettingDef *findSetting(std::span<const SettingDef> schema, std::string_view key) {
+namespace {
+
+char lowerAscii(char c) {
+    return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+}
+
+bool sameText(std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (lowerAscii(a[i]) != lowerAscii(b[i])) return false;
+    return true;
+}
+
+// The spec's own name of a row: its key after the last '.'.
+std::string_view ownName(std::string_view key) {
+    const auto dot = key.rfind('.');
+    return dot == std::string_view::npos ? key : key.substr(dot + 1);
+}
+
+// The rows `key` answers to: the exact key; else the key in another case; else the rows whose
+// own name (or a dotted tail of their key: "COM1.baud") it is, as written, else in any case.
+std::vector<const SettingDef *> rowsNamed(std::span<const SettingDef> schema,
+                                          std::string_view key) {
+    std::vector<const SettingDef *> rows;
     for (const auto &d : schema)
-        if (d.key == key) return &d;
-    // Users type the spec's own name ("PVTRATE" for "rtk.PVTRATE"): accept a unique suffix.
-    const SettingDef *found = nullptr;
-    for (const auto &d : schema) {
-        if (d.key.size() > key.size() && d.key.substr(d.key.size() - key.size()) == key &&
-            d.key[d.key.size() - key.size() - 1] == '.') {
-            if (found) return nullptr; // ambiguous
-            found = &d;
+        if (d.key == key) return {&d};
+    for (const auto &d : schema)
+        if (sameText(d.key, key)) return {&d};
+    // The name as written first ("MODE" is rtk.MODE, though pps.mode is "mode"), then in any case.
+    for (const bool anyCase : {false, true}) {
+        for (const auto &d : schema) {
+            if (d.key.size() <= key.size() || d.key[d.key.size() - key.size() - 1] != '.') continue;
+            const std::string_view tail = d.key.substr(d.key.size() - key.size());
+            if (anyCase ? sameText(tail, key) : tail == key) rows.push_back(&d);
+        }
+        if (!rows.empty()) break;
+    }
+    return rows;
+}
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1,
+                               diagonal + (lowerAscii(a[i - 1]) == lowerAscii(b[j - 1]) ? 0 : 1)});
+            diagonal = up;
         }
     }
-    return found;
+    return row[b.size()];
+}
+
+} // namespace
+
+const SettingDef *findSetting(std::span<const SettingDef> schema, std::string_view key) {
+    const auto rows = rowsNamed(schema, key);
+    return rows.size() == 1 ? rows.front() : nullptr; // several: ambiguous
+}
+
+std::string SettingKeyHint::list() const {
+    std::string out;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == keys.size() ? " or " : ", ") + keys[i];
+    return out;
+}
+
+SettingKeyHint settingKeyHint(std::span<const SettingDef> schema, std::string_view key) {
+    SettingKeyHint hint;
+    const auto rows = rowsNamed(schema, key);
+    if (rows.size() == 1) return hint;
+    if (rows.size() > 1) {
+        hint.ambiguous = true;
+        for (const SettingDef *d : rows) hint.keys.emplace_back(d->key);
+        return hint;
+    }
+    // The nearest keys, by the edit distance to the whole key or to its own name.
+    std::vector<std::pair<std::size_t, std::string_view>> near;
+    for (const auto &d : schema) {
+        const std::size_t n = std::min(editDistance(key, d.key), editDistance(key, ownName(d.key)));
+        if (n <= std::max<std::size_t>(2, key.size() / 3)) near.emplace_back(n, d.key);
+    }
+    std::stable_sort(near.begin(), near.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < near.size() && i < 3; ++i) hint.keys.emplace_back(near[i].second);
+    return hint;
 }
 
 const SettingDef *findSettingByRole(std::span<const SettingDef> schema, SettingRole role) {

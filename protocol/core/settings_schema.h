@@ -88,7 +88,19 @@ struct EncodeResult {
     }
 };
 
+// The row `key` names, in the forms people write: the schema key ("rtk.PVTRATE") or the spec's
+// own name where it is unique in the schema ("PVTRATE"), either in any case ("pvtrate"; a name
+// as written first: "MODE" is rtk.MODE beside pps.mode).
+// nullptr when no row, or several, answer to it (settingKeyHint says which).
 const SettingDef *findSetting(std::span<const SettingDef> schema, std::string_view key);
+// Why `key` names no row: the keys it could mean when several share that name (`ambiguous`),
+// else up to three keys nearest to it as typed; no keys when it names one row or nothing is near.
+struct SettingKeyHint {
+    bool ambiguous = false;
+    std::vector<std::string> keys;
+    std::string list() const; // "a, b or c"
+};
+SettingKeyHint settingKeyHint(std::span<const SettingDef> schema, std::string_view key);
 // The setting with this role (the first, when a dialect has several), nullptr when none.
 const SettingDef *findSettingByRole(std::span<const SettingDef> schema, SettingRole role);
 

@@ -210,6 +210,27 @@ private slots:
         r = cli({"--sim", "nemerix", "action", "save"}); // the VT002 cannot save
         QCOMPARE(r.exitCode, 1);
     }
+
+    // A key as the spec writes it, in any case, is the schema's key: read, set and verified; an
+    // unknown or ambiguous one is a wrong request (2), said with the keys it could mean.
+    void keysInEveryFormPeopleWriteThem() {
+        Run r = cli({"--sim", "nvs", "get", "ELGPS", "rtk.elglo"});
+        QVERIFY2(r.exitCode == 0, why(r));
+        QVERIFY2(r.out.contains("\"rtk.ELGPS\":\"") && r.out.contains("\"rtk.ELGLO\":\""), why(r));
+        r = cli({"--sim", "nvs", "set", "pvtrate=2"});
+        QVERIFY2(r.exitCode == 0, why(r));
+        QVERIFY2(r.out.contains("\"key\":\"rtk.PVTRATE\"") && r.out.contains("verified"), why(r));
+        r = cli({"--sim", "nvs", "get", "PVTRAT"});
+        QVERIFY2(r.exitCode == 2 && r.err.contains("did you mean rtk.PVTRATE"), why(r));
+        r = cli({"--sim", "nvs", "set", "NOSUCH=1"});
+        QVERIFY2(r.exitCode == 2 && !r.out.contains("\"sentence\""), why(r));
+        r = cli({"--sim", "nvs", "set", "baud=9600"});
+        QVERIFY2(r.exitCode == 2 && r.err.contains("port.COM2.baud"), why(r));
+        const Run encoded = gnss::test::runCli({"encode", "nvs", "Pvtrate=5"}, {}, 60000);
+        QVERIFY2(encoded.exitCode == 0 && encoded.out.startsWith("$PNVGRTK,PVTRATE,5*"),
+                 why(encoded));
+        QCOMPARE(gnss::test::runCli({"encode", "nvs", "NOSUCH=1"}, {}, 60000).exitCode, 2);
+    }
 };
 
 QTEST_GUILESS_MAIN(TstConfigCli)
