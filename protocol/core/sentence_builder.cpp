@@ -21,15 +21,24 @@ std::string buildSentence(std::string_view body, char start) {
     return s;
 }
 
-std::string completeSentence(std::string_view typed, std::string &error) {
+namespace {
+// What a person typed, without the blanks and line end around it, and its start character
+// ('$' when none was typed): returns the start, leaves the rest in `typed`.
+char takeStart(std::string_view &typed) {
     while (!typed.empty() && (typed.back() == '\r' || typed.back() == '\n' || typed.back() == ' '))
         typed.remove_suffix(1);
     while (!typed.empty() && typed.front() == ' ') typed.remove_prefix(1);
-    char start = '$';
     if (!typed.empty() && (typed.front() == '$' || typed.front() == '!')) {
-        start = typed.front();
+        const char start = typed.front();
         typed.remove_prefix(1);
+        return start;
     }
+    return '$';
+}
+} // namespace
+
+std::string completeSentence(std::string_view typed, std::string &error) {
+    const char start = takeStart(typed);
     // Drop a checksum the user typed: we always compute our own.
     const auto star = typed.rfind('*');
     if (star != std::string_view::npos && typed.size() - star <= 3) typed = typed.substr(0, star);
@@ -66,14 +75,7 @@ bool isHex(char c) {
 
 std::string checkTypedSentence(std::string_view typed, bool fixChecksum, std::string &error,
                                std::string *note) {
-    while (!typed.empty() && (typed.back() == '\r' || typed.back() == '\n' || typed.back() == ' '))
-        typed.remove_suffix(1);
-    while (!typed.empty() && typed.front() == ' ') typed.remove_prefix(1);
-    char start = '$';
-    if (!typed.empty() && (typed.front() == '$' || typed.front() == '!')) {
-        start = typed.front();
-        typed.remove_prefix(1);
-    }
+    const char start = takeStart(typed);
     std::string_view given; // the checksum typed, if any
     if (const auto star = typed.find('*'); star != std::string_view::npos) {
         given = typed.substr(star + 1);
