@@ -69,10 +69,13 @@ int effectRank(const Dialect &d, const std::string &sentence) {
 }
 
 void orderForSending(const Dialect &d, std::vector<std::string> &sentences) {
-    std::stable_sort(sentences.begin(), sentences.end(),
-                     [&d](const std::string &a, const std::string &b) {
-                         return effectRank(d, a) < effectRank(d, b);
-                     });
+    // Each sentence parsed and ranked once, not at every comparison.
+    std::vector<std::pair<int, std::string>> ranked;
+    ranked.reserve(sentences.size());
+    for (std::string &s : sentences) ranked.emplace_back(effectRank(d, s), std::move(s));
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < ranked.size(); ++i) sentences[i] = std::move(ranked[i].second);
 }
 
 std::optional<int> lineBaudAfter(const Dialect &d, const std::string &sentence, int lineBaud,
