@@ -50,6 +50,14 @@ QList<QPair<QString, QString>> listedOptions(const QString &command) {
 const QByteArray kNmea = "$GPGGA,153556.00,5550.602948,N,03732.239612,E,4,15,0.7,00192.245,M,"
                          "0014.4,M,000.6,0100*46\r\n";
 
+// Three epochs of kNmea in `dir`/`name`; its path, or empty when it could not be written.
+QString writePlainLog(const QTemporaryDir &dir, const char *name) {
+    const QString path = dir.filePath(QString::fromLatin1(name));
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(kNmea.repeated(3)) < 0) return {};
+    return path;
+}
+
 } // namespace
 
 class TstCliConventions : public QObject {
@@ -146,11 +154,8 @@ private slots:
 
     void optionValuesWithEqualsMeanTheSame() {
         QTemporaryDir dir;
-        const QString log = dir.filePath("a.nmea");
-        QFile f(log);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(kNmea.repeated(3));
-        f.close();
+        const QString log = writePlainLog(dir, "a.nmea");
+        QVERIFY(!log.isEmpty());
         QCOMPARE(cli({"decode", "--dialect=nmea", log}).out,
                  cli({"decode", "--dialect", "nmea", log}).out);
         QCOMPARE(cli({"encode", "nemerix", "--prefix=PXYZW", "--query", "rate.GGA"}).out,
@@ -294,11 +299,8 @@ private slots:
         QVERIFY2(fault.exitCode == 2 && fault.err.contains("hangupon"), why(fault));
 #endif
         QTemporaryDir dir;
-        const QString log = dir.filePath("plain.nmea");
-        QFile f(log);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(kNmea.repeated(3));
-        f.close();
+        const QString log = writePlainLog(dir, "plain.nmea");
+        QVERIFY(!log.isEmpty());
         const Run two = cli({"play", log, "--pty", "--tcp", "17002"});
         QVERIFY2(two.exitCode == 2 && two.err.contains("not 2 of them"), why(two));
         const Run stats = cli({"stats", "--json", log});
