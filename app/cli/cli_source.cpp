@@ -115,7 +115,8 @@ sourceFromArgs(const Args &args, std::initializer_list<Kind> allowed, std::strin
 
 std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
                                                  const link::SourceSpec &spec,
-                                                 const OpenOptions &options, QString &error) {
+                                                 const OpenOptions &options, QString &error,
+                                                 bool *refused) {
     if (!ctx.transports) {
         error = QStringLiteral("no transports in this program");
         return nullptr;
@@ -168,6 +169,7 @@ std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
         QTimer::singleShot(options.openTimeoutMs, &wait, &QEventLoop::quit);
         wait.exec();
         if (!conn->transport()->isOpen()) {
+            if (refused) *refused = conn->transport()->errorIsRequest();
             if (error.isEmpty())
                 error = QStringLiteral("%1: not open after %2 s")
                                 .arg(conn->transport()->description())

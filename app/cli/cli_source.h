@@ -38,10 +38,13 @@ struct OpenOptions {
 
 // Opens a connection to `spec` (baud detection for a serial port without a speed, each rate
 // reported on standard error); nullptr with `error` set when it cannot. Needs a running
-// QCoreApplication (it runs the event loop until the link is open).
+// QCoreApplication (it runs the event loop until the link is open). `refused` (when given) tells
+// a request the other end refused (a device gpsd does not have: a usage error) from a source that
+// failed.
 std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
                                                  const link::SourceSpec &spec,
-                                                 const OpenOptions &options, QString &error);
+                                                 const OpenOptions &options, QString &error,
+                                                 bool *refused = nullptr);
 
 // A command's result as one JSON line: sentence, outcome, detail, (with `timing`: attempts and
 // ms), the replies, and the speed it switched to (when it did).

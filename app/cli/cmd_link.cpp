@@ -58,10 +58,11 @@ std::unique_ptr<link::Connection> open(const CliContext &ctx, const Args &args,
     OpenOptions o = options;
     if (spec->kind == Kind::Replay) o.autoReconnect = false;
     QString why;
-    auto conn = openConnection(ctx, *spec, o, why);
+    bool refused = false;
+    auto conn = openConnection(ctx, *spec, o, why, &refused);
     if (!conn) {
         std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
-        rc = 1;
+        rc = refused ? 2 : 1;
     }
     return conn;
 }
@@ -69,15 +70,19 @@ std::unique_ptr<link::Connection> open(const CliContext &ctx, const Args &args,
 // Link events on standard error; a link that cannot be opened and will not be retried ends the
 // command with status 1.
 void reportLinkEvents(link::Connection &conn, const char *note) {
-    QObject::connect(&conn, &link::Connection::openFailed, [note](const QString &why, int retryMs) {
-        if (retryMs <= 0) {
-            std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
-            QCoreApplication::exit(1);
-            return;
-        }
-        std::fprintf(stderr, "gnss-cli: %s; trying again in %d s%s\n", utf8(why).c_str(),
-                     (retryMs + 500) / 1000, note);
-    });
+    link::Transport *transport = conn.transport();
+    QObject::connect(&conn, &link::Connection::openFailed,
+                     [note, transport](const QString &why, int retryMs) {
+                         if (retryMs <= 0) {
+                             std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
+                             // A device gpsd does not have is the request's fault (2), not the
+                             // source's (1).
+                             QCoreApplication::exit(transport->errorIsRequest() ? 2 : 1);
+                             return;
+                         }
+                         std::fprintf(stderr, "gnss-cli: %s; trying again in %d s%s\n",
+                                      utf8(why).c_str(), (retryMs + 500) / 1000, note);
+                     });
     QObject::connect(&conn, &link::Connection::linkLost, [note](const QString &why, int retryMs) {
         std::fprintf(stderr, "gnss-cli: link lost: %s; trying again in %d s%s\n", utf8(why).c_str(),
                      (retryMs + 500) / 1000, note);
@@ -85,6 +90,14 @@ void reportLinkEvents(link::Connection &conn, const char *note) {
     QObject::connect(&conn, &link::Connection::linkRestored, [](const QString &what) {
         std::fprintf(stderr, "gnss-cli: link back: %s\n", utf8(what).c_str());
     });
+}
+
+// A run that its --duration ended without a byte received failed (1), and says so.
+int statusAtDuration(int rc, link::Connection &conn, double duration) {
+    if (rc != 0 || duration <= 0 || conn.bytesReceived() > 0) return rc;
+    std::fprintf(stderr, "gnss-cli: no data received from %s in %g s\n",
+                 utf8(conn.transport()->description()).c_str(), duration);
+    return 1;
 }
 
 void writeBaudTries(JsonWriter &w, const link::BaudDetection &d) {
@@ -214,7 +227,7 @@ int cmdMonitor(const CliContext &ctx) {
         std::fprintf(stderr, "gnss-cli: %s: no NMEA found\n", utf8(replay->description()).c_str());
         return 1;
     }
-    return rc;
+    return replay ? rc : statusAtDuration(rc, *c, duration);
 }
 
 int cmdRecord(const CliContext &ctx) {
@@ -243,7 +256,7 @@ int cmdRecord(const CliContext &ctx) {
     std::fprintf(stderr, "gnss-cli: recorded %lld bytes to %s (index: %s)\n",
                  static_cast<long long>(conn->bytesReceived()), outPath->c_str(),
                  utf8(link::indexPathFor(QString::fromStdString(*outPath))).c_str());
-    return rc;
+    return statusAtDuration(rc, *conn, duration);
 }
 
 int cmdSend(const CliContext &ctx) {

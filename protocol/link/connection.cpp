@@ -54,7 +54,8 @@ bool Connection::startRecording(const QString &path, bool append) {
 }
 
 int Connection::scheduleRetry() {
-    if (!autoReconnect_ || userClosed_) return 0;
+    // A request the other end refused (a device it does not have) would be refused again.
+    if (!autoReconnect_ || userClosed_ || transport_->errorIsRequest()) return 0;
     const int delay = nextRetryMs_;
     nextRetryMs_ = std::min(maxRetryMs_, nextRetryMs_ * 2);
     retry_.start(delay);

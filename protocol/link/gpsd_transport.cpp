@@ -128,11 +128,23 @@ void GpsdTransport::close() {
     setState(State::Closed);
 }
 
-void GpsdTransport::failOpening(const QString &why) {
+void GpsdTransport::failOpening(const QString &why, bool request) {
     connectTimer_.stop();
     abortSocket();
     phase_ = Phase::Idle;
-    fail(tr("Cannot connect to %1: %2").arg(description(), why), false);
+    const QString message = tr("Cannot connect to %1: %2").arg(description(), why);
+    if (request)
+        failRequest(message);
+    else
+        fail(message, false);
+}
+
+void GpsdTransport::failNoSuchDevice() {
+    failOpening(devices_.isEmpty()
+                        ? tr("gpsd has no device %1 (it has none)").arg(target_.device)
+                        : tr("gpsd has no device %1 (it has %2)")
+                                  .arg(target_.device, devices_.join(QStringLiteral(", "))),
+                true);
 }
 
 void GpsdTransport::onReadyRead() {
@@ -165,13 +177,10 @@ void GpsdTransport::onReport(const QJsonObject &report) {
         devices_.clear();
         for (const QJsonValue &d : report.value("devices").toArray())
             devices_ << d.toObject().value("path").toString();
-        if (phase_ == Phase::AwaitWatch && !target_.device.isEmpty() &&
-            !devices_.contains(target_.device))
-            failOpening(
-                    devices_.isEmpty()
-                            ? tr("gpsd has no device %1 (it has none)").arg(target_.device)
-                            : tr("gpsd has no device %1 (it has %2)")
-                                      .arg(target_.device, devices_.join(QStringLiteral(", "))));
+        if (phase_ == Phase::AwaitDevices ||
+            (phase_ == Phase::AwaitWatch && !target_.device.isEmpty() &&
+             !devices_.contains(target_.device)))
+            failNoSuchDevice();
     } else if (cls == QLatin1String("DEVICE")) {
         // A device gpsd opened or closed later (hotplug): keep the list current.
         const QString path = report.value("path").toString();
@@ -186,7 +195,14 @@ void GpsdTransport::onReport(const QJsonObject &report) {
         setState(State::Open);
     } else if (cls == QLatin1String("ERROR")) {
         const QString message = report.value("message").toString();
-        if (phase_ != Phase::Streaming)
+        if (phase_ == Phase::AwaitWatch && !target_.device.isEmpty() &&
+            message.startsWith(QLatin1String("No such device"))) {
+            // gpsd refuses the watch before listing its devices: ask for them, to name them.
+            phase_ = Phase::AwaitDevices;
+            socket_.write(QByteArrayLiteral("?DEVICES;\n"));
+        } else if (phase_ == Phase::AwaitDevices) {
+            failNoSuchDevice();
+        } else if (phase_ != Phase::Streaming)
             failOpening(tr("gpsd refused: %1").arg(message));
         else
             fail(tr("%1: gpsd says: %2").arg(description(), message), false);

@@ -62,12 +62,15 @@ protected:
 
 private:
     // Where the conversation with gpsd is: the greeting awaited (from the TCP connect on), the
-    // watch sent and its confirmation awaited, sentences flowing.
-    enum class Phase { Idle, AwaitVersion, AwaitWatch, Streaming };
+    // watch sent and its confirmation awaited, the device list asked for after gpsd refused the
+    // device watched, sentences flowing.
+    enum class Phase { Idle, AwaitVersion, AwaitWatch, AwaitDevices, Streaming };
     void onReadyRead();
     void onReport(const QJsonObject &report);
     void abortSocket();
-    void failOpening(const QString &why);
+    // `request`: the device asked for is not gpsd's (see Transport::errorIsRequest()).
+    void failOpening(const QString &why, bool request = false);
+    void failNoSuchDevice();
 
     Target target_;
     QTcpSocket socket_;

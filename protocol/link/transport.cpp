@@ -23,7 +23,17 @@ void Transport::setState(State s) {
 }
 
 void Transport::fail(const QString &message, bool lost) {
+    report(message, lost, false);
+}
+
+void Transport::failRequest(const QString &message) {
+    report(message, false, true);
+}
+
+void Transport::report(const QString &message, bool lost, bool request) {
+    // Set before the state changes, so that whoever hears the change reads the right kind.
     error_ = message;
+    errorIsRequest_ = request;
     emit errorOccurred(message);
     if (lost && state_ == State::Open) setState(State::Lost);
     if (state_ == State::Connecting) setState(State::Closed);

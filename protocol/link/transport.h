@@ -55,6 +55,10 @@ public:
     bool isOpen() const { return state_ == State::Open; }
     bool isConnecting() const { return state_ == State::Connecting; }
     QString errorString() const { return error_; }
+    // Whether the last error is the request's own (a device or mountpoint the other end does not
+    // have) rather than the source failing: retrying the same request cannot succeed, and a
+    // command line reports it as a usage error.
+    bool errorIsRequest() const { return errorIsRequest_; }
 
 signals:
     void bytesReceived(const QByteArray &bytes);
@@ -68,10 +72,15 @@ protected:
     // Records and signals an error; `lost` also moves an open transport to Lost. An opening in
     // the background that fails goes back to Closed.
     void fail(const QString &message, bool lost);
+    // The same, for an error of the request itself (see errorIsRequest()).
+    void failRequest(const QString &message);
 
 private:
+    void report(const QString &message, bool lost, bool request);
+
     State state_ = State::Closed;
     QString error_;
+    bool errorIsRequest_ = false;
 };
 
 } // namespace gnss::link

@@ -2,8 +2,9 @@
 // the foreground, on 127.0.0.1: gpsd_process.h), and a GpsdTransport in a link::Connection: the
 // receiver's GGA and RMC come through gpsd and are assembled into epochs with a position, the
 // vendor's own sentences too (so its dialect is recognised), a device gpsd does not have is
-// refused in words, and gpsd going away is a lost link. Skipped when gpsd is not installed.
-// Before any Qt header: it has a member named emit, which Qt defines as a macro.
+// refused in words naming the ones it has (not retried), and gpsd going away is a lost link.
+// Skipped when gpsd is not installed. Before any Qt header: it has a member named emit, which Qt
+// defines as a macro.
 #include "builtin_registry.h"
 #include "state/epoch_assembler.h"
 
@@ -114,12 +115,20 @@ private slots:
         SimProcess sim({"--dialect", "nmea", "--baud", "9600"});
         GpsdProcess gpsd(sim.device, 9600);
         REQUIRE_SIM_AND_GPSD(sim, gpsd);
-        GpsdTransport t(at(gpsd, "/dev/ttyNOSUCH0"));
-        QSignalSpy error(&t, &Transport::errorOccurred);
-        QVERIFY(t.open());
-        QVERIFY(error.wait(10000));
+        Connection c(std::make_unique<GpsdTransport>(at(gpsd, "/dev/ttyNOSUCH0")),
+                     gnss::test::builtinRegistry());
+        Transport &t = *c.transport();
+        QSignalSpy failed(&c, &Connection::openFailed);
+        QVERIFY(c.open());
+        QVERIFY(failed.wait(10000));
         QCOMPARE(t.state(), Transport::State::Closed);
+        // gpsd refuses the watch without naming its devices: they are asked for and named.
         QVERIFY2(t.errorString().contains("/dev/ttyNOSUCH0"), qPrintable(t.errorString()));
+        QVERIFY2(t.errorString().contains(sim.device), qPrintable(t.errorString()));
+        // The request's fault: not retried, as it would be refused again.
+        QVERIFY(t.errorIsRequest());
+        QCOMPARE(failed.first().at(1).toInt(), 0);
+        QVERIFY(!c.isReconnecting());
     }
 
     void gpsdStoppingIsALostLinkThatIsRetried() {
