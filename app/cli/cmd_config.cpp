@@ -27,6 +27,7 @@
 
 #include <QCoreApplication>
 #include <QEventLoop>
+#include <QFile>
 #include <QTimer>
 
 #include <cstdio>
@@ -209,7 +210,9 @@ int applyValues(SettingsEngine &engine, const std::function<bool()> &start) {
     QObject::disconnect(c);
     printChecks(r);
     if (!r.error.isEmpty()) say(r.error);
-    return r.ok() ? 0 : 1;
+    if (r.ok()) return 0;
+    // A value out of range, a read-only setting: the request was wrong, and nothing was sent.
+    return r.refusedBeforeSending() ? 2 : 1;
 }
 
 } // namespace
@@ -295,9 +298,16 @@ int cmdConfig(const CliContext &ctx) {
                     .arg(QString::fromStdString(p.dialect), path));
         return 0;
     }
+    // A file that cannot be read is a failure (1); one that is not a profile for this receiver
+    // is a wrong request (2).
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        say(QObject::tr("cannot read %1: %2").arg(path, file.errorString()));
+        return 1;
+    }
     config::Profile profile;
     QString error;
-    if (!config::loadProfile(path, profile, &error, l.dialect)) {
+    if (!config::profileFromJson(file.readAll(), profile, &error, l.dialect)) {
         say(error);
         return 2;
     }
@@ -327,7 +337,11 @@ int cmdConfig(const CliContext &ctx) {
                     .endObject();
         });
     }
-    return entries.empty() ? 0 : 1;
+    if (entries.empty()) return 0;
+    say(QObject::tr("%n setting(s) of the receiver differ from %1", nullptr,
+                    static_cast<int>(entries.size()))
+                .arg(path));
+    return 1;
 }
 
 } // namespace gnss::cli

@@ -112,8 +112,9 @@ int cmdEncode(const CliContext &ctx) {
         refuseLongSentences(result, d->maxSentenceLength);
     }
     if (!result.ok()) {
+        // A value its command cannot carry: the request is wrong, nothing is printed.
         std::fprintf(stderr, "gnss-cli: %s\n", result.error.c_str());
-        return 1;
+        return 2;
     }
     const auto prefix = args.option("prefix");
     for (const auto &s : result.sentences) {

@@ -41,9 +41,15 @@ CommandFate fateOf(const std::vector<std::string> &sentences,
     return CommandFate::NotSent;
 }
 
+bool isGood(Verdict v) {
+    return v == Verdict::Verified || v == Verdict::Echoed || v == Verdict::WrittenUnverified;
+}
+
 namespace {
 Verdict compared(const SettingDef &def, const std::string &wanted, const std::string &reported) {
-    return sameValue(def, wanted, reported) ? Verdict::Verified : Verdict::NotTaken;
+    if (!sameValue(def, wanted, reported)) return Verdict::NotTaken;
+    // A write-only setting's value comes from its command's answer, never from a read-back.
+    return isReadable(def) ? Verdict::Verified : Verdict::Echoed;
 }
 } // namespace
 

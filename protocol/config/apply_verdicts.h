@@ -17,13 +17,18 @@ namespace gnss::config {
 
 enum class Verdict {
     Verified,          // read back with the value set
-    NotTaken,          // read back with another value
+    Echoed,            // write-only: the command's answer carries the value set (PNVGRZA)
+    NotTaken,          // read back (or echoed) with another value
     NotReported,       // readable, but the receiver did not report it after the change
     WrittenUnverified, // write-only: the command went through, nothing can read it back
+    Refused,           // refused before anything was sent (a value its command cannot carry)
     NotSent,           // its command failed (refused, timed out, link lost, cancelled)
     NotReadBack,       // its command was taken, then the link went before the read-back
     Unconfirmed,       // its command went out, the link went before the answer: it may be set
 };
+
+// The verdicts of a setting that is as it was asked to be (or as far as can be known).
+bool isGood(Verdict v);
 
 struct SettingCheck {
     std::string key, wanted, reported;

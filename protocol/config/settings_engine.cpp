@@ -25,6 +25,8 @@ namespace gnss::config {
 QString verdictName(Verdict v) {
     switch (v) {
     case Verdict::Verified: return SettingsEngine::tr("verified");
+    case Verdict::Echoed: return SettingsEngine::tr("confirmed by its reply (write-only)");
+    case Verdict::Refused: return SettingsEngine::tr("refused before sending");
     case Verdict::NotTaken: return SettingsEngine::tr("not taken");
     case Verdict::NotReported: return SettingsEngine::tr("not reported");
     case Verdict::WrittenUnverified: return SettingsEngine::tr("sent (write-only, not verifiable)");
@@ -47,9 +49,12 @@ int OperationReport::failedCommands() const {
 
 int OperationReport::failedChecks() const {
     int n = 0;
-    for (const auto &c : checks)
-        n += c.verdict == Verdict::Verified || c.verdict == Verdict::WrittenUnverified ? 0 : 1;
+    for (const auto &c : checks) n += isGood(c.verdict) ? 0 : 1;
     return n;
+}
+
+bool OperationReport::refusedBeforeSending() const {
+    return commands.isEmpty() && !error.isEmpty() && !cancelled;
 }
 
 SettingsEngine::SettingsEngine(QObject *parent) : QObject(parent) {
@@ -304,8 +309,9 @@ bool SettingsEngine::read(const std::vector<std::string> &keys) {
         }
         sentences = q.sentences;
     }
-    // The identity (model, firmware) for profiles, unless a query already brings it.
-    if (keys.empty() && !dialect_->probeCommand.empty() &&
+    // The identity (model, firmware) for profiles and `get`, unless it is known or a query
+    // already brings it.
+    if ((keys.empty() || identity().model.empty()) && !dialect_->probeCommand.empty() &&
         std::find(sentences.begin(), sentences.end(), dialect_->probeCommand) == sentences.end())
         sentences.insert(sentences.begin(), std::string(dialect_->probeCommand));
     for (const auto &k : wanted) reported_.erase(k);
@@ -351,7 +357,7 @@ bool SettingsEngine::apply(const std::vector<KeyValue> &typed) {
     if (!enc.ok()) {
         report_.error = tr("nothing was sent: %1").arg(refusalText(enc, dialect_->id));
         for (const auto &kv : changes)
-            report_.checks.push_back({kv.key, kv.value, {}, Verdict::NotSent});
+            report_.checks.push_back({kv.key, kv.value, {}, Verdict::Refused});
         end();
         return false;
     }

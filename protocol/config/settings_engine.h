@@ -66,8 +66,11 @@ struct OperationReport {
 
     // Commands that were neither accepted nor sent.
     int failedCommands() const;
-    // Checks that are neither verified nor written-unverified.
+    // Checks that are not good (config::isGood).
     int failedChecks() const;
+    // Refused before anything was sent: a value its command cannot carry, a setting that cannot
+    // be set (a wrong request, where a failed command is the receiver's doing).
+    bool refusedBeforeSending() const;
     bool ok() const {
         return error.isEmpty() && !cancelled && !failedCommands() && !failedChecks();
     }

@@ -62,8 +62,9 @@ private slots:
                 << elgps << "5" << F::NotSent << false << true << V::Verified << "5";
         QTest::newRow("write-only, sent")
                 << baud << "-" << F::Taken << false << false << V::WrittenUnverified << "";
+        // Confirmed by the command's answer: never called read back (it cannot be).
         QTest::newRow("write-only, echoed as set")
-                << baud << "115200" << F::Taken << false << false << V::Verified << "115200";
+                << baud << "115200" << F::Taken << false << false << V::Echoed << "115200";
         QTest::newRow("write-only, echoed otherwise")
                 << baud << "9600" << F::Taken << false << false << V::NotTaken << "9600";
         QTest::newRow("write-only, failed")
@@ -80,7 +81,7 @@ private slots:
         QTest::newRow("lost before sending")
                 << elgps << "-" << F::NotSent << true << false << V::NotSent << "";
         QTest::newRow("lost, write-only echoed")
-                << baud << "115200" << F::Taken << true << false << V::Verified << "115200";
+                << baud << "115200" << F::Taken << true << false << V::Echoed << "115200";
         QTest::newRow("lost, write-only taken")
                 << baud << "-" << F::Taken << true << false << V::WrittenUnverified << "";
         QTest::newRow("lost, write-only unconfirmed")

@@ -139,7 +139,7 @@ private slots:
                 << nvsProfile(R"("rtk.ELGPS":"33")", "NV08C-CSM") << 2
                 << "the profile is for the NV08C-CSM, the receiver is a NV08C-RTA";
         QTest::newRow("a value out of range")
-                << nvsProfile(R"("rtk.ELGPS":"33","rtk.ELGLO":"91")") << 1
+                << nvsProfile(R"("rtk.ELGPS":"33","rtk.ELGLO":"91")") << 2
                 << "nothing was sent: rtk.ELGLO: 91 is out of range; accepted: 0..90";
     }
     void aProfileThatDoesNotSuitTheReceiverChangesNothing() {
@@ -196,10 +196,13 @@ private slots:
     }
 
     void configOnTheInProcessSimulatorRefusesBadValuesBeforeSending() {
+        // Out of range: a wrong request (2), refused before sending and said so.
         Run r = cli({"--sim", "geostar", "set", "nav.ELEV=99"});
-        QCOMPARE(r.exitCode, 1);
+        QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("nav.ELEV"), why(r));
         QVERIFY2(!r.out.contains("\"sentence\""), why(r));
+        QVERIFY2(r.out.contains(R"("verdict":"refused before sending")"), why(r));
+        QVERIFY2(r.out.contains(R"("commands":0)"), why(r));
         r = cli({"--sim", "geostar", "set", "nav.ELEV=9"});
         QVERIFY2(r.exitCode == 0, why(r));
         QVERIFY2(r.out.contains("$GPSGG,ELEV09*7B"), why(r));
@@ -207,8 +210,9 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         r = cli({"--sim", "nvs", "action", "save"});
         QVERIFY2(r.exitCode == 0 && r.out.contains("$PNVGCFG,W*"), why(r));
-        r = cli({"--sim", "nemerix", "action", "save"}); // the VT002 cannot save
-        QCOMPARE(r.exitCode, 1);
+        // The VT002 cannot save: known before anything is sent, so the request is wrong (2).
+        r = cli({"--sim", "nemerix", "action", "save"});
+        QCOMPARE(r.exitCode, 2);
     }
 
     // A key as the spec writes it, in any case, is the schema's key: read, set and verified; an
@@ -230,6 +234,27 @@ private slots:
         QVERIFY2(encoded.exitCode == 0 && encoded.out.startsWith("$PNVGRTK,PVTRATE,5*"),
                  why(encoded));
         QCOMPARE(gnss::test::runCli({"encode", "nvs", "NOSUCH=1"}, {}, 60000).exitCode, 2);
+    }
+
+    // Each verdict says how it is known: a write-only setting is confirmed by its command's
+    // answer, never "verified" (read back), and `get` lists it as write-only, as it is; a get of
+    // some keys names the receiver as a get of all does.
+    void verdictsSayHowTheValueIsKnown() {
+        Run r = cli({"--sim", "nvs", "set", "port.COM1.baud=38400"});
+        QVERIFY2(r.exitCode == 0, why(r));
+        QVERIFY2(r.out.contains(R"("key":"port.COM1.baud","set":"38400","reported":"38400",)"
+                                R"x("verdict":"confirmed by its reply (write-only)")x"),
+                 why(r));
+        QVERIFY2(!r.out.contains(R"("key":"port.COM1.baud","set":"38400","reported":"38400",)"
+                                 R"("verdict":"verified")"),
+                 why(r));
+        r = cli({"--sim", "nvs", "get", "port.COM1.baud", "PVTRATE"});
+        QVERIFY2(r.exitCode == 0, why(r));
+        const QJsonObject got = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(got["write_only"].toArray(), QJsonArray{"port.COM1.baud"});
+        QVERIFY(!got["values"].toObject()["rtk.PVTRATE"].toString().isEmpty());
+        QCOMPARE(got["model"].toString(), QString("NV08C-RTA"));
+        QVERIFY(!got["firmware"].toString().isEmpty());
     }
 };
 

@@ -55,6 +55,8 @@ using VerdictMap = QMap<QString, Verdict>;
 const char *name(Verdict v) {
     switch (v) {
     case Verdict::Verified: return "Verified";
+    case Verdict::Echoed: return "Echoed";
+    case Verdict::Refused: return "Refused";
     case Verdict::NotTaken: return "NotTaken";
     case Verdict::NotReported: return "NotReported";
     case Verdict::WrittenUnverified: return "WrittenUnverified";

@@ -63,8 +63,7 @@ void SettingsDetails::addReport(const config::OperationReport &r) {
         for (const QString &reply : c.replies) new QTreeWidgetItem(item, {reply});
     }
     for (const auto &c : r.checks) {
-        const bool good = c.verdict == config::Verdict::Verified ||
-                          c.verdict == config::Verdict::WrittenUnverified;
+        const bool good = config::isGood(c.verdict);
         auto *item = new QTreeWidgetItem(
                 top,
                 {QString::fromStdString(c.key + " = " + c.wanted), config::verdictName(c.verdict),

@@ -586,10 +586,7 @@ void SettingsView::showReport(const config::OperationReport &r) {
     details_->addReport(r);
     // A value that took is no longer an edit; one that did not stays highlighted.
     for (const auto &c : r.checks)
-        if ((c.verdict == config::Verdict::Verified ||
-             c.verdict == config::Verdict::WrittenUnverified) &&
-            editors_.count(c.key))
-            setEdited(c.key, false);
+        if (config::isGood(c.verdict) && editors_.count(c.key)) setEdited(c.key, false);
     QString text;
     if (!r.error.isEmpty())
         text = tr("%1: %2").arg(r.title, r.error);
