@@ -1,8 +1,8 @@
 // gnss-cli ntrip: an NTRIP caster from the command line. Prints its source table as JSON lines
 // (with each stream's distance when a position is given), or receives a mountpoint's RTCM and
 // prints one JSON line per message (the same objects as `gnss-cli rtcm`) and/or writes the raw
-// bytes to a file. A refusal (wrong password, unknown mountpoint ...) ends it with exit code 1
-// and the reason in words; a dropped connection is retried with the backoff and said on
+// bytes to a file. A refusal ends it with exit code 1 (wrong password ...) or 2 (unknown
+// mountpoint) and the reason in words; a dropped connection is retried with the backoff and said on
 // standard error. The password is read from an environment variable, never from the command
 // line (where `ps` would show it), and is never printed.
 #include "rtcm/rtcm_json.h"
@@ -152,9 +152,6 @@ void writeForwarderJson(JsonWriter &w, const corrections::ForwarderStats &s) {
 // Reads the options; false (with the reason said) when they do not make a command.
 bool readOptions(const Args &args, Options &o) {
     if (!args.error().empty()) return say(args.error()), false;
-    if (!args.positionals().empty())
-        return say("ntrip takes no positional arguments (got '" + args.positionals()[0] + "')"),
-               false;
     if (args.option("port") || args.option("tcp") || args.option("sim")) {
         std::string error;
         o.receiver = sourceFromArgs(args,
@@ -289,15 +286,16 @@ int receive(const CliContext &ctx, const Options &o, const QString &mount,
                              say(utf8(source.statusText()));
                          if (st == St::Failed) {
                              say(utf8(source.statusText()));
-                             QCoreApplication::exit(1);
+                             // An unknown mountpoint is a wrong request (2), nothing received.
+                             QCoreApplication::exit(source.failedOnRequest() ? 2 : 1);
                          }
                      });
     if (o.duration > 0)
         QTimer::singleShot(static_cast<int>(o.duration * 1000), [] { QCoreApplication::exit(0); });
     source.start();
-    int rc = source.state() == corrections::CorrectionSource::State::Failed
-                     ? 1
-                     : QCoreApplication::exec();
+    int rc = source.state() != corrections::CorrectionSource::State::Failed
+                     ? QCoreApplication::exec()
+                     : (source.failedOnRequest() ? 2 : 1);
     source.stop();
     if (file) std::fclose(file);
     std::string summary;

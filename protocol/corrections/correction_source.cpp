@@ -28,6 +28,7 @@ void CorrectionSource::start() {
     if (state_ != State::Idle) closeConnection();
     policy_.reset();
     error_.clear();
+    failedOnRequest_ = false;
     setState(State::Connecting); // the subclass refines the status as it goes
     openConnection();
 }
@@ -90,6 +91,12 @@ void CorrectionSource::failed(const QString &text, bool retry) {
         setStatus(message);
         setState(State::Failed);
     }
+}
+
+void CorrectionSource::refused(const QString &message) {
+    if (!isActive()) return;
+    failedOnRequest_ = true; // before the state says Failed
+    failed(message, false);
 }
 
 void CorrectionSource::finished(const QString &status) {

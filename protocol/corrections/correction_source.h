@@ -49,6 +49,9 @@ public:
     QString statusText() const { return status_; }
     // The last error (empty before any).
     QString lastError() const { return error_; }
+    // Whether the last failure was the request's own (a mountpoint the caster does not have),
+    // not the source failing: a command line reports it as a wrong request (exit 2).
+    bool failedOnRequest() const { return failedOnRequest_; }
     // What the source is, without credentials: "caster:2101/MOUNT", "/dev/ttyUSB1 at 38400 baud".
     virtual QString description() const = 0;
 
@@ -99,6 +102,8 @@ protected:
     // A failure: tried again after the policy's wait when `retry` (and auto-reconnect is on),
     // else the source ends Failed. Ignored unless the source is connecting or receiving.
     void failed(const QString &message, bool retry);
+    // A failure of the request itself (see failedOnRequest()), never retried.
+    void refused(const QString &message);
     // Ended normally (a file played through): Idle, with `status`.
     void finished(const QString &status);
     qint64 nowMs() const { return clock_ ? clock_() : monotonic_.elapsed(); }
@@ -111,6 +116,7 @@ private:
     State state_ = State::Idle;
     QString status_;
     QString error_;
+    bool failedOnRequest_ = false;
     ntrip::ReconnectPolicy policy_;
     QTimer retryTimer_;
     QTimer stallTimer_;

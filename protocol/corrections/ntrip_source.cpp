@@ -148,19 +148,17 @@ void NtripSource::onReplyKnown() {
         return;
     }
     case ntrip::ReplyKind::SourceTable:
-        return failed(tr("Mountpoint %1 is not on %2: the caster sent its source table instead "
-                         "of data (%3 reply)")
-                              .arg(mount, hostPort(), revision),
-                      false);
+        return refused(tr("Mountpoint %1 is not on %2: the caster sent its source table instead "
+                          "of data (%3 reply)")
+                               .arg(mount, hostPort(), revision));
     case ntrip::ReplyKind::Unauthorized:
         return failed(tr("%1 refused the user name or password for mountpoint %2 "
                          "(401 Unauthorized, %3 reply)")
                               .arg(hostPort(), mount, revision),
                       false);
     case ntrip::ReplyKind::NotFound:
-        return failed(tr("Mountpoint %1 not found on %2 (404 Not Found, %3 reply)")
-                              .arg(mount, hostPort(), revision),
-                      false);
+        return refused(tr("Mountpoint %1 not found on %2 (404 Not Found, %3 reply)")
+                               .arg(mount, hostPort(), revision));
     case ntrip::ReplyKind::OtherStatus:
         return failed(tr("%1 answered \"%2\" for mountpoint %3 (%4 reply)")
                               .arg(hostPort(), statusLine, mount, revision),

@@ -154,6 +154,7 @@ private slots:
         QVERIFY2(e.contains("sent its source table instead of data"), qPrintable(e));
         QVERIFY2(e.contains(revision), qPrintable(e));
         QCOMPARE(source.statusText(), e);
+        QVERIFY(source.failedOnRequest()); // the request's fault, not the caster's
     }
 
     void aDroppedStreamIsRetriedWithGrowingWaitsUntilTheCasterIsBack() {
