@@ -53,6 +53,10 @@ int main(int argc, char **argv) {
         std::fprintf(stderr, "gnss-workbench: %s\n", qPrintable(error));
         return 2;
     }
+    if (const QString missing = gnss::app::missingLog(*options); !missing.isEmpty()) {
+        std::fprintf(stderr, "gnss-workbench: %s\n", qPrintable(missing));
+        return 1;
+    }
 
     QApplication::setWindowIcon(gnss::style::appIcon());
     const gnss::link::TransportFactory transports =

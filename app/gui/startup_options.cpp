@@ -19,8 +19,9 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             QCoreApplication::translate("StartupOptions", "Configure and monitor GNSS receivers.") +
             QStringLiteral("\n\n") +
             QCoreApplication::translate("StartupOptions",
-                                        "Exit status: 0 closed normally, 1 the --screenshot could "
-                                        "not be saved, 2 usage error."));
+                                        "Exit status: 0 closed normally, 1 the log to open is "
+                                        "not there or the --screenshot could not be saved, 2 "
+                                        "usage error."));
     p.addHelpOption();
     p.addVersionOption();
     const QCommandLineOption port(
@@ -109,10 +110,6 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                                   .arg(o.at);
         return std::nullopt;
     }
-    if (!o.open.isEmpty() && !QFileInfo(o.open).isFile()) {
-        error = QCoreApplication::translate("StartupOptions", "No such log: %1").arg(o.open);
-        return std::nullopt;
-    }
     o.port = p.value(port);
     o.tcp = p.value(tcp);
     o.replay = p.value(replay);
@@ -166,6 +163,11 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
         return std::nullopt;
     }
     return o;
+}
+
+QString missingLog(const StartupOptions &o) {
+    if (o.open.isEmpty() || QFileInfo(o.open).isFile()) return {};
+    return QCoreApplication::translate("StartupOptions", "No such log: %1").arg(o.open);
 }
 
 bool asksForHelpOrVersion(int argc, char **argv) {

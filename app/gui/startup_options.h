@@ -27,6 +27,10 @@ struct StartupOptions {
 std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                                                   const QStringList &simulated, QString &error);
 
+// Why the log to open cannot be (it is not a file), empty when it can: a failure (exit 1), where
+// a malformed command line is a usage error (2).
+QString missingLog(const StartupOptions &o);
+
 // Whether the command line asks only to print something (--help, -h, --help-all, --version,
 // -v), looked at before the application object exists.
 bool asksForHelpOrVersion(int argc, char **argv);

@@ -72,11 +72,30 @@ void LogView::warn(std::string text) {
 }
 
 // Whether any sentence of a log without epochs decodes (then it is NMEA, just not positions).
-bool LogView::anyDecoded(std::string_view data) const {
+std::string LogView::undecodedReason(std::string_view data, const std::string &path) const {
     const LogScanResult r = scanLog(data, registry_, options_.index.decoder, 1);
-    for (const AddressStats &a : r.addresses)
-        if (a.decoded) return true;
-    return false;
+    std::uint64_t sentences = 0, missing = 0, bad = 0;
+    for (const AddressStats &a : r.addresses) {
+        if (a.decoded) return {};
+        sentences += a.sentences;
+        missing += a.checksumMissing;
+        bad += a.checksumBad;
+    }
+    if (sentences > 0 && missing + bad == sentences) {
+        // Sentences there are, refused for their checksums: said, with the way to read them.
+        std::string how =
+                missing == sentences
+                        ? "none of its " + std::to_string(sentences) + " sentences has a checksum"
+                : bad == sentences
+                        ? "every one of its " + std::to_string(sentences) +
+                                  " sentences has a wrong checksum"
+                        : "its " + std::to_string(sentences) + " sentences have no checksum (" +
+                                  std::to_string(missing) + ") or a wrong one (" +
+                                  std::to_string(bad) + ")";
+        return "no sentence of " + path + " can be trusted: " + how +
+               " (--lenient decodes them anyway)";
+    }
+    return "no NMEA found in " + path + " (" + std::to_string(data.size()) + " bytes)";
 }
 
 // A .gz log: inflated into an unnamed temporary file by a second thread while this one maps the
@@ -270,8 +289,10 @@ void LogView::run(std::string path) {
         } else if (index_.records.empty()) {
             if (size == 0)
                 warn(path + " is empty");
-            else if (index_.framer.sentences == 0 || !anyDecoded(data))
+            else if (index_.framer.sentences == 0)
                 warn("no NMEA found in " + path + " (" + std::to_string(size) + " bytes)");
+            else if (const std::string why = undecodedReason(data, path); !why.empty())
+                warn(why);
             else
                 warn("no navigation epoch in " + path + " (" +
                      std::to_string(index_.framer.sentences) + " sentences)");

@@ -158,7 +158,9 @@ private:
     void noteFirstEpoch(const EpochRecord &r);
     void finishTimeline(std::size_t changedFrom);
     void warn(std::string text);
-    bool anyDecoded(std::string_view data) const;
+    // Why a log without epochs has none when its sentences do not decode ("no NMEA found",
+    // checksums missing or wrong), empty when some do.
+    std::string undecodedReason(std::string_view data, const std::string &path) const;
     std::uint64_t liveEnd() const;
     std::string_view liveData() const; // the mapping up to liveEnd()
 
