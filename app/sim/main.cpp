@@ -83,6 +83,21 @@ void flushTo(int fd, std::string &buffer) {
     if (buffer.size() > 65536) buffer.erase(0, buffer.size() - 65536);
 }
 
+// Writes all of `buffer`, waiting for the peer as long as it takes (the end of a --duration run:
+// nothing of the log is lost).
+void drainTo(int fd, std::string &buffer) {
+    while (!buffer.empty()) {
+        const ssize_t n = ::write(fd, buffer.data(), buffer.size());
+        if (n > 0) {
+            buffer.erase(0, static_cast<std::size_t>(n));
+            continue;
+        }
+        if (n < 0 && errno != EAGAIN && errno != EINTR) break;
+        pollfd out{fd, POLLOUT, 0};
+        if (::poll(&out, 1, 1000) <= 0 || (out.revents & (POLLERR | POLLHUP))) break;
+    }
+}
+
 // A pseudo-terminal whose slave is a raw line at `baud` (until the other side sets its own);
 // its device path goes on standard output, and to a symbolic link at `link` when one is asked.
 // -1 (the reason on standard error) when none could be made.
@@ -208,7 +223,7 @@ int main(int argc, char **argv) {
         ioFd = STDOUT_FILENO;
     }
 
-    const bool watchStdin = args.transport == simapp::Transport::Stdout || !stdinIsDevNull();
+    bool watchStdin = args.transport == simapp::Transport::Stdout || !stdinIsDevNull();
     std::string outBuffer;
     double last = monotonicSeconds();
     char buf[4096];
@@ -259,7 +274,11 @@ int main(int argc, char **argv) {
 
         if (stdinIdx >= 0 && (fds[stdinIdx].revents & (POLLIN | POLLHUP))) {
             const ssize_t r = ::read(STDIN_FILENO, buf, sizeof buf);
-            if (r <= 0) break; // standard input closed: stop
+            if (r <= 0) {
+                if (args.duration <= 0) break; // standard input closed: stop
+                watchStdin = false;            // --duration ends it; no more commands
+                continue;
+            }
             if (args.transport == simapp::Transport::Stdout && rx)
                 rx->receive(std::string_view(buf, static_cast<std::size_t>(r)));
         }
@@ -308,7 +327,10 @@ int main(int argc, char **argv) {
             if (rx) rx->powerCycle();
         }
         const double now = monotonicSeconds();
-        const double elapsed = (now - last) * args.speed;
+        double elapsed = (now - last) * args.speed;
+        // --duration: the last step ends on it, so the log is the same whatever the host's pace.
+        const double simulated = rx ? rx->time() : base->time();
+        if (args.duration > 0) elapsed = std::min(elapsed, args.duration - simulated);
         std::string out;
         if (rx) {
             rx->advance(elapsed);
@@ -324,7 +346,11 @@ int main(int argc, char **argv) {
         } else {
             outBuffer.clear();
         }
-        if (rx && rx->hungUp()) break;           // the hang-up fault: drop the line
+        if (rx && rx->hungUp()) break; // the hang-up fault: drop the line
+        if (args.duration > 0 && simulated + elapsed >= args.duration) {
+            if (ioFd >= 0 && peerPresent) drainTo(ioFd, outBuffer);
+            break;
+        }
         if (unplugged && rx->time() >= backAt) { // back, as a new device or listening again
             unplugged = false;
             heldFor = 0;

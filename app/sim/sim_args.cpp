@@ -13,9 +13,11 @@ namespace {
 // The usage text around the dialect list, which comes from the records.
 const char *const kUsageHead =
         "usage: gnss-sim --dialect D [--pty [--link PATH] | --tcp PORT | --stdout]\n"
-        "                [--seed N] [--speed X] [--baud B] [--faults SPEC] [--internal-base]\n"
+        "                [--seed N] [--speed X] [--duration S] [--baud B] [--faults SPEC]\n"
+        "                [--internal-base]\n"
         "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
-        "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--baud B]\n"
+        "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--duration S]\n"
+        "                [--baud B]\n"
         "       gnss-sim --help | --version | --list-dialects\n"
         "\n"
         "A simulated GNSS receiver that answers its dialect's commands.\n"
@@ -31,6 +33,9 @@ const char *const kUsageTail =
         "  --stdout       write to standard output, read commands from standard input\n"
         "  --seed N       random seed (same seed, same sky and noise); default 1\n"
         "  --speed X      simulated seconds per real second, up to 1000; default 1\n"
+        "  --duration S   end after S simulated seconds, whether standard input closes or\n"
+        "                 not (the same log each time: --stdout --speed 1000\n"
+        "                 --duration 3600 > hour.nmea writes an hour's log in 4 s)\n"
         "  --baud B       the receiver's starting baud; default: the receiver's own\n"
         "  --faults SPEC  comma-separated: badcs=P, truncate=P, binary=P (probabilities),\n"
         "                 silence=D@T[/EVERY], noreply=CMD[+CMD], slowreply=MS,\n"
@@ -58,11 +63,12 @@ const char *const kUsageTail =
         "  --list-dialects  a line per receiver for scripts and shell completion: its id, 'sim'\n"
         "                 and its name, separated by tabs\n"
         "\n"
-        "Options take their value as --opt VALUE or --opt=VALUE. Runs until killed or until\n"
-        "standard input closes (not watched when it is /dev/null: `gnss-sim --pty < /dev/null &`\n"
-        "runs until killed); SIGHUP power-cycles the receiver.\n"
-        "Exit status: 0 standard input closed or the hangup fault, 1 the pseudo-terminal or\n"
-        "port could not be opened, 2 usage error, 128 + N stopped by signal N (130 Ctrl-C).\n";
+        "Options take their value as --opt VALUE or --opt=VALUE. Runs until --duration, killed\n"
+        "or until standard input closes (not watched when it is /dev/null: `gnss-sim --pty <\n"
+        "/dev/null &` runs until killed); SIGHUP power-cycles the receiver.\n"
+        "Exit status: 0 the --duration ran, standard input closed or the hangup fault, 1 the\n"
+        "pseudo-terminal or port could not be opened, 2 usage error, 128 + N stopped by signal\n"
+        "N (130 Ctrl-C).\n";
 
 template <class T> bool number(std::string_view s, T &out) {
     const char *end = s.data() + s.size();
@@ -157,6 +163,10 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
         } else if (a == "--seed") {
             if (value(v) && !number(v, out.options.seed))
                 fail("--seed: expected an unsigned integer, got '" + std::string(v) + "'");
+        } else if (a == "--duration") {
+            if (value(v) &&
+                (!number(v, out.duration) || !std::isfinite(out.duration) || out.duration <= 0))
+                fail("--duration: expected simulated seconds > 0, got '" + std::string(v) + "'");
         } else if (a == "--speed") {
             if (value(v) && (!number(v, out.speed) || !std::isfinite(out.speed) || out.speed <= 0 ||
                              out.speed > 1000))

@@ -16,6 +16,7 @@ struct SimArgs {
     int tcpPort = 0;
     std::string link; // --link PATH: a symbolic link to the pseudo-terminal in use
     double speed = 1.0;
+    double duration = 0; // --duration S: end after S simulated seconds (0: run on)
     sim::SimOptions options;
     // --rtcm-base: an RTCM 3 base station's stream instead of a receiver (no --dialect).
     bool rtcmBase = false;
