@@ -101,7 +101,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/cli/cmd_config.cpp" line="+87"/>
+        <location filename="../app/cli/cmd_config.cpp" line="+88"/>
         <source>reading the settings failed: %1</source>
         <translation>не удалось прочитать настройки: %1</translation>
     </message>
@@ -130,7 +130,7 @@
         <translation>у диалекта %1 нет настроек</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+69"/>
         <source>config needs an action: get, set, export, apply, diff or action</source>
         <translation>для config нужно действие: get, set, export, apply, diff или action</translation>
     </message>
@@ -171,6 +171,15 @@
             <numerusform>%n настройка приёмника %1 записана в %2</numerusform>
             <numerusform>%n настройки приёмника %1 записаны в %2</numerusform>
             <numerusform>%n настроек приёмника %1 записано в %2</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+45"/>
+        <source>%n setting(s) of the receiver differ from %1</source>
+        <translation>
+            <numerusform>%n настройка приёмника отличается от %1</numerusform>
+            <numerusform>%n настройки приёмника отличаются от %1</numerusform>
+            <numerusform>%n настроек приёмника отличаются от %1</numerusform>
         </translation>
     </message>
     <message>
@@ -219,7 +228,8 @@
         <translation>не удаётся записать %1: %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location filename="../app/cli/cmd_config.cpp" line="-36"/>
+        <location filename="../protocol/config/settings_profile.cpp" line="+9"/>
         <source>cannot read %1: %2</source>
         <translation>не удаётся прочитать %1: %2</translation>
     </message>
@@ -227,7 +237,7 @@
 <context>
     <name>Refusal</name>
     <message>
-        <location filename="../protocol/core/settings_schema.cpp" line="+150"/>
+        <location filename="../protocol/core/settings_schema.cpp" line="+155"/>
         <location filename="../protocol/geostar/geostar_encode_util.cpp" line="+11"/>
         <location filename="../protocol/geostar/geostar_status_words.cpp" line="+61"/>
         <location filename="../protocol/nemerix/nemerix_ephemeris.cpp" line="+78"/>
@@ -3683,12 +3693,7 @@
         <translation>Настройка и мониторинг приёмников ГНСС.</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Exit status: 0 closed normally, 1 the --screenshot could not be saved, 2 usage error.</source>
-        <translation>Код завершения: 0 — обычное закрытие, 1 — не удалось сохранить --screenshot, 2 — ошибка в параметрах запуска.</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>Serial port.</source>
         <translation>Последовательный порт.</translation>
     </message>
@@ -3748,12 +3753,12 @@
         <translation>Неверное значение --at: %1 (напишите 10:42:00, 2024-03-15T10:42:00Z или #1200)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+63"/>
         <source>No such log: %1</source>
         <translation>Нет такого журнала: %1</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="-21"/>
         <source>Invalid --gpsd: %1</source>
         <translation>Неверное значение --gpsd: %1</translation>
     </message>
@@ -3763,12 +3768,17 @@
         <translation>Укажите не более одного источника: --port, --tcp, --gpsd, --replay, --sim или журнал.</translation>
     </message>
     <message>
-        <location line="-88"/>
+        <location line="-84"/>
         <source>Save an image of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-55"/>
+        <source>Exit status: 0 closed normally, 1 the log to open is not there or the --screenshot could not be saved, 2 usage error.</source>
+        <translation>Код выхода: 0 окно закрыто, 1 открываемого журнала нет или --screenshot не удалось сохранить, 2 ошибка в командной строке.</translation>
+    </message>
+    <message>
+        <location line="+59"/>
         <source>Quit after this many seconds.</source>
         <translation>Выйти через указанное число секунд.</translation>
     </message>
@@ -3778,7 +3788,7 @@
         <translation>Лишний аргумент «%1»</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+29"/>
         <source>Invalid baud rate: %1</source>
         <translation>Неверная скорость порта: %1</translation>
     </message>
@@ -4804,6 +4814,16 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>confirmed by its reply (write-only)</source>
+        <translation>подтверждено ответом (только запись)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>refused before sending</source>
+        <translation>отклонено до отправки</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>not taken</source>
         <translation>не принято</translation>
     </message>
@@ -4833,7 +4853,7 @@ Serial number: %3</source>
         <translation>не подтверждено: связь потеряна до ответа (будет прочитано, когда она вернётся)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+42"/>
         <source>the link changed during the operation</source>
         <translation>подключение сменилось во время операции</translation>
     </message>
@@ -4873,7 +4893,7 @@ Serial number: %3</source>
         <translation>Чтение настроек</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+47"/>
         <source>Apply settings</source>
         <translation>Применение настроек</translation>
     </message>
@@ -4898,8 +4918,8 @@ Serial number: %3</source>
         <translation>у приёмника %1 нет команды «%2»</translation>
     </message>
     <message>
-        <location line="-212"/>
-        <location line="+326"/>
+        <location line="-213"/>
+        <location line="+327"/>
         <source>could not read back: %1</source>
         <translation>не удалось прочитать обратно: %1</translation>
     </message>
@@ -4917,7 +4937,7 @@ Serial number: %3</source>
         <translation>Не запущено</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Stopped</source>
         <translation>Остановлено</translation>
     </message>
@@ -4927,7 +4947,7 @@ Serial number: %3</source>
         <translation>%1; повтор через %2 с</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>No data from %1 for %2 s</source>
         <translation>Нет данных от %1 в течение %2 с</translation>
     </message>
@@ -5033,7 +5053,7 @@ Serial number: %3</source>
         <translation>Точки подключения %1 нет на %2: кастер прислал таблицу источников вместо данных (ответ %3)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>%1 refused the user name or password for mountpoint %2 (401 Unauthorized, %3 reply)</source>
         <translation>%1: имя пользователя или пароль для точки подключения %2 не приняты (401 Unauthorized, ответ %3)</translation>
     </message>
@@ -5043,7 +5063,7 @@ Serial number: %3</source>
         <translation>Точка подключения %1 не найдена на %2 (404 Not Found, ответ %3)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>%1 answered &quot;%2&quot; for mountpoint %3 (%4 reply)</source>
         <translation>%1 ответил «%2» для точки подключения %3 (ответ %4)</translation>
     </message>
@@ -5455,12 +5475,12 @@ Serial number: %3</source>
         <translation>Не удаётся подключиться к %1: %2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+23"/>
         <source>this is not gpsd: it did not greet with its VERSION</source>
         <translation>это не gpsd: нет приветствия VERSION</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="-14"/>
         <source>gpsd has no device %1 (it has none)</source>
         <translation>у gpsd нет устройства %1 (устройств нет вовсе)</translation>
     </message>
@@ -5470,7 +5490,7 @@ Serial number: %3</source>
         <translation>у gpsd нет устройства %1 (есть: %2)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+61"/>
         <source>gpsd refused: %1</source>
         <translation>gpsd отказал: %1</translation>
     </message>
@@ -7417,7 +7437,7 @@ Serial number: %3</source>
         <translation>есть ошибки</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>receiver reports %1</source>
         <translation>приёмник сообщает %1</translation>
     </message>
@@ -7649,7 +7669,7 @@ Serial number: %3</source>
         </translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -100,6 +100,11 @@ int runCli(const DialectRegistry &registry, const sim::SimulatorTable &simulator
     if (args.versionAsked()) return version(programVersion);
     if (!args.error().empty())
         return usageError(std::string(command->name) + ": " + args.error(), command->name);
+    if (command->maxArguments >= 0 &&
+        args.positionals().size() > static_cast<std::size_t>(command->maxArguments))
+        return usageError(std::string(command->name) + ": unexpected argument '" +
+                                  args.positionals()[std::size_t(command->maxArguments)] + "'",
+                          command->name);
     const link::TransportFactory transports = app::makeTransportFactory(simulators);
     return command->run(CliContext{registry, args, &transports});
 }

@@ -187,7 +187,8 @@ constexpr CommandSpec kCommands[] = {
          "Prints the settings schema of DIALECT (one of those below) as one JSON array: "
          "key, label, group, type, default, unit, min/max or options, access, read_back, write, "
          "help.\n"
-         "Exit status: 0 printed, 2 unknown dialect.\n"},
+         "Exit status: 0 printed, 2 unknown dialect.\n",
+         1},
         {"encode", cmdEncode,
          "encode DIALECT KEY=VALUE...\n"
          "encode DIALECT --query KEY...",
@@ -195,8 +196,8 @@ constexpr CommandSpec kCommands[] = {
          "Prints the sentences, with checksums, that set the given settings, one per line; with "
          "--query the sentences that read them back. KEY is a schema key (rtk.PVTRATE) or the "
          "spec's own name (PVTRATE); gnss-cli schema DIALECT lists them.\n"
-         "Exit status: 0 printed, 1 a value the schema refuses (out of range, not an option), 2 "
-         "usage error.\n"},
+         "Exit status: 0 printed, 2 usage error, an unknown KEY or a value the schema refuses (out "
+         "of range, not an option): nothing is printed.\n"},
         {"ports",
          cmdPorts,
          "ports",
@@ -204,7 +205,8 @@ constexpr CommandSpec kCommands[] = {
          {},
          "Prints one JSON object per serial port: port, location, description, manufacturer, "
          "serial_number, usb_id (VID:PID, empty when not USB).\n"
-         "Exit status: 0 listed, 2 usage error.\n"},
+         "Exit status: 0 listed, 2 usage error.\n",
+         0},
         {"probe", cmdProbe,
          "probe --port P [--baud B] | --tcp HOST:PORT | --gpsd HOST[:PORT][/DEVICE] | --sim D",
          "detect a receiver's baud, dialect, model and firmware", kProbeOptions,
@@ -214,8 +216,9 @@ constexpr CommandSpec kCommands[] = {
          "baud, dialect, dialect_name, model, firmware, method, reply, tried (bytes and "
          "sentences per rate) and error. Through gpsd no probe can be sent: the receiver is known "
          "by its own sentences only.\n"
-         "Exit status: 0 found, 1 nothing found or the port cannot be opened, 2 usage error, 130 "
-         "interrupted.\n"},
+         "Exit status: 0 found, 1 nothing found or the port cannot be opened, 2 usage error or a "
+         "device gpsd does not have, 130 interrupted.\n",
+         0},
         {"monitor", cmdMonitor,
          "monitor --port P|--tcp HOST:PORT|--gpsd HOST[:PORT][/DEVICE]|--replay FILE|--sim D "
          "[OPTIONS]",
@@ -225,7 +228,9 @@ constexpr CommandSpec kCommands[] = {
          "retried. "
          "Runs until --duration, the end of a replay, or Ctrl-C.\n"
          "Exit status: 0 ended by --duration or the end of the replay, 1 the source cannot be "
-         "opened, 2 usage error, 130 interrupted (Ctrl-C; 143 for SIGTERM).\n"},
+         "opened or sent nothing within --duration, 2 usage error or a device gpsd does not "
+         "have, 130 interrupted (Ctrl-C; 143 for SIGTERM).\n",
+         0},
         {"record", cmdRecord,
          "record --port P|--tcp HOST:PORT|--gpsd HOST[:PORT][/DEVICE]|--sim D --out FILE "
          "[OPTIONS]",
@@ -233,8 +238,10 @@ constexpr CommandSpec kCommands[] = {
          "Writes FILE (exactly the bytes received) and FILE.idx (when they came, gaps). A lost "
          "link is retried and the recording goes on in the same files with a gap mark. Runs "
          "until --duration or Ctrl-C; the files are flushed and closed either way.\n"
-         "Exit status: 0 ended by --duration, 1 the source or FILE cannot be opened, 2 usage "
-         "error, 130 interrupted (Ctrl-C; 143 for SIGTERM).\n"},
+         "Exit status: 0 ended by --duration, 1 the source or FILE cannot be opened or nothing was "
+         "received within --duration, 2 usage error or a device gpsd does not have, 130 "
+         "interrupted (Ctrl-C; 143 for SIGTERM).\n",
+         0},
         {"send", cmdSend, "send --port P|--tcp HOST:PORT|--sim D [OPTIONS] SENTENCE...",
          "send commands, print replies and outcomes", kSendOptions,
          "Sends each SENTENCE in turn ($ and checksum added when missing; a wrong checksum is "
@@ -262,9 +269,10 @@ constexpr CommandSpec kCommands[] = {
          "  apply   applies the difference between FILE and the receiver, as set does\n"
          "  diff    one JSON line per setting whose value in FILE differs\n"
          "  action  save to flash, restore the defaults, or restart (cold, warm, hot)\n"
-         "Exit status: 0 done (diff: no difference), 1 a command refused or failed, a value out "
-         "of range or that did not verify, the port cannot be opened, (diff) differences, 2 "
-         "usage error, an unknown setting, a profile for another dialect.\n"},
+         "Exit status: 0 done (diff: no difference), 1 a command refused or failed, a value that "
+         "did not verify, the port or FILE cannot be opened, (diff) differences, 2 usage error, "
+         "an unknown setting, a value out of range, an action the receiver does not have, a "
+         "profile that is malformed or for another dialect or model (nothing sent).\n"},
         {"rtcm",
          cmdRtcm,
          "rtcm [FILE|-]",
@@ -287,7 +295,9 @@ constexpr CommandSpec kCommands[] = {
          "lines instead. The password is read from the "
          "environment (--password-env), never from the command line, and never printed.\n"
          "Exit status: 0 ended by --duration or Ctrl-C after data, 1 the caster refused (wrong "
-         "credentials, unknown mountpoint) or could not be reached, 2 usage error.\n"},
+         "credentials) or could not be reached, or no RTCM came within --duration, 2 usage "
+         "error or a mountpoint the caster does not have.\n",
+         0},
 };
 
 // Calls f with each line of a '\n'-separated text.
@@ -439,8 +449,10 @@ std::string overviewHelp(const DialectRegistry &registry) {
           "Every command takes --help and --version; options take their value as --opt VALUE or "
           "--opt=VALUE, and -- ends them. Data goes to standard output (JSON Lines where it is a "
           "stream), messages to standard error.",
-          "Exit status: 0 done, 1 failed (input unreadable, receiver refused or silent, value "
-          "refused), 2 usage error, 130 interrupted.",
+          "Exit status: 0 done, 1 failed (input unreadable, receiver refused or silent, no data "
+          "within --duration), 2 the request is wrong and nothing was sent (usage, unknown key, "
+          "value out of range, malformed sentence, unknown device or mountpoint), 130 "
+          "interrupted.",
           "--list-dialects prints one line per dialect for scripts and shell completion: its id, "
           "'sim' when --sim plays it (else '-'), and its name, separated by tabs.",
           "See gnss-cli help COMMAND, gnss-cli(1) and docs/cli.md."})

@@ -20,6 +20,9 @@ struct CommandSpec {
     // What it reads and prints, and its exit status; "{detection order}" stands for the rates
     // baud detection tries (core/baud_rates.h).
     std::string_view details;
+    // The most positional arguments it takes (-1: the command checks them itself); more are a
+    // usage error, said before anything is opened.
+    int maxArguments = -1;
 };
 
 std::span<const CommandSpec> commandTable();

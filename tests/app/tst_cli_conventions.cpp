@@ -198,7 +198,7 @@ private slots:
               QStringList{"config", "get"}, QStringList{"config", "--sim", "nvs"},
               QStringList{"config", "--sim", "nvs", "--baud", "5", "get"},
               QStringList{"config", "--sim", "nvs", "--dialect", "garmin", "get"},
-              QStringList{"rtcm", "a", "b"}}) {
+              QStringList{"encode", "geostar", "nav.ELEV=99"}, QStringList{"rtcm", "a", "b"}}) {
             const Run r = cli(args);
             QVERIFY2(r.exitCode == 2, qPrintable(args.join(' ') + "\n" + why(r)));
             QVERIFY2(!r.err.isEmpty(), qPrintable(args.join(' ')));
@@ -206,10 +206,8 @@ private slots:
         // 1: could not be done.
         for (const QStringList &args :
              {QStringList{"decode", "/nonexistent"}, QStringList{"rtcm", "/nonexistent"},
-              QStringList{"encode", "geostar", "nav.ELEV=99"},
               QStringList{"monitor", "--port", "/dev/ttyGNSSWorkbenchNoSuchPort"},
-              QStringList{"probe", "--port", "/dev/ttyGNSSWorkbenchNoSuchPort"},
-              QStringList{"config", "--sim", "nemerix", "action", "save"}}) {
+              QStringList{"probe", "--port", "/dev/ttyGNSSWorkbenchNoSuchPort"}}) {
             const Run r = cli(args);
             QVERIFY2(r.exitCode == 1, qPrintable(args.join(' ') + "\n" + why(r)));
         }
@@ -330,11 +328,16 @@ private slots:
                  why(help));
         env.insert("QT_QPA_PLATFORM", "offscreen");
         for (const QStringList &args :
-             {QStringList{"--no-such-option"}, QStringList{"extra"}, QStringList{"--baud", "x"},
-              QStringList{"--sim", "nvs", "--port", "ttyUSB0"}}) {
+             {QStringList{"--no-such-option"}, QStringList{"a.nmea", "b.nmea"},
+              QStringList{"--baud", "x"}, QStringList{"--sim", "nvs", "--port", "ttyUSB0"}}) {
             const Run r = run(gui, args, {}, env);
             QVERIFY2(r.exitCode == 2 && r.out.isEmpty(), qPrintable(args.join(' ') + why(r)));
         }
+        // A log that is not there is a failure to open it, not a wrong command line.
+        const Run missing = run(gui, {"/nonexistent/log.nmea"}, {}, env);
+        QVERIFY2(missing.exitCode == 1 &&
+                         missing.err.contains("No such log: /nonexistent/log.nmea"),
+                 why(missing));
 #endif
     }
 
