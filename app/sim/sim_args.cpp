@@ -1,8 +1,12 @@
 #include "sim/sim_args.h"
 
+#include "sim/receiver.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <optional>
 #include <string_view>
 
@@ -14,7 +18,8 @@ namespace {
 const char *const kUsageHead =
         "usage: gnss-sim --dialect D [--pty [--link PATH] | --tcp PORT | --stdout]\n"
         "                [--seed N] [--speed X] [--duration S] [--baud B] [--faults SPEC]\n"
-        "                [--internal-base]\n"
+        "                [--internal-base] [--start now|HH:MM:SS] [--offset E,N,U]\n"
+        "                [--cn0-offset [SYS:]DB,...] [--drop SATS] [--latency MS]\n"
         "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
         "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--duration S]\n"
         "                [--baud B]\n"
@@ -52,6 +57,14 @@ const char *const kUsageTail =
         "  --internal-base  an RTK rover (nvs) corrects itself from a base inside the simulator;\n"
         "                 without it, it stays autonomous until RTCM 3 frames arrive on its\n"
         "                 port (float after 3 s of corrections, fixed after 20 s)\n"
+        "  --start T      the simulated receiver starts at UTC T (HH:MM:SS after 10:00:00 on\n"
+        "                 2024-03-15, or the next day) or now (the host's time of day): two\n"
+        "                 with the same --seed and --start now see the same sky at one UTC\n"
+        "  --offset E,N,U report the position moved E east, N north, U up (metres)\n"
+        "  --cn0-offset [SYS:]DB,...  add DB to every signal's C/N0, or to one\n"
+        "                 constellation's (GPS:-3,GLONASS:2; G R E C J S also name them)\n"
+        "  --drop SATS    never report these satellites (G05,R12,E31)\n"
+        "  --latency MS   send each output MS milliseconds after the epoch it belongs to\n"
         "  --rtcm-base    an RTK base station instead of a receiver: RTCM 3 MSM4 for GPS (1074)\n"
         "                 and GLONASS (1084) and the position (1005) every second, 1230 every\n"
         "                 10 s\n"
@@ -69,6 +82,28 @@ const char *const kUsageTail =
         "Exit status: 0 the --duration ran, standard input closed or the hangup fault, 1 the\n"
         "pseudo-terminal or port could not be opened, 2 usage error, 128 + N stopped by signal\n"
         "N (130 Ctrl-C).\n";
+
+// "now" (the host's UTC time of day) or "HH:MM:SS[.s]": seconds after 10:00:00 UTC, the
+// simulation's own start, on the same day or the next.
+bool startTime(std::string_view text, double &after) {
+    double sod = 0;
+    if (text == "now") {
+        timespec ts{};
+        clock_gettime(CLOCK_REALTIME, &ts);
+        sod = std::fmod(static_cast<double>(ts.tv_sec) + ts.tv_nsec / 1e9, 86400.0);
+    } else {
+        int h = 0, m = 0;
+        double sec = 0;
+        char rest = 0;
+        const std::string t(text);
+        if (std::sscanf(t.c_str(), "%2d:%2d:%lf%c", &h, &m, &sec, &rest) != 3 || h < 0 || h > 23 ||
+            m < 0 || m > 59 || sec < 0 || sec >= 60)
+            return false;
+        sod = h * 3600.0 + m * 60.0 + sec;
+    }
+    after = std::fmod(sod - sim::Receiver::kStartSecondOfDay + 86400.0, 86400.0);
+    return true;
+}
 
 template <class T> bool number(std::string_view s, T &out) {
     const char *end = s.data() + s.size();
@@ -113,6 +148,7 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
     auto fail = [&](std::string message) {
         if (error.empty()) error = std::move(message);
     };
+    bool differs = false; // an option that makes a receiver report otherwise than the truth
     for (int i = 1; i < argc; ++i) {
         std::string_view a = argv[i];
         // --name=value as well as --name value.
@@ -186,6 +222,26 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
         } else if (a == "--station") {
             if (value(v) && (!number(v, out.base.stationId) || out.base.stationId > 4095))
                 fail("--station: expected a station id 0..4095, got '" + std::string(v) + "'");
+        } else if (a == "--offset" || a == "--cn0-offset" || a == "--drop") {
+            if (!value(v)) continue;
+            std::string why;
+            const auto parse = a == "--offset"       ? sim::parseOffset
+                               : a == "--cn0-offset" ? sim::parseCn0Offset
+                                                     : sim::parseDrop;
+            if (auto d = parse(v, out.options.differences, why))
+                out.options.differences = *d;
+            else
+                fail(std::string(a) + ": " + why);
+            differs = true;
+        } else if (a == "--latency") {
+            double ms = 0;
+            if (value(v) && (!number(v, ms) || !std::isfinite(ms) || ms < 0 || ms > 60000))
+                fail("--latency: expected milliseconds 0..60000, got '" + std::string(v) + "'");
+            out.options.differences.latency = ms / 1000.0;
+            differs = true;
+        } else if (a == "--start") {
+            if (value(v) && !startTime(v, out.options.startAfter))
+                fail("--start: expected now or a UTC time HH:MM:SS, got '" + std::string(v) + "'");
         } else if (a == "--faults") {
             if (!value(v)) continue;
             std::string why;
@@ -206,6 +262,11 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
         return false;
     }
     if (out.rtcmBase) {
+        if (differs) {
+            error = "--offset, --cn0-offset, --drop and --latency change what a receiver "
+                    "reports: they go with --dialect";
+            return false;
+        }
         if (!out.dialect.empty()) {
             error = "--rtcm-base is a base station, not a receiver: leave out --dialect";
             return false;

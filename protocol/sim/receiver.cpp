@@ -36,8 +36,10 @@ Receiver::Receiver(const Dialect &dialect, int defaultBaud, const SimOptions &op
       decoder_(registry_, decoderOptionsFor(dialect)), sky_(options.seed, options.observer),
       faultRng_(options.seed ^ 0x5EED5EEDu), defaultBaud_(defaultBaud),
       baud_(options.baud > 0 ? options.baud : defaultBaud), ttff_(ttffOf(ResetKind::PowerCycle)) {
-    // The first epoch comes one interval after power-on, like a receiver that just booted.
-    nextEpoch_ = 0;
+    // The first epoch at power-on, on the UTC grid of epochs (whole seconds and their parts,
+    // as real receivers): with a start of its own (startAfter), the first whole one after it.
+    const double shift = std::fmod(options_.startAfter, 1.0);
+    nextEpoch_ = shift > 1e-9 ? 1.0 - shift : 0.0;
 }
 
 Receiver::~Receiver() = default;
@@ -96,6 +98,10 @@ bool Receiver::hangsUp() const {
 }
 
 std::string Receiver::takeOutput() {
+    std::size_t due = 0;
+    while (due < delayed_.size() && delayed_[due].first <= now_ + 1e-9)
+        out_ += delayed_[due++].second;
+    delayed_.erase(delayed_.begin(), delayed_.begin() + static_cast<std::ptrdiff_t>(due));
     std::string s;
     s.swap(out_);
     return s;
@@ -118,15 +124,23 @@ void Receiver::reset(ResetKind kind) {
 }
 
 void Receiver::rescheduleEpochs() {
+    nextEpoch_ = nextOnGrid();
+}
+
+double Receiver::nextOnGrid() const {
+    // The next multiple of the interval in UTC strictly after now: epochs are aligned to the
+    // time grid, also when the receiver started between two of its points (startAfter).
     const double dt = epochInterval();
-    // Next multiple of the interval strictly after now (epochs are aligned to the time grid).
-    nextEpoch_ = (std::floor(now_ / dt + 1e-9) + 1) * dt;
+    const double utc = now_ + options_.startAfter;
+    return (std::floor(utc / dt + 1e-9) + 1) * dt - options_.startAfter;
 }
 
 void Receiver::runEpoch() {
-    const double dt = epochInterval();
     const FixKind want = fixAfter(now_ - trackingSince_);
-    last_ = sky_.update(now_, useMask(), want, trackingSince_);
+    // The sky is a function of UTC: a later start sees it further on.
+    last_ = sky_.update(now_ + options_.startAfter, useMask(), want,
+                        trackingSince_ + options_.startAfter);
+    applyDifferences(options_.differences, last_);
     lastFix_ = last_.fix;
     if (options_.faults.binary > 0) {
         std::uniform_real_distribution<double> u(0, 1);
@@ -139,7 +153,7 @@ void Receiver::runEpoch() {
         }
     }
     onEpoch(last_);
-    nextEpoch_ = (std::floor(now_ / dt + 1e-9) + 1) * dt;
+    nextEpoch_ = nextOnGrid();
 }
 
 void Receiver::flushDue() {
@@ -205,10 +219,12 @@ void Receiver::write(std::string bytes) {
         // of the speeds, framing garbage with no '$' in it.
         const double ratio = static_cast<double>(lineBaud_) / baud_;
         const auto n = static_cast<std::size_t>(std::max(1.0, std::round(bytes.size() * ratio)));
-        out_ += garble(n);
-        return;
+        bytes = garble(n);
     }
-    out_ += bytes;
+    if (options_.differences.latency > 0)
+        delayed_.emplace_back(now_ + options_.differences.latency, std::move(bytes));
+    else
+        out_ += bytes;
 }
 
 std::string Receiver::garble(std::size_t n) {
@@ -226,12 +242,13 @@ std::string Receiver::garble(std::size_t n) {
 }
 
 double Receiver::utcSecondOfDay() const {
-    return std::fmod(kStartSecondOfDay + now_, 86400.0);
+    return std::fmod(kStartSecondOfDay + options_.startAfter + now_, 86400.0);
 }
 
 Date Receiver::utcDate() const {
     // Days after 2024-03-15 (enough for simulations of days or weeks).
-    int days = static_cast<int>(std::floor((kStartSecondOfDay + now_) / 86400.0));
+    int days = static_cast<int>(
+            std::floor((kStartSecondOfDay + options_.startAfter + now_) / 86400.0));
     Date d{2024, 3, 15};
     static const int kMonthDays[] = {31, 29, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31}; // 2024
     while (days-- > 0) {
@@ -248,12 +265,14 @@ Date Receiver::utcDate() const {
 
 double Receiver::gpsTimeOfWeek() const {
     // 2024-03-15 is a Friday (day 5 of the GPS week); GPS week 2305.
-    return std::fmod(5 * 86400.0 + kStartSecondOfDay + now_ + kLeapSeconds, 604800.0);
+    return std::fmod(5 * 86400.0 + kStartSecondOfDay + options_.startAfter + now_ + kLeapSeconds,
+                     604800.0);
 }
 
 int Receiver::gpsWeek() const {
-    return 2305 +
-           static_cast<int>((5 * 86400.0 + kStartSecondOfDay + now_ + kLeapSeconds) / 604800.0);
+    return 2305 + static_cast<int>((5 * 86400.0 + kStartSecondOfDay + options_.startAfter + now_ +
+                                    kLeapSeconds) /
+                                   604800.0);
 }
 
 } // namespace gnss::sim

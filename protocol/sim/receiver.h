@@ -17,6 +17,7 @@
 #include "core/dialect_registry.h"
 #include "core/field_types.h"
 #include "core/stream_decoder.h"
+#include "sim/differences.h"
 #include "sim/faults.h"
 #include "sim/sky_model.h"
 
@@ -37,6 +38,12 @@ struct SimOptions {
     // An RTK rover corrects itself from a base inside the simulator (a demonstration without a
     // caster). Otherwise, as a real rover, it waits for RTCM 3 from the host on its port.
     bool internalBase = false;
+    // What it reports otherwise than the truth, on purpose (differences.h).
+    Differences differences;
+    // Seconds after 10:00:00 UTC (kStartSecondOfDay) at which it starts: simulators started at
+    // different moments with the same seed and their start set from one clock (gnss-sim
+    // --start now) see the same sky at the same UTC.
+    double startAfter = 0;
 };
 
 enum class ResetKind : std::uint8_t {
@@ -99,7 +106,8 @@ public:
     FixKind currentFix() const { return lastFix_; }
     const SkySnapshot &lastSnapshot() const { return last_; }
 
-    // UTC of the simulated start: 2024-03-15 10:00:00 (a Friday; GPS-UTC = 18 s).
+    // UTC of the simulated start: 2024-03-15 10:00:00 (a Friday; GPS-UTC = 18 s), plus
+    // SimOptions::startAfter.
     static constexpr double kStartSecondOfDay = 10 * 3600.0;
     static constexpr int kLeapSeconds = 18;
 
@@ -156,6 +164,7 @@ private:
         int thenBaud;
     };
     void runEpoch();
+    double nextOnGrid() const;
     void flushDue();
     // The powercut fault, when `command` is one it names: true when the power went.
     bool cutPowerAt(const Sentence &command);
@@ -192,6 +201,8 @@ private:
     SkySnapshot last_;
     std::vector<Pending> pending_;
     std::string out_;
+    // Output held back by the latency difference: when it may leave, and the bytes.
+    std::vector<std::pair<double, std::string>> delayed_;
 };
 
 } // namespace gnss::sim

@@ -172,11 +172,12 @@ std::vector<std::string> NvsReceiver::sentencesOf(std::string_view address,
     const bool tme = a == nvs::Tme::kType.name, tmu = a == nvs::Tmu::kType.name;
     if (!tme && !tmu && a != nvs::Tmc::kType.name) return {};
     if (!markPending_) return {};
-    const double markSod = std::fmod(kStartSecondOfDay + lastMark_, 86400.0);
+    const double start = kStartSecondOfDay + options().startAfter;
+    const double markSod = std::fmod(start + lastMark_, 86400.0);
     if (tme) {
         nvs::Tme m;
         m.counter = markCounter_;
-        m.tow = std::fmod(5 * 86400.0 + kStartSecondOfDay + lastMark_ + kLeapSeconds, 604800.0);
+        m.tow = std::fmod(5 * 86400.0 + start + lastMark_ + kLeapSeconds, 604800.0);
         return sentences(nvs::encodeTme(m));
     }
     if (tmu) {
