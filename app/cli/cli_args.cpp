@@ -15,6 +15,7 @@ Args::Args(int argc, char **argv, int first, std::span<const OptionSpec> known) 
         const std::string_view a = argv[i];
         if (optionsEnded || a == "-" || !a.starts_with('-')) {
             positionals_.emplace_back(a);
+            inOrder_.emplace_back(std::string(), std::string(a));
             continue;
         }
         if (a == "--") {
@@ -63,8 +64,10 @@ Args::Args(int argc, char **argv, int first, std::span<const OptionSpec> known) 
         }
         if (inlineValue) {
             options_.emplace_back(name, *inlineValue);
+            inOrder_.push_back(options_.back());
         } else if (i + 1 < argc && !std::string_view(argv[i + 1]).starts_with("--")) {
             options_.emplace_back(name, argv[++i]);
+            inOrder_.push_back(options_.back());
         } else {
             fail("option --" + name + " needs a value (--" + name + " " + std::string(spec->value) +
                  ")");

@@ -33,6 +33,9 @@ public:
     std::optional<std::string> option(std::string_view name) const; // the last one given
     std::vector<std::string> options(std::string_view name) const;  // repeated option
     const std::vector<std::string> &positionals() const { return positionals_; }
+    // Options with values and positionals as given, in their order (a positional's name is
+    // empty): for commands whose repeated sources keep the order they were given in.
+    const std::vector<std::pair<std::string, std::string>> &inOrder() const { return inOrder_; }
     // The first thing wrong with the command line; empty when nothing is. Parsing goes on after
     // it, so a --help further on is still seen.
     const std::string &error() const { return error_; }
@@ -43,6 +46,7 @@ private:
     std::vector<std::pair<std::string, std::string>> options_;
     std::vector<std::string> flags_;
     std::vector<std::string> positionals_;
+    std::vector<std::pair<std::string, std::string>> inOrder_;
     std::string error_;
     bool help_ = false;
     bool version_ = false;

@@ -40,5 +40,6 @@ int cmdConfig(const CliContext &ctx);
 int cmdRtcm(const CliContext &ctx);
 // NTRIP casters (cmd_ntrip.cpp): the source table, or a mountpoint's RTCM as JSON and/or a file.
 int cmdNtrip(const CliContext &ctx);
+int cmdCompare(const CliContext &ctx);
 
 } // namespace gnss::cli

@@ -49,50 +49,62 @@ std::string sourceOptionsText(std::initializer_list<Kind> allowed) {
     return out;
 }
 
-std::optional<link::SourceSpec>
-sourceFromArgs(const Args &args, std::initializer_list<Kind> allowed, std::string &error) {
-    std::optional<link::SourceSpec> found;
-    int given = 0;
-    for (const auto &o : kSourceOptions) {
-        const auto v = args.option(o.option);
-        if (!v) continue;
-        ++given;
-        if (!allowedKind(allowed, o.kind)) {
-            error = std::string("this command does not take --") + o.option;
-            return std::nullopt;
-        }
-        link::SourceSpec s;
-        s.kind = o.kind;
-        s.name = QString::fromStdString(*v);
-        found = s;
-    }
-    if (given != 1) {
-        error = "give one source: " + sourceOptionsText(allowed);
-        return std::nullopt;
-    }
-    if (found->kind == Kind::Gpsd) {
+std::optional<Kind> sourceKindOf(std::string_view option) {
+    for (const auto &o : kSourceOptions)
+        if (option == o.option) return o.kind;
+    return std::nullopt;
+}
+
+std::optional<link::SourceSpec> sourceSpecOf(Kind kind, const std::string &value,
+                                             std::string &error) {
+    link::SourceSpec s;
+    s.kind = kind;
+    s.name = QString::fromStdString(value);
+    if (kind == Kind::Gpsd) {
         // Checked here so that a malformed one is a usage error, not a failure to connect.
         link::GpsdTransport::Target target;
         QString why;
-        if (!link::GpsdTransport::parseTarget(found->name, target, &why)) {
+        if (!link::GpsdTransport::parseTarget(s.name, target, &why)) {
             error = "--gpsd: " + why.toStdString();
             return std::nullopt;
         }
         // The name is what follows the scheme, as the GUI keeps it.
-        found->name = found->name.trimmed();
-        if (found->name.startsWith(QLatin1String("gpsd://"), Qt::CaseInsensitive))
-            found->name = found->name.mid(7);
+        s.name = s.name.trimmed();
+        if (s.name.startsWith(QLatin1String("gpsd://"), Qt::CaseInsensitive))
+            s.name = s.name.mid(7);
     }
-    if (found->kind == Kind::Tcp) {
+    if (kind == Kind::Tcp) {
         // A malformed HOST:PORT is a usage error too (a misspelled one is a failure to connect).
         QString host;
         quint16 port = 0;
-        if (!link::TcpTransport::parseHostPort(found->name, host, port)) {
-            error = "--tcp takes HOST:PORT (a port from 1 to 65535), got '" +
-                    found->name.toStdString() + "'";
+        if (!link::TcpTransport::parseHostPort(s.name, host, port)) {
+            error = "--tcp takes HOST:PORT (a port from 1 to 65535), got '" + value + "'";
             return std::nullopt;
         }
     }
+    return s;
+}
+
+std::optional<link::SourceSpec>
+sourceFromArgs(const Args &args, std::initializer_list<Kind> allowed, std::string &error) {
+    std::optional<std::pair<Kind, std::string>> given;
+    int count = 0;
+    for (const auto &o : kSourceOptions) {
+        const auto v = args.option(o.option);
+        if (!v) continue;
+        ++count;
+        if (!allowedKind(allowed, o.kind)) {
+            error = std::string("this command does not take --") + o.option;
+            return std::nullopt;
+        }
+        given = {o.kind, *v};
+    }
+    if (count != 1) {
+        error = "give one source: " + sourceOptionsText(allowed);
+        return std::nullopt;
+    }
+    auto found = sourceSpecOf(given->first, given->second, error);
+    if (!found) return std::nullopt;
     if (const auto b = args.option("baud")) {
         bool ok = false;
         found->baud = QString::fromStdString(*b).toInt(&ok);
@@ -178,6 +190,31 @@ std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
         }
     }
     return conn;
+}
+
+// Link events on standard error; a link that cannot be opened and will not be retried ends the
+// command with status 1.
+void reportLinkEvents(link::Connection &conn, const char *note) {
+    link::Transport *transport = conn.transport();
+    QObject::connect(&conn, &link::Connection::openFailed,
+                     [note, transport](const QString &why, int retryMs) {
+                         if (retryMs <= 0) {
+                             std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
+                             // A device gpsd does not have is the request's fault (2), not the
+                             // source's (1).
+                             QCoreApplication::exit(transport->errorIsRequest() ? 2 : 1);
+                             return;
+                         }
+                         std::fprintf(stderr, "gnss-cli: %s; trying again in %d s%s\n",
+                                      utf8(why).c_str(), (retryMs + 500) / 1000, note);
+                     });
+    QObject::connect(&conn, &link::Connection::linkLost, [note](const QString &why, int retryMs) {
+        std::fprintf(stderr, "gnss-cli: link lost: %s; trying again in %d s%s\n", utf8(why).c_str(),
+                     (retryMs + 500) / 1000, note);
+    });
+    QObject::connect(&conn, &link::Connection::linkRestored, [](const QString &what) {
+        std::fprintf(stderr, "gnss-cli: link back: %s\n", utf8(what).c_str());
+    });
 }
 
 void printCommandResult(const link::CommandResult &r, bool timing) {

@@ -20,6 +20,12 @@
 
 namespace gnss::cli {
 
+// The source kind an option names ("port", "tcp", "gpsd", "replay", "sim"); none for others.
+std::optional<link::SourceSpec::Kind> sourceKindOf(std::string_view option);
+// One source from its option's value, checked as sourceFromArgs checks it (without --baud).
+std::optional<link::SourceSpec> sourceSpecOf(link::SourceSpec::Kind kind, const std::string &value,
+                                             std::string &error);
+
 // The source named by the arguments; nullopt with `error` when none, several, or malformed.
 // `allowed` lists the kinds the command takes (a replay cannot take commands, for instance).
 std::optional<link::SourceSpec>
@@ -45,6 +51,10 @@ std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
                                                  const link::SourceSpec &spec,
                                                  const OpenOptions &options, QString &error,
                                                  bool *refused = nullptr);
+
+// Link events on standard error ("... trying again in 2 s" + `note`); a link that cannot be opened
+// and will not be retried ends the event loop with status 1 (2 for a device gpsd lacks).
+void reportLinkEvents(link::Connection &conn, const char *note);
 
 // A command's result as one JSON line: sentence, outcome, detail, (with `timing`: attempts and
 // ms), the replies, and the speed it switched to (when it did).

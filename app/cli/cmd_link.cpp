@@ -67,31 +67,6 @@ std::unique_ptr<link::Connection> open(const CliContext &ctx, const Args &args,
     return conn;
 }
 
-// Link events on standard error; a link that cannot be opened and will not be retried ends the
-// command with status 1.
-void reportLinkEvents(link::Connection &conn, const char *note) {
-    link::Transport *transport = conn.transport();
-    QObject::connect(&conn, &link::Connection::openFailed,
-                     [note, transport](const QString &why, int retryMs) {
-                         if (retryMs <= 0) {
-                             std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
-                             // A device gpsd does not have is the request's fault (2), not the
-                             // source's (1).
-                             QCoreApplication::exit(transport->errorIsRequest() ? 2 : 1);
-                             return;
-                         }
-                         std::fprintf(stderr, "gnss-cli: %s; trying again in %d s%s\n",
-                                      utf8(why).c_str(), (retryMs + 500) / 1000, note);
-                     });
-    QObject::connect(&conn, &link::Connection::linkLost, [note](const QString &why, int retryMs) {
-        std::fprintf(stderr, "gnss-cli: link lost: %s; trying again in %d s%s\n", utf8(why).c_str(),
-                     (retryMs + 500) / 1000, note);
-    });
-    QObject::connect(&conn, &link::Connection::linkRestored, [](const QString &what) {
-        std::fprintf(stderr, "gnss-cli: link back: %s\n", utf8(what).c_str());
-    });
-}
-
 // A run that its --duration ended without a byte received failed (1), and says so.
 int statusAtDuration(int rc, link::Connection &conn, double duration) {
     if (rc != 0 || duration <= 0 || conn.bytesReceived() > 0) return rc;

@@ -85,6 +85,16 @@ constexpr OptionSpec kConfigOptions[] = {
         kLinkBaud,
         {"dialect", "D", "the receiver's dialect (default: identified by its probe)"},
 };
+constexpr OptionSpec kCompareOptions[] = {
+        {"port", "P", "a receiver on a serial port (repeatable; its speed is detected)"},
+        {"tcp", "HOST:PORT", "a receiver over TCP (repeatable)"},
+        {"gpsd", "HOST[:PORT][/DEVICE]", "a receiver that gpsd holds (repeatable)"},
+        {"sim", "D", "a built-in simulated receiver of one of the dialects below (repeatable)"},
+        {"duration", "S", "with a live source: stop after S seconds (default: Ctrl-C)"},
+        {"json", "", "one JSON object at the end instead of a line per matched epoch"},
+        kDialect,
+        kLenient,
+};
 constexpr OptionSpec kNtripOptions[] = {
         {"caster", "HOST:PORT", "the NTRIP caster"},
         {"mount", "M", "the mountpoint whose corrections to receive"},
@@ -282,6 +292,19 @@ constexpr CommandSpec kCommands[] = {
          "and at the end one summary object (frames, bytes, bytes skipped, CRC failures, frames "
          "per message type) on standard error. Bytes outside frames are skipped.\n"
          "Exit status: 0 the input was read to its end, 1 it could not be read, 2 usage error.\n"},
+        {"compare", cmdCompare, "compare SOURCE SOURCE [SOURCE...] [--duration S] [--json]",
+         "receivers side by side: position and C/N0 differences", kCompareOptions,
+         "SOURCE is a log FILE or a live receiver (--port P, --tcp HOST:PORT, --gpsd G, --sim D; "
+         "each repeatable), in the order given: the first is the reference, and every "
+         "difference is another receiver minus it. Epochs are matched on their UTC time. Prints "
+         "one JSON line per matched epoch (time, fix of each, and per other receiver east, "
+         "north, up, horizontal in metres, C/N0 of each satellite and signal both track, "
+         "satellites only one has), then the summary in words on standard error; with --json "
+         "one object at the end: receivers (name, dialect, epochs, fix shares, and after the "
+         "first difference_m, cn0_db, only_in) and matched_epochs. Logs alone are compared "
+         "whole; beside a live source they are replayed at their own pace.\n"
+         "Exit status: 0 compared, 1 a source cannot be opened or no epoch matched, 2 usage "
+         "error (fewer than two sources), 130 interrupted.\n"},
         {"ntrip", cmdNtrip, "ntrip --caster HOST:PORT --mount M|--sourcetable|--nearest [OPTIONS]",
          "NTRIP: a caster's source table, or a mountpoint's RTCM 3", kNtripOptions,
          "NTRIP revision 1 or 2 (chunked transfer decoded before RTCM framing). --sourcetable "

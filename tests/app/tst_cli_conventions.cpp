@@ -31,8 +31,8 @@ QByteArray why(const Run &r) {
     return "exit " + QByteArray::number(r.exitCode) + "\nstdout: " + r.out + "\nstderr: " + r.err;
 }
 
-const QStringList kCommands = {"decode", "epochs",  "stats",  "schema", "encode", "ports",
-                               "probe",  "monitor", "record", "send",   "config", "rtcm"};
+const QStringList kCommands = {"decode",  "epochs", "stats", "schema", "encode", "ports",  "probe",
+                               "monitor", "record", "send",  "config", "rtcm",   "compare"};
 
 // The options `gnss-cli COMMAND --help` lists, with the value each takes ("" for a flag).
 QList<QPair<QString, QString>> listedOptions(const QString &command) {

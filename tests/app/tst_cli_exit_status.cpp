@@ -234,6 +234,16 @@ private slots:
         row("rtcm: a missing file", {"rtcm", missing}, 1, missing);
         row("rtcm: two files", {"rtcm", log, log}, 2);
 
+        row("compare: two logs", {"compare", log, log, "--json"}, 0);
+        row("compare: two receivers",
+            {"compare", "--sim", "nvs", "--sim", "nmea", "--duration", "2"}, 0,
+            "epochs matched on UTC time");
+        row("compare: nothing in common", {"compare", log, "%DIR%/empty.nmea"}, 1,
+            "nothing compared");
+        row("compare: a missing file", {"compare", log, missing}, 1, missing);
+        row("compare: one source", {"compare", log}, 2, "two sources or more");
+        row("compare: a malformed source", {"compare", log, "--tcp", "nohost"}, 2, "--tcp");
+
         const QStringList caster{"ntrip",         "--caster",        "%CASTER%",
                                  "--user",        "rover7",          "--password-env",
                                  "TEST_NTRIP_PW", "--ntrip-version", "1"};

@@ -115,6 +115,12 @@ QList<DocCommand> commandsOf(const QString &name, const QString &text) {
     return out;
 }
 
+// The two logs docs/cli.md compares (made again before the suite runs, so its rows stand alone).
+const char *const kCompareA =
+        "gnss-sim --dialect nmea --stdout --speed 1000 --duration 600 > a.nmea";
+const char *const kCompareB = "gnss-sim --dialect nmea --stdout --speed 1000 --duration 600 "
+                              "--offset 0.3,-0.2,0.5 --cn0-offset GPS:-3 > b.nmea";
+
 // What each documented command is (see the top of the file). The key is the command as the
 // document writes it, on one line.
 QHash<QString, Treatment> table() {
@@ -194,6 +200,13 @@ QHash<QString, Treatment> table() {
             {"NTRIP_PW=pass gnss-cli ntrip --caster 127.0.0.1:2101 --mount SIM --user user "
              "--password-env NTRIP_PW --ntrip-version 1",
              hardware("the str2str caster above: tst_ntrip_str2str")},
+            {"gnss-cli compare SOURCE SOURCE [SOURCE...] [--duration S] [--json] [--dialect D] "
+             "[--lenient]",
+             synopsis()},
+            {kCompareA, run()},
+            {kCompareB, run()},
+            // Its summary in words is on standard error.
+            {"gnss-cli compare a.nmea b.nmea", run(0, {}, {"b.nmea", "b.nmea 2>&1"})},
             {"gnss-cli schema DIALECT", synopsis()},
             {"gnss-cli encode DIALECT KEY=VALUE...", synopsis()},
             {"gnss-cli encode DIALECT --query KEY...", synopsis()},
@@ -290,7 +303,8 @@ private slots:
                                            "--speed 1000 --duration 3600 > drive.nmea && "
                                            "cp drive.nmea yesterday.nmea && gnss-sim --dialect "
                                            "nvs --stdout --speed 1000 --duration 60 > "
-                                           "minute.nmea"));
+                                           "minute.nmea && ") +
+                            kCompareA + " && " + kCompareB);
         QVERIFY2(QFileInfo(dir_.filePath("drive.nmea")).size() > 100000, made.err.constData());
 #endif
     }

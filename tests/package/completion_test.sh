@@ -45,7 +45,7 @@ contains() { # contains WHAT NEEDLE HAYSTACK
 }
 
 # Option names as a --help lists them ("  --name VALUE  help" or "  -h, --help  help").
-listed_options() { sed -n 's/^  \(-[a-zA-Z], \)\{0,1\}\(--[a-z-]*\).*/\2/p' | sort -u; }
+listed_options() { sed -n 's/^  \(-[a-zA-Z], \)\{0,1\}\(--[a-z0-9-]*\).*/\2/p' | sort -u; }
 
 mapfile -t commands < <("$cli" --help | sed -n '/^commands:/,/^$/p' |
     sed -n 's/^  \([a-z][a-z]*\).*/\1/p' | sort -u)

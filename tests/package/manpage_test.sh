@@ -12,7 +12,7 @@ fail() {
 }
 
 # Option names as a --help lists them: "  --name VALUE", "  -h, --help", "  -p, --port <port>".
-listed_options() { sed -n 's/^  \(-[a-zA-Z], \)\{0,1\}\(--[a-z-]*\).*/\2/p' | sort -u; }
+listed_options() { sed -n 's/^  \(-[a-zA-Z], \)\{0,1\}\(--[a-z0-9-]*\).*/\2/p' | sort -u; }
 
 # check_options PAGE: every option on standard input has an item of its own in PAGE: the line
 # after a .TP names it (as \-\-name), not just a mention in an example.
