@@ -20,6 +20,7 @@ const char *const kUsageHead =
         "                [--seed N] [--speed X] [--duration S] [--baud B] [--faults SPEC]\n"
         "                [--internal-base] [--start now|HH:MM:SS] [--offset E,N,U]\n"
         "                [--cn0-offset [SYS:]DB,...] [--drop SATS] [--latency MS]\n"
+        "                [--noise X]\n"
         "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
         "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--duration S]\n"
         "                [--baud B]\n"
@@ -65,6 +66,9 @@ const char *const kUsageTail =
         "                 constellation's (GPS:-3,GLONASS:2; G R E C J S also name them)\n"
         "  --drop SATS    never report these satellites (G05,R12,E31)\n"
         "  --latency MS   send each output MS milliseconds after the epoch it belongs to\n"
+        "  --noise X      the share of the position and C/N0 noise reported: 1 as modelled\n"
+        "                 (default), 0 the truth, so receivers of any family on one sky\n"
+        "                 differ by the options above alone\n"
         "  --rtcm-base    an RTK base station instead of a receiver: RTCM 3 MSM4 for GPS (1074)\n"
         "                 and GLONASS (1084) and the position (1005) every second, 1230 every\n"
         "                 10 s\n"
@@ -239,6 +243,11 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
                 fail("--latency: expected milliseconds 0..60000, got '" + std::string(v) + "'");
             out.options.differences.latency = ms / 1000.0;
             differs = true;
+        } else if (a == "--noise") {
+            if (value(v) && (!number(v, out.options.noise) || !std::isfinite(out.options.noise) ||
+                             out.options.noise < 0 || out.options.noise > 10))
+                fail("--noise: expected a scale 0..10 (1: as modelled, 0: none), got '" +
+                     std::string(v) + "'");
         } else if (a == "--start") {
             if (value(v) && !startTime(v, out.options.startAfter))
                 fail("--start: expected now or a UTC time HH:MM:SS, got '" + std::string(v) + "'");

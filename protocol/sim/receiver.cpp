@@ -40,6 +40,7 @@ Receiver::Receiver(const Dialect &dialect, int defaultBaud, const SimOptions &op
     // as real receivers): with a start of its own (startAfter), the first whole one after it.
     const double shift = std::fmod(options_.startAfter, 1.0);
     nextEpoch_ = shift > 1e-9 ? 1.0 - shift : 0.0;
+    sky_.setNoise(options_.noise);
 }
 
 Receiver::~Receiver() = default;

@@ -44,6 +44,9 @@ struct SimOptions {
     // different moments with the same seed and their start set from one clock (gnss-sim
     // --start now) see the same sky at the same UTC.
     double startAfter = 0;
+    // The share of the modelled noise reported (SkyModel::setNoise): 0 reports the truth, so
+    // receivers of different families on one sky differ by their Differences alone.
+    double noise = 1;
 };
 
 enum class ResetKind : std::uint8_t {
@@ -145,6 +148,9 @@ protected:
     double ttff() const { return ttff_; }
     double sinceTracking() const { return now_ - trackingSince_; }
 
+    // Seconds since 10:00:00 UTC of the first day: time() plus the start (whole seconds of it
+    // are whole seconds of UTC, for once-a-second and every-N-seconds outputs).
+    double utcSeconds() const { return now_ + options_.startAfter; }
     // Time helpers for output: UTC of the simulated time.
     double utcSecondOfDay() const;
     Date utcDate() const;

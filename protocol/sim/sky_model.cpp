@@ -208,8 +208,8 @@ SkySnapshot SkyModel::update(double time, const UseMask &mask, FixKind fix, doub
         const double noise = gaussian(rng_);
         s.tracked = mask.enabled(o.system) && time - trackingSince >= acquireDelay_[i];
         if (s.tracked) {
-            s.snr = std::clamp(27.0 + 21.0 * std::sqrt(sinEl) + snrBias_[i] + 0.8 * noise, 10.0,
-                               55.0);
+            s.snr = std::clamp(27.0 + 21.0 * std::sqrt(sinEl) + snrBias_[i] + 0.8 * noise * noise_,
+                               10.0, 55.0);
         }
         s.used = s.tracked && fix != FixKind::None && s.elevation >= mask.elevationMask &&
                  s.snr >= mask.snrMask && (o.system != Constellation::Sbas || mask.sbasInSolution);
@@ -239,13 +239,13 @@ SkySnapshot SkyModel::update(double time, const UseMask &mask, FixKind fix, doub
     snap.sigmaNorth = h * std::min(snap.dops.hdop, 20.0) / std::sqrt(2.0);
     snap.sigmaEast = snap.sigmaNorth;
     snap.sigmaUp = h * 1.6 * std::min(snap.dops.vdop, 20.0);
-    snap.errNorth = errN_ * snap.sigmaNorth;
-    snap.errEast = errE_ * snap.sigmaEast;
-    snap.errUp = errU_ * snap.sigmaUp;
+    snap.errNorth = errN_ * snap.sigmaNorth * noise_;
+    snap.errEast = errE_ * snap.sigmaEast * noise_;
+    snap.errUp = errU_ * snap.sigmaUp * noise_;
     snap.sigmaVel = fix == FixKind::None ? 0 : (fix == FixKind::Fixed ? 0.01 : 0.04);
-    snap.velNorth = snap.sigmaVel * gaussian(rng_);
-    snap.velEast = snap.sigmaVel * gaussian(rng_);
-    snap.velUp = snap.sigmaVel * 1.5 * gaussian(rng_);
+    snap.velNorth = snap.sigmaVel * gaussian(rng_) * noise_;
+    snap.velEast = snap.sigmaVel * gaussian(rng_) * noise_;
+    snap.velUp = snap.sigmaVel * 1.5 * gaussian(rng_) * noise_;
 
     const wgs84::MetresPerDegree per = wgs84::metresPerDegree(observer_.latDeg);
     snap.lat = observer_.latDeg + snap.errNorth / per.north;

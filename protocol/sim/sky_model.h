@@ -96,6 +96,9 @@ public:
     static double meanMotion(double radius); // rad/s
 
     std::mt19937 &random() { return rng_; }
+    // How much of the noise reaches the output: 1 (the default) as modelled, 0 the truth (the
+    // observer's position, C/N0 by elevation alone). The same numbers are drawn either way.
+    void setNoise(double scale) { noise_ = scale; }
 
 private:
     void look(const Orbit &o, double time, double &el, double &az) const;
@@ -106,6 +109,7 @@ private:
     std::vector<double> snrBias_;      // per orbit: antenna/satellite power difference
     std::mt19937 rng_;
     double errN_ = 0, errE_ = 0, errU_ = 0, lastTime_ = -1;
+    double noise_ = 1;
 };
 
 // Geodetic position `north`/`east`/`up` metres away from (latDeg, lonDeg, height).

@@ -153,6 +153,34 @@ private slots:
         checkTold(receivers[1].toObject(), j["matched_epochs"].toInt(), 0.06);
     }
 
+    // An NV08C-RTK and a GeoS-5, each at a speed of its own, found by baud detection, reporting
+    // the truth (--noise 0) of one sky (--start now), the GeoS-5 told to differ: the numbers
+    // are what it was told, within 5 cm and 1 dB.
+    void anNv08cAndAGeoS5ToldHowToDiffer() {
+        SimProcess a({"--dialect", "nvs", "--baud", "38400", "--start", "now", "--noise", "0"});
+        SimProcess b(QStringList{"--dialect", "geostar", "--baud", "57600", "--start", "now",
+                                 "--noise", "0"} +
+                     kTold);
+        if (!a.ok() || !b.ok()) QSKIP("no pseudo-terminals");
+        const Run r = cli(
+                {"compare", "--port", a.device, "--port", b.device, "--duration", "10", "--json"});
+        QVERIFY2(r.exitCode == 0, why(r));
+        const QJsonObject j = QJsonDocument::fromJson(r.out).object();
+        QVERIFY2(j["matched_epochs"].toInt() >= 5, why(r));
+        const QJsonArray receivers = j["receivers"].toArray();
+        QCOMPARE(receivers[0].toObject()["dialect"].toString(), QString("nvs"));
+        const QJsonObject told = receivers[1].toObject();
+        QVERIFY2(std::abs(mean(told, "east") - 0.3) < 0.05, why(r));
+        QVERIFY2(std::abs(mean(told, "north") + 0.2) < 0.05, why(r));
+        QVERIFY2(std::abs(mean(told, "up") - 0.5) < 0.05, why(r));
+        QVERIFY2(std::abs(cn0(told, "GPS") + 3) < 1, why(r));
+        QVERIFY2(std::abs(cn0(told, "GLONASS") - 2) < 1, why(r));
+        QStringList onlyReference;
+        for (const QJsonValue &v : told["only_in"].toObject()["reference"].toArray())
+            onlyReference << v.toObject()["sat"].toString();
+        QVERIFY2(onlyReference.contains("G05") || onlyReference.contains("R12"), why(r));
+    }
+
     void refusals() {
         Run r = cli({"compare", "--sim", "nvs"});
         QCOMPARE(r.exitCode, 2);

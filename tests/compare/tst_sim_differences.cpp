@@ -75,6 +75,31 @@ private slots:
         QVERIFY(snap.lat < 55.75 && snap.lon > 37.62);
     }
 
+    // A start between two whole seconds: epochs stay on UTC's whole seconds, and what a receiver
+    // sends once a second (the GeoS-5's GSV, ZDA) still comes every second.
+    void aStartOfItsOwnKeepsTheUtcGrid_data() {
+        QTest::addColumn<QString>("dialect");
+        for (const char *d : {"nvs", "geostar", "nemerix", "nmea"}) QTest::newRow(d) << d;
+    }
+    void aStartOfItsOwnKeepsTheUtcGrid() {
+        QFETCH(QString, dialect);
+        SimOptions o;
+        o.startAfter = 3 * 3600 + 0.37; // 13:00:00.37
+        auto rx = builtinSimulators().make(dialect.toStdString(), o);
+        rx->advance(10.0);
+        const std::string out = rx->takeOutput();
+        QVERIFY(out.find("GGA,130001.00") != std::string::npos ||
+                out.find("GGA,130001.000") != std::string::npos);
+        QVERIFY2(out.find(".37") == std::string::npos || dialect == "nvs",
+                 out.substr(0, 300).c_str());
+        if (dialect == "geostar") {
+            std::size_t gsv = 0;
+            for (auto at = out.find("GSV,"); at != std::string::npos; at = out.find("GSV,", at + 1))
+                ++gsv;
+            QVERIFY2(gsv >= 9 * 9, qPrintable(QString::number(gsv)));
+        }
+    }
+
     void latencyHoldsOutputBack() {
         SimOptions now, later;
         later.differences.latency = 0.25;

@@ -229,8 +229,8 @@ void GeoStarReceiver::sendReports() {
 void GeoStarReceiver::onEpoch(const SkySnapshot &snap) {
     if (snap.fix != FixKind::None) validSinceStart_ = true;
     if (binary_) return;
-    const double t = time();
-    if (announce_) { // once after power-on (3.11, 3.12)
+    const double t = utcSeconds(); // every N seconds of UTC, as the receiver's clock counts
+    if (announce_) {               // once after power-on (3.11, 3.12)
         sendReports();
         announce_ = false;
         lastAllOffReport_ = t;
