@@ -19,9 +19,13 @@
 #include "link/vendor_detector.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QTimer>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <vector>
 
@@ -42,6 +46,29 @@ bool numberOption(const Args &args, const char *name, double &out) {
 
 using Kind = link::SourceSpec::Kind;
 
+// One source the command was given, opened, and what it was called on the command line.
+struct Opened {
+    std::unique_ptr<link::Connection> connection;
+    std::string source; // as given: the port, HOST:PORT, the file, the dialect simulated
+};
+
+// Opens `spec` (saying why on standard error when it cannot: rc 1, or 2 for a request refused).
+std::unique_ptr<link::Connection> openSpec(const CliContext &ctx, const link::SourceSpec &spec,
+                                           const OpenOptions &options, int &rc) {
+    // A log that cannot be replayed (missing, or an index that contradicts it) stays so: it is
+    // not retried, the command ends saying why.
+    OpenOptions o = options;
+    if (spec.kind == Kind::Replay) o.autoReconnect = false;
+    QString why;
+    bool refused = false;
+    auto conn = openConnection(ctx, spec, o, why, &refused);
+    if (!conn) {
+        std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
+        rc = refused ? 2 : 1;
+    }
+    return conn;
+}
+
 // The command's source from its arguments, opened (nullptr after saying why on standard error).
 std::unique_ptr<link::Connection> open(const CliContext &ctx, const Args &args,
                                        std::initializer_list<Kind> allowed,
@@ -53,18 +80,71 @@ std::unique_ptr<link::Connection> open(const CliContext &ctx, const Args &args,
         rc = 2;
         return nullptr;
     }
-    // A log that cannot be replayed (missing, or an index that contradicts it) stays so: it is
-    // not retried, the command ends saying why.
-    OpenOptions o = options;
-    if (spec->kind == Kind::Replay) o.autoReconnect = false;
-    QString why;
-    bool refused = false;
-    auto conn = openConnection(ctx, *spec, o, why, &refused);
-    if (!conn) {
-        std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
-        rc = refused ? 2 : 1;
+    return openSpec(ctx, *spec, options, rc);
+}
+
+// How many sources the arguments give (each source option may be repeated).
+std::size_t sourceCount(const Args &args) {
+    std::size_t n = 0;
+    for (const auto &[name, value] : args.inOrder()) n += !name.empty() && sourceKindOf(name);
+    return n;
+}
+
+// Every source the arguments give, in their order, opened; empty after saying why (rc set).
+std::vector<Opened> openAll(const CliContext &ctx, const Args &args,
+                            std::initializer_list<Kind> allowed, const OpenOptions &options,
+                            int &rc) {
+    std::vector<link::SourceSpec> specs;
+    std::vector<std::string> given;
+    for (const auto &[name, value] : args.inOrder()) {
+        const auto kind = name.empty() ? std::nullopt : sourceKindOf(name);
+        if (!kind) continue;
+        std::string error;
+        auto spec = std::find(allowed.begin(), allowed.end(), *kind) == allowed.end()
+                            ? std::nullopt
+                            : sourceSpecOf(*kind, value, error);
+        if (!spec) {
+            std::fprintf(stderr, "gnss-cli: %s\n",
+                         error.empty() ? ("this command does not take --" + name).c_str()
+                                       : error.c_str());
+            rc = 2;
+            return {};
+        }
+        if (const auto b = args.option("baud")) spec->baud = std::atoi(b->c_str());
+        specs.push_back(*spec);
+        given.push_back(*kind == Kind::Simulator ? "sim " + value : value);
     }
-    return conn;
+    std::vector<Opened> out;
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        auto conn = openSpec(ctx, specs[i], options, rc);
+        if (!conn) return {};
+        out.push_back({std::move(conn), given[i]});
+    }
+    return out;
+}
+
+// `json` (one object) with "receiver" (its place among the sources) and "source" first.
+std::string tagged(const std::string &json, std::size_t receiver, const std::string &source) {
+    std::string head;
+    JsonWriter w(head);
+    // Left open: the object goes on with `json`'s own fields.
+    w.beginObject().field("receiver", static_cast<std::uint64_t>(receiver)).field("source", source);
+    return head + "," + json.substr(1);
+}
+
+// A file name for what `source` names ("/dev/ttyUSB0" -> "ttyUSB0.nmea"), unique in `taken`.
+std::string fileNameFor(std::string source, std::vector<std::string> &taken) {
+    if (const auto slash = source.rfind('/');
+        slash != std::string::npos && slash + 1 < source.size())
+        source = source.substr(slash + 1);
+    for (char &c : source)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_')
+            c = '_';
+    std::string name = source + ".nmea";
+    for (int n = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++n)
+        name = source + "-" + std::to_string(n) + ".nmea";
+    taken.push_back(name);
+    return name;
 }
 
 // A run that its --duration ended without a byte received failed (1), and says so.
@@ -167,42 +247,76 @@ int cmdMonitor(const CliContext &ctx) {
     // Nothing is missed: the decoder is listened to before the link opens.
     o.waitUntilOpen = false;
     int rc = 0;
-    auto conn = open(ctx, args,
-                     {Kind::Serial, Kind::Tcp, Kind::Gpsd, Kind::Replay, Kind::Simulator}, o, rc);
-    if (!conn) return rc;
-    auto *replay = qobject_cast<link::ReplayTransport *>(conn->transport());
+    const std::initializer_list<Kind> kinds{Kind::Serial, Kind::Tcp, Kind::Gpsd, Kind::Replay,
+                                            Kind::Simulator};
+    std::vector<Opened> opened;
+    if (sourceCount(args) > 1) {
+        opened = openAll(ctx, args, kinds, o, rc);
+    } else if (auto conn = open(ctx, args, kinds, o, rc)) {
+        opened.push_back({std::move(conn), {}});
+    }
+    if (opened.empty()) return rc;
+    // Several: each line says whose it is.
+    const bool several = opened.size() > 1;
     const bool epochs = args.flag("epochs");
-    EpochAssembler assembler(conn->stream()->dialect());
-    auto onEpoch = [](const Epoch &e) { printJson([&](JsonWriter &w) { e.writeJson(w); }); };
-    link::Connection *c = conn.get();
-    std::size_t sentences = 0; // decoded ones
-    QObject::connect(c->stream(), &link::SentenceStream::sentenceDecoded,
-                     [&, c](const SentenceEvent &ev) {
-                         if (ev.message) ++sentences;
-                         if (epochs) {
-                             if (!ev.message) return;
-                             assembler.setDialect(c->stream()->dialect());
-                             assembler.add(ev.sentence, *ev.message, onEpoch);
-                             return;
-                         }
-                         printJson([&](JsonWriter &w) { writeSentenceEventJson(w, ev); });
-                     });
-    reportLinkEvents(*c, "");
-    bool replayed = false; // to its end
-    if (replay)
-        QObject::connect(replay, &link::ReplayTransport::finished, [&replayed] {
-            replayed = true;
-            QCoreApplication::exit(0);
-        });
+    std::vector<std::unique_ptr<EpochAssembler>> assemblers;
+    std::vector<std::size_t> sentences(opened.size(), 0); // decoded ones
+    std::size_t replays = 0, replayed = 0;
+    for (std::size_t i = 0; i < opened.size(); ++i) {
+        link::Connection *c = opened[i].connection.get();
+        const std::string source = opened[i].source;
+        auto print = [several, i, source](auto &&write) {
+            std::string json;
+            JsonWriter w(json);
+            write(w);
+            printLine(several ? tagged(json, i, source) : json);
+        };
+        assemblers.push_back(std::make_unique<EpochAssembler>(c->stream()->dialect()));
+        EpochAssembler *assembler = assemblers.back().get();
+        QObject::connect(c->stream(), &link::SentenceStream::sentenceDecoded,
+                         [&, c, i, assembler, print](const SentenceEvent &ev) {
+                             if (ev.message) ++sentences[i];
+                             if (epochs) {
+                                 if (!ev.message) return;
+                                 assembler->setDialect(c->stream()->dialect());
+                                 assembler->add(ev.sentence, *ev.message, [&](const Epoch &e) {
+                                     print([&](JsonWriter &w) { e.writeJson(w); });
+                                 });
+                                 return;
+                             }
+                             print([&](JsonWriter &w) { writeSentenceEventJson(w, ev); });
+                         });
+        reportLinkEvents(*c, "");
+        if (auto *replay = qobject_cast<link::ReplayTransport *>(c->transport())) {
+            ++replays;
+            // The end of the replays (all of them) ends the run.
+            QObject::connect(replay, &link::ReplayTransport::finished, [&] {
+                if (++replayed == replays && replays == opened.size()) QCoreApplication::exit(0);
+            });
+        }
+    }
     loop.stopAfter(duration);
     rc = loop.exec();
-    if (epochs) assembler.flush(onEpoch);
-    if (replayed && rc == 0 && sentences == 0) {
-        // A file that is not NMEA (or is empty) played to its end: said so, as `play` does.
-        std::fprintf(stderr, "gnss-cli: %s: no NMEA found\n", utf8(replay->description()).c_str());
-        return 1;
+    for (std::size_t i = 0; i < opened.size(); ++i) {
+        link::Connection &c = *opened[i].connection;
+        if (epochs)
+            assemblers[i]->flush([&](const Epoch &e) {
+                std::string json;
+                JsonWriter w(json);
+                e.writeJson(w);
+                printLine(several ? tagged(json, i, opened[i].source) : json);
+            });
+        auto *replay = qobject_cast<link::ReplayTransport *>(c.transport());
+        if (replay && replayed == replays && rc == 0 && sentences[i] == 0) {
+            // A file that is not NMEA (or is empty) played to its end: said so, as `play` does.
+            std::fprintf(stderr, "gnss-cli: %s: no NMEA found\n",
+                         utf8(replay->description()).c_str());
+            rc = 1;
+        } else if (!replay) {
+            rc = statusAtDuration(rc, c, duration);
+        }
     }
-    return replay ? rc : statusAtDuration(rc, *c, duration);
+    return rc;
 }
 
 int cmdRecord(const CliContext &ctx) {
@@ -218,20 +332,49 @@ int cmdRecord(const CliContext &ctx) {
     OpenOptions o;
     o.waitUntilOpen = false;
     int rc = 0;
-    auto conn = open(ctx, args, {Kind::Serial, Kind::Tcp, Kind::Gpsd, Kind::Simulator}, o, rc);
-    if (!conn) return rc;
-    reportLinkEvents(*conn, " (recording goes on)");
-    if (!conn->startRecording(QString::fromStdString(*outPath))) {
-        std::fprintf(stderr, "gnss-cli: %s\n", utf8(conn->recorder()->errorString()).c_str());
-        return 1;
+    const std::initializer_list<Kind> kinds{Kind::Serial, Kind::Tcp, Kind::Gpsd, Kind::Simulator};
+    const bool several = sourceCount(args) > 1;
+    std::vector<Opened> opened;
+    if (several) {
+        opened = openAll(ctx, args, kinds, o, rc);
+    } else if (auto conn = open(ctx, args, kinds, o, rc)) {
+        opened.push_back({std::move(conn), {}});
+    }
+    if (opened.empty()) return rc;
+    // Several: --out is a folder, and each receiver's file is named after its source.
+    std::vector<std::string> paths, taken;
+    if (several) {
+        const QString folder = QString::fromStdString(*outPath);
+        if (!QDir().mkpath(folder)) {
+            std::fprintf(stderr, "gnss-cli: cannot make the folder %s\n", outPath->c_str());
+            return 1;
+        }
+        for (const Opened &x : opened)
+            paths.push_back(QDir(folder)
+                                    .filePath(QString::fromStdString(fileNameFor(x.source, taken)))
+                                    .toStdString());
+    } else {
+        paths.push_back(*outPath);
+    }
+    for (std::size_t i = 0; i < opened.size(); ++i) {
+        link::Connection &c = *opened[i].connection;
+        reportLinkEvents(c, " (recording goes on)");
+        if (!c.startRecording(QString::fromStdString(paths[i]))) {
+            std::fprintf(stderr, "gnss-cli: %s\n", utf8(c.recorder()->errorString()).c_str());
+            return 1;
+        }
     }
     loop.stopAfter(duration);
     rc = loop.exec();
-    conn->stopRecording();
-    std::fprintf(stderr, "gnss-cli: recorded %lld bytes to %s (index: %s)\n",
-                 static_cast<long long>(conn->bytesReceived()), outPath->c_str(),
-                 utf8(link::indexPathFor(QString::fromStdString(*outPath))).c_str());
-    return statusAtDuration(rc, *conn, duration);
+    for (std::size_t i = 0; i < opened.size(); ++i) {
+        link::Connection &c = *opened[i].connection;
+        c.stopRecording();
+        std::fprintf(stderr, "gnss-cli: recorded %lld bytes to %s (index: %s)\n",
+                     static_cast<long long>(c.bytesReceived()), paths[i].c_str(),
+                     utf8(link::indexPathFor(QString::fromStdString(paths[i]))).c_str());
+        rc = statusAtDuration(rc, c, duration);
+    }
+    return rc;
 }
 
 int cmdSend(const CliContext &ctx) {

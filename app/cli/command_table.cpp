@@ -236,7 +236,9 @@ constexpr CommandSpec kCommands[] = {
          "Decodes live: one JSON object per sentence as decode prints, or per epoch with --epochs "
          "as epochs prints. A lost serial, TCP or gpsd link is reported on standard error and "
          "retried. "
-         "Runs until --duration, the end of a replay, or Ctrl-C.\n"
+         "Runs until --duration, the end of a replay, or Ctrl-C. Several sources (the source "
+         "options repeated: --port A --port B --sim nvs) are monitored at once, each line "
+         "starting with receiver (its place among them, from 0) and source (as given).\n"
          "Exit status: 0 ended by --duration or the end of the replay, 1 the source cannot be "
          "opened or sent nothing within --duration, 2 usage error or a device gpsd does not "
          "have, 130 interrupted (Ctrl-C; 143 for SIGTERM).\n",
@@ -247,7 +249,9 @@ constexpr CommandSpec kCommands[] = {
          "record a receiver to FILE and FILE.idx", kRecordOptions,
          "Writes FILE (exactly the bytes received) and FILE.idx (when they came, gaps). A lost "
          "link is retried and the recording goes on in the same files with a gap mark. Runs "
-         "until --duration or Ctrl-C; the files are flushed and closed either way.\n"
+         "until --duration or Ctrl-C; the files are flushed and closed either way. With several "
+         "sources (the source options repeated), --out names a folder and each receiver's "
+         "recording in it is named after its source (ttyUSB0.nmea, sim_nvs.nmea).\n"
          "Exit status: 0 ended by --duration, 1 the source or FILE cannot be opened or nothing was "
          "received within --duration, 2 usage error or a device gpsd does not have, 130 "
          "interrupted (Ctrl-C; 143 for SIGTERM).\n",

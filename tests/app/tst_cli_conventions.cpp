@@ -192,7 +192,7 @@ private slots:
         for (const QStringList &args :
              {QStringList{"decode", "--dialect", "garmin", "-"}, QStringList{"decode", "a", "b"},
               QStringList{"schema"}, QStringList{"schema", "garmin"}, QStringList{"encode", "nvs"},
-              QStringList{"probe"}, QStringList{"monitor", "--port", "a", "--tcp", "b:1"},
+              QStringList{"probe"}, QStringList{"monitor", "--port", "a", "--tcp", "b"},
               QStringList{"record"},
               QStringList{"send", "--port", "/dev/null-no-such-port", "PN$VG"},
               QStringList{"config", "get"}, QStringList{"config", "--sim", "nvs"},

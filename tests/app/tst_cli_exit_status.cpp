@@ -182,8 +182,14 @@ private slots:
             "no data received from 127.0.0.1:");
         row("monitor: a missing port", {"monitor", "--port", "/dev/ttyGNSSWorkbenchNoSuch"}, 1,
             "/dev/ttyGNSSWorkbenchNoSuch");
-        row("monitor: two sources", {"monitor", "--sim", "nvs", "--tcp", "%SILENT%"}, 2,
-            "give one source");
+        row("monitor: several sources",
+            {"monitor", "--sim", "nvs", "--sim", "nmea", "--duration", "1"}, 0);
+        row("monitor: one silent among several",
+            {"monitor", "--sim", "nvs", "--tcp", "%SILENT%", "--duration", "1"}, 1,
+            "no data received from 127.0.0.1:");
+        row("monitor: a malformed one among several", {"monitor", "--sim", "nvs", "--tcp", "b"}, 2,
+            "--tcp takes HOST:PORT");
+        row("monitor: no source", {"monitor"}, 2, "give one source");
         row("monitor: an argument", {"monitor", "--sim", "nvs", "extra"}, 2, "unexpected argument");
 
         row("record: a receiver",
@@ -194,6 +200,9 @@ private slots:
         row("record: OUT not writable", {"record", "--sim", "nvs", "--out", "/nonexistent/d/r"}, 1,
             "/nonexistent/d/r");
         row("record: no OUT", {"record", "--sim", "nvs"}, 2, "--out");
+        row("record: several into a folder",
+            {"record", "--sim", "nvs", "--sim", "nmea", "--out", "%DIR%/bench", "--duration", "1"},
+            0, "%DIR%/bench/sim_nmea.nmea");
 
         row("send: accepted", {"send", "--sim", "nvs", "PNVGVER"}, 0);
         row("send: unanswered", {"send", "--sim", "nvs", "--timeout", "0.2", "$PNVGRZA,9,1,1"}, 1);

@@ -161,6 +161,44 @@ private slots:
         QVERIFY(epochs.out.count('\n') >= 1);
     }
 
+    // Several sources at once: monitor tags each line with its receiver (its place among the
+    // sources, and the source as given); record writes one file per receiver into the --out
+    // folder, named after it; a receiver whose line drops (the hang-up fault) leaves the other's
+    // recording whole.
+    void severalSourcesAtOnce() {
+        const Run mon =
+                cli({"monitor", "--sim", "nvs", "--sim", "geostar", "--epochs", "--duration", "2"});
+        QVERIFY2(mon.exitCode == 0, mon.err.constData());
+        int seen[2] = {0, 0};
+        for (const QByteArray &line : mon.out.trimmed().split('\n')) {
+            const QJsonObject o = QJsonDocument::fromJson(line).object();
+            const int r = o["receiver"].toInt(-1);
+            QVERIFY2(r == 0 || r == 1, line.constData());
+            QCOMPARE(o["source"].toString(), QString(r == 0 ? "sim nvs" : "sim geostar"));
+            QVERIFY(o.contains("fix"));
+            ++seen[r];
+        }
+        QVERIFY(seen[0] > 0 && seen[1] > 0);
+
+        SimProcess a({"--dialect", "nmea", "--baud", "38400"});
+        SimProcess b({"--dialect", "nmea", "--baud", "57600", "--faults", "hangup=6/1"});
+        REQUIRE_SIM(a);
+        REQUIRE_SIM(b);
+        QTemporaryDir dir;
+        const Run rec = cli({"record", "--port", a.device, "--port", b.device, "--out",
+                             dir.filePath("bench"), "--duration", "6"});
+        QVERIFY2(rec.exitCode == 0, rec.err.constData());
+        QVERIFY2(rec.err.contains("link lost"), rec.err.constData()); // b's line went
+        const QString fa = dir.filePath("bench/" + QFileInfo(a.device).fileName() + ".nmea");
+        const QString fb = dir.filePath("bench/" + QFileInfo(b.device).fileName() + ".nmea");
+        QVERIFY2(QFile::exists(fa) && QFile::exists(fb), rec.err.constData());
+        // a's recording is whole: every epoch, none cut.
+        const Run decoded = cli({"stats", "--json", fa});
+        const QJsonObject stats = QJsonDocument::fromJson(decoded.out).object();
+        QVERIFY2(stats["epochs"].toInt() >= 5, decoded.out.constData());
+        QCOMPARE(stats["bytes_skipped"].toInt(), 0);
+    }
+
     // monitor --replay of a file that cannot be replayed ends at once with status 1 and says
     // why: a broken index is not retried (it would not mend), a file that is not NMEA is named.
     void aReplayThatCannotBeReadEndsSayingWhy_data() {
