@@ -13,6 +13,8 @@
 #include "core/json_writer.h"
 #include "core/stream_decoder.h"
 #include "link/sentence_stream.h"
+#include "link/transport.h"
+#include "link/vendor_detector.h"
 #include "state/epoch_assembler.h"
 
 #include <QCoreApplication>
@@ -133,6 +135,8 @@ int cmdCompare(const CliContext &ctx) {
         EventLoop loop;
         std::vector<std::unique_ptr<link::Connection>> connections;
         std::vector<std::unique_ptr<EpochAssembler>> assemblers;
+        std::vector<std::unique_ptr<link::VendorDetector>> detectors;
+        std::vector<link::VendorIdentity> identities(sources.size());
         for (std::size_t i = 0; i < sources.size(); ++i) {
             link::SourceSpec spec =
                     sources[i].live ? *sources[i].live
@@ -162,17 +166,37 @@ int cmdCompare(const CliContext &ctx) {
                                          comparison.add(i, std::move(*obs), onMatch);
                                  });
                              });
+            // Who is on the line (its model, for its name; its dialect, for its numbering), from
+            // its output and, where it may be written to, its probe, as the window does.
+            auto detector = std::make_unique<link::VendorDetector>(c->stream());
+            detector->setActive(c->transport()->canWrite());
+            QObject::connect(detector.get(), &link::VendorDetector::finished,
+                             [&, i, c](const link::VendorIdentity &id) {
+                                 identities[i] = id;
+                                 if (const Dialect *d = ctx.registry.find(utf8(id.dialect)))
+                                     c->stream()->setDialect(d);
+                             });
+            auto start = [d = detector.get()] { d->start(); };
+            if (c->transport()->isOpen())
+                start();
+            else
+                QObject::connect(c, &link::Connection::opened, detector.get(), start);
+            detectors.push_back(std::move(detector));
             connections.push_back(std::move(conn));
         }
         loop.stopAfter(duration);
         rc = loop.exec();
         for (std::size_t i = 0; i < connections.size(); ++i) {
+            const link::VendorIdentity &id = identities[i];
             const Dialect *d = connections[i]->stream()->dialect();
-            comparison.setDialect(i, dialectId(d));
-            // Named by the receiver found on the line and where it is.
-            if (d)
-                comparison.setName(i, std::string(d->displayName) + " " +
-                                              utf8(connections[i]->transport()->description()));
+            comparison.setDialect(i, id.found ? utf8(id.dialect) : dialectId(d));
+            // Named by the receiver found on the line (its model where it says it) and where.
+            const std::string who = !id.model.isEmpty() ? utf8(id.model)
+                                    : id.found          ? utf8(id.dialectName)
+                                    : d                 ? std::string(d->displayName)
+                                                        : std::string();
+            const std::string where = utf8(connections[i]->transport()->description());
+            if (!who.empty()) comparison.setName(i, who + " " + where);
         }
     }
     const compare::Report report = comparison.report();

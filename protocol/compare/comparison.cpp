@@ -25,8 +25,12 @@ bool before(SatelliteRef a, SatelliteRef b) {
 
 std::vector<SatelliteRef> satellitesOf(const Observation &o) {
     std::vector<SatelliteRef> out;
+    // A satellite of no known system (numbered before the receiver's dialect was known) cannot
+    // be matched with another receiver's: left out.
     for (const SignalLevel &s : o.levels)
-        if (std::find(out.begin(), out.end(), s.sat) == out.end()) out.push_back(s.sat);
+        if (s.sat.system != Constellation::Unknown &&
+            std::find(out.begin(), out.end(), s.sat) == out.end())
+            out.push_back(s.sat);
     std::sort(out.begin(), out.end(), before);
     return out;
 }

@@ -169,6 +169,12 @@ private slots:
         QVERIFY2(j["matched_epochs"].toInt() >= 5, why(r));
         const QJsonArray receivers = j["receivers"].toArray();
         QCOMPARE(receivers[0].toObject()["dialect"].toString(), QString("nvs"));
+        // Each named by its model (its probe's answer) and its port.
+        QCOMPARE(receivers[1].toObject()["dialect"].toString(), QString("geostar"));
+        QVERIFY2(receivers[0].toObject()["name"].toString().startsWith("NV08C") &&
+                         receivers[0].toObject()["name"].toString().contains(a.device),
+                 why(r));
+        QVERIFY2(receivers[1].toObject()["name"].toString().contains(b.device), why(r));
         const QJsonObject told = receivers[1].toObject();
         QVERIFY2(std::abs(mean(told, "east") - 0.3) < 0.05, why(r));
         QVERIFY2(std::abs(mean(told, "north") + 0.2) < 0.05, why(r));
