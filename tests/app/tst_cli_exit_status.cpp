@@ -11,6 +11,7 @@
 // RTCM; each row's placeholders (%LOG%, %SILENT% ...) name them.
 #include "cli_run.h"
 #include "local_port.h"
+#include "ntrip_cli_run.h"
 #include "rtcm_fixtures.h"
 #include "test_caster.h"
 
@@ -66,29 +67,11 @@ class TstCliExitStatus : public QObject {
     // gnss-cli run to its end while this thread's event loop serves the silent server and the
     // caster (which sends an epoch of RTCM to its streaming clients every 100 ms).
     Run run(const QStringList &args, const QByteArray &input) {
-        QProcess p;
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("TEST_NTRIP_PW", QString::fromUtf8(caster_.password));
-        p.setProcessEnvironment(env);
-        QTimer pump;
-        connect(&pump, &QTimer::timeout, this, [this] {
+        return gnss::test::runCliServing(args, input, env, [this] {
             if (caster_.streamingClients() > 0) caster_.send(rtcm_[fed_++ % rtcm_.size()]);
         });
-        pump.start(100);
-        QSignalSpy done(&p, &QProcess::finished);
-        p.start(QStringLiteral(GNSS_CLI_PATH), args);
-        if (!input.isEmpty()) p.write(input);
-        p.closeWriteChannel();
-        if (!done.wait(60000)) {
-            p.kill();
-            p.waitForFinished();
-        }
-        Run r;
-        r.status = p.exitStatus();
-        r.exitCode = r.status == QProcess::NormalExit ? p.exitCode() : -1;
-        r.out = p.readAllStandardOutput();
-        r.err = p.readAllStandardError();
-        return r;
     }
 
 private slots:

@@ -1,5 +1,6 @@
 #pragma once
-// gnss-cli ntrip run to its end while the test's own event loop keeps serving the test caster
+// gnss-cli run to its end while the test's own event loop keeps serving its servers; and
+// gnss-cli ntrip so, serving the test caster
 // (tests/support/test_caster.h lives on the test's thread): the password in TEST_NTRIP_PW
 // (`--password-env TEST_NTRIP_PW`), `feed` called every 100 ms to push data.
 #include "cli_run.h"
@@ -13,12 +14,13 @@
 
 namespace gnss::test {
 
-inline Run runNtripCli(const QStringList &args, const QString &password,
-                       const std::function<void()> &feed = {}, const QString &dir = {},
-                       int timeoutMs = 60000) {
+// gnss-cli run to its end while this thread's event loop goes on serving the test's own servers:
+// `input` on its standard input (closed after), `env` added to its environment, `feed` called
+// every 100 ms.
+inline Run runCliServing(const QStringList &args, const QByteArray &input,
+                         const QProcessEnvironment &env, const std::function<void()> &feed = {},
+                         const QString &dir = {}, int timeoutMs = 60000) {
     QProcess p;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("TEST_NTRIP_PW"), password);
     p.setProcessEnvironment(env);
     if (!dir.isEmpty()) p.setWorkingDirectory(dir);
     QTimer pump;
@@ -28,6 +30,8 @@ inline Run runNtripCli(const QStringList &args, const QString &password,
     }
     QSignalSpy done(&p, &QProcess::finished);
     p.start(QStringLiteral(GNSS_CLI_PATH), args);
+    if (!input.isEmpty()) p.write(input);
+    p.closeWriteChannel();
     done.wait(timeoutMs);
     if (p.state() != QProcess::NotRunning) {
         p.kill();
@@ -39,6 +43,14 @@ inline Run runNtripCli(const QStringList &args, const QString &password,
     r.out = p.readAllStandardOutput();
     r.err = p.readAllStandardError();
     return r;
+}
+
+inline Run runNtripCli(const QStringList &args, const QString &password,
+                       const std::function<void()> &feed = {}, const QString &dir = {},
+                       int timeoutMs = 60000) {
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("TEST_NTRIP_PW"), password);
+    return runCliServing(args, {}, env, feed, dir, timeoutMs);
 }
 
 } // namespace gnss::test
