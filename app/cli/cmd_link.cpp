@@ -110,7 +110,17 @@ std::vector<Opened> openAll(const CliContext &ctx, const Args &args,
             rc = 2;
             return {};
         }
-        if (const auto b = args.option("baud")) spec->baud = std::atoi(b->c_str());
+        if (const auto b = args.option("baud")) {
+            // As one source's --baud is checked (cli_source.cpp): a speed, or a usage error.
+            spec->baud = std::atoi(b->c_str());
+            if (spec->baud < 300 || spec->baud > 4000000) {
+                std::fprintf(stderr, "gnss-cli: --baud expects a speed such as 9600 or 115200, "
+                                     "got '%s'\n",
+                             b->c_str());
+                rc = 2;
+                return {};
+            }
+        }
         specs.push_back(*spec);
         given.push_back(*kind == Kind::Simulator ? "sim " + value : value);
     }

@@ -173,6 +173,8 @@ private slots:
         row("monitor: a malformed one among several", {"monitor", "--sim", "nvs", "--tcp", "b"}, 2,
             "--tcp takes HOST:PORT");
         row("monitor: no source", {"monitor"}, 2, "give one source");
+        row("monitor: several at a speed that is none",
+            {"monitor", "--sim", "nvs", "--sim", "nmea", "--baud", "fast"}, 2, "--baud expects");
         row("monitor: an argument", {"monitor", "--sim", "nvs", "extra"}, 2, "unexpected argument");
 
         row("record: a receiver",
