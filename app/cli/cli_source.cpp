@@ -125,36 +125,13 @@ sourceFromArgs(const Args &args, std::initializer_list<Kind> allowed, std::strin
     return found;
 }
 
-std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
-                                                 const link::SourceSpec &spec,
-                                                 const OpenOptions &options, QString &error,
-                                                 bool *refused) {
-    if (!ctx.transports) {
-        error = QStringLiteral("no transports in this program");
-        return nullptr;
-    }
-    link::LinkOpener opener(*ctx.transports, ctx.registry);
-    QEventLoop loop;
-    bool failed = false;
-    QObject::connect(&opener, &link::LinkOpener::tryingRate, [&opener](int baud) {
-        const int before = int(opener.detection().tried.size()) - 1;
-        if (before > 0)
-            std::fprintf(
-                    stderr, "gnss-cli: baud %s; trying %d\n",
-                    link::LinkOpener::attemptsText(opener.detection(), before).toUtf8().constData(),
-                    baud);
-        else
-            std::fprintf(stderr, "gnss-cli: detecting the baud rate: trying %d\n", baud);
-    });
-    QObject::connect(&opener, &link::LinkOpener::ready, &loop, &QEventLoop::quit);
-    QObject::connect(&opener, &link::LinkOpener::failed, [&](const QString &why) {
-        failed = true;
-        error = why;
-        loop.quit();
-    });
-    opener.start(spec, options.decoder);
-    if (opener.isDetecting()) loop.exec();
-    if (options.detection) *options.detection = opener.detection();
+namespace {
+
+// What is left to open a connection once its opener is done (its speed found, or not needed).
+std::unique_ptr<link::Connection> finishOpening(link::LinkOpener &opener, bool failed,
+                                                const OpenOptions &options,
+                                                const std::string &label, QString &error,
+                                                bool *refused) {
     if (failed) return nullptr;
     std::unique_ptr<link::Connection> conn = opener.takeConnection();
     if (!conn) {
@@ -162,7 +139,8 @@ std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
         return nullptr;
     }
     if (!opener.detection().tried.empty())
-        std::fprintf(stderr, "gnss-cli: baud %d found (%s)\n", opener.detection().baud,
+        std::fprintf(stderr, "gnss-cli: %sbaud %d found (%s)\n", label.c_str(),
+                     opener.detection().baud,
                      link::LinkOpener::attemptsText(opener.detection()).toUtf8().constData());
     conn->setAutoReconnect(options.autoReconnect);
     if (!conn->open()) {
@@ -190,6 +168,81 @@ std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
         }
     }
     return conn;
+}
+
+} // namespace
+
+std::vector<std::unique_ptr<link::Connection>>
+openConnections(const CliContext &ctx, const std::vector<link::SourceSpec> &specs,
+                const OpenOptions &options, QString &error, bool *refused) {
+    if (!ctx.transports) {
+        error = QStringLiteral("no transports in this program");
+        return {};
+    }
+    // Every source's speed is looked for at once: four ports take as long as the slowest.
+    struct Opening {
+        std::unique_ptr<link::LinkOpener> opener;
+        bool done = false, failed = false;
+        QString why;
+        std::string label; // "PORT: " before its messages when there are several
+    };
+    std::vector<Opening> openings(specs.size());
+    QEventLoop loop;
+    std::size_t pending = 0;
+    auto finished = [&](Opening &o) {
+        if (o.done) return;
+        o.done = true;
+        if (--pending == 0) loop.quit();
+    };
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        Opening &o = openings[i];
+        o.opener = std::make_unique<link::LinkOpener>(*ctx.transports, ctx.registry);
+        if (specs.size() > 1) o.label = specs[i].name.toStdString() + ": ";
+        link::LinkOpener *opener = o.opener.get();
+        QObject::connect(opener, &link::LinkOpener::tryingRate, [opener, &o](int baud) {
+            const int before = int(opener->detection().tried.size()) - 1;
+            if (before > 0)
+                std::fprintf(stderr, "gnss-cli: %sbaud %s; trying %d\n", o.label.c_str(),
+                             link::LinkOpener::attemptsText(opener->detection(), before)
+                                     .toUtf8()
+                                     .constData(),
+                             baud);
+            else
+                std::fprintf(stderr, "gnss-cli: %sdetecting the baud rate: trying %d\n",
+                             o.label.c_str(), baud);
+        });
+        QObject::connect(opener, &link::LinkOpener::ready, [&o, finished] { finished(o); });
+        QObject::connect(opener, &link::LinkOpener::failed, [&o, finished](const QString &why) {
+            o.failed = true;
+            o.why = why;
+            finished(o);
+        });
+        ++pending;
+        opener->start(specs[i], options.decoder);
+        if (!opener->isDetecting() && !o.done) {
+            o.done = true;
+            --pending;
+        }
+    }
+    if (pending > 0) loop.exec();
+    if (options.detection && !openings.empty())
+        *options.detection = openings.front().opener->detection();
+    std::vector<std::unique_ptr<link::Connection>> out;
+    for (Opening &o : openings) {
+        error = o.why;
+        auto conn = finishOpening(*o.opener, o.failed, options, o.label, error, refused);
+        if (!conn) return {};
+        out.push_back(std::move(conn));
+    }
+    return out;
+}
+
+std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
+                                                 const link::SourceSpec &spec,
+                                                 const OpenOptions &options, QString &error,
+                                                 bool *refused) {
+    auto all = openConnections(ctx, {spec}, options, error, refused);
+    return all.empty() ? nullptr : std::move(all.front());
 }
 
 // Link events on standard error; a link that cannot be opened and will not be retried ends the

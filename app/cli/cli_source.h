@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gnss::cli {
 
@@ -55,6 +56,12 @@ std::unique_ptr<link::Connection> openConnection(const CliContext &ctx,
 // Link events on standard error ("... trying again in 2 s" + `note`); a link that cannot be opened
 // and will not be retried ends the event loop with status 1 (2 for a device gpsd lacks).
 void reportLinkEvents(link::Connection &conn, const char *note);
+
+// Several sources opened together, their speeds detected at once (messages prefixed with each
+// one's name); empty with `error` set when one cannot be opened.
+std::vector<std::unique_ptr<link::Connection>>
+openConnections(const CliContext &ctx, const std::vector<link::SourceSpec> &specs,
+                const OpenOptions &options, QString &error, bool *refused = nullptr);
 
 // A command's result as one JSON line: sentence, outcome, detail, (with `timing`: attempts and
 // ms), the replies, and the speed it switched to (when it did).

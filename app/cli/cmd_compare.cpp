@@ -137,22 +137,25 @@ int cmdCompare(const CliContext &ctx) {
         std::vector<std::unique_ptr<EpochAssembler>> assemblers;
         std::vector<std::unique_ptr<link::VendorDetector>> detectors;
         std::vector<link::VendorIdentity> identities(sources.size());
+        std::vector<link::SourceSpec> specs;
+        for (const Source &src : sources)
+            specs.push_back(
+                    src.live ? *src.live
+                             : link::SourceSpec{Kind::Replay, QString::fromStdString(src.file)});
+        OpenOptions o;
+        o.decoder = decoderOptions;
+        o.waitUntilOpen = false; // nothing missed: listened to before it opens
+        QString why;
+        bool refused = false;
+        // Every port's speed is looked for at once.
+        auto opened = openConnections(ctx, specs, o, why, &refused);
+        if (opened.empty()) {
+            std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
+            return refused ? 2 : 1;
+        }
         for (std::size_t i = 0; i < sources.size(); ++i) {
-            link::SourceSpec spec =
-                    sources[i].live ? *sources[i].live
-                                    : link::SourceSpec{Kind::Replay,
-                                                       QString::fromStdString(sources[i].file)};
-            OpenOptions o;
-            o.decoder = decoderOptions;
-            o.waitUntilOpen = false; // nothing missed: listened to before it opens
-            o.autoReconnect = spec.kind != Kind::Replay;
-            QString why;
-            bool refused = false;
-            auto conn = openConnection(ctx, spec, o, why, &refused);
-            if (!conn) {
-                std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
-                return refused ? 2 : 1;
-            }
+            auto conn = std::move(opened[i]);
+            if (specs[i].kind == Kind::Replay) conn->setAutoReconnect(false);
             reportLinkEvents(*conn, "");
             assemblers.push_back(std::make_unique<EpochAssembler>(conn->stream()->dialect()));
             EpochAssembler *assembler = assemblers.back().get();

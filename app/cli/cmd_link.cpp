@@ -114,8 +114,9 @@ std::vector<Opened> openAll(const CliContext &ctx, const Args &args,
             // As one source's --baud is checked (cli_source.cpp): a speed, or a usage error.
             spec->baud = std::atoi(b->c_str());
             if (spec->baud < 300 || spec->baud > 4000000) {
-                std::fprintf(stderr, "gnss-cli: --baud expects a speed such as 9600 or 115200, "
-                                     "got '%s'\n",
+                std::fprintf(stderr,
+                             "gnss-cli: --baud expects a speed such as 9600 or 115200, "
+                             "got '%s'\n",
                              b->c_str());
                 rc = 2;
                 return {};
@@ -124,11 +125,19 @@ std::vector<Opened> openAll(const CliContext &ctx, const Args &args,
         specs.push_back(*spec);
         given.push_back(*kind == Kind::Simulator ? "sim " + value : value);
     }
+    QString why;
+    bool refused = false;
+    auto connections = openConnections(ctx, specs, options, why, &refused);
+    if (connections.empty()) {
+        std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
+        rc = refused ? 2 : 1;
+        return {};
+    }
     std::vector<Opened> out;
     for (std::size_t i = 0; i < specs.size(); ++i) {
-        auto conn = openSpec(ctx, specs[i], options, rc);
-        if (!conn) return {};
-        out.push_back({std::move(conn), given[i]});
+        // A log that cannot be replayed stays so: not retried.
+        if (specs[i].kind == Kind::Replay) connections[i]->setAutoReconnect(false);
+        out.push_back({std::move(connections[i]), given[i]});
     }
     return out;
 }
