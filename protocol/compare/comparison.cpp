@@ -147,27 +147,80 @@ void Comparison::match(std::int64_t key, const MatchFn &onMatch) {
     const Observation &ref = *m.observations.front();
     for (std::size_t i = 1; i < receivers_.size(); ++i) {
         Difference d = differenceOf(ref, *m.observations[i]);
-        Accumulator &a = pairs_[i - 1];
-        if (d.horizontal) {
-            a.east.push_back(*d.east);
-            a.north.push_back(*d.north);
-            a.horizontal.push_back(*d.horizontal);
-        }
-        if (d.up) a.up.push_back(*d.up);
-        for (const SignalPair &p : d.cn0) {
-            const double diff = p.other - p.reference;
-            a.cn0.push_back(diff);
-            a.cn0ByConstellation[p.sat.system].push_back(diff);
-            a.compared[p.sat.system].insert(p.sat.prn);
-        }
-        for (SatelliteRef s : d.onlyInReference) ++a.onlyInReference[{s.system, s.prn}];
-        for (SatelliteRef s : d.onlyInOther) ++a.onlyInThis[{s.system, s.prn}];
+        accumulate(pairs_[i - 1], d);
         m.differences.push_back(std::move(d));
     }
     ++matched_;
     if (onMatch) onMatch(m);
     lastMatched_ = key;
     for (Receiver &x : receivers_) x.held.erase(x.held.begin(), x.held.upper_bound(key));
+}
+
+void Comparison::accumulate(Accumulator &a, const Difference &d) {
+    if (d.horizontal) {
+        a.east.push_back(*d.east);
+        a.north.push_back(*d.north);
+        a.horizontal.push_back(*d.horizontal);
+    }
+    if (d.up) a.up.push_back(*d.up);
+    for (const SignalPair &p : d.cn0) {
+        const double diff = p.other - p.reference;
+        a.cn0.push_back(diff);
+        a.cn0ByConstellation[p.sat.system].push_back(diff);
+        a.compared[p.sat.system].insert(p.sat.prn);
+    }
+    for (SatelliteRef s : d.onlyInReference) ++a.onlyInReference[{s.system, s.prn}];
+    for (SatelliteRef s : d.onlyInOther) ++a.onlyInThis[{s.system, s.prn}];
+}
+
+PairReport Comparison::pairReport(const Accumulator &a) {
+    PairReport p;
+    auto spread = [](std::vector<double> v) { return spreadOf(v); };
+    p.east = spread(a.east);
+    p.north = spread(a.north);
+    p.up = spread(a.up);
+    std::vector<double> h = a.horizontal;
+    p.horizontal = spreadOf(h); // sorts h
+    p.cep50 = quantile(h, 0.50);
+    p.cep95 = quantile(h, 0.95);
+    p.cn0 = spread(a.cn0);
+    for (const auto &[system, values] : a.cn0ByConstellation) {
+        const auto sats = a.compared.find(system);
+        p.perConstellation.push_back(
+                {system, spread(values),
+                 sats == a.compared.end() ? 0 : static_cast<int>(sats->second.size())});
+    }
+    p.onlyInReference = counted(a.onlyInReference);
+    p.onlyInThis = counted(a.onlyInThis);
+    return p;
+}
+
+MatchRecord MatchRecord::of(const Match &m) {
+    MatchRecord r;
+    r.timeMs = m.timeMs;
+    for (const Observation *o : m.observations) r.fixes.push_back(o->fix);
+    r.differences = m.differences;
+    return r;
+}
+
+Report Comparison::reportOf(const std::vector<std::string> &names,
+                            const std::deque<MatchRecord> &matches) {
+    Report r;
+    r.matchedEpochs = matches.size();
+    std::vector<std::map<FixType, std::size_t>> fixes(names.size());
+    std::vector<Accumulator> pairs(names.empty() ? 0 : names.size() - 1);
+    for (const MatchRecord &m : matches) {
+        for (std::size_t i = 0; i < fixes.size() && i < m.fixes.size(); ++i) ++fixes[i][m.fixes[i]];
+        for (std::size_t i = 0; i < pairs.size() && i < m.differences.size(); ++i)
+            accumulate(pairs[i], m.differences[i]);
+    }
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        ReceiverReport rr{names[i], {}, matches.size(), {}};
+        for (const auto &[fix, n] : fixes[i]) rr.fixes.push_back({fix, n});
+        r.receivers.push_back(std::move(rr));
+    }
+    for (const Accumulator &a : pairs) r.pairs.push_back(pairReport(a));
+    return r;
 }
 
 Report Comparison::report() const {
@@ -178,27 +231,7 @@ Report Comparison::report() const {
         for (const auto &[fix, n] : x.fixes) rr.fixes.push_back({fix, n});
         r.receivers.push_back(std::move(rr));
     }
-    for (const Accumulator &a : pairs_) {
-        PairReport p;
-        auto spread = [](std::vector<double> v) { return spreadOf(v); };
-        p.east = spread(a.east);
-        p.north = spread(a.north);
-        p.up = spread(a.up);
-        std::vector<double> h = a.horizontal;
-        p.horizontal = spreadOf(h); // sorts h
-        p.cep50 = quantile(h, 0.50);
-        p.cep95 = quantile(h, 0.95);
-        p.cn0 = spread(a.cn0);
-        for (const auto &[system, values] : a.cn0ByConstellation) {
-            const auto sats = a.compared.find(system);
-            p.perConstellation.push_back(
-                    {system, spread(values),
-                     sats == a.compared.end() ? 0 : static_cast<int>(sats->second.size())});
-        }
-        p.onlyInReference = counted(a.onlyInReference);
-        p.onlyInThis = counted(a.onlyInThis);
-        r.pairs.push_back(std::move(p));
-    }
+    for (const Accumulator &a : pairs_) r.pairs.push_back(pairReport(a));
     return r;
 }
 

@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <map>
 #include <optional>
@@ -44,6 +45,14 @@ struct Match {
     std::int64_t timeMs = 0;                       // UTC time of day
     std::vector<const Observation *> observations; // one per receiver
     std::vector<Difference> differences;           // one per receiver after the first
+};
+
+// A match kept by value: what a window of the last minutes holds (the Compare dock's).
+struct MatchRecord {
+    std::int64_t timeMs = 0;             // UTC time of day
+    std::vector<FixType> fixes;          // one per receiver
+    std::vector<Difference> differences; // one per receiver after the first
+    static MatchRecord of(const Match &m);
 };
 
 struct ConstellationCn0 {
@@ -106,6 +115,10 @@ public:
 
     // One receiver against the reference at one time (no state): what a Match holds.
     static Difference differenceOf(const Observation &reference, const Observation &other);
+    // The report of these matches alone (a window of the last minutes): each receiver's epochs
+    // and fixes are those of the matches.
+    static Report reportOf(const std::vector<std::string> &names,
+                           const std::deque<MatchRecord> &matches);
 
 private:
     struct Receiver {
@@ -122,6 +135,8 @@ private:
         std::map<std::pair<Constellation, int>, std::size_t> onlyInReference, onlyInThis;
     };
     void match(std::int64_t key, const MatchFn &onMatch);
+    static void accumulate(Accumulator &a, const Difference &d);
+    static PairReport pairReport(const Accumulator &a);
 
     std::vector<Receiver> receivers_;
     std::vector<Accumulator> pairs_; // receivers_[1..]

@@ -59,4 +59,16 @@ QString SourceSpec::displayName() const {
     return QCoreApplication::translate("SourceSpec", "No source");
 }
 
+QString SourceSpec::place() const {
+    switch (kind) {
+    case Kind::Serial:
+    case Kind::Tcp: return name;
+    case Kind::Replay: return name.mid(name.lastIndexOf('/') + 1);
+    case Kind::Simulator: return QCoreApplication::translate("SourceSpec", "simulated");
+    case Kind::Gpsd: return QCoreApplication::translate("SourceSpec", "gpsd %1").arg(name);
+    case Kind::None: break;
+    }
+    return {};
+}
+
 } // namespace gnss::link

@@ -11,9 +11,9 @@ namespace gnss::link {
 struct SourceSpec {
     enum class Kind { None, Serial, Tcp, Replay, Simulator, Gpsd };
     Kind kind = Kind::None;
-    QString name; // port, host:port, file path, simulated dialect id, or HOST[:PORT][/DEVICE]
-    int baud = 0; // serial: 0 = detect; simulator: the host's line speed (0 = the receiver's)
-    double speed = 1.0;  // replay and simulator: time factor
+    QString name;       // port, host:port, file path, simulated dialect id, or HOST[:PORT][/DEVICE]
+    int baud = 0;       // serial: 0 = detect; simulator: the host's line speed (0 = the receiver's)
+    double speed = 1.0; // replay and simulator: time factor
     bool asFast = false; // replay: no waiting, everything at once
 
     bool valid() const { return kind != Kind::None && !name.isEmpty(); }
@@ -21,6 +21,9 @@ struct SourceSpec {
     QString toString() const;
     static SourceSpec fromString(const QString &s);
     QString displayName() const; // for the user (translated)
+    // Where, in a word, beside a receiver's model: the port, host:port, the file's name,
+    // "simulated" (translated).
+    QString place() const;
 };
 
 } // namespace gnss::link
