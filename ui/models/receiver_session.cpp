@@ -13,6 +13,7 @@ ReceiverSession::ReceiverSession(const DialectRegistry &registry,
                                new MessageStatsModel(this), new ConsoleModel(this)},
       feed_(new ModelFeed(registry, models_, this)),
       link_(new session::ReceiverLink(registry, transports, this)) {
+    history_ = new SignalHistoryModel(models_.state, this);
     // A new connection: the models start over and count what its decoder counts; its bytes and
     // sentences reach them.
     connect(link_, &session::ReceiverLink::connectionStarted, this, [this](link::Connection *c) {
@@ -40,6 +41,25 @@ ReceiverSession::~ReceiverSession() {
     link_->disconnect(this);
     link_->disconnect(feed_);
     link_->disconnectFromSource();
+}
+
+QString ReceiverSession::shortName() const {
+    if (!givenName_.isEmpty()) return givenName_;
+    const ReceiverIdentity &id = models_.state->state().identity;
+    if (!id.model.empty()) return QString::fromStdString(id.model);
+    if (const Dialect *d = dialect())
+        return QString::fromLatin1(d->displayName.data(), qsizetype(d->displayName.size()));
+    return tr("Receiver");
+}
+
+QString ReceiverSession::name() const {
+    if (!givenName_.isEmpty()) return givenName_;
+    const QString place = link_->source().place();
+    return place.isEmpty() ? shortName() : tr("%1 %2").arg(shortName(), place);
+}
+
+void ReceiverSession::setGivenName(const QString &name) {
+    givenName_ = name.trimmed();
 }
 
 } // namespace gnss::ui
