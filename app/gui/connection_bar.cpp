@@ -38,6 +38,12 @@ ConnectionBar::ConnectionBar(link::PortWatcher *ports, const DialectRegistry &re
     button_ = new QPushButton(tr("Connect"), this);
     button_->setObjectName("connectButton");
     addWidget(button_);
+    add_ = new QPushButton(tr("Add receiver"), this);
+    add_->setObjectName("addReceiverButton");
+    add_->setToolTip(tr("Connect the source chosen as another receiver: the one shown keeps "
+                        "running"));
+    addWidget(add_);
+    connect(add_, &QPushButton::clicked, this, [this] { emit addRequested(selection()); });
     connect(button_, &QPushButton::clicked, this, [this] {
         if (connected_)
             emit disconnectRequested();
@@ -141,8 +147,8 @@ void ConnectionBar::setBaudNote(const QString &text, const QString &tooltip) {
 void ConnectionBar::setConnected(bool connected) {
     connected_ = connected;
     button_->setText(connected ? tr("Disconnect") : tr("Connect"));
-    source_->setEnabled(!connected);
-    baud_->setEnabled(!connected && selection().kind == SourceSpec::Kind::Serial);
+    // The source stays choosable while connected: what Add receiver connects.
+    baud_->setEnabled(selection().kind == SourceSpec::Kind::Serial);
 }
 
 } // namespace gnss::app

@@ -38,6 +38,8 @@ public:
 signals:
     void connectRequested(const gnss::link::SourceSpec &spec);
     void disconnectRequested();
+    // Another receiver, on the source chosen (the one shown keeps its own).
+    void addRequested(const gnss::link::SourceSpec &spec);
 
 private:
     void rebuildSources();
@@ -48,6 +50,7 @@ private:
     QComboBox *baud_;
     QLabel *baudNote_;
     QPushButton *button_;
+    QPushButton *add_;
     bool connected_ = false;
     SourceSpec extra_; // a TCP, gpsd or replay source chosen by the user
 };

@@ -33,6 +33,12 @@ struct DockRow {
     bool log = false;
     // Makes the dock's view for the session it shows (and wires it).
     QWidget *(MainWindow::*make)(ui::ReceiverSession &session) = nullptr;
+    // About every receiver of the window (the comparison), not the one selected: never made
+    // again for another session, never pinned.
+    bool window = false;
+    // Acts on its receiver (the settings form, the console, corrections): its title names the
+    // receiver whenever there are several.
+    bool names = false;
 };
 
 std::span<const DockRow> dockRows();

@@ -6,6 +6,7 @@
 #include "gui/corrections_controller.h"
 #include "gui/log_viewer.h"
 #include "gui/preferences_dialog.h"
+#include "gui/receivers_strip.h"
 #include "link/port_watcher.h"
 #include "models/receiver_session.h"
 #include "session/receiver_link.h"
@@ -46,23 +47,28 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks | GroupedDragging);
     if (settings_) prefs_ = Preferences::load(*settings_);
     startLanguage_ = prefs_.language;
-    // One receiver for now; the docks show it.
-    session_ = new ui::ReceiverSession(registry_, transports_, this);
-    session_->setObjectName(QStringLiteral("session1"));
-    sessions_ << session_;
-    link_ = session_->link();
     corrections_ = new CorrectionsController(settings_, this);
     ports_ = new link::PortWatcher({}, this);
     ports_->start();
+    // The first receiver; the docks show it. More come with Add receiver.
+    current_ = newSession();
+    // The open log's models: a session of its own, so that the receivers keep running (and
+    // recording) while a log is studied.
+    logSession_ = new ui::ReceiverSession(registry_, transports_, this);
+    logSession_->setObjectName(QStringLiteral("logSession"));
     bar_ = new ConnectionBar(ports_, registry_, transports_.names(SourceSpec::Kind::Simulator),
                              this);
     addToolBar(Qt::TopToolBarArea, bar_);
+    addToolBarBreak(Qt::TopToolBarArea);
+    strip_ = new ReceiversStrip(this);
+    addToolBar(Qt::TopToolBarArea, strip_);
+    strip_->hide(); // shown while two or more receivers are open
     createLogViewer();
     createDocks();
-    wireLogConsole();
     createMenus();
     createStatusBar();
     wireConnection();
+    wireSession(current_);
     auto *statusTimer = new QTimer(this);
     statusTimer->setInterval(kStatusRefreshMs);
     connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
@@ -84,7 +90,7 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
 MainWindow::~MainWindow() {
     // Closing the link fails a command still waiting for its answer; its report must not reach
     // a window half destroyed.
-    for (ui::ReceiverSession *s : sessions_) {
+    for (ui::ReceiverSession *s : std::as_const(sessions_)) {
         s->link()->disconnect(this);
         s->link()->disconnectFromSource();
     }
@@ -92,44 +98,71 @@ MainWindow::~MainWindow() {
 
 void MainWindow::wireConnection() {
     connect(bar_, &ConnectionBar::connectRequested, this,
-            [this](const SourceSpec &s) { link_->connectTo(s); });
-    connect(bar_, &ConnectionBar::disconnectRequested, link_,
-            &session::ReceiverLink::disconnectFromSource);
-    connect(link_, &session::ReceiverLink::stateChanged, this, [this] {
-        const auto s = link_->state();
-        bar_->setConnected(s != session::ReceiverLink::State::Disconnected &&
-                           s != session::ReceiverLink::State::Failed);
-        // The baud note belongs to a detection: gone with a source that had none.
-        if (link_->detectedBaud() == 0 && s != session::ReceiverLink::State::Detecting &&
-            s != session::ReceiverLink::State::Failed)
-            bar_->setBaudNote({});
+            [this](const SourceSpec &s) { connectReceiver(current_, s); });
+    connect(bar_, &ConnectionBar::disconnectRequested, this,
+            [this] { current_->link()->disconnectFromSource(); });
+    connect(bar_, &ConnectionBar::addRequested, this,
+            [this](const SourceSpec &s) { addReceiver(s); });
+    connect(strip_, &ReceiversStrip::selectRequested, this,
+            [this](int i) { selectReceiver(sessions_.value(i)); });
+    connect(strip_, &ReceiversStrip::renameRequested, this,
+            [this](int i) { renameReceiver(sessions_.value(i)); });
+    connect(strip_, &ReceiversStrip::disconnectRequested, this, [this](int i) {
+        if (ui::ReceiverSession *s = sessions_.value(i)) s->link()->disconnectFromSource();
+    });
+    // Queued: the chip whose menu asked is deleted with its receiver.
+    connect(
+            strip_, &ReceiversStrip::closeRequested, this,
+            [this](int i) { closeReceiver(sessions_.value(i)); }, Qt::QueuedConnection);
+}
+
+void MainWindow::wireSession(ui::ReceiverSession *s) {
+    session::ReceiverLink *lk = s->link();
+    // The connection bar is about the selected receiver; the strip and status bar about all.
+    connect(lk, &session::ReceiverLink::stateChanged, this, [this, s, lk] {
+        if (s == current_) {
+            const auto st = lk->state();
+            bar_->setConnected(st != session::ReceiverLink::State::Disconnected &&
+                               st != session::ReceiverLink::State::Failed);
+            // The baud note belongs to a detection: gone with a source that had none.
+            if (lk->detectedBaud() == 0 && st != session::ReceiverLink::State::Detecting &&
+                st != session::ReceiverLink::State::Failed)
+                bar_->setBaudNote({});
+        }
         updateStatus();
     });
-    connect(link_, &session::ReceiverLink::detectingRate, this,
-            [this](int baud) { bar_->setBaudNote(tr("trying %1…").arg(baud)); });
-    connect(link_, &session::ReceiverLink::detectionFinished, this, [this](int baud) {
-        bar_->setBaudNote(baud > 0 ? tr("→ %1").arg(baud) : tr("not found"),
-                          link_->detectionDetail());
+    connect(lk, &session::ReceiverLink::detectingRate, this, [this, s](int baud) {
+        if (s == current_) bar_->setBaudNote(tr("trying %1…").arg(baud));
+    });
+    connect(lk, &session::ReceiverLink::detectionFinished, this, [this, s, lk](int baud) {
+        if (s == current_)
+            bar_->setBaudNote(baud > 0 ? tr("→ %1").arg(baud) : tr("not found"),
+                              lk->detectionDetail());
     });
     // A device plugged in: a link waiting to reconnect tries at once.
-    connect(ports_, &link::PortWatcher::portsChanged, link_, &session::ReceiverLink::retryNow);
-    connect(link_, &session::ReceiverLink::commandFinished, this,
-            [this](const QString &summary, bool ok) {
-                statusBar()->showMessage(ok ? summary : tr("Command: %1").arg(summary),
-                                         kCommandMessageMs);
+    connect(ports_, &link::PortWatcher::portsChanged, lk, &session::ReceiverLink::retryNow);
+    connect(lk, &session::ReceiverLink::commandFinished, this,
+            [this, s](const QString &summary, bool ok) {
+                QString text = ok ? summary : tr("Command: %1").arg(summary);
+                if (sessions_.size() > 1) text = tr("%1: %2").arg(receiverLabel(s), text);
+                statusBar()->showMessage(text, kCommandMessageMs);
             });
 }
 
+ui::ReceiverSession *MainWindow::session() const {
+    return logViewer_ && logViewer_->isOpen() ? logSession_ : current_;
+}
+
 session::ReceiverLink *MainWindow::link() const {
-    return link_;
+    return current_->link();
 }
 
 ui::ReceiverStateModel *MainWindow::stateModel() const {
-    return session_->state();
+    return session()->state();
 }
 
 ui::SatelliteModel *MainWindow::satelliteModel() const {
-    return session_->satellites();
+    return session()->satellites();
 }
 
 QDockWidget *MainWindow::dock(const QString &objectName) const {
@@ -169,21 +202,35 @@ void MainWindow::createMenus() {
     prefs->setShortcut(QKeySequence(tr("Ctrl+,")));
     prefs->setMenuRole(QAction::PreferencesRole);
 
-    QMenu *receiver = menuBar()->addMenu(tr("&Receiver"));
-    receiver->setObjectName("receiverMenu");
-    receiver->addAction(tr("&Connect"), this, [this] { link_->connectTo(bar_->selection()); })
-            ->setShortcut(QKeySequence(tr("Ctrl+K")));
-    receiver->addAction(tr("&Disconnect"), link_, &session::ReceiverLink::disconnectFromSource)
-            ->setShortcut(QKeySequence(tr("Ctrl+Shift+K")));
+    receiverMenu_ = menuBar()->addMenu(tr("&Receiver"));
+    receiverMenu_->setObjectName("receiverMenu");
+    rebuildReceiverActions();
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     viewMenu_->setObjectName("viewMenu");
     for (const DockRow &row : dockRows())
         viewMenu_->addAction(dock(dockObjectName(row))->toggleViewAction());
+    // A second dock of a kind, pinned to the selected receiver (base and rover side by side).
+    QMenu *more = viewMenu_->addMenu(tr("Another &dock for this receiver"));
+    more->setObjectName("duplicateDockMenu");
+    for (const DockRow &row : dockRows()) {
+        if (row.log || row.window) continue;
+        QAction *a = more->addAction(dockFullTitle(row), this, [this, &row] {
+            if (QDockWidget *d = duplicateDock(QLatin1String(row.name), current_)) {
+                d->show();
+                d->raise();
+            }
+        });
+        a->setObjectName(QStringLiteral("duplicate_%1").arg(QLatin1String(row.name)));
+    }
     viewMenu_->addSeparator();
     QAction *tracks = viewMenu_->addAction(tr("Sky plot &tracks"));
+    tracks->setObjectName("skyTracksAction");
     tracks->setCheckable(true);
-    connect(tracks, &QAction::toggled, sky_, &ui::SkyPlotView::setShowTracks);
+    connect(tracks, &QAction::toggled, this, [this](bool on) {
+        skyTracks_ = on;
+        for (auto *sky : findChildren<ui::SkyPlotView *>()) sky->setShowTracks(on);
+    });
     viewMenu_->addAction(tr("&Reset layout"), this, [this] { restoreState(defaultState_); });
     QMenu *theme = viewMenu_->addMenu(tr("T&heme"));
     auto *group = new QActionGroup(this);
@@ -240,22 +287,27 @@ void MainWindow::createStatusBar() {
 }
 
 void MainWindow::updateStatus() {
+    if (!stateLabel_) return;
     const bool log = logViewer_ && logViewer_->isOpen();
-    stateLabel_->setText(log ? logViewer_->statusText() : link_->stateText());
+    ui::ReceiverSession *const shown = session();
+    session::ReceiverLink *const lk = current_->link();
+    QString state = log ? logViewer_->statusText() : lk->stateText();
+    if (!log && sessions_.size() > 1) state = tr("%1: %2").arg(receiverLabel(current_), state);
+    stateLabel_->setText(state);
     // The whole text too, for a message longer than the status bar shows.
-    stateLabel_->setToolTip(log                                  ? logViewer_->path()
-                            : link_->detectionDetail().isEmpty() ? link_->stateText()
-                                                                 : link_->detectionDetail());
-    const Dialect *d = log ? logViewer_->dialectAtCursor() : session_->dialect();
-    const ReceiverIdentity &id = session_->state()->state().identity;
+    stateLabel_->setToolTip(log                               ? logViewer_->path()
+                            : lk->detectionDetail().isEmpty() ? lk->stateText()
+                                                              : lk->detectionDetail());
+    const Dialect *d = log ? logViewer_->dialectAtCursor() : shown->dialect();
+    const ReceiverIdentity &id = shown->state()->state().identity;
     QString who = d ? QString::fromLatin1(d->displayName.data(), int(d->displayName.size()))
-                  : session_->counters().sentences > 0 ? tr("NMEA-0183 (no vendor sentences)")
-                                                       : tr("dialect: —");
+                  : shown->counters().sentences > 0 ? tr("NMEA-0183 (no vendor sentences)")
+                                                    : tr("dialect: —");
     if (!id.model.empty()) who = QString::fromStdString(id.vendor + " " + id.model);
     if (!id.firmware.empty()) who += tr(" (firmware %1)").arg(QString::fromStdString(id.firmware));
     dialectLabel_->setText(who);
     // A log's rates and errors are its statistics' business, not the status bar's.
-    const auto &c = session_->counters();
+    const auto &c = shown->counters();
     rateLabel_->setVisible(!log);
     errorLabel_->setVisible(!log);
     rateLabel_->setText(tr("%1 B/s · %2 sentences/s")
@@ -265,35 +317,48 @@ void MainWindow::updateStatus() {
     errorLabel_->setStyleSheet(
             c.checksumErrors ? QStringLiteral("color: %1;").arg(style::errorColor().name())
                              : QString());
-    const bool rec = link_->recording();
+    bool rec = false;
+    for (ui::ReceiverSession *s : sessions_) rec = rec || s->link()->recording();
     recordLabel_->setText(rec ? tr("● REC") : QString());
     recordLabel_->setStyleSheet(
             rec ? QStringLiteral("color: %1; font-weight: bold;").arg(style::errorColor().name())
                 : QString());
     // The badge is the live fix: none once the receiver is disconnected (the docks keep the last).
-    const auto link = link_->state();
+    const auto link = lk->state();
     const bool live = link != session::ReceiverLink::State::Disconnected &&
                       link != session::ReceiverLink::State::Failed;
-    const bool any = (live || log) && session_->state()->epochCount() > 0;
-    const FixType fix = any ? session_->state()->state().epoch.fix : FixType::None;
+    const bool any = (live || log) && shown->state()->epochCount() > 0;
+    const FixType fix = any ? shown->state()->state().epoch.fix : FixType::None;
     fixLabel_->setText(any ? style::fixTypeLabel(fix) : tr("No fix"));
     fixLabel_->setStyleSheet(style::badgeCss(style::fixTypeColor(fix), 4, "1px 6px"));
+    updateReceivers();
 }
 
 void MainWindow::toggleRecording(bool on) {
     if (!on) {
-        link_->stopRecording();
+        for (ui::ReceiverSession *s : sessions_) s->link()->stopRecording();
         updateStatus();
         return;
     }
-    const QString path = QFileDialog::getSaveFileName(
-            this, tr("Record to"), QStringLiteral("receiver.nmea"), tr("NMEA logs (*.nmea)"));
-    if (path.isEmpty() || !link_->startRecording(path)) {
-        if (!path.isEmpty())
+    bool started = false;
+    if (sessions_.size() > 1) {
+        // Every receiver, one file each in one folder, named after the receiver.
+        const QString folder =
+                QFileDialog::getExistingDirectory(this, tr("Record every receiver to"));
+        QString why;
+        started = !folder.isEmpty() && !recordAll(folder, &why).isEmpty();
+        if (!folder.isEmpty() && !why.isEmpty()) QMessageBox::warning(this, tr("Record"), why);
+    } else {
+        const QString path = QFileDialog::getSaveFileName(
+                this, tr("Record to"), QStringLiteral("receiver.nmea"), tr("NMEA logs (*.nmea)"));
+        started = !path.isEmpty() && current_->link()->startRecording(path);
+        if (!path.isEmpty() && !started)
             QMessageBox::warning(this, tr("Record"),
                                  tr("Cannot record to %1: connect to a receiver first, and "
                                     "check the folder is writable.")
                                          .arg(path));
+    }
+    if (!started) {
         QSignalBlocker block(recordAction_);
         recordAction_->setChecked(false);
     }
@@ -319,26 +384,36 @@ void MainWindow::saveLayout() {
     if (!settings_) return;
     settings_->setValue("window/geometry", saveGeometry());
     settings_->setValue("window/state", saveState());
-    settings_->setValue("view/skyTracks", sky_->showTracks());
-    settings_->setValue("view/chartSeries", charts_->checkedSeries());
-    settings_->setValue("view/chartWindowMinutes", charts_->windowMinutes());
-    settings_->setValue("console/history", consoleView_->history());
-    const SourceSpec s = link_->source();
+    settings_->setValue("view/skyTracks", skyTracks_);
+    if (auto *charts = qobject_cast<ui::ChartsView *>(dock("chartsDock")->widget())) {
+        settings_->setValue("view/chartSeries", charts->checkedSeries());
+        settings_->setValue("view/chartWindowMinutes", charts->windowMinutes());
+    }
+    if (auto *console = qobject_cast<ui::ConsoleView *>(dock("consoleDock")->widget()))
+        consoleHistory_ = console->history();
+    settings_->setValue("console/history", consoleHistory_);
+    const SourceSpec s = current_->link()->source();
     if (s.valid()) settings_->setValue("connection/last", s.toString());
+    saveReceivers();
 }
 
 void MainWindow::restoreLayout() {
     if (!settings_) return;
     restoreGeometry(settings_->value("window/geometry").toByteArray());
     restoreState(settings_->value("window/state").toByteArray());
-    sky_->setShowTracks(settings_->value("view/skyTracks", false).toBool());
-    if (settings_->contains("view/chartSeries"))
-        charts_->setCheckedSeries(settings_->value("view/chartSeries").toStringList());
-    charts_->setWindowMinutes(
-            settings_->value("view/chartWindowMinutes", charts_->windowMinutes()).toInt());
-    consoleView_->setHistory(settings_->value("console/history").toStringList());
+    if (auto *tracks = findChild<QAction *>("skyTracksAction"))
+        tracks->setChecked(settings_->value("view/skyTracks", false).toBool());
+    if (auto *charts = qobject_cast<ui::ChartsView *>(dock("chartsDock")->widget())) {
+        if (settings_->contains("view/chartSeries"))
+            charts->setCheckedSeries(settings_->value("view/chartSeries").toStringList());
+        charts->setWindowMinutes(
+                settings_->value("view/chartWindowMinutes", charts->windowMinutes()).toInt());
+    }
+    consoleHistory_ = settings_->value("console/history").toStringList();
+    if (auto *console = qobject_cast<ui::ConsoleView *>(dock("consoleDock")->widget()))
+        console->setHistory(consoleHistory_);
     if (prefs_.theme != QLatin1String("system")) applyTheme(prefs_.theme);
-    link_->setBaudCandidates(prefs_.detectionBauds);
+    for (ui::ReceiverSession *s : sessions_) s->link()->setBaudCandidates(prefs_.detectionBauds);
     emit displayPrefsChanged(prefs_.display);
 }
 
@@ -348,7 +423,7 @@ void MainWindow::setPreferences(const Preferences &p) {
     if (settings_) p.save(*settings_);
     if (p.theme != before.theme) applyTheme(p.theme);
     for (QAction *a : themeActions_) a->setChecked(a->data().toString() == p.theme);
-    link_->setBaudCandidates(p.detectionBauds);
+    for (ui::ReceiverSession *s : sessions_) s->link()->setBaudCandidates(p.detectionBauds);
     if (!(p.display == before.display)) emit displayPrefsChanged(p.display);
     if (p.language != startLanguage_)
         statusBar()->showMessage(
@@ -363,21 +438,9 @@ void MainWindow::openPreferences() {
     dialog->open();
 }
 
-void MainWindow::connectAtStart(const SourceSpec &spec) {
-    SourceSpec s = spec;
-    if (!s.valid() && settings_)
-        s = SourceSpec::fromString(settings_->value("connection/last").toString());
-    // A first start: the first family the simulator plays.
-    const QStringList simulated = transports_.names(SourceSpec::Kind::Simulator);
-    if (!s.valid() && !simulated.isEmpty())
-        s = SourceSpec{SourceSpec::Kind::Simulator, simulated.front()};
-    bar_->select(s);
-    link_->connectTo(s);
-}
-
 void MainWindow::closeEvent(QCloseEvent *e) {
     saveLayout();
-    link_->disconnectFromSource(); // flushes a recording
+    for (ui::ReceiverSession *s : sessions_) s->link()->disconnectFromSource(); // flushes
     QMainWindow::closeEvent(e);
 }
 

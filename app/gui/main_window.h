@@ -1,13 +1,16 @@
 #pragma once
-// MainWindow: menus, docks, the connection bar and the status bar. It holds the receiver
-// sessions (ui::ReceiverSession: one per receiver, one for now) and gives each dock the session
-// it shows; its docks are the rows of dock_table.h. It does not decode or draw.
+// MainWindow: menus, docks, the connection bar, the receivers strip and the status bar. It holds
+// the receiver sessions (ui::ReceiverSession: one per receiver) and gives each dock the session it
+// shows: the selected receiver's (Ctrl+1…9), or the one it is pinned to; its docks are the rows of
+// dock_table.h, each made again for another session. It does not decode or draw.
 #include "gui/dock_table.h"
 #include "gui/preferences.h"
 #include "link/source_spec.h"
 
+#include <QHash>
 #include <QList>
 #include <QMainWindow>
+#include <QPointer>
 
 #include <span>
 
@@ -29,6 +32,7 @@ namespace session {
 class ReceiverLink;
 }
 namespace ui {
+class CompareModel;
 class ConsoleView;
 class ReceiverSession;
 class ReceiverStateModel;
@@ -45,6 +49,7 @@ using link::SourceSpec;
 
 class ConnectionBar;
 class CorrectionsController;
+class ReceiversStrip;
 class LogPlayer;
 class LogViewer;
 
@@ -57,23 +62,51 @@ public:
                QSettings *settings, QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    // The receivers' sessions (one for now) and the one the docks show.
+    // The receivers' sessions, in the order of the receivers strip (Ctrl+1…9).
     const QList<ui::ReceiverSession *> &sessions() const { return sessions_; }
-    ui::ReceiverSession *session() const { return session_; }
-    // The shown session's link, state and satellites.
+    // What the docks that follow the selection show: the open log's session while a log is
+    // open, else the selected receiver's.
+    ui::ReceiverSession *session() const;
+    // The selected receiver: the one the connection bar, the Receiver menu and the status bar
+    // are about.
+    ui::ReceiverSession *selectedSession() const { return current_; }
+    // The selected receiver's link; the shown session's state and satellites.
     session::ReceiverLink *link() const;
     ui::ReceiverStateModel *stateModel() const;
     ui::SatelliteModel *satelliteModel() const;
     CorrectionsController *corrections() const { return corrections_; }
+    // The receivers compared (the Compare dock's model).
+    ui::CompareModel *comparison() const { return compare_; }
     QDockWidget *dock(const QString &objectName) const;
     // The docks by short name ("settings" for settingsDock), for --show-dock.
     QStringList dockNames() const;
     // Shows the dock named so and puts it in front of its tab group; false for an unknown name.
     bool showDock(const QString &name);
 
-    // Connects to `spec`, or (invalid spec) to the last source used, or to the simulated
-    // NV08C-RTK the first time.
+    // Connects to `spec`, or (invalid spec) to the receivers of the last run, or to the
+    // simulated NV08C-RTK the first time.
     void connectAtStart(const SourceSpec &spec);
+    // Several receivers at once (the command line's repeated sources); none: as above.
+    void connectReceiversAtStart(const QList<SourceSpec> &specs);
+
+    // Another receiver, connected to `spec` (invalid: left unconnected) and selected.
+    ui::ReceiverSession *addReceiver(const SourceSpec &spec);
+    // Closes a receiver (its link, recording and docks pinned to it); the last one is only
+    // disconnected. The others keep running.
+    void closeReceiver(ui::ReceiverSession *s);
+    // The docks that follow the selection show `s` from now on; its source is in the bar.
+    void selectReceiver(ui::ReceiverSession *s);
+    // Pins a dock to a receiver (null: it follows the selection again).
+    void pinDock(QDockWidget *dock, ui::ReceiverSession *s);
+    ui::ReceiverSession *dockSession(QDockWidget *dock) const;
+    ui::ReceiverSession *pinnedSession(QDockWidget *dock) const;
+    // A second dock of the row named so (`fix`), pinned to `s`: two Fix docks, base and rover.
+    // `objectName`: the dock's (to restore a layout); empty: the next free one (fixDock-2).
+    QDockWidget *duplicateDock(const QString &name, ui::ReceiverSession *s,
+                               const QString &objectName = {});
+    // File → Record with several receivers: one file per receiver in `folder`, named after it.
+    // Returns the files started; `why` says what failed.
+    QStringList recordAll(const QString &folder, QString *why = nullptr);
     void saveLayout();
     void restoreLayout();
 
@@ -100,6 +133,8 @@ public:
 
 signals:
     void displayPrefsChanged(const gnss::ui::DisplayPrefs &prefs);
+    // A receiver added or closed.
+    void receiversChanged();
 
 protected:
     void closeEvent(QCloseEvent *e) override;
@@ -109,12 +144,38 @@ protected:
 private:
     friend std::span<const DockRow> dockRows();
 
+    struct DockBinding {
+        const DockRow *row = nullptr;
+        QPointer<ui::ReceiverSession> shown;
+        QPointer<ui::ReceiverSession> pinned; // null: follows the selection
+        bool duplicate = false;
+    };
     void createDocks();
+    QDockWidget *makeDock(const DockRow &row, const QString &objectName, ui::ReceiverSession &s);
+    // Makes the dock's view again for `s` (the view's own choices carried over).
+    void bindDock(QDockWidget *dock, ui::ReceiverSession *s);
+    void rebindFollowingDocks();
+    void updateDockTitles();
+    void dockMenu(QDockWidget *dock, const QPoint &globalPos);
+    ui::ReceiverSession *newSession();
+    void wireSession(ui::ReceiverSession *s);
+    void connectReceiver(ui::ReceiverSession *s, const SourceSpec &spec);
+    void refreshBar();
+    void updateReceivers();
+    void rebuildReceiverActions();
+    void renameReceiver(ui::ReceiverSession *s);
+    // A label that tells the receivers apart in titles: the short name, with the place when two
+    // share it.
+    QString receiverLabel(const ui::ReceiverSession *s) const;
+    void saveReceivers();
+    QList<SourceSpec> restoreReceivers();
+    void restoreDocksOfReceivers();
     void createMenus();
     void createStatusBar();
     void wireConnection();
     // Units, coordinate format and time zone (Preferences) reach every view that shows them.
     template <class View> void followDisplayPrefs(View *view) {
+        view->setDisplayPrefs(prefs_.display);
         connect(this, &MainWindow::displayPrefsChanged, view, &View::setDisplayPrefs);
     }
     // The docks' views (dock_table.h), each for the session it shows.
@@ -131,6 +192,9 @@ private:
     QWidget *makeAttitude(ui::ReceiverSession &s);
     QWidget *makeCorrections(ui::ReceiverSession &s);
     QWidget *makeSettings(ui::ReceiverSession &s);
+    QWidget *makeSignalHistory(ui::ReceiverSession &s);
+    QWidget *makeCompare(ui::ReceiverSession &s);
+    void updateCompareReceivers();
     QWidget *makeLogTrack(ui::ReceiverSession &s);
     QWidget *makeLogSummary(ui::ReceiverSession &s);
     QWidget *makeLogCharts(ui::ReceiverSession &s);
@@ -141,7 +205,7 @@ private:
     void applyTheme(const QString &theme);
     void toggleRecording(bool on);
     void createLogViewer();
-    void wireLogConsole();
+    void wireLogConsole(ui::ConsoleView *view);
     void putLogViewAway();
     void createLogMenu(QMenu *file);
     void rememberLog(const QString &path);
@@ -153,14 +217,18 @@ private:
     QSettings *settings_;
     link::PortWatcher *ports_ = nullptr;
     QList<ui::ReceiverSession *> sessions_;
-    ui::ReceiverSession *session_ = nullptr; // the one the docks show
-    session::ReceiverLink *link_ = nullptr;  // its link
+    ui::ReceiverSession *current_ = nullptr;    // the selected receiver
+    ui::ReceiverSession *logSession_ = nullptr; // the open log's models
+    int sessionsMade_ = 0;
+    QHash<QDockWidget *, DockBinding> docks_;
+    ui::CompareModel *compare_ = nullptr;
     CorrectionsController *corrections_ = nullptr;
     ConnectionBar *bar_ = nullptr;
-    ui::SkyPlotView *sky_ = nullptr;
-    ui::RtkView *rtk_ = nullptr;
-    ui::ChartsView *charts_ = nullptr;
-    ui::ConsoleView *consoleView_ = nullptr;
+    ReceiversStrip *strip_ = nullptr;
+    QMenu *receiverMenu_ = nullptr;
+    QList<QAction *> receiverActions_;
+    bool skyTracks_ = false;
+    QStringList consoleHistory_;
     QMenu *viewMenu_ = nullptr;
     QList<QAction *> themeActions_;
     Preferences prefs_;

@@ -6,11 +6,14 @@
 #include "logview/log_events_view.h"
 #include "logview/log_summary_view.h"
 #include "logview/whole_log_panels.h"
+#include "models/compare_model.h"
 #include "models/receiver_session.h"
 #include "session/receiver_link.h"
 #include "settings/settings_view.h"
 #include "views/attitude_view.h"
 #include "views/charts_view.h"
+#include "views/cn0_map_view.h"
+#include "views/compare_view.h"
 #include "views/console_view.h"
 #include "views/corrections_view.h"
 #include "views/deviation_view.h"
@@ -18,14 +21,17 @@
 #include "views/message_stats_view.h"
 #include "views/receiver_info_view.h"
 #include "views/rtk_view.h"
+#include "views/signal_history_view.h"
 #include "views/signal_levels_view.h"
 #include "views/sky_plot_view.h"
 #include "widgets/fitted_columns.h"
 
 #include <QAction>
 #include <QDockWidget>
+#include <QFile>
 #include <QFileDialog>
 #include <QHeaderView>
+#include <QSplitter>
 #include <QStatusBar>
 #include <QTableView>
 
@@ -36,14 +42,7 @@ void MainWindow::createDocks() {
     // stacked in an area before being tabbed would leave the layout sized for the stack.
     QHash<QString, QDockWidget *> groupEnd;
     for (const DockRow &row : dockRows()) {
-        // Tabs show the short title (whole even at 1280 px); the View menu the full one.
-        auto *d = new QDockWidget(dockTitle(row), this);
-        d->setObjectName(dockObjectName(row));
-        d->setWidget((this->*row.make)(*session_));
-        d->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
-                       QDockWidget::DockWidgetFloatable);
-        d->toggleViewAction()->setText(dockFullTitle(row));
-        d->toggleViewAction()->setToolTip(dockFullTitle(row));
+        QDockWidget *d = makeDock(row, dockObjectName(row), row.log ? *logSession_ : *current_);
         addDockWidget(row.area, d);
         if (row.log) { // the log's docks join their groups when the first log opens
             d->hide();
@@ -62,10 +61,31 @@ void MainWindow::createDocks() {
         if (row.front && !row.log) dock(dockObjectName(row))->raise();
 }
 
+QDockWidget *MainWindow::makeDock(const DockRow &row, const QString &objectName,
+                                  ui::ReceiverSession &s) {
+    // Tabs show the short title (whole even at 1280 px); the View menu the full one.
+    auto *d = new QDockWidget(dockTitle(row), this);
+    d->setObjectName(objectName);
+    docks_.insert(d, DockBinding{&row, &s, nullptr, false});
+    d->setWidget((this->*row.make)(s));
+    d->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
+                   QDockWidget::DockWidgetFloatable);
+    d->toggleViewAction()->setText(dockFullTitle(row));
+    d->toggleViewAction()->setToolTip(dockFullTitle(row));
+    if (!row.log && !row.window) {
+        // Its menu (on the title, or on a view with none of its own): pin, another like it.
+        d->setContextMenuPolicy(Qt::CustomContextMenu);
+        connect(d, &QWidget::customContextMenuRequested, this,
+                [this, d](const QPoint &at) { dockMenu(d, d->mapToGlobal(at)); });
+    }
+    return d;
+}
+
 QWidget *MainWindow::makeSkyPlot(ui::ReceiverSession &s) {
-    sky_ = new ui::SkyPlotView(s.satellites(), this);
-    followElevationMask(s, sky_);
-    return sky_;
+    auto *sky = new ui::SkyPlotView(s.satellites(), this);
+    sky->setShowTracks(skyTracks_);
+    followElevationMask(s, sky);
+    return sky;
 }
 
 QWidget *MainWindow::makeFix(ui::ReceiverSession &s) {
@@ -95,12 +115,15 @@ QWidget *MainWindow::makeSatellites(ui::ReceiverSession &s) {
 
 QWidget *MainWindow::makeConsole(ui::ReceiverSession &s) {
     auto *view = new ui::ConsoleView(s.console(), this);
-    consoleView_ = view;
-    connect(this, &MainWindow::displayPrefsChanged, s.console(),
-            [this, &s](const ui::DisplayPrefs &p) {
-                s.console()->setTimeZone(p.time);
-                logViewer_->lines()->setTimeZone(p.time);
-            });
+    view->setHistory(consoleHistory_);
+    connect(
+            view, &ui::ConsoleView::sendRequested, this,
+            [this, view] { consoleHistory_ = view->history(); }, Qt::QueuedConnection);
+    if (&s == logSession_) {
+        // The log's own lines, filtered by the model (a whole log, on a worker).
+        wireLogConsole(view);
+        return view;
+    }
     session::ReceiverLink *link = s.link();
     connect(view, &ui::ConsoleView::sendRequested, this,
             [this, view, link](const QByteArray &line) {
@@ -127,8 +150,6 @@ QWidget *MainWindow::makeConsole(ui::ReceiverSession &s) {
 }
 
 QWidget *MainWindow::makeStatistics(ui::ReceiverSession &s) {
-    connect(this, &MainWindow::displayPrefsChanged, s.messages(),
-            [&s](const ui::DisplayPrefs &p) { s.messages()->setTimeZone(p.time); });
     return new ui::MessageStatsView(s.messages(), this);
 }
 
@@ -137,15 +158,15 @@ QWidget *MainWindow::makeReceiverInfo(ui::ReceiverSession &s) {
 }
 
 QWidget *MainWindow::makeRtk(ui::ReceiverSession &s) {
-    rtk_ = new ui::RtkView(s.state(), this);
-    followDisplayPrefs(rtk_);
-    return rtk_;
+    auto *rtk = new ui::RtkView(s.state(), this);
+    followDisplayPrefs(rtk);
+    return rtk;
 }
 
 QWidget *MainWindow::makeCharts(ui::ReceiverSession &s) {
-    charts_ = new ui::ChartsView(s.state(), this);
-    followDisplayPrefs(charts_);
-    return charts_;
+    auto *charts = new ui::ChartsView(s.state(), this);
+    followDisplayPrefs(charts);
+    return charts;
 }
 
 QWidget *MainWindow::makeDeviation(ui::ReceiverSession &s) {
@@ -182,7 +203,7 @@ QWidget *MainWindow::makeCorrections(ui::ReceiverSession &s) {
     connect(view, &ui::CorrectionsView::stopRequested, corrections_, &CorrectionsController::stop);
     connect(corrections_, &CorrectionsController::statusChanged, view,
             &ui::CorrectionsView::setStatus);
-    connect(s.state(), &ui::ReceiverStateModel::updated, corrections_,
+    connect(s.state(), &ui::ReceiverStateModel::updated, view,
             [this, &s] { corrections_->setRoverFix(s.state()->state().epoch); });
     return view;
 }
@@ -190,6 +211,52 @@ QWidget *MainWindow::makeCorrections(ui::ReceiverSession &s) {
 QWidget *MainWindow::makeSettings(ui::ReceiverSession &s) {
     // The session's engine follows its connection and the dialect it speaks.
     return new ui::SettingsView(s.link()->settings(), this);
+}
+
+QWidget *MainWindow::makeSignalHistory(ui::ReceiverSession &s) {
+    // C/N0 over time beside the polar C/N0 map, both from the session's signal history.
+    auto *split = new QSplitter(Qt::Horizontal, this);
+    split->setObjectName("signalHistorySplit");
+    auto *view = new ui::SignalHistoryView(s.signalHistory(), split);
+    view->setLive(&s != logSession_);
+    split->addWidget(view);
+    split->addWidget(new ui::Cn0MapView(s.signalHistory(), split));
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    return split;
+}
+
+QWidget *MainWindow::makeCompare(ui::ReceiverSession &) {
+    // Every receiver of the window, the first the reference; made again when one is added or
+    // closed.
+    if (!compare_) {
+        compare_ = new ui::CompareModel(this);
+        connect(this, &MainWindow::receiversChanged, this, &MainWindow::updateCompareReceivers);
+        updateCompareReceivers();
+    }
+    auto *view = new ui::CompareView(compare_, this);
+    connect(view, &ui::CompareView::exportRequested, this, [this](bool json) {
+        const QString path = QFileDialog::getSaveFileName(
+                this, tr("Export the comparison"),
+                json ? QStringLiteral("comparison.json") : QStringLiteral("comparison.csv"),
+                json ? tr("JSON (*.json)") : tr("CSV (*.csv)"));
+        if (path.isEmpty()) return;
+        QFile f(path);
+        if (f.open(QIODevice::WriteOnly) &&
+            f.write(json ? compare_->json() : compare_->csv()) >= 0 && f.flush())
+            statusBar()->showMessage(tr("Saved %1").arg(path), 8000);
+        else
+            statusBar()->showMessage(tr("Not saved: %1").arg(f.errorString()), 10000);
+    });
+    return view;
+}
+
+void MainWindow::updateCompareReceivers() {
+    if (!compare_) return;
+    QList<ui::CompareModel::Receiver> list;
+    for (ui::ReceiverSession *s : std::as_const(sessions_))
+        list << ui::CompareModel::Receiver{s->state(), s->name(), s->colour()};
+    compare_->setReceivers(list);
 }
 
 void MainWindow::followElevationMask(ui::ReceiverSession &s, ui::SkyPlotView *sky) {

@@ -40,7 +40,7 @@ QString groupLeader(const DockRow &logRow) {
 } // namespace
 
 void MainWindow::createLogViewer() {
-    logViewer_ = new LogViewer(registry_, session_->models(), this);
+    logViewer_ = new LogViewer(registry_, logSession_->models(), this);
     logPlayer_ = new LogPlayer(this);
     ui::LogCursor *cursor = logViewer_->cursor();
     auto *panel = new ui::TimelinePanel(cursor, this);
@@ -64,24 +64,20 @@ void MainWindow::createLogViewer() {
             [this](bool, const QString &message) { statusBar()->showMessage(message, 10000); });
 
     logViewer_->lines()->setTimeZone(prefs_.display.time);
-    // A live source closes the log (the docks show one thing at a time).
-    connect(link_, &session::ReceiverLink::stateChanged, this, [this] {
-        const auto s = link_->state();
-        if (logViewer_->isOpen() && s != session::ReceiverLink::State::Disconnected &&
-            s != session::ReceiverLink::State::Failed)
-            closeLog();
-    });
+    connect(this, &MainWindow::displayPrefsChanged, logViewer_->lines(),
+            [this](const ui::DisplayPrefs &p) { logViewer_->lines()->setTimeZone(p.time); });
     setAcceptDrops(true);
 }
 
-void MainWindow::wireLogConsole() {
+void MainWindow::wireLogConsole(ui::ConsoleView *view) {
     // The console shows the log's own lines while a log is open: filtered by the model (a whole
     // log, on a worker), the cursor's line kept in view, a line double-clicked is its moment.
     ui::LogLinesModel *lines = logViewer_->lines();
-    connect(consoleView_, &ui::ConsoleView::filterChanged, lines, &ui::LogLinesModel::setFilter);
-    connect(lines, &ui::LogLinesModel::cursorRowChanged, consoleView_, &ui::ConsoleView::showRow);
-    connect(lines, &ui::LogLinesModel::noteChanged, consoleView_, &ui::ConsoleView::setNote);
-    connect(consoleView_, &ui::ConsoleView::lineActivated, this, [this, lines](int row) {
+    connect(view, &ui::ConsoleView::filterChanged, lines, &ui::LogLinesModel::setFilter);
+    connect(lines, &ui::LogLinesModel::cursorRowChanged, view, &ui::ConsoleView::showRow);
+    connect(lines, &ui::LogLinesModel::noteChanged, view, &ui::ConsoleView::setNote);
+    view->showLog(lines, [this] { return logViewer_->lines()->bytesBeforeCursor(8192); });
+    connect(view, &ui::ConsoleView::lineActivated, this, [this, lines](int row) {
         const auto offset = lines->offsetOfRow(row);
         const logview::LogView *view = logViewer_->view();
         const auto epoch = offset && view ? view->epochAtOffset(*offset) : std::nullopt;
@@ -156,15 +152,22 @@ void MainWindow::updateRecentMenu() {
 }
 
 void MainWindow::openLog(const QString &path, const QString &at) {
-    link_->disconnectFromSource();
-    session_->feed()->reset();
+    // The receivers keep running (and recording); the docks that follow the selection show the
+    // log, those pinned to a receiver go on showing it.
     // Before open(): a small log is indexed by the time open() returns, and the `indexed` it
     // emits then enables these; disabling them after would leave Export greyed on a ready log.
     exportAction_->setEnabled(false);
     playOutAction_->setEnabled(false);
+    const bool wasOpen = logViewer_->isOpen();
     logViewer_->open(path, at);
-    consoleView_->showLog(logViewer_->lines(),
-                          [this] { return logViewer_->lines()->bytesBeforeCursor(8192); });
+    if (wasOpen) { // the consoles on the log show the new one's lines
+        for (auto it = docks_.cbegin(); it != docks_.cend(); ++it)
+            if (auto *view = qobject_cast<ui::ConsoleView *>(it.key()->widget());
+                view && it->shown == logSession_)
+                view->showLog(logViewer_->lines(),
+                              [this] { return logViewer_->lines()->bytesBeforeCursor(8192); });
+    }
+    rebindFollowingDocks();
     rememberLog(path);
     timelineBar_->show();
     // The transport's keys (Space, arrows) act at once, not in the source box's text.
@@ -187,6 +190,8 @@ void MainWindow::openLog(const QString &path, const QString &at) {
         logDocksPlaced_ = true;
     }
     updateStatus();
+    // The docks' new views laid out now, not at the next pass of the event loop.
+    layout()->activate();
 }
 
 // The log's docks and timeline belong to an open log: without one they would only say "no log
@@ -212,7 +217,7 @@ void MainWindow::putLogViewAway() {
 void MainWindow::closeLog() {
     if (!logViewer_->isOpen()) return;
     logViewer_->close();
-    consoleView_->showLog(nullptr);
+    rebindFollowingDocks(); // the selected receiver again
     putLogViewAway();
     closeLogAction_->setEnabled(false);
     exportAction_->setEnabled(false);

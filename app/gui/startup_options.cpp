@@ -12,6 +12,8 @@
 
 namespace gnss::app {
 
+using link::SourceSpec;
+
 std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                                                   const QStringList &simulated, QString &error) {
     QCommandLineParser p;
@@ -110,10 +112,10 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                                   .arg(o.at);
         return std::nullopt;
     }
-    o.port = p.value(port);
-    o.tcp = p.value(tcp);
-    o.replay = p.value(replay);
-    o.sim = p.value(sim);
+    o.port = p.values(port).value(0);
+    o.tcp = p.values(tcp).value(0);
+    o.replay = p.values(replay).value(0);
+    o.sim = p.values(sim).value(0);
     o.gpsd = p.value(gpsd);
     o.showDock = p.value(showDock);
     o.screenshot = p.value(shot);
@@ -136,30 +138,59 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             return std::nullopt;
         }
     }
-    if (!o.sim.isEmpty() && !simulated.contains(o.sim)) {
-        error = QCoreApplication::translate("StartupOptions",
-                                            "Unknown simulated receiver '%1' (use %2)")
-                        .arg(o.sim, simulated.join(", "));
-        return std::nullopt;
+    // The live sources in the order given: the first is the one the docks show, and the
+    // reference of the comparison.
+    struct Kind {
+        const QCommandLineOption *option;
+        SourceSpec::Kind kind;
+        int next = 0;
+    };
+    Kind kinds[] = {{&port, SourceSpec::Kind::Serial},
+                    {&tcp, SourceSpec::Kind::Tcp},
+                    {&gpsd, SourceSpec::Kind::Gpsd},
+                    {&replay, SourceSpec::Kind::Replay},
+                    {&sim, SourceSpec::Kind::Simulator}};
+    for (const QString &arg : arguments.mid(1)) {
+        if (arg == QLatin1String("--")) break;
+        if (!arg.startsWith('-')) continue;
+        const QString name =
+                arg.mid(arg.startsWith(QLatin1String("--")) ? 2 : 1).section('=', 0, 0);
+        for (Kind &k : kinds) {
+            if (!k.option->names().contains(name)) continue;
+            const QStringList values = p.values(*k.option);
+            if (k.next < values.size())
+                o.sources << SourceSpec{k.kind, values[k.next++],
+                                        k.kind == SourceSpec::Kind::Serial ? o.baud : 0};
+        }
     }
-    if (p.isSet(gpsd)) {
-        link::GpsdTransport::Target target;
-        QString why;
-        if (!link::GpsdTransport::parseTarget(o.gpsd, target, &why)) {
-            error = QCoreApplication::translate("StartupOptions", "Invalid --gpsd: %1").arg(why);
+    for (SourceSpec &spec : o.sources) {
+        if (spec.kind == SourceSpec::Kind::Simulator && !simulated.contains(spec.name)) {
+            error = QCoreApplication::translate("StartupOptions",
+                                                "Unknown simulated receiver '%1' (use %2)")
+                            .arg(spec.name, simulated.join(", "));
             return std::nullopt;
         }
-        // The source's name is what follows the scheme (SourceSpec adds it back).
-        o.gpsd = o.gpsd.trimmed();
-        if (o.gpsd.startsWith(QLatin1String("gpsd://"), Qt::CaseInsensitive))
-            o.gpsd = o.gpsd.mid(7);
+        if (spec.kind == SourceSpec::Kind::Gpsd) {
+            link::GpsdTransport::Target target;
+            QString why;
+            if (!link::GpsdTransport::parseTarget(spec.name, target, &why)) {
+                error = QCoreApplication::translate("StartupOptions", "Invalid --gpsd: %1")
+                                .arg(why);
+                return std::nullopt;
+            }
+            // The source's name is what follows the scheme (SourceSpec adds it back).
+            spec.name = spec.name.trimmed();
+            if (spec.name.startsWith(QLatin1String("gpsd://"), Qt::CaseInsensitive))
+                spec.name = spec.name.mid(7);
+        }
     }
-    const int sources = int(!o.port.isEmpty()) + int(!o.tcp.isEmpty()) + int(!o.replay.isEmpty()) +
-                        int(!o.open.isEmpty()) + int(!o.sim.isEmpty()) + int(!o.gpsd.isEmpty());
-    if (sources > 1) {
+    o.gpsd.clear();
+    for (const SourceSpec &spec : std::as_const(o.sources))
+        if (spec.kind == SourceSpec::Kind::Gpsd && o.gpsd.isEmpty()) o.gpsd = spec.name;
+    if (!o.open.isEmpty() && !o.sources.isEmpty()) {
         error = QCoreApplication::translate("StartupOptions",
-                                            "Give one source at most: --port, --tcp, --gpsd, "
-                                            "--replay, --sim or a log to open.");
+                                            "Give live sources (--port, --tcp, --gpsd, --replay, "
+                                            "--sim) or a log to open, not both.");
         return std::nullopt;
     }
     return o;

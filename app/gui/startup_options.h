@@ -1,5 +1,8 @@
 #pragma once
 // Command-line options of gnss-workbench.
+#include "link/source_spec.h"
+
+#include <QList>
 #include <QString>
 #include <QStringList>
 #include <optional>
@@ -18,6 +21,10 @@ struct StartupOptions {
     QString showDock;     // --show-dock NAME: show and raise this dock (settings, console, ...)
     QString screenshot;   // --screenshot FILE: save an image of the window, then quit
     double quitAfter = 0; // --quit-after SECONDS
+    // Every live source, in the order given (each of --port, --tcp, --gpsd, --replay and --sim
+    // may be repeated: one receiver each; --baud is every port's). The single fields above hold
+    // the first of each kind.
+    QList<link::SourceSpec> sources;
 };
 
 // Parses the arguments; on error returns nullopt with `error` set (already translated).

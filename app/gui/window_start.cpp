@@ -14,18 +14,7 @@ QString startWindow(MainWindow &window, const StartupOptions &options) {
     if (!options.open.isEmpty()) {
         window.openLog(options.open, options.at);
     } else {
-        SourceSpec start;
-        if (!options.port.isEmpty())
-            start = {SourceSpec::Kind::Serial, options.port, options.baud};
-        else if (!options.tcp.isEmpty())
-            start = {SourceSpec::Kind::Tcp, options.tcp};
-        else if (!options.replay.isEmpty())
-            start = {SourceSpec::Kind::Replay, options.replay};
-        else if (!options.sim.isEmpty())
-            start = {SourceSpec::Kind::Simulator, options.sim};
-        else if (!options.gpsd.isEmpty())
-            start = {SourceSpec::Kind::Gpsd, options.gpsd};
-        window.connectAtStart(start);
+        window.connectReceiversAtStart(options.sources);
     }
     if (!options.showDock.isEmpty()) window.showDock(options.showDock);
     return {};

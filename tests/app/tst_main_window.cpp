@@ -366,14 +366,35 @@ private slots:
         QVERIFY(!w.showDock("nosuch"));
     }
 
+    void severalSourcesAreReceiversInTheOrderGiven() {
+        QString err;
+        const auto o = parseStartupOptions(
+                {"x", "--port", "/dev/ttyUSB0", "--sim", "geostar", "--tcp", "127.0.0.1:5000",
+                 "--port=/dev/ttyUSB1", "--baud", "57600", "--gpsd",
+                 "gpsd://localhost/dev/ttyACM0"},
+                gnss::app::simulatedDialects(gnss::sim::builtinSimulators()), err);
+        QVERIFY2(o, qPrintable(err));
+        QStringList given;
+        for (const SourceSpec &s : o->sources) given << s.toString();
+        QCOMPARE(given,
+                 (QStringList{"serial:/dev/ttyUSB0@57600", "sim:geostar", "tcp:127.0.0.1:5000",
+                              "serial:/dev/ttyUSB1@57600", "gpsd://localhost/dev/ttyACM0"}));
+        // The first of each kind stays where it was.
+        QCOMPARE(o->port, QString("/dev/ttyUSB0"));
+        QCOMPARE(o->gpsd, QString("localhost/dev/ttyACM0"));
+    }
+
     void badStartupOptionsAreRefused_data() {
         QTest::addColumn<QStringList>("args");
         QTest::newRow("unknown sim") << QStringList{"x", "--sim", "garmin"};
-        QTest::newRow("two sources") << QStringList{"x", "--sim", "nvs", "--port", "/dev/ttyS0"};
+        QTest::newRow("a log and a source") << QStringList{"x", "log.nmea", "--sim", "nvs"};
+        QTest::newRow("a second unknown sim")
+                << QStringList{"x", "--sim", "nvs", "--sim", "garmin"};
         QTest::newRow("bad baud") << QStringList{"x", "--baud", "fast"};
         QTest::newRow("unknown option") << QStringList{"x", "--frobnicate"};
         QTest::newRow("bad gpsd port") << QStringList{"x", "--gpsd", "localhost:0"};
-        QTest::newRow("gpsd and sim") << QStringList{"x", "--gpsd", "localhost", "--sim", "nvs"};
+        QTest::newRow("a second bad gpsd")
+                << QStringList{"x", "--gpsd", "localhost", "--gpsd", "localhost:0"};
     }
     void badStartupOptionsAreRefused() {
         QFETCH(QStringList, args);

@@ -157,7 +157,7 @@ private slots:
         QCOMPARE(w->recentLogs().value(0),
                  QFileInfo(QString::fromStdString(scenario_)).absoluteFilePath());
         // Message statistics of the whole log arrive from the worker.
-        auto *messages = w->findChild<ui::MessageStatsModel *>();
+        auto *messages = w->session()->messages();
         QTRY_VERIFY(messages->rowCount() >= 3);
     }
 
@@ -560,8 +560,12 @@ private slots:
         QVERIFY(note->text().contains("not a valid"));
         filter->clear();
         QTRY_COMPARE(std::uint64_t(lines->rowCount()), view->lineCount());
-        // Closing the log: the live console again, with its pause button.
+        // Closing the log: the live console again (the selected receiver's), with its pause
+        // button.
         w->closeLog();
+        console = qobject_cast<ui::ConsoleView *>(w->dock("consoleDock")->widget());
+        QVERIFY(console);
+        list = console->findChild<QListView *>("consoleLines");
         QVERIFY(!console->showingLog());
         QVERIFY(list->model() != lines);
         QVERIFY(console->findChild<QToolButton *>("consolePause")->isVisibleTo(console));
