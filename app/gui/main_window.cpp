@@ -88,6 +88,9 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
 }
 
 MainWindow::~MainWindow() {
+    // The docks outlive this class's members (QWidget deletes its children later): their
+    // destruction must not reach the dock table.
+    for (QDockWidget *d : docks_.keys()) d->disconnect(this);
     // Closing the link fails a command still waiting for its answer; its report must not reach
     // a window half destroyed.
     for (ui::ReceiverSession *s : std::as_const(sessions_)) {

@@ -45,10 +45,25 @@ ReceiverSession::~ReceiverSession() {
 
 QString ReceiverSession::shortName() const {
     if (!givenName_.isEmpty()) return givenName_;
+    // What it was last known as on this source, while a reconnection finds it again: the name
+    // (and the file a recording gets) does not flicker to "Receiver".
+    const QString source = link_->source().toString();
+    QString known;
     const ReceiverIdentity &id = models_.state->state().identity;
-    if (!id.model.empty()) return QString::fromStdString(id.model);
-    if (const Dialect *d = dialect())
-        return QString::fromLatin1(d->displayName.data(), qsizetype(d->displayName.size()));
+    if (!id.model.empty())
+        known = QString::fromStdString(id.model);
+    else if (const Dialect *d = dialect())
+        known = QString::fromLatin1(d->displayName.data(), qsizetype(d->displayName.size()));
+    if (!known.isEmpty()) {
+        // A model outranks the dialect's name it was known by before.
+        if (id.model.empty() && knownSource_ == source && !knownName_.isEmpty() && knownFromModel_)
+            return knownName_;
+        knownName_ = known;
+        knownSource_ = source;
+        knownFromModel_ = !id.model.empty();
+        return known;
+    }
+    if (knownSource_ == source && !knownName_.isEmpty()) return knownName_;
     return tr("Receiver");
 }
 

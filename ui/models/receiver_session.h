@@ -58,6 +58,8 @@ signals:
 
 private:
     QString givenName_;
+    mutable QString knownName_, knownSource_;
+    mutable bool knownFromModel_ = false;
     SignalHistoryModel *history_ = nullptr;
     QColor colour_;
     SessionModels models_;
