@@ -3676,19 +3676,25 @@
     </message>
     <message>
         <location line="+1"/>
+        <location line="+12"/>
         <source>gpsd %1</source>
         <translation>gpsd %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-9"/>
         <source>No source</source>
         <translation>Нет источника</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>simulated</source>
+        <translation>симулятор</translation>
     </message>
 </context>
 <context>
     <name>StartupOptions</name>
     <message>
-        <location filename="../app/gui/startup_options.cpp" line="+19"/>
+        <location filename="../app/gui/startup_options.cpp" line="+21"/>
         <source>Configure and monitor GNSS receivers.</source>
         <translation>Настройка и мониторинг приёмников ГНСС.</translation>
     </message>
@@ -3738,12 +3744,7 @@
         <translation>Приёмник, подключённый к gpsd: gpsd://ХОСТ[:ПОРТ][/УСТРОЙСТВО] (если не указаны — порт 2947 и все устройства).</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Show this dock in front of its tab group: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info; with a log open also logTrack, logSummary, logCharts, logEvents.</source>
-        <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info; при открытом журнале также logTrack, logSummary, logCharts, logEvents.</translation>
-    </message>
-    <message>
-        <location line="+39"/>
+        <location line="+46"/>
         <source>--at needs a log to open</source>
         <translation>--at указывается вместе с журналом</translation>
     </message>
@@ -3753,32 +3754,37 @@
         <translation>Неверное значение --at: %1 (напишите 10:42:00, 2024-03-15T10:42:00Z или #1200)</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+82"/>
+        <source>Give live sources (--port, --tcp, --gpsd, --replay, --sim) or a log to open, not both.</source>
+        <translation>Укажите либо источники данных (--port, --tcp, --gpsd, --replay, --sim), либо журнал для просмотра, но не то и другое.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>No such log: %1</source>
         <translation>Нет такого журнала: %1</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="-24"/>
         <source>Invalid --gpsd: %1</source>
         <translation>Неверное значение --gpsd: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>Give one source at most: --port, --tcp, --gpsd, --replay, --sim or a log to open.</source>
-        <translation>Укажите не более одного источника: --port, --tcp, --gpsd, --replay, --sim или журнал.</translation>
-    </message>
-    <message>
-        <location line="-84"/>
+        <location line="-99"/>
         <source>Save an image of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-56"/>
         <source>Exit status: 0 closed normally, 1 the log to open is not there or the --screenshot could not be saved, 2 usage error.</source>
         <translation>Код выхода: 0 окно закрыто, 1 открываемого журнала нет или --screenshot не удалось сохранить, 2 ошибка в командной строке.</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+46"/>
+        <source>Show this dock in front of its tab group: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info, history, compare; with a log open also logTrack, logSummary, logCharts, logEvents.</source>
+        <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info, history, compare; при открытом журнале также logTrack, logSummary, logCharts, logEvents.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Quit after this many seconds.</source>
         <translation>Выйти через указанное число секунд.</translation>
     </message>
@@ -3798,7 +3804,7 @@
         <translation>Неверное значение --quit-after: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+32"/>
         <source>Unknown simulated receiver &apos;%1&apos; (use %2)</source>
         <translation>Неизвестный имитатор приёмника «%1» (допустимо: %2)</translation>
     </message>
@@ -3880,12 +3886,22 @@
     </message>
     <message>
         <location line="+6"/>
-        <location line="+105"/>
+        <location line="+111"/>
         <source>Connect</source>
         <translation>Подключить</translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-108"/>
+        <source>Add receiver</source>
+        <translation>Добавить приёмник</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Connect the source chosen as another receiver: the one shown keeps running</source>
+        <translation>Подключить выбранный источник как ещё один приёмник; показанный продолжает работать</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>TCP source</source>
         <translation>Источник TCP</translation>
     </message>
@@ -4133,18 +4149,18 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+43"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+220"/>
+        <location filename="../app/gui/main_window.cpp" line="+44"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+274"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+112"/>
+        <location line="+148"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-173"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-225"/>
         <source>Timeline</source>
         <translation>Шкала времени</translation>
     </message>
@@ -4154,7 +4170,7 @@ Serial number: %3</source>
         <translation>Шкала времени журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/dock_table.cpp" line="+72"/>
+        <location filename="../app/gui/dock_table.cpp" line="+78"/>
         <source>Events</source>
         <translation>События</translation>
     </message>
@@ -4164,19 +4180,35 @@ Serial number: %3</source>
         <translation>События журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="+230"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="+297"/>
         <source>Save events</source>
         <translation>Сохранить события</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-55"/>
+        <location line="+55"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-57"/>
+        <source>Export the comparison</source>
+        <translation>Экспорт сравнения</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Saved %1</source>
+        <translation>Сохранено: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not saved: %1</source>
+        <translation>Не сохранено: %1</translation>
+    </message>
+    <message>
+        <location line="+51"/>
         <location line="+14"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+192"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+244"/>
         <source>Not exported: %1</source>
         <translation>Не экспортировано: %1</translation>
     </message>
@@ -4196,7 +4228,8 @@ Serial number: %3</source>
         <translation>Сохранить статистику</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-67"/>
+        <location line="+69"/>
         <source>JSON (*.json)</source>
         <translation>JSON (*.json)</translation>
     </message>
@@ -4216,12 +4249,32 @@ Serial number: %3</source>
         <translation>Трек</translation>
     </message>
     <message>
+        <location line="-6"/>
+        <source>Signal history</source>
+        <translation>Сигналы</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>Signal history and C/N0 map</source>
+        <translation>История сигналов и карта C/N0</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Compare</source>
+        <translation>Сравнение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compare receivers</source>
+        <translation>Сравнение приёмников</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Track (whole log)</source>
         <translation>Трек (весь журнал)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-151"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-164"/>
         <source>&amp;Open Log...</source>
         <translation>&amp;Открыть журнал...</translation>
     </message>
@@ -4266,12 +4319,12 @@ Serial number: %3</source>
         <translation>Очистить список</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+32"/>
         <source>%1 — GNSS Workbench</source>
         <translation>%1 — GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+61"/>
         <source>Export epochs %1 to %2</source>
         <translation>Экспорт эпох с %1 по %2</translation>
     </message>
@@ -4306,32 +4359,12 @@ Serial number: %3</source>
         <translation>&amp;Приёмник</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>&amp;Connect</source>
-        <translation>&amp;Подключить</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Ctrl+K</source>
-        <translation>Ctrl+K</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>&amp;Disconnect</source>
-        <translation>&amp;Отключить</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Ctrl+Shift+K</source>
-        <translation>Ctrl+Shift+K</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+21"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+44"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
@@ -4351,17 +4384,18 @@ Serial number: %3</source>
         <translation>О &amp;Qt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-148"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-161"/>
         <source>Open Log</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-108"/>
+        <location filename="../app/gui/main_window.cpp" line="-146"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+144"/>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
@@ -4376,7 +4410,7 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dock_table.cpp" line="-40"/>
+        <location filename="../app/gui/dock_table.cpp" line="-46"/>
         <location line="+1"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
@@ -4478,12 +4512,12 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="-134"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="-178"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+40"/>
+        <location filename="../app/gui/main_window.cpp" line="+45"/>
         <source>&amp;Record...</source>
         <translation>&amp;Запись...</translation>
     </message>
@@ -4508,12 +4542,57 @@ Serial number: %3</source>
         <translation>Ctrl+,</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+5"/>
+        <source>&amp;Connect</source>
+        <translation>&amp;Подключить</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ctrl+K</source>
+        <translation>Ctrl+K</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Отключить</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ctrl+Shift+K</source>
+        <translation>Ctrl+Shift+K</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Add Receiver</source>
+        <translation>&amp;Добавить приёмник</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Ctrl+Shift+N</source>
+        <translation>Ctrl+Shift+N</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Re&amp;name Receiver...</source>
+        <translation>Пере&amp;именовать приёмник...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C&amp;lose Receiver</source>
+        <translation>&amp;Закрыть приёмник</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Another &amp;dock for this receiver</source>
+        <translation>Ещё одна &amp;панель для этого приёмника</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Sky plot &amp;tracks</source>
         <translation>&amp;Треки на небосводе</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>&amp;Reset layout</source>
         <translation>&amp;Сбросить расположение</translation>
     </message>
@@ -4543,7 +4622,7 @@ Serial number: %3</source>
         <translation>О программе GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+46"/>
         <source>NMEA-0183 (no vendor sentences)</source>
         <translation>NMEA-0183 (без фирменных сообщений)</translation>
     </message>
@@ -4568,17 +4647,23 @@ Serial number: %3</source>
         <translation>ошибок контрольной суммы: %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>● REC</source>
         <translation>● ЗАПИСЬ</translation>
     </message>
     <message>
         <location line="+10"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+159"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
+        <source>Record every receiver to</source>
+        <translation>Записывать все приёмники в папку</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Record to</source>
         <translation>Записывать в</translation>
     </message>
@@ -4588,19 +4673,96 @@ Serial number: %3</source>
         <translation>Журналы NMEA (*.nmea)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-3"/>
+        <location line="+6"/>
         <source>Record</source>
         <translation>Запись</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-226"/>
+        <location line="+165"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+62"/>
         <source>Cannot record to %1: connect to a receiver first, and check the folder is writable.</source>
         <translation>Не удаётся записывать в %1: сначала подключитесь к приёмнику и проверьте, что папка доступна для записи.</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+73"/>
         <source>The new language is used from the next start of GNSS Workbench.</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_sessions.cpp" line="-81"/>
+        <source>Follow the selected receiver</source>
+        <translation>Показывать выбранный приёмник</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Pin to %1</source>
+        <translation>Закрепить за %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Another dock like this one</source>
+        <translation>Ещё одна такая панель</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Close this dock</source>
+        <translation>Закрыть эту панель</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1 · %2 (pinned)</source>
+        <translation>%1 · %2 (закреплена)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 baud</source>
+        <translation>%1 бод</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 sentences/s</source>
+        <translation>%1 сообщ./с</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n ошибка</numerusform>
+            <numerusform>%n ошибки</numerusform>
+            <numerusform>%n ошибок</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+11"/>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Rename receiver</source>
+        <translation>Переименовать приёмник</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Name (empty: its model and port):</source>
+        <translation>Имя (пусто: модель и порт):</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Not recording %1: connect it first, and check %2 is writable.</source>
+        <translation>Не записывается %1: сначала подключите его и проверьте, что в %2 можно писать.</translation>
     </message>
 </context>
 <context>
@@ -4806,6 +4968,42 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
+    <name>gnss::app::ReceiverChip</name>
+    <message>
+        <location filename="../app/gui/receivers_strip.cpp" line="+47"/>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::app::ReceiversStrip</name>
+    <message>
+        <location line="+27"/>
+        <source>Receivers</source>
+        <translation>Приёмники</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Show in the docks</source>
+        <translation>Показать в панелях</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rename...</source>
+        <translation>Переименовать...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Disconnect</source>
+        <translation>Отключить</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Close receiver</source>
+        <translation>Закрыть приёмник</translation>
+    </message>
+</context>
+<context>
     <name>gnss::config::SettingsEngine</name>
     <message>
         <location filename="../protocol/config/settings_engine.cpp" line="+27"/>
@@ -4853,7 +5051,7 @@ Serial number: %3</source>
         <translation>не подтверждено: связь потеряна до ответа (будет прочитано, когда она вернётся)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+41"/>
         <source>the link changed during the operation</source>
         <translation>подключение сменилось во время операции</translation>
     </message>
@@ -5936,6 +6134,224 @@ Serial number: %3</source>
         <location line="+1"/>
         <source>seconds before the latest epoch</source>
         <translation>секунды до последней эпохи</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::Cn0MapView</name>
+    <message>
+        <location filename="../ui/views/cn0_map_view.cpp" line="+33"/>
+        <source>Mean C/N0</source>
+        <translation>Средний C/N0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Count</source>
+        <translation>Число</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>N</source>
+        <translation>С</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+1"/>
+        <source>%1 dB-Hz</source>
+        <translation>%1 дБГц</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n epoch(s)</source>
+        <translation>
+            <numerusform>%n эпоха</numerusform>
+            <numerusform>%n эпохи</numerusform>
+            <numerusform>%n эпох</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::ComparePlot</name>
+    <message>
+        <location filename="../ui/views/compare_plot.cpp" line="+47"/>
+        <source>Two or more receivers are compared here.</source>
+        <translation>Здесь сравниваются два приёмника и более.</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>N ↑  E →  ±%1 m</source>
+        <translation>С ↑  В →  ±%1 м</translation>
+    </message>
+    <message>
+        <location line="+73"/>
+        <source>horizontal (solid), up (dashed): %1 … %2 m</source>
+        <translation>в плане (сплошная), по высоте (пунктир): %1 … %2 м</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::CompareView</name>
+    <message>
+        <location filename="../ui/views/compare_view.cpp" line="+56"/>
+        <source>The numbers, the plots and the export are over this window</source>
+        <translation>Числа, графики и экспорт — за это окно</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>last %n minute(s)</source>
+        <translation>
+            <numerusform>последняя %n минута</numerusform>
+            <numerusform>последние %n минуты</numerusform>
+            <numerusform>последние %n минут</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The receiver the plots draw against the reference</source>
+        <translation>Приёмник, который графики сравнивают с опорным</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Export</source>
+        <translation>Экспорт</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>CSV, one row per matched epoch...</source>
+        <translation>CSV, строка на каждую совпавшую эпоху...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>JSON, the numbers over the window...</source>
+        <translation>JSON, числа за окно...</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Summary</source>
+        <translation>Сводка</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Signals</source>
+        <translation>Сигналы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Plots</source>
+        <translation>Графики</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Connect two or more receivers to compare them (Add receiver)</source>
+        <translation>Подключите два приёмника и более, чтобы сравнить их (Добавить приёмник)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 matched epochs (%2 since the start)</source>
+        <translation>Совпавших эпох: %1 (с начала: %2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Receivers are matched epoch by epoch on UTC time; each difference is a receiver minus the first, %1.</source>
+        <translation>Приёмники сопоставляются по эпохам по времени UTC; каждая разность — приёмник минус первый, %1.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Fix %1 (share of epochs)</source>
+        <translation>Решение %1 (доля эпох)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 mean (m)</source>
+        <translation>%1, среднее (м)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 median (m)</source>
+        <translation>%1, медиана (м)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 p95 (m)</source>
+        <translation>%1, p95 (м)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>East</source>
+        <translation>Восток</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>North</source>
+        <translation>Север</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Up</source>
+        <translation>Высота</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Horizontal</source>
+        <translation>В плане</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CEP50 (m)</source>
+        <translation>CEP50 (м)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CEP95 (m)</source>
+        <translation>CEP95 (м)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>C/N0 difference, mean (dB)</source>
+        <translation>Разность C/N0, среднее (дБ)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C/N0 difference, p95 (dB)</source>
+        <translation>Разность C/N0, p95 (дБ)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>C/N0 %1: mean, p95 (dB), satellites</source>
+        <translation>C/N0 %1: среднее, p95 (дБ), спутники</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, %2 (%3)</source>
+        <translation>%1, %2 (%3)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Only in the reference</source>
+        <translation>Только у опорного</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only in this one</source>
+        <translation>Только у этого</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Satellite</source>
+        <translation>Спутник</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Signal</source>
+        <translation>Сигнал</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (dB-Hz)</source>
+        <translation>%1 (дБГц)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 − %2</source>
+        <translation>%1 − %2</translation>
     </message>
 </context>
 <context>
@@ -7080,6 +7496,19 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
+    <name>gnss::ui::ReceiverSession</name>
+    <message>
+        <location filename="../ui/models/receiver_session.cpp" line="+67"/>
+        <source>Receiver</source>
+        <translation>Приёмник</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
     <name>gnss::ui::RtkView</name>
     <message>
         <location filename="../ui/views/rtk_view.cpp" line="+53"/>
@@ -7669,7 +8098,7 @@ Serial number: %3</source>
         </translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+12"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -7706,6 +8135,53 @@ Serial number: %3</source>
         <location line="+18"/>
         <source>%1. Settings can be neither read nor changed from here.</source>
         <translation>%1. Отсюда настройки нельзя ни прочитать, ни изменить.</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::SignalHistoryView</name>
+    <message>
+        <location filename="../ui/views/signal_history_view.cpp" line="+57"/>
+        <source>No C/N0 yet</source>
+        <translation>C/N0 ещё нет</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>−%1 min</source>
+        <translation>−%1 мин</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>now</source>
+        <translation>сейчас</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>C/N0 (dB-Hz) of each signal</source>
+        <translation>C/N0 (дБГц) каждого сигнала</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1/%2</source>
+        <translation>%1/%2</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Highlight</source>
+        <translation>Выделить</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>satellites, e.g. G05 R12 (or click a line)</source>
+        <translation>спутники, например G05 R12 (или щёлкните линию)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>last %n minute(s)</source>
+        <translation>
+            <numerusform>последняя %n минута</numerusform>
+            <numerusform>последние %n минуты</numerusform>
+            <numerusform>последние %n минут</numerusform>
+        </translation>
     </message>
 </context>
 <context>

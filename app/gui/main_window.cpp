@@ -91,6 +91,7 @@ MainWindow::~MainWindow() {
     // The docks outlive this class's members (QWidget deletes its children later): their
     // destruction must not reach the dock table.
     for (QDockWidget *d : docks_.keys()) d->disconnect(this);
+    stopLogSignalScan();
     // Closing the link fails a command still waiting for its answer; its report must not reach
     // a window half destroyed.
     for (ui::ReceiverSession *s : std::as_const(sessions_)) {
@@ -207,7 +208,26 @@ void MainWindow::createMenus() {
 
     receiverMenu_ = menuBar()->addMenu(tr("&Receiver"));
     receiverMenu_->setObjectName("receiverMenu");
-    rebuildReceiverActions();
+    receiverMenu_
+            ->addAction(tr("&Connect"), this,
+                        [this] { connectReceiver(current_, bar_->selection()); })
+            ->setShortcut(QKeySequence(tr("Ctrl+K")));
+    receiverMenu_
+            ->addAction(tr("&Disconnect"), this,
+                        [this] { current_->link()->disconnectFromSource(); })
+            ->setShortcut(QKeySequence(tr("Ctrl+Shift+K")));
+    receiverMenu_->addSeparator();
+    // Several receivers: another one on the source chosen in the connection bar.
+    QAction *add = receiverMenu_->addAction(tr("&Add Receiver"), this,
+                                            [this] { addReceiver(bar_->selection()); });
+    add->setObjectName("addReceiverAction");
+    add->setShortcut(QKeySequence(tr("Ctrl+Shift+N")));
+    receiverMenu_->addAction(tr("Re&name Receiver..."), this, [this] { renameReceiver(current_); });
+    QAction *close = receiverMenu_->addAction(tr("C&lose Receiver"), this,
+                                              [this] { closeReceiver(current_); });
+    close->setObjectName("closeReceiverAction");
+    receiverMenu_->addSeparator();
+    rebuildReceiverActions(); // the receivers, Ctrl+1…9
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     viewMenu_->setObjectName("viewMenu");

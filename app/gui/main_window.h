@@ -12,6 +12,8 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include <atomic>
+#include <memory>
 #include <span>
 
 class QLabel;
@@ -19,6 +21,7 @@ class QSettings;
 class QDockWidget;
 class QToolBar;
 class QMenu;
+class QThread;
 
 namespace gnss {
 class DialectRegistry;
@@ -206,6 +209,9 @@ private:
     void toggleRecording(bool on);
     void createLogViewer();
     void wireLogConsole(ui::ConsoleView *view);
+    // The open log's signal history (C/N0 over the whole log), on a worker.
+    void scanLogSignals();
+    void stopLogSignalScan();
     void putLogViewAway();
     void createLogMenu(QMenu *file);
     void rememberLog(const QString &path);
@@ -241,6 +247,9 @@ private:
     QMenu *recentMenu_ = nullptr;
     QAction *exportAction_ = nullptr, *closeLogAction_ = nullptr;
     bool logDocksShown_ = false;
+    QThread *logScan_ = nullptr;
+    std::shared_ptr<std::atomic<bool>> logScanCancel_;
+    bool logSignalsScanned_ = false;
     bool logDocksPlaced_ = false; // the log's docks have a place in the layout (shown before)
     QLabel *stateLabel_ = nullptr, *dialectLabel_ = nullptr, *rateLabel_ = nullptr,
            *errorLabel_ = nullptr, *fixLabel_ = nullptr, *recordLabel_ = nullptr;

@@ -10,6 +10,7 @@
 #include "logview/timeline_panel.h"
 #include "logview/timeline_strip.h"
 #include "models/receiver_session.h"
+#include "models/signal_history_model.h"
 #include "session/receiver_link.h"
 #include "views/console_view.h"
 
@@ -23,6 +24,7 @@
 #include <QMimeData>
 #include <QSettings>
 #include <QStatusBar>
+#include <QThread>
 #include <QToolBar>
 
 namespace gnss::app {
@@ -66,7 +68,50 @@ void MainWindow::createLogViewer() {
     logViewer_->lines()->setTimeZone(prefs_.display.time);
     connect(this, &MainWindow::displayPrefsChanged, logViewer_->lines(),
             [this](const ui::DisplayPrefs &p) { logViewer_->lines()->setTimeZone(p.time); });
+    // The log's signal history is the whole log's, scanned on a worker once it is indexed (the
+    // cursor's moves are not new epochs).
+    logSession_->signalHistory()->setHistory(SignalHistory(0));
+    connect(logViewer_, &LogViewer::indexed, this, [this] {
+        if (!logSignalsScanned_) scanLogSignals();
+    });
     setAcceptDrops(true);
+}
+
+void MainWindow::scanLogSignals() {
+    stopLogSignalScan();
+    const logview::LogView *view = logViewer_->view();
+    if (!view || view->epochCount() == 0) return;
+    logSignalsScanned_ = true;
+    // About two thousand samples per signal over the whole log, one a second at most.
+    const auto first = view->epoch(0), last = view->epoch(view->epochCount() - 1);
+    const bool timed =
+            first && last && first->utcMs != logview::kNoTime && last->utcMs != logview::kNoTime;
+    const std::int64_t step =
+            std::max<std::int64_t>(1000, timed ? (last->utcMs - first->utcMs) / 2000 : 0);
+    const std::string_view bytes = view->bytes(0, view->indexedEnd());
+    auto cancel = std::make_shared<std::atomic<bool>>(false);
+    logScanCancel_ = cancel;
+    QPointer<ui::SignalHistoryModel> target = logSession_->signalHistory();
+    const DialectRegistry *registry = &registry_;
+    logScan_ = QThread::create([bytes, step, cancel, target, registry] {
+        SignalHistory h = historyOfLog(bytes, *registry, step, INT64_MIN, INT64_MAX, cancel.get());
+        if (cancel->load()) return;
+        QMetaObject::invokeMethod(
+                target.data(),
+                [target, h]() {
+                    if (target) target->setHistory(h);
+                },
+                Qt::QueuedConnection);
+    });
+    logScan_->start(QThread::LowPriority);
+}
+
+void MainWindow::stopLogSignalScan() {
+    if (!logScan_) return;
+    *logScanCancel_ = true;
+    logScan_->wait(); // it stops within a megabyte
+    delete logScan_;
+    logScan_ = nullptr;
 }
 
 void MainWindow::wireLogConsole(ui::ConsoleView *view) {
@@ -159,6 +204,9 @@ void MainWindow::openLog(const QString &path, const QString &at) {
     exportAction_->setEnabled(false);
     playOutAction_->setEnabled(false);
     const bool wasOpen = logViewer_->isOpen();
+    stopLogSignalScan(); // before the old log's mapping goes
+    logSignalsScanned_ = false;
+    logSession_->signalHistory()->setHistory(SignalHistory(0));
     logViewer_->open(path, at);
     if (wasOpen) { // the consoles on the log show the new one's lines
         for (auto it = docks_.cbegin(); it != docks_.cend(); ++it)
@@ -216,6 +264,7 @@ void MainWindow::putLogViewAway() {
 
 void MainWindow::closeLog() {
     if (!logViewer_->isOpen()) return;
+    stopLogSignalScan();
     logViewer_->close();
     rebindFollowingDocks(); // the selected receiver again
     putLogViewAway();

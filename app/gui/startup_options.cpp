@@ -69,7 +69,8 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
             QCoreApplication::translate("StartupOptions",
                                         "Show this dock in front of its tab group: settings, "
                                         "console, sky, signal, fix, satellites, rtk, charts, "
-                                        "corrections, deviation, attitude, stats, info; with "
+                                        "corrections, deviation, attitude, stats, info, history, "
+                                        "compare; with "
                                         "a log open also logTrack, logSummary, logCharts, "
                                         "logEvents."),
             "name");

@@ -13,6 +13,8 @@
 #include "sim/receiver.h"
 #include "state/epoch_assembler.h"
 
+#include <deque>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -184,6 +186,36 @@ private slots:
                          .toDouble(),
                  -3.0);
         QCOMPARE(j["receivers"].toArray().at(0).toObject()["fix"].toObject()["3d"].toDouble(), 1.0);
+    }
+
+    // A window of the last matches (the Compare dock's) gives the report of those alone, with
+    // the whole run's numbers when it holds every match.
+    void aWindowOfMatchesHasItsOwnReport() {
+        Comparison c({"ref", "other"});
+        const auto m = wgs84::metresPerDegree(55.75);
+        std::deque<MatchRecord> all, last10;
+        for (int i = 0; i < 100; ++i) {
+            c.add(0, at(i * 1000, 55.75, 37.62, 160, {{gps(1), 1, 40}, {gps(2), 1, 30}}));
+            c.add(1, at(i * 1000, 55.75, 37.62 + (i / 100.0) / m.east, 160, {{gps(1), 1, 37}}),
+                  [&](const Match &match) {
+                      all.push_back(MatchRecord::of(match));
+                      last10.push_back(all.back());
+                      if (last10.size() > 10) last10.pop_front();
+                  });
+        }
+        QCOMPARE(all.size(), std::size_t(100));
+        QCOMPARE(all.back().fixes, (std::vector<FixType>{FixType::Fix3D, FixType::Fix3D}));
+        const Report whole = c.report(), window = Comparison::reportOf({"ref", "other"}, all);
+        QCOMPARE(window.matchedEpochs, whole.matchedEpochs);
+        QCOMPARE(window.pairs.at(0).east.mean, whole.pairs.at(0).east.mean);
+        QCOMPARE(window.pairs.at(0).cep95, whole.pairs.at(0).cep95);
+        QCOMPARE(window.pairs.at(0).onlyInReference.at(0).epochs, std::size_t(100));
+        QCOMPARE(window.receivers.at(1).fixes.at(0).epochs, std::size_t(100));
+        // The last ten: east 0.90 .. 0.99 m.
+        const Report recent = Comparison::reportOf({"ref", "other"}, last10);
+        QCOMPARE(recent.matchedEpochs, std::size_t(10));
+        QVERIFY(std::abs(recent.pairs.at(0).east.mean - 0.945) < 1e-6);
+        QCOMPARE(recent.pairs.at(0).onlyInReference.at(0).epochs, std::size_t(10));
     }
 
     // Two simulated receivers of one sky (same seed); the second told to differ. The report
