@@ -14,6 +14,7 @@
 #include "link/baud_detector.h"
 #include "link/connection.h"
 #include "link/port_watcher.h"
+#include "link/recording_name.h"
 #include "link/replay_transport.h"
 #include "link/sentence_stream.h"
 #include "link/vendor_detector.h"
@@ -156,14 +157,7 @@ std::string fileNameFor(std::string source, std::vector<std::string> &taken) {
     if (const auto slash = source.rfind('/');
         slash != std::string::npos && slash + 1 < source.size())
         source = source.substr(slash + 1);
-    for (char &c : source)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_')
-            c = '_';
-    std::string name = source + ".nmea";
-    for (int n = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++n)
-        name = source + "-" + std::to_string(n) + ".nmea";
-    taken.push_back(name);
-    return name;
+    return link::recordingFileName(source, taken);
 }
 
 // A run that its --duration ended without a byte received failed (1), and says so.

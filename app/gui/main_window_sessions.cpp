@@ -4,6 +4,7 @@
 #include "gui/log_viewer.h"
 #include "gui/main_window.h"
 #include "gui/receivers_strip.h"
+#include "link/recording_name.h"
 #include "models/receiver_session.h"
 #include "session/receiver_link.h"
 #include "style/gnss_style.h"
@@ -30,24 +31,6 @@ QIcon swatch(const QColor &c) {
     return QIcon(p);
 }
 
-// A file name for a receiver's recording ("NV08C-RTK /dev/pts/3" -> "NV08C-RTK_dev_pts_3.nmea"),
-// unique among `taken`.
-QString recordingName(const QString &receiver, QStringList &taken) {
-    QString base;
-    for (const QChar c : receiver) {
-        const bool keep = c.isLetterOrNumber() || c == '-' || c == '.';
-        if (keep)
-            base += c;
-        else if (!base.endsWith('_'))
-            base += '_';
-    }
-    while (base.startsWith('_') || base.startsWith('.')) base.remove(0, 1);
-    if (base.isEmpty()) base = QStringLiteral("receiver");
-    QString name = base + QStringLiteral(".nmea");
-    for (int n = 2; taken.contains(name); ++n) name = QStringLiteral("%1-%2.nmea").arg(base).arg(n);
-    taken << name;
-    return name;
-}
 } // namespace
 
 ui::ReceiverSession *MainWindow::newSession() {
@@ -230,13 +213,12 @@ void MainWindow::dockMenu(QDockWidget *d, const QPoint &globalPos) {
         pin->setChecked(b.pinned == s);
     }
     menu.addSeparator();
-    menu.addAction(tr("Another dock like this one"), this, [this, d, b] {
+    menu.addAction(tr("Another dock like this one"), this, [this, b] {
         ui::ReceiverSession *s = b.pinned ? b.pinned.data() : current_;
         if (QDockWidget *copy = duplicateDock(QLatin1String(b.row->name), s)) {
             copy->show();
             copy->raise();
         }
-        Q_UNUSED(d);
     });
     if (b.duplicate) menu.addAction(tr("Close this dock"), d, &QWidget::close);
     menu.exec(globalPos);
@@ -342,10 +324,12 @@ void MainWindow::renameReceiver(ui::ReceiverSession *s) {
 }
 
 QStringList MainWindow::recordAll(const QString &folder, QString *why) {
-    QStringList started, taken, failed;
+    QStringList started, failed;
+    std::vector<std::string> taken;
     const QDir dir(folder);
     for (ui::ReceiverSession *s : sessions_) {
-        const QString path = dir.filePath(recordingName(s->name(), taken));
+        const QString path = dir.filePath(
+                QString::fromStdString(link::recordingFileName(s->name().toStdString(), taken)));
         if (s->link()->startRecording(path))
             started << path;
         else

@@ -3,6 +3,7 @@
 // on pseudo-terminals at different speeds, found by baud detection. The report gives back what
 // the simulator was told, and the live numbers agree with the logs'.
 #include "cli_run.h"
+#include "compare_json.h"
 #include "sim_process.h"
 
 #include <QJsonArray>
@@ -29,15 +30,11 @@ QByteArray why(const Run &r) {
 }
 
 double mean(const QJsonObject &receiver, const char *axis) {
-    return receiver["difference_m"].toObject()[axis].toObject()["mean"].toDouble();
+    return gnss::test::compareMean(receiver, axis);
 }
 
 double cn0(const QJsonObject &receiver, const char *system) {
-    return receiver["cn0_db"]
-            .toObject()["per_constellation"]
-            .toObject()[system]
-            .toObject()["mean"]
-            .toDouble();
+    return gnss::test::compareCn0(receiver, system);
 }
 
 // The report's second receiver shows what the simulator was told (NMEA's digits: the standard

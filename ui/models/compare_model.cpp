@@ -79,6 +79,7 @@ void CompareModel::setWindowSeconds(int seconds) {
 }
 
 void CompareModel::observe(int receiver) {
+    if (receivers_.size() < 2) return; // nothing to compare: no work per epoch
     const ReceiverStateModel *state = receivers_[receiver].state;
     if (!state || state->epochCount() == 0) return; // cleared: a new connection
     auto o = compare::Observation::of(state->state().epoch);
