@@ -4359,7 +4359,7 @@ Serial number: %3</source>
         <translation>&amp;Приёмник</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
@@ -4389,13 +4389,13 @@ Serial number: %3</source>
         <translation>Открыть журнал</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-146"/>
+        <location filename="../app/gui/main_window.cpp" line="-148"/>
         <source>trying %1…</source>
         <translation>проверка %1…</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+144"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+127"/>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
@@ -4542,7 +4542,7 @@ Serial number: %3</source>
         <translation>Ctrl+,</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&amp;Connect</source>
         <translation>&amp;Подключить</translation>
     </message>
@@ -4552,7 +4552,7 @@ Serial number: %3</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Отключить</translation>
     </message>
@@ -4653,7 +4653,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+159"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+158"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
@@ -4679,8 +4679,8 @@ Serial number: %3</source>
         <translation>Запись</translation>
     </message>
     <message>
-        <location line="-226"/>
-        <location line="+165"/>
+        <location line="-228"/>
+        <location line="+167"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4695,7 +4695,7 @@ Serial number: %3</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_sessions.cpp" line="-81"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="-80"/>
         <source>Follow the selected receiver</source>
         <translation>Показывать выбранный приёмник</translation>
     </message>
@@ -4710,7 +4710,7 @@ Serial number: %3</source>
         <translation>Ещё одна такая панель</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Close this dock</source>
         <translation>Закрыть эту панель</translation>
     </message>
@@ -4760,7 +4760,7 @@ Serial number: %3</source>
         <translation>Имя (пусто: модель и порт):</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>Not recording %1: connect it first, and check %2 is writable.</source>
         <translation>Не записывается %1: сначала подключите его и проверьте, что в %2 можно писать.</translation>
     </message>
@@ -6160,7 +6160,7 @@ Serial number: %3</source>
         <translation>%1 дБГц</translation>
     </message>
     <message numerus="yes">
-        <location line="+5"/>
+        <location line="+7"/>
         <source>%n epoch(s)</source>
         <translation>
             <numerusform>%n эпоха</numerusform>
@@ -6190,7 +6190,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CompareView</name>
     <message>
-        <location filename="../ui/views/compare_view.cpp" line="+56"/>
+        <location filename="../ui/views/compare_view.cpp" line="+55"/>
         <source>The numbers, the plots and the export are over this window</source>
         <translation>Числа, графики и экспорт — за это окно</translation>
     </message>
@@ -8140,7 +8140,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::SignalHistoryView</name>
     <message>
-        <location filename="../ui/views/signal_history_view.cpp" line="+57"/>
+        <location filename="../ui/views/signal_history_view.cpp" line="+58"/>
         <source>No C/N0 yet</source>
         <translation>C/N0 ещё нет</translation>
     </message>
@@ -8150,9 +8150,14 @@ Serial number: %3</source>
         <translation>−%1 мин</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>now</source>
         <translation>сейчас</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>end</source>
+        <translation>конец</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -47,7 +47,7 @@ void Cn0MapView::setShow(Show s) {
 void Cn0MapView::paintEvent(QPaintEvent *) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
-    const double top = mode_->geometry().bottom() + 4, legend = 22;
+    const double top = mode_->geometry().bottom() + 4, legend = 36;
     const double side = std::min(width() - 8.0, height() - top - legend - 20);
     if (side < 40) return;
     const QPointF c(width() / 2.0, top + 10 + side / 2);
@@ -96,13 +96,15 @@ void Cn0MapView::paintEvent(QPaintEvent *) {
     }
     const QRectF labels(bar.left(), bar.bottom() + 1, bar.width(), 14);
     if (show_ == Show::MeanCn0) {
-        p.drawText(labels, Qt::AlignLeft, tr("%1 dB-Hz").arg(kMapLowCn0));
+        p.drawText(labels, Qt::AlignLeft, QString::number(kMapLowCn0));
         p.drawText(labels, Qt::AlignRight, tr("%1 dB-Hz").arg(kMapHighCn0));
     } else {
         p.drawText(labels, Qt::AlignLeft, QStringLiteral("1"));
         p.drawText(labels, Qt::AlignRight, QString::number(most));
     }
-    p.drawText(labels, Qt::AlignHCenter, tr("%n epoch(s)", nullptr, int(h.epochs())));
+    // On a line of its own: the scale's ends take the first, however narrow the dock.
+    p.drawText(labels.translated(0, 14), Qt::AlignHCenter,
+               tr("%n epoch(s)", nullptr, int(h.epochs())));
 }
 
 } // namespace gnss::ui

@@ -47,7 +47,8 @@ void ComparePlot::paintEvent(QPaintEvent *) {
                    tr("Two or more receivers are compared here."));
         return;
     }
-    const double fixRows = 14.0 * model_->receivers().size() + 18;
+    // The fix strips take a thin row each; the plots the rest, however low the dock.
+    const double fixRows = 14.0 * model_->receivers().size() + 6;
     const double side = std::min(all.width() * 0.45, all.height() - fixRows);
     paintScatter(p, QRectF(all.left(), all.top(), side, side));
     const QRectF right(all.left() + side + 12, all.top(), all.width() - side - 12, side);
@@ -77,8 +78,9 @@ void ComparePlot::paintScatter(QPainter &p, const QRectF &r) {
     p.drawLine(QPointF(r.left(), c.y()), QPointF(r.right(), c.y()));
     p.drawLine(QPointF(c.x(), r.top()), QPointF(c.x(), r.bottom()));
     p.setPen(palette().color(QPalette::WindowText));
-    p.drawText(r.adjusted(4, 2, -4, -2), Qt::AlignTop | Qt::AlignLeft,
-               tr("N ↑  E →  ±%1 m").arg(half, 0, 'g', 3));
+    if (r.width() > 100) // the scale, where it fits beside the points
+        p.drawText(r.adjusted(4, 2, -4, -2), Qt::AlignTop | Qt::AlignLeft,
+                   tr("N ↑  E →  ±%1 m").arg(half, 0, 'g', 3));
     const QColor colour = model_->receivers().value(receiver_).colour;
     p.setPen(Qt::NoPen);
     p.setBrush(colour);

@@ -31,6 +31,7 @@ public:
         setMinimumSize(200, 60);
     }
     std::set<QString> chosen;
+    bool live = true;
     std::function<void(const QString &)> onPick;
 
 protected:
@@ -57,13 +58,19 @@ protected:
             p.drawText(r, Qt::AlignCenter, tr("No C/N0 yet"));
             return;
         }
+        // The time axis ends with the newest sample kept (the step in progress is not one yet).
         t0_ = h.oldestMs();
-        t1_ = std::max(h.newestMs(), t0_ + 1000);
+        std::int64_t newest = t0_;
+        for (const auto &[key, samples] : h.series())
+            if (!samples.empty()) newest = std::max(newest, samples.back().timeMs);
+        t1_ = std::max(newest, t0_ + 1000);
         // The time axis: minutes before the newest sample.
         p.setPen(text);
         p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), 16), Qt::AlignLeft,
                    tr("−%1 min").arg(double(t1_ - t0_) / 60'000.0, 0, 'f', 1));
-        p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), 16), Qt::AlignRight, tr("now"));
+        // Live, the right edge is now; a log's history ends with the log.
+        p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), 16), Qt::AlignRight,
+                   live ? tr("now") : tr("end"));
         p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), 16), Qt::AlignHCenter,
                    tr("C/N0 (dB-Hz) of each signal"));
         // The faint ones first, the chosen on top.
@@ -182,6 +189,8 @@ QStringList SignalHistoryView::highlighted() const {
 
 void SignalHistoryView::setLive(bool live) {
     span_->setVisible(live);
+    canvas_->live = live;
+    canvas_->update();
 }
 
 } // namespace gnss::ui
