@@ -25,6 +25,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QThread>
+#include <QTimer>
 #include <QToolBar>
 
 namespace gnss::app {
@@ -68,33 +69,44 @@ void MainWindow::createLogViewer() {
     logViewer_->lines()->setTimeZone(prefs_.display.time);
     connect(this, &MainWindow::displayPrefsChanged, logViewer_->lines(),
             [this](const ui::DisplayPrefs &p) { logViewer_->lines()->setTimeZone(p.time); });
-    // The log's signal history is the whole log's, scanned on a worker once it is indexed (the
-    // cursor's moves are not new epochs).
+    // The log's signal history is the selected range's (the whole log's without one), scanned on
+    // a worker once the log is indexed and again when the range settles (the cursor's moves are
+    // not new epochs).
     logSession_->signalHistory()->setHistory(SignalHistory(0));
     connect(logViewer_, &LogViewer::indexed, this, [this] {
         if (!logSignalsScanned_) scanLogSignals();
     });
+    auto *rescan = new QTimer(this);
+    rescan->setSingleShot(true);
+    rescan->setInterval(300); // a range being dragged is scanned once it stops
+    connect(rescan, &QTimer::timeout, this, [this] {
+        if (logSignalsScanned_) scanLogSignals();
+    });
+    connect(logViewer_->cursor(), &ui::LogCursor::rangeChanged, rescan,
+            qOverload<>(&QTimer::start));
     setAcceptDrops(true);
 }
 
 void MainWindow::scanLogSignals() {
     stopLogSignalScan();
     const logview::LogView *view = logViewer_->view();
-    if (!view || view->epochCount() == 0) return;
+    const ui::LogCursor *cursor = logViewer_->cursor();
+    if (!view || cursor->empty()) return;
     logSignalsScanned_ = true;
-    // About two thousand samples per signal over the whole log, one a second at most.
-    const auto first = view->epoch(0), last = view->epoch(view->epochCount() - 1);
+    const auto [firstEpoch, lastEpoch] = cursor->selection();
+    // About two thousand samples per signal over the range, one a second at most.
+    const auto first = view->epoch(firstEpoch), last = view->epoch(lastEpoch);
     const bool timed =
             first && last && first->utcMs != logview::kNoTime && last->utcMs != logview::kNoTime;
     const std::int64_t step =
             std::max<std::int64_t>(1000, timed ? (last->utcMs - first->utcMs) / 2000 : 0);
-    const std::string_view bytes = view->bytes(0, view->indexedEnd());
+    const logview::LogView::Slice slice = view->slice(firstEpoch, lastEpoch);
     auto cancel = std::make_shared<std::atomic<bool>>(false);
     logScanCancel_ = cancel;
     QPointer<ui::SignalHistoryModel> target = logSession_->signalHistory();
     const DialectRegistry *registry = &registry_;
-    logScan_ = QThread::create([bytes, step, cancel, target, registry] {
-        SignalHistory h = historyOfLog(bytes, *registry, step, INT64_MIN, INT64_MAX, cancel.get());
+    logScan_ = QThread::create([slice, step, cancel, target, registry] {
+        SignalHistory h = historyOfLog(slice.bytes, *registry, step, slice.dialect, cancel.get());
         if (cancel->load()) return;
         QMetaObject::invokeMethod(
                 target.data(),

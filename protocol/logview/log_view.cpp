@@ -572,7 +572,7 @@ RangeStats LogView::stats(std::size_t first, std::size_t last, bool stationary) 
     return rangeStats(index_.records, first, last, stationary);
 }
 
-std::vector<AddressStats> LogView::messageStats(std::size_t first, std::size_t last) const {
+LogView::Slice LogView::slice(std::size_t first, std::size_t last) const {
     std::shared_lock lock(mutex_);
     const auto &recs = index_.records;
     if (recs.empty() || first >= recs.size()) return {};
@@ -581,10 +581,16 @@ std::vector<AddressStats> LogView::messageStats(std::size_t first, std::size_t l
     const std::uint64_t to =
             std::min(last + 1 < recs.size() ? recs[last + 1].offset : index_.openEnd, liveEnd());
     if (to <= from) return {};
+    const Checkpoint *cp = index_.checkpointFor(first);
+    return {map_.bytes(from, to - from), cp ? cp->dialect : nullptr};
+}
+
+std::vector<AddressStats> LogView::messageStats(std::size_t first, std::size_t last) const {
+    const Slice s = slice(first, last);
+    if (s.bytes.empty()) return {};
     DecoderOptions o = options_.index.decoder;
-    if (const Checkpoint *cp = index_.checkpointFor(first); cp && cp->dialect)
-        o.dialect = std::string(cp->dialect->id);
-    return scanLog(map_.bytes(from, to - from), registry_, o,
+    if (s.dialect) o.dialect = std::string(s.dialect->id);
+    return scanLog(s.bytes, registry_, o,
                    options_.index.threads ? options_.index.threads
                                           : std::max(1u, std::thread::hardware_concurrency()))
             .addresses;

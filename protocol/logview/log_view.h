@@ -139,6 +139,14 @@ public:
     // Bytes of the mapping (valid while the log is open; empty past the end).
     std::string_view bytes(std::uint64_t offset, std::uint64_t length) const;
 
+    // Epochs [first, last] as bytes of the mapping (valid while the log is open) and the dialect
+    // in force at the first: what a worker decodes again (a range's signal history).
+    struct Slice {
+        std::string_view bytes;
+        const Dialect *dialect = nullptr; // nullptr: recognised as it goes
+    };
+    Slice slice(std::size_t first, std::size_t last) const;
+
     RangeStats stats(std::size_t first, std::size_t last, bool stationary = false) const;
     std::vector<AddressStats> messageStats(std::size_t first, std::size_t last) const;
     // Writes epochs [first, last] in `format` (Nmea: their bytes, exactly).

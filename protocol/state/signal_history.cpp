@@ -48,7 +48,6 @@ bool SignalHistory::add(const Epoch &e) {
     if (lastTimeMs_ >= 0 && tod + kDayMs / 2 < lastTimeMs_) dayMs_ += kDayMs;
     lastTimeMs_ = tod;
     const std::int64_t t = tod + dayMs_;
-    if (t < fromMs_ || t > toMs_) return false;
     newestMs_ = std::max(newestMs_, t);
     ++epochs_;
     const std::int64_t step = t - t % stepMs_;
@@ -91,11 +90,11 @@ bool SignalHistory::add(const Epoch &e) {
 }
 
 SignalHistory historyOfLog(std::string_view log, const DialectRegistry &registry,
-                           std::int64_t stepMs, std::int64_t fromMs, std::int64_t toMs,
+                           std::int64_t stepMs, const Dialect *dialect,
                            const std::atomic<bool> *cancel) {
     SignalHistory h(0, stepMs);
-    h.setWindow(fromMs, toMs);
     StreamDecoder decoder(registry, DecoderOptions{});
+    if (dialect) decoder.setDialect(dialect);
     EpochAssembler assembler(decoder.dialect());
     auto keep = [&](const Epoch &e) { h.add(e); };
     constexpr std::size_t kChunk = 1 << 20;

@@ -18,6 +18,7 @@
 
 namespace gnss {
 
+struct Dialect;
 struct Epoch;
 class DialectRegistry;
 
@@ -48,12 +49,6 @@ public:
 
     // An epoch with a time; one without is skipped (false).
     bool add(const Epoch &e);
-    // Only the epochs from `fromMs` to `toMs` (times as the samples': days counted from the
-    // first epoch's) are kept from now on; the default keeps all.
-    void setWindow(std::int64_t fromMs, std::int64_t toMs) {
-        fromMs_ = fromMs;
-        toMs_ = toMs;
-    }
     void clear();
     void setSpan(std::int64_t spanMs);
     std::int64_t span() const { return spanMs_; }
@@ -75,7 +70,6 @@ private:
     void flush(const Key &k, Pending &p);
 
     std::int64_t spanMs_, stepMs_;
-    std::int64_t fromMs_ = INT64_MIN, toMs_ = INT64_MAX;
     std::map<Key, std::deque<Sample>> series_;
     std::map<Key, Pending> pending_;
     std::array<Cell, kAzimuthCells * kElevationCells> cells_{};
@@ -83,12 +77,11 @@ private:
     std::int64_t newestMs_ = -1, lastTimeMs_ = -1, dayMs_ = 0;
 };
 
-// A whole log decoded front to back (the dialect recognised as it goes): its signals' history
-// (span 0, one sample per `stepMs`), from `fromMs` to `toMs` when given. Stops early, with what it
-// has, when `cancel` turns true.
+// A log, or a range of one (LogView::slice), decoded front to back: its signals' history (span 0,
+// one sample per `stepMs`). `dialect`: the one in force where the bytes begin (nullptr: recognised
+// as it goes). Stops early, with what it has, when `cancel` turns true.
 SignalHistory historyOfLog(std::string_view log, const DialectRegistry &registry,
-                           std::int64_t stepMs, std::int64_t fromMs = INT64_MIN,
-                           std::int64_t toMs = INT64_MAX,
+                           std::int64_t stepMs, const Dialect *dialect = nullptr,
                            const std::atomic<bool> *cancel = nullptr);
 
 } // namespace gnss

@@ -5,13 +5,17 @@
 #include "builtin/simulators.h"
 #include "common/app_transports.h"
 #include "config/settings_engine.h"
+#include "gui/log_viewer.h"
 #include "gui/main_window.h"
 #include "gui/preferences_dialog.h"
 #include "gui/startup_options.h"
 #include "gui/window_start.h"
+#include "logview/log_cursor.h"
 #include "models/message_stats_model.h"
+#include "models/receiver_session.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
+#include "models/signal_history_model.h"
 #include "session/receiver_link.h"
 #include "views/sky_plot_view.h"
 
@@ -311,6 +315,36 @@ private slots:
         QTRY_VERIFY(!w.dock("skyDock")->visibleRegion().isEmpty());
         w.openLog(log);
         for (const char *d : logDocks) QVERIFY2(!w.dock(d)->isHidden(), d);
+    }
+
+    // The log's signal history covers the whole log, then the range selected on the timeline,
+    // then the whole log again when the range is cleared.
+    void logSignalHistoryFollowsTheRange() {
+        const QString log = dir_.filePath("history.nmea");
+        {
+            auto rx = gnss::sim::builtinSimulators().make("nvs", {});
+            QFile f(log);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            for (int s = 0; s < 300; ++s) {
+                rx->advance(1.0);
+                f.write(QByteArray::fromStdString(rx->takeOutput()));
+            }
+        }
+        auto s = std::make_unique<QSettings>(dir_.filePath("history.ini"), QSettings::IniFormat);
+        gnss::app::MainWindow w(registry_, transports_, s.get());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.openLog(log);
+        auto history = [&w] { return &w.session()->signalHistory()->history(); };
+        QTRY_VERIFY_WITH_TIMEOUT(history()->epochs() >= 299, 10000);
+        QVERIFY(!history()->series().empty());
+        gnss::ui::LogCursor *cursor = w.logViewer()->cursor();
+        QVERIFY(cursor->epochCount() >= 299);
+        cursor->setRange(100, 149);
+        QTRY_COMPARE_WITH_TIMEOUT(history()->epochs(), std::uint64_t(50), 10000);
+        QVERIFY(history()->newestMs() - history()->oldestMs() <= 49'000);
+        cursor->clearRange();
+        QTRY_VERIFY_WITH_TIMEOUT(history()->epochs() >= 299, 10000);
     }
 
     void startupOptionsParse() {

@@ -1,7 +1,7 @@
 // SignalHistory (protocol/state): C/N0 of each satellite and signal kept at most one sample a
 // step (the mean of its epochs), the span dropping what is older, midnight counting a day, the
-// polar map's cells (10° of azimuth by 10° of elevation: mean C/N0 and count), a window of
-// times; and a whole simulated log decoded by historyOfLog.
+// polar map's cells (10° of azimuth by 10° of elevation: mean C/N0 and count); and a whole
+// simulated log, and a range of it, decoded by historyOfLog.
 #include "builtin_registry.h"
 #include "sim/receiver.h"
 #include "state/epoch.h"
@@ -90,19 +90,14 @@ private slots:
         QCOMPARE(h.cell(35, 0).count, 1u);
     }
 
-    void aWindowOfTimesKeepsThoseAlone() {
-        SignalHistory h(0, 1000);
-        h.setWindow(5000, 9000);
-        for (int s = 0; s < 20; ++s) h.add(epochAt(s * 1000, {sat(Constellation::Gps, 1, 40)}));
-        QCOMPARE(h.epochs(), std::uint64_t(5));
-        QCOMPARE(h.cell(9, 4).count, 5u);
-    }
-
     // A simulated receiver's hour, decoded front to back as a log.
     void aWholeLog() {
-        auto rx = sim::builtinSimulators().make("nmea", {});
+        auto rx = sim::builtinSimulators().make("nvs", {});
         std::string log;
+        std::size_t at200 = 0, at300 = 0;
         for (int s = 0; s < 600; ++s) {
+            if (s == 200) at200 = log.size();
+            if (s == 300) at300 = log.size();
             rx->advance(1.0);
             log += rx->takeOutput();
         }
@@ -114,9 +109,16 @@ private slots:
             QVERIFY(samples.size() <= 61); // one a step of 10 s
             for (const auto &x : samples) QVERIFY(x.cn0 > 10 && x.cn0 < 60);
         }
+        // A range (the log viewer's selection): its epochs alone, over its own time.
+        const std::string_view range = std::string_view(log).substr(at200, at300 - at200);
+        const SignalHistory r = historyOfLog(range, test::builtinRegistry(), 1000,
+                                             test::builtinRegistry().find("nvs"));
+        const auto sixth = h.epochs() / 6; // 100 s of 600, whatever the rate
+        QVERIFY2(r.epochs() + 6 >= sixth && r.epochs() <= sixth + 6,
+                 QByteArray::number(qulonglong(r.epochs())));
+        QVERIFY(r.newestMs() - r.oldestMs() >= 98'000 && r.newestMs() - r.oldestMs() <= 100'000);
         std::atomic<bool> cancel{true};
-        QCOMPARE(historyOfLog(log, test::builtinRegistry(), 1000, INT64_MIN, INT64_MAX, &cancel)
-                         .epochs(),
+        QCOMPARE(historyOfLog(log, test::builtinRegistry(), 1000, nullptr, &cancel).epochs(),
                  std::uint64_t(0));
     }
 };
