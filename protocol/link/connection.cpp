@@ -17,6 +17,25 @@ Connection::Connection(std::unique_ptr<Transport> transport, const DialectRegist
     });
     connect(transport_.get(), &Transport::stateChanged, this, &Connection::onState);
     lastState_ = transport_->state();
+    lastByte_.start();
+    connect(transport_.get(), &Transport::bytesReceived, this, [this] { lastByte_.restart(); });
+    watch_.setInterval(1000);
+    connect(&watch_, &QTimer::timeout, this, [this] {
+        if (silenceLimitMs_ > 0 && silentMs() >= silenceLimitMs_)
+            transport_->abandon(tr("no data for %1 s").arg(silenceLimitMs_ / 1000));
+    });
+}
+
+void Connection::setSilenceLimit(int ms) {
+    silenceLimitMs_ = std::max(0, ms);
+    if (silenceLimitMs_ > 0)
+        watch_.start();
+    else
+        watch_.stop();
+}
+
+qint64 Connection::silentMs() const {
+    return transport_->isOpen() ? lastByte_.elapsed() : 0;
 }
 
 Connection::~Connection() {
@@ -67,6 +86,7 @@ void Connection::onState(Transport::State s) {
     lastState_ = s;
     switch (s) {
     case Transport::State::Open:
+        lastByte_.restart(); // silence is counted from the opening
         retry_.stop();
         nextRetryMs_ = firstRetryMs_; // a link that came up starts the backoff afresh
         if (everOpen_) {

@@ -4,13 +4,15 @@
 // command queue and (when asked) the recorder. When the link drops, or a connection in the
 // background fails, it says so and tries again after 1, 2, 4 ... 30 s (a serial device is looked
 // up by its serial number, so it is found again under a new port name); nothing waits in the
-// caller's thread. The recording continues into the same files with a gap mark.
+// caller's thread. The recording continues into the same files with a gap mark. A link open but
+// silent past its limit (setSilenceLimit) is taken as dropped.
 #include "core/stream_decoder.h"
 #include "link/command_queue.h"
 #include "link/recorder.h"
 #include "link/sentence_stream.h"
 #include "link/transport.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 
@@ -45,6 +47,11 @@ public:
     // The first wait before trying again and the longest (the wait doubles in between).
     void setReconnectDelays(int firstMs, int maxMs);
     void setAutoReconnect(bool on) { autoReconnect_ = on; }
+    // An open link silent this long is taken as lost (a hung receiver, a half-open socket): it
+    // is closed and opened again as after a drop, the recording marked. 0: never (the default).
+    void setSilenceLimit(int ms);
+    // How long the open link has been silent, in ms (0 while it is not open).
+    qint64 silentMs() const;
     // Tries again now instead of at the planned time (a device was plugged in).
     void retryNow();
     bool isReconnecting() const { return retry_.isActive(); }
@@ -74,6 +81,9 @@ private:
     CommandQueue queue_;
     Recorder recorder_;
     QTimer retry_;
+    QTimer watch_; // the silence limit, checked every second
+    QElapsedTimer lastByte_;
+    int silenceLimitMs_ = 0;
     int firstRetryMs_ = 1000, maxRetryMs_ = 30000, nextRetryMs_ = 1000;
     bool autoReconnect_ = true;
     bool userClosed_ = true;

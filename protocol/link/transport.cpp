@@ -26,6 +26,12 @@ void Transport::fail(const QString &message, bool lost) {
     report(message, lost, false);
 }
 
+void Transport::abandon(const QString &why) {
+    if (state_ != State::Open) return;
+    fail(why, true);
+    close();
+}
+
 void Transport::failRequest(const QString &message) {
     report(message, false, true);
 }

@@ -54,6 +54,10 @@ public:
     State state() const { return state_; }
     bool isOpen() const { return state_ == State::Open; }
     bool isConnecting() const { return state_ == State::Connecting; }
+    // Gives up an open link that no longer works though its device says nothing (a hung
+    // receiver, a half-open socket): it is Lost with `why`, as when it drops, then closed, so
+    // that opening it again starts afresh.
+    void abandon(const QString &why);
     QString errorString() const { return error_; }
     // Whether the last error is the request's own (a device or mountpoint the other end does not
     // have) rather than the source failing: retrying the same request cannot succeed, and a

@@ -116,6 +116,10 @@ void ReceiverLink::onOpenerReady() {
     wire(c);
     // A log that cannot be replayed (an index that contradicts it) stays so: not retried.
     if (spec_.kind == SourceSpec::Kind::Replay) c->setAutoReconnect(false);
+    // A receiver that hangs with its port open, or a socket left half-open, is opened again.
+    if (spec_.kind == SourceSpec::Kind::Serial || spec_.kind == SourceSpec::Kind::Tcp ||
+        spec_.kind == SourceSpec::Kind::Gpsd)
+        c->setSilenceLimit(kSilenceLimitMs);
     if (!c->open()) {
         setState(State::Failed,
                  tr("Cannot open %1: %2").arg(spec_.displayName(), c->transport()->errorString()));

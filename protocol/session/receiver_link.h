@@ -43,6 +43,9 @@ public:
     enum class State { Disconnected, Detecting, Connecting, Connected, Reconnecting, Failed };
     Q_ENUM(State)
 
+    // A serial, TCP or gpsd link silent this long is opened again (Connection::setSilenceLimit).
+    static constexpr int kSilenceLimitMs = 10000;
+
     ReceiverLink(const DialectRegistry &registry, const link::TransportFactory &transports,
                  QObject *parent = nullptr);
     ~ReceiverLink() override;

@@ -36,8 +36,9 @@ bool commandNames(std::string_view list, std::vector<std::string> &out) {
 } // namespace
 
 bool FaultSpec::any() const {
-    return badChecksum > 0 || truncate > 0 || binary > 0 || silenceAt >= 0 || !noReply.empty() ||
-           slowReplyMs > 0 || hangupAfter >= 0 || !powerCut.empty() || !hangupOn.empty();
+    return badChecksum > 0 || truncate > 0 || binary > 0 || junkPerSecond > 0 || silenceAt >= 0 ||
+           !noReply.empty() || slowReplyMs > 0 || hangupAfter >= 0 || !powerCut.empty() ||
+           !hangupOn.empty();
 }
 
 bool FaultSpec::silentAt(double time) const {
@@ -92,6 +93,14 @@ std::optional<FaultSpec> parseFaults(std::string_view spec, std::string &error) 
             if (!probability(f.truncate)) return std::nullopt;
         } else if (key == "binary") {
             if (!probability(f.binary)) return std::nullopt;
+        } else if (key == "junk") {
+            double rate = 0;
+            if (!parseNumber(value, rate) || rate <= 0 || rate > 1e6) {
+                error = "junk: expected bytes per second 1..1000000, got '" + std::string(value) +
+                        "'";
+                return std::nullopt;
+            }
+            f.junkPerSecond = rate;
         } else if (key == "silence") {
             // D@T or D@T/P: D seconds of silence from time T, repeated every P seconds.
             const auto at = value.find('@');
@@ -169,8 +178,8 @@ std::optional<FaultSpec> parseFaults(std::string_view spec, std::string &error) 
             f.hangupTimes = static_cast<int>(count);
         } else {
             error = "unknown fault '" + std::string(key) +
-                    "' (known: badcs, truncate, binary, silence, noreply, slowreply, hangup, "
-                    "hangupon, powercut)";
+                    "' (known: badcs, truncate, binary, junk, silence, noreply, slowreply, "
+                    "hangup, hangupon, powercut)";
             return std::nullopt;
         }
     }

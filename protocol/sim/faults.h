@@ -1,6 +1,6 @@
 #pragma once
 // Faults the simulator injects on request, for reliability tests of everything that reads a
-// receiver (`gnss-sim --faults badcs=0.05,truncate=0.01,binary=0.2,silence=3@10,
+// receiver (`gnss-sim --faults badcs=0.05,truncate=0.01,binary=0.2,junk=20000,silence=3@10,
 // noreply=PNVGRTK,slowreply=800,hangup=30,powercut=PNVGCFG,hangupon=PNVGPPS/1`).
 #include <cstdint>
 #include <optional>
@@ -12,10 +12,13 @@
 namespace gnss::sim {
 
 struct FaultSpec {
-    double badChecksum = 0;  // probability that a sentence's checksum is wrong
-    double truncate = 0;     // probability that a sentence is cut short (no terminator)
-    double binary = 0;       // probability per epoch of an RTCM3-like frame between sentences
-    double silenceFor = 0;   // seconds of silence ...
+    double badChecksum = 0; // probability that a sentence's checksum is wrong
+    double truncate = 0;    // probability that a sentence is cut short (no terminator)
+    double binary = 0;      // probability per epoch of an RTCM3-like frame between sentences
+    // junk=BYTES: a flood of random bytes (never '$' or '!') between sentences, this many a second,
+    // as from a receiver gone mad or a line at the wrong settings; past what the line carries too.
+    double junkPerSecond = 0;
+    double silenceFor = 0;   // seconds of silence (no output, no replies: hung) ...
     double silenceAt = -1;   // ... starting at this simulated time (-1: none)
     double silenceEvery = 0; // and again every this many seconds (0: once)
     // Commands whose replies never come: a command's address ("PNVGRTK") or its first field

@@ -153,6 +153,15 @@ void Receiver::runEpoch() {
             if (!options_.faults.silentAt(now_)) write(frame);
         }
     }
+    if (options_.faults.junkPerSecond > 0 && !options_.faults.silentAt(now_)) {
+        std::uniform_int_distribution<int> byte(0, 255);
+        std::string junk(std::size_t(options_.faults.junkPerSecond * epochInterval()), '\0');
+        for (char &c : junk) {
+            const int b = byte(faultRng_);
+            c = static_cast<char>(b == '$' || b == '!' ? '#' : b); // never a sentence's start
+        }
+        write(junk);
+    }
     onEpoch(last_);
     nextEpoch_ = nextOnGrid();
 }
@@ -164,7 +173,7 @@ void Receiver::flushDue() {
     while (!pending_.empty() && pending_.front().at <= now_ + 1e-9) {
         Pending p = std::move(pending_.front());
         pending_.erase(pending_.begin());
-        if (!p.text.empty()) {
+        if (!p.text.empty() && !options_.faults.silentAt(now_)) { // a hung receiver answers not
             takeLineTime(p.text.size() + 2, false);
             write(p.text + "\r\n");
         }

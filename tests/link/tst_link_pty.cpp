@@ -183,6 +183,44 @@ private slots:
         QCOMPARE(gaps, int(lost.count() + back.count()));
     }
 
+    // A receiver that hangs with its port open (silence=5@2: no output, no replies) is taken as
+    // lost after the silence limit, opened again, and heard once it talks; the recording marks
+    // both and keeps every byte.
+    void aHungReceiverIsOpenedAgain() {
+        QTemporaryDir dir;
+        SimProcess sim({"--dialect", "nvs", "--faults", "silence=5@2"});
+        REQUIRE_SIM(sim);
+        Connection conn(std::make_unique<SerialTransport>(SerialSettings{sim.device, 115200}),
+                        gnss::test::builtinRegistry());
+        conn.setReconnectDelays(200, 800);
+        conn.setSilenceLimit(2000);
+        const QString log = dir.filePath("hung.nmea");
+        QVERIFY(conn.startRecording(log));
+        QByteArray received;
+        connect(conn.transport(), &Transport::bytesReceived,
+                [&](const QByteArray &b) { received += b; });
+        QSignalSpy lost(&conn, &Connection::linkLost), back(&conn, &Connection::linkRestored);
+        QVERIFY(conn.open());
+        QTRY_VERIFY_WITH_TIMEOUT(received.size() > 0, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(conn.silentMs() >= 1000, 8000);
+        QVERIFY2(lost.wait(8000), "the silence was not noticed");
+        QVERIFY2(lost.first().at(0).toString().contains("no data"),
+                 qPrintable(lost.first().at(0).toString()));
+        QTRY_VERIFY_WITH_TIMEOUT(back.count() > 0, 10000);
+        const qsizetype before = received.size();
+        QTRY_VERIFY_WITH_TIMEOUT(received.size() > before + 200, 10000); // talking again
+        QVERIFY(conn.silentMs() < 2000);
+        conn.close();
+        conn.stopRecording();
+        Recording r;
+        QString error;
+        QVERIFY2(loadRecording(log, r, error), qPrintable(error));
+        QCOMPARE(r.bytes, received);
+        int gaps = 0;
+        for (const auto &e : r.events) gaps += e.kind == RecordedEvent::Kind::Gap;
+        QCOMPARE(gaps, int(lost.count() + back.count()));
+    }
+
     void recordingIsByteExact() {
         SimProcess sim({"--dialect", "nvs", "--faults", "binary=0.3,badcs=0.05"});
         REQUIRE_SIM(sim);

@@ -97,6 +97,8 @@ private slots:
                                               << "count";
         QTest::newRow("empty powercut") << "powercut=+"
                                         << "powercut";
+        QTest::newRow("junk of nothing") << "junk=0"
+                                         << "junk";
     }
     void badSpecsAreRefusedWithTheReason() {
         QFETCH(QString, spec);
@@ -134,6 +136,31 @@ private slots:
                 static_cast<unsigned char>(frame[5 + len]);
         QCOMPARE(crc24q(std::string_view(frame).substr(0, 3 + len)), crc);
         QCOMPARE(crc24q("123456789"), 0xCDE703u); // CRC-24Q check value
+    }
+    void junkFloodsBetweenWholeSentences() {
+        const std::string clean = run("", 10, "nvs");
+        const std::string out = run("junk=20000", 10, "nvs");
+        const Counts c = count(out), k = count(clean);
+        // About 200 kB of junk over 10 s, and every sentence still whole and checking out.
+        QVERIFY2(c.skipped > 190'000 && c.skipped < 210'000,
+                 QByteArray::number(qulonglong(c.skipped)));
+        QCOMPARE(c.sentences, k.sentences);
+        QCOMPARE(c.badChecksum, 0);
+        QVERIFY(out.size() > clean.size() + 190'000);
+    }
+    // A hung receiver is deaf too: a command in its silence is not answered, one after it is.
+    void silenceAnswersNothing() {
+        auto rx = faultyReceiver("silence=3@2", "nvs");
+        rx->advance(2.5);
+        rx->takeOutput();
+        rx->receive("$PNVGVER*4E\r\n");
+        rx->advance(1.0);
+        QVERIFY(rx->takeOutput().empty());
+        rx->advance(2.0); // past the silence
+        rx->takeOutput();
+        rx->receive("$PNVGVER*4E\r\n");
+        rx->advance(1.0);
+        QVERIFY(rx->takeOutput().find("PNVGVER") != std::string::npos);
     }
     void silenceStopsOutputForItsDuration() {
         auto rx = faultyReceiver("silence=3@5");
