@@ -4150,17 +4150,17 @@ Serial number: %3</source>
     <name>gnss::app::MainWindow</name>
     <message>
         <location filename="../app/gui/main_window.cpp" line="+44"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+274"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+286"/>
         <source>GNSS Workbench</source>
         <translation>GNSS Workbench</translation>
     </message>
     <message>
-        <location line="+148"/>
+        <location line="+147"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_log.cpp" line="-225"/>
+        <location filename="../app/gui/main_window_log.cpp" line="-236"/>
         <source>Timeline</source>
         <translation>Шкала времени</translation>
     </message>
@@ -4180,7 +4180,7 @@ Serial number: %3</source>
         <translation>События журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="+297"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="+309"/>
         <source>Save events</source>
         <translation>Сохранить события</translation>
     </message>
@@ -4208,7 +4208,7 @@ Serial number: %3</source>
     <message>
         <location line="+51"/>
         <location line="+14"/>
-        <location filename="../app/gui/main_window_log.cpp" line="+244"/>
+        <location filename="../app/gui/main_window_log.cpp" line="+255"/>
         <source>Not exported: %1</source>
         <translation>Не экспортировано: %1</translation>
     </message>
@@ -4395,7 +4395,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+127"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+132"/>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
@@ -4512,7 +4512,7 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="-178"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="-190"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -4653,7 +4653,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+158"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+188"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
@@ -4695,7 +4695,12 @@ Serial number: %3</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_sessions.cpp" line="-80"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="-137"/>
+        <source>%1 keeps what was begun for %2: pinned to it</source>
+        <translation>%1 сохраняет начатое для %2: закреплено за ним</translation>
+    </message>
+    <message>
+        <location line="+46"/>
         <source>Follow the selected receiver</source>
         <translation>Показывать выбранный приёмник</translation>
     </message>
@@ -4715,17 +4720,22 @@ Serial number: %3</source>
         <translation>Закрыть эту панель</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>%1 · %2 (pinned)</source>
-        <translation>%1 · %2 (закреплена)</translation>
+        <location line="+25"/>
+        <source>%1 · #%2 (pinned)</source>
+        <translation>%1 · №%2 (закреплена)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>%1 · %2</source>
-        <translation>%1 · %2</translation>
+        <source>%1 · #%2</source>
+        <translation>%1 · №%2</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
+        <source>Silent for %1 s</source>
+        <translation>Молчит %1 с</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1 baud</source>
         <translation>%1 бод</translation>
     </message>
@@ -4744,7 +4754,17 @@ Serial number: %3</source>
         </translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+2"/>
+        <source>%1 KiB skipped</source>
+        <translation>пропущено %1 КиБ</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No data</source>
+        <translation>Нет данных</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <location line="+11"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
@@ -4978,7 +4998,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::ReceiversStrip</name>
     <message>
-        <location line="+27"/>
+        <location line="+35"/>
         <source>Receivers</source>
         <translation>Приёмники</translation>
     </message>
@@ -5624,6 +5644,14 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
+    <name>gnss::link::Connection</name>
+    <message>
+        <location filename="../protocol/link/connection.cpp" line="+25"/>
+        <source>no data for %1 s</source>
+        <translation>нет данных %1 с</translation>
+    </message>
+</context>
+<context>
     <name>gnss::link::GpsdTransport</name>
     <message>
         <location filename="../protocol/link/gpsd_transport.cpp" line="+30"/>
@@ -5903,18 +5931,18 @@ Serial number: %3</source>
     <name>gnss::session::ReceiverLink</name>
     <message>
         <location filename="../protocol/session/receiver_link.cpp" line="+25"/>
-        <location line="+196"/>
+        <location line="+200"/>
         <source>Not connected</source>
         <translation>Нет подключения</translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-139"/>
         <source>No source chosen</source>
         <translation>Источник не выбран</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location line="+24"/>
+        <location line="+28"/>
         <location line="+18"/>
         <source>Cannot open %1: %2</source>
         <translation>Не удаётся открыть %1: %2</translation>
@@ -5925,13 +5953,13 @@ Serial number: %3</source>
         <translation>Подключено: %1</translation>
     </message>
     <message>
-        <location line="-77"/>
-        <location line="+62"/>
+        <location line="-81"/>
+        <location line="+66"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-132"/>
+        <location line="-136"/>
         <source>%1: detecting the baud rate: trying %2…</source>
         <translation>%1: определение скорости: проверяется %2…</translation>
     </message>
@@ -5946,12 +5974,12 @@ Serial number: %3</source>
         <translation>%1: определение скорости…</translation>
     </message>
     <message>
-        <location line="+157"/>
+        <location line="+161"/>
         <source>%1 cannot take commands</source>
         <translation>%1 не принимает команды</translation>
     </message>
     <message>
-        <location line="-146"/>
+        <location line="-150"/>
         <source>Baud rate not found: %1</source>
         <translation>Скорость не найдена: %1</translation>
     </message>
@@ -5961,7 +5989,7 @@ Serial number: %3</source>
         <translation>Скорость определена: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>%1 — trying again in %2 s</source>
         <translation>%1 — повтор через %2 с</translation>
     </message>
@@ -6154,8 +6182,7 @@ Serial number: %3</source>
         <translation>С</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <location line="+1"/>
+        <location line="+13"/>
         <source>%1 dB-Hz</source>
         <translation>%1 дБГц</translation>
     </message>
@@ -6177,7 +6204,7 @@ Serial number: %3</source>
         <translation>Здесь сравниваются два приёмника и более.</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>N ↑  E →  ±%1 m</source>
         <translation>С ↑  В →  ±%1 м</translation>
     </message>
@@ -6407,7 +6434,7 @@ Serial number: %3</source>
         <translation>Команда для отправки, например %1 (контрольная сумма добавляется)</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+84"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -8145,7 +8172,7 @@ Serial number: %3</source>
         <translation>C/N0 ещё нет</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+12"/>
         <source>−%1 min</source>
         <translation>−%1 мин</translation>
     </message>

@@ -47,7 +47,6 @@ MainWindow::MainWindow(const DialectRegistry &registry, const link::TransportFac
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks | GroupedDragging);
     if (settings_) prefs_ = Preferences::load(*settings_);
     startLanguage_ = prefs_.language;
-    corrections_ = new CorrectionsController(settings_, this);
     ports_ = new link::PortWatcher({}, this);
     ports_->start();
     // The first receiver; the docks show it. More come with Add receiver.

@@ -77,7 +77,9 @@ public:
     session::ReceiverLink *link() const;
     ui::ReceiverStateModel *stateModel() const;
     ui::SatelliteModel *satelliteModel() const;
-    CorrectionsController *corrections() const { return corrections_; }
+    // A receiver's corrections (each its own stream, which goes on feeding it whatever the docks
+    // show); null: the selected receiver's.
+    CorrectionsController *corrections(ui::ReceiverSession *s = nullptr);
     // The receivers compared (the Compare dock's model).
     ui::CompareModel *comparison() const { return compare_; }
     QDockWidget *dock(const QString &objectName) const;
@@ -170,6 +172,9 @@ private:
     // A label that tells the receivers apart in titles: the short name, with the place when two
     // share it.
     QString receiverLabel(const ui::ReceiverSession *s) const;
+    // Whether a dock's view holds work begun for its receiver (edits not applied, a command
+    // typed): such a dock keeps its receiver when the selection changes.
+    static bool holdsWork(const QWidget *view);
     void saveReceivers();
     QList<SourceSpec> restoreReceivers();
     void restoreDocksOfReceivers();
@@ -228,7 +233,7 @@ private:
     int sessionsMade_ = 0;
     QHash<QDockWidget *, DockBinding> docks_;
     ui::CompareModel *compare_ = nullptr;
-    CorrectionsController *corrections_ = nullptr;
+    QHash<const ui::ReceiverSession *, QPointer<CorrectionsController>> corrections_;
     ConnectionBar *bar_ = nullptr;
     ReceiversStrip *strip_ = nullptr;
     QMenu *receiverMenu_ = nullptr;

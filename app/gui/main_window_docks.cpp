@@ -181,30 +181,42 @@ QWidget *MainWindow::makeAttitude(ui::ReceiverSession &s) {
     return view;
 }
 
+CorrectionsController *MainWindow::corrections(ui::ReceiverSession *s) {
+    if (!s) s = current_;
+    if (!s) return nullptr;
+    QPointer<CorrectionsController> &c = corrections_[s];
+    if (!c) {
+        // The receiver's own: it goes with it, and its fix goes up to the caster as the GGA
+        // whichever receiver the docks show.
+        c = new CorrectionsController(settings_, s);
+        c->setTarget(s->link());
+        CorrectionsController *controller = c;
+        connect(s->state(), &ui::ReceiverStateModel::updated, controller,
+                [controller, s] { controller->setRoverFix(s->state()->state().epoch); });
+    }
+    return c;
+}
+
 QWidget *MainWindow::makeCorrections(ui::ReceiverSession &s) {
     // Corrections: a caster's (or a base's) RTCM into the session's receiver, beside RTK.
     session::ReceiverLink *link = s.link();
-    corrections_->setTarget(link);
+    CorrectionsController *c = corrections(&s);
     auto *view = new ui::CorrectionsView(
-            corrections_->monitor(), s.state(), [link] { return link->forwarderStats(); }, this);
+            c->monitor(), s.state(), [link] { return link->forwarderStats(); }, this);
     followDisplayPrefs(view);
     view->setKeychainAvailable(CorrectionsController::keychainAvailable());
-    view->setRequest(corrections_->remembered());
-    connect(corrections_, &CorrectionsController::passwordRecalled, view,
-            &ui::CorrectionsView::setPassword);
-    connect(corrections_, &CorrectionsController::keychainMessage, view,
-            &ui::CorrectionsView::showError);
-    corrections_->recallPassword();
-    connect(view, &ui::CorrectionsView::startRequested, this,
-            [this, view](const ui::CorrectionsRequest &r) {
+    view->setRequest(c->remembered());
+    connect(c, &CorrectionsController::passwordRecalled, view, &ui::CorrectionsView::setPassword);
+    connect(c, &CorrectionsController::keychainMessage, view, &ui::CorrectionsView::showError);
+    c->recallPassword();
+    connect(view, &ui::CorrectionsView::startRequested, c,
+            [c, view](const ui::CorrectionsRequest &r) {
                 QString why;
-                if (!corrections_->start(r, &why)) view->showError(why);
+                if (!c->start(r, &why)) view->showError(why);
             });
-    connect(view, &ui::CorrectionsView::stopRequested, corrections_, &CorrectionsController::stop);
-    connect(corrections_, &CorrectionsController::statusChanged, view,
-            &ui::CorrectionsView::setStatus);
-    connect(s.state(), &ui::ReceiverStateModel::updated, view,
-            [this, &s] { corrections_->setRoverFix(s.state()->state().epoch); });
+    connect(view, &ui::CorrectionsView::stopRequested, c, &CorrectionsController::stop);
+    connect(c, &CorrectionsController::statusChanged, view, &ui::CorrectionsView::setStatus);
+    view->setStatus(c->statusText(), c->active()); // a stream of its own may be running
     return view;
 }
 

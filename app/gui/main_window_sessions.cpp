@@ -4,11 +4,14 @@
 #include "gui/log_viewer.h"
 #include "gui/main_window.h"
 #include "gui/receivers_strip.h"
+#include "link/connection.h"
 #include "link/recording_name.h"
 #include "models/receiver_session.h"
 #include "session/receiver_link.h"
+#include "settings/settings_view.h"
 #include "style/gnss_style.h"
 #include "views/charts_view.h"
+#include "views/console_view.h"
 
 #include <QAction>
 #include <QDir>
@@ -17,6 +20,7 @@
 #include <QMenu>
 #include <QPixmap>
 #include <QSettings>
+#include <QStatusBar>
 
 namespace gnss::app {
 
@@ -95,6 +99,7 @@ void MainWindow::closeReceiver(ui::ReceiverSession *s) {
         ++it;
     }
     sessions_.removeOne(s);
+    corrections_.remove(s);            // its stream goes with it
     s->link()->disconnectFromSource(); // flushes its recording
     if (current_ == s) current_ = sessions_.front();
     rebindFollowingDocks();
@@ -152,6 +157,14 @@ void MainWindow::bindDock(QDockWidget *d, ui::ReceiverSession *s) {
     delete old; // at once: nothing may find two views of one dock
 }
 
+bool MainWindow::holdsWork(const QWidget *view) {
+    if (const auto *form = qobject_cast<const ui::SettingsView *>(view))
+        return !form->edits().empty();
+    if (const auto *console = qobject_cast<const ui::ConsoleView *>(view))
+        return !console->typedCommand().trimmed().isEmpty();
+    return false;
+}
+
 void MainWindow::rebindFollowingDocks() {
     // New views have sizes of their own: the docks keep the ones the user gave them.
     const QByteArray layout = saveState();
@@ -161,6 +174,17 @@ void MainWindow::rebindFollowingDocks() {
         const DockBinding b = docks_.value(d);
         if (b.row->log || b.row->window) continue;
         ui::ReceiverSession *s = b.pinned ? b.pinned.data() : session();
+        // Work begun for a receiver keeps it (the dock is pinned to it): a settings form with
+        // changes not yet applied, a command typed and not sent. They were meant for that one,
+        // and would be lost, or sent to another.
+        if (!b.pinned && b.shown && b.shown != s && b.shown != logSession_ &&
+            holdsWork(d->widget())) {
+            docks_[d].pinned = b.shown;
+            statusBar()->showMessage(tr("%1 keeps what was begun for %2: pinned to it")
+                                             .arg(dockTitle(*b.row), b.shown->name()),
+                                     10000);
+            continue;
+        }
         changed = changed || b.shown != s;
         bindDock(d, s);
     }
@@ -239,11 +263,15 @@ void MainWindow::updateDockTitles() {
         QString title = dockTitle(row);
         const ui::ReceiverSession *s = it->shown;
         const bool receiver = s && s != logSession_;
-        // Which receiver, once there is more than one: its colour on every dock's tab; its name
-        // on a dock pinned to it and on those that act on it (settings, console, corrections).
-        if (receiver && (it->pinned || (several && row.names)))
-            title = it->pinned ? tr("%1 · %2 (pinned)").arg(title, receiverLabel(s))
-                               : tr("%1 · %2").arg(title, receiverLabel(s));
+        // Which receiver, once there is more than one: its colour on every dock's tab; its
+        // number (the strip's, Ctrl+N) on a dock pinned to it and on those that act on it
+        // (settings, console, corrections). A number and not a name: seven tabs beside the fix
+        // stay whole at 1280x800 in Russian too (names cut them to "Реш…").
+        if (receiver && (it->pinned || (several && row.names))) {
+            const int n = int(sessions_.indexOf(const_cast<ui::ReceiverSession *>(s))) + 1;
+            title = it->pinned ? tr("%1 · #%2 (pinned)").arg(title).arg(n)
+                               : tr("%1 · #%2").arg(title).arg(n);
+        }
         if (it.key()->windowTitle() != title) it.key()->setWindowTitle(title);
         const QColor colour = receiver && (several || it->pinned) ? s->colour() : QColor();
         if (it.key()->property("receiverColour").value<QColor>() != colour) {
@@ -265,7 +293,12 @@ void MainWindow::updateReceivers() {
         e.name = s->name();
         e.colour = s->colour();
         e.selected = s == current_;
-        if (st == session::ReceiverLink::State::Connected) {
+        // A receiver that stops talking says so before its link is opened again.
+        const qint64 silentMs = lk->connection() ? lk->connection()->silentMs() : 0;
+        const bool silent = st == session::ReceiverLink::State::Connected && silentMs >= 3000;
+        if (silent) {
+            e.status = tr("Silent for %1 s").arg(silentMs / 1000);
+        } else if (st == session::ReceiverLink::State::Connected) {
             QStringList parts;
             if (lk->detectedBaud() > 0) parts << tr("%1 baud").arg(lk->detectedBaud());
             if (const Dialect *d = s->dialect())
@@ -274,15 +307,17 @@ void MainWindow::updateReceivers() {
             parts << tr("%1 sentences/s").arg(c.sentencesPerSecond, 0, 'f', 1);
             if (c.checksumErrors + c.decodeErrors > 0)
                 parts << tr("%n error(s)", nullptr, int(c.checksumErrors + c.decodeErrors));
+            if (c.skippedBytes >= 1024) // a line's worth at the start is not worth saying
+                parts << tr("%1 KiB skipped").arg(c.skippedBytes / 1024);
             e.status = parts.join(QStringLiteral(" · "));
         } else {
             e.status = lk->stateText();
             if (e.status.size() > 48) e.status = e.status.left(47) + QChar(0x2026);
         }
         e.tooltip = lk->stateText();
-        const bool any = live && s->state()->epochCount() > 0;
+        const bool any = live && !silent && s->state()->epochCount() > 0;
         const FixType fix = any ? s->state()->state().epoch.fix : FixType::None;
-        e.fix = any ? style::fixTypeLabel(fix) : tr("No fix");
+        e.fix = silent ? tr("No data") : any ? style::fixTypeLabel(fix) : tr("No fix");
         e.fixColour = style::fixTypeColor(fix);
         entries << e;
     }

@@ -62,6 +62,14 @@ QString ReceiverChip::name() const {
     return name_->text();
 }
 
+QString ReceiverChip::status() const {
+    return status_->text();
+}
+
+QString ReceiverChip::fix() const {
+    return fix_->text();
+}
+
 void ReceiverChip::mousePressEvent(QMouseEvent *e) {
     QFrame::mousePressEvent(e);
     emit clicked();

@@ -24,6 +24,8 @@ public:
     explicit ReceiverChip(QWidget *parent = nullptr);
     void setEntry(const ReceiverEntry &e, int number);
     QString name() const;
+    QString status() const;
+    QString fix() const;
 
 signals:
     void clicked();

@@ -4,33 +4,52 @@
 // G05 and R12 dropped) and both report the truth of one sky (--noise 0, --start now): the
 // Compare dock shows what it was told (position within 5 cm, C/N0 within 1 dB), and so does
 // gnss-cli compare on the same pair. Docks follow the selected receiver or stay pinned; one
-// receiver unplugged leaves the other's epochs flowing and its recording byte-exact.
+// receiver unplugged leaves the other's epochs flowing and its recording byte-exact; one that hangs
+// and one that floods junk leave a healthy one untouched, all three command queues at work.
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
 #include "cli_run.h"
 #include "common/app_transports.h"
 #include "compare_json.h"
+#include "config/settings_engine.h"
+#include "corrections/correction_forwarder.h"
+#include "gui/corrections_controller.h"
 #include "gui/main_window.h"
 #include "gui/receivers_strip.h"
 #include "link/connection.h"
+#include "link/recording.h"
 #include "models/compare_model.h"
 #include "models/receiver_session.h"
 #include "models/receiver_state_model.h"
 #include "session/receiver_link.h"
+#include "settings/setting_editors.h"
+#include "settings/settings_view.h"
+#include "sim/rtcm_base_station.h"
 #include "sim_process.h"
 #include "views/compare_view.h"
+#include "views/console_view.h"
 #include "views/fix_view.h"
 
 #include <QAction>
+#include <QDir>
 #include <QDockWidget>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPointer>
 #include <QSettings>
+#include <QSignalSpy>
+#include <QTabBar>
 #include <QTableWidget>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
+#include <QTranslator>
 
 #include <cmath>
 
@@ -137,7 +156,7 @@ private slots:
         QDockWidget *rover = w.duplicateDock("fix", b);
         QVERIFY(rover);
         QCOMPARE(w.pinnedSession(rover), b);
-        QVERIFY(rover->windowTitle().contains(b->shortName()));
+        QVERIFY2(rover->windowTitle().contains("#2"), qPrintable(rover->windowTitle()));
         QAction *second = w.findChild<QAction *>("selectReceiver2");
         QVERIFY(second);
         QCOMPARE(second->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_2));
@@ -146,7 +165,7 @@ private slots:
         QCOMPARE(w.selectedSession(), b);
         QCOMPARE(w.dockSession(fix), a);
         QCOMPARE(w.dockSession(w.dock("skyDock")), b);
-        QVERIFY(w.dock("settingsDock")->windowTitle().contains(b->shortName()));
+        QVERIFY(w.dock("settingsDock")->windowTitle().contains("#2"));
         w.findChild<QAction *>("selectReceiver1")->trigger();
         QCOMPARE(w.dockSession(w.dock("skyDock")), a);
 
@@ -204,6 +223,236 @@ private slots:
         QVERIFY(!strip->isVisible());
     }
 
+    // Three receivers: one healthy, one that hangs (silence=12@5: no output, no replies for
+    // 12 s), one flooding junk (20 kB/s of random bytes between its sentences). The healthy and
+    // the flooding one keep their views updating, their recordings byte-exact and their command
+    // queues answering, at the same time; the hung one says so, is opened again after the
+    // silence limit and is heard once it talks.
+    void aHungAndAFloodingReceiverStayLocal() {
+        SimProcess healthy({"--dialect", "nvs", "--baud", "115200"});
+        SimProcess hung({"--dialect", "geostar", "--baud", "115200", "--faults", "silence=12@5"});
+        SimProcess flooding({"--dialect", "nemerix", "--baud", "115200", "--faults", "junk=20000"});
+        REQUIRE_SIM(healthy);
+        REQUIRE_SIM(hung);
+        REQUIRE_SIM(flooding);
+        QSettings settings(dir_.filePath("faults.ini"), QSettings::IniFormat);
+        app::MainWindow w(registry_, transports_, &settings);
+        w.resize(1280, 800);
+        w.show();
+        w.connectReceiversAtStart({{SourceSpec::Kind::Serial, healthy.device, 115200},
+                                   {SourceSpec::Kind::Serial, hung.device, 115200},
+                                   {SourceSpec::Kind::Serial, flooding.device, 115200}});
+        QCOMPARE(w.sessions().size(), 3);
+        ui::ReceiverSession *a = w.sessions()[0], *b = w.sessions()[1], *c = w.sessions()[2];
+        QTRY_VERIFY_WITH_TIMEOUT(connected(a) && connected(b) && connected(c), 30000);
+        QSignalSpy aState(a->link(), &ReceiverLink::stateChanged),
+                cState(c->link(), &ReceiverLink::stateChanged),
+                bState(b->link(), &ReceiverLink::stateChanged);
+        link::Connection *aConn = a->link()->connection(), *cConn = c->link()->connection();
+
+        QVERIFY(QDir(dir_.path()).mkpath("faults"));
+        QString why;
+        const QStringList files = w.recordAll(dir_.filePath("faults"), &why);
+        QVERIFY2(files.size() == 3, qPrintable(why));
+        QByteArray fromA, fromC;
+        connect(aConn->transport(), &link::Transport::bytesReceived,
+                [&](const QByteArray &x) { fromA += x; });
+        connect(cConn->transport(), &link::Transport::bytesReceived,
+                [&](const QByteArray &x) { fromC += x; });
+
+        // The hung one says so in its chip.
+        auto *strip = w.findChild<app::ReceiversStrip *>();
+        QTRY_VERIFY_WITH_TIMEOUT(b->link()->connection()->silentMs() >= 3000, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(strip->chips()[1]->status().startsWith("Silent for"), 3000);
+        QCOMPARE(strip->chips()[1]->fix(), QString("No data"));
+        QTRY_VERIFY_WITH_TIMEOUT(strip->chips()[2]->status().contains("KiB skipped"), 3000);
+
+        // Meanwhile the three command queues work at once: the healthy and the flooding one
+        // answer, the hung one does not.
+        QSignalSpy aDone(a->link(), &ReceiverLink::commandFinished),
+                bDone(b->link(), &ReceiverLink::commandFinished),
+                cDone(c->link(), &ReceiverLink::commandFinished);
+        auto probe = [this](const char *id) {
+            const std::string_view p = registry_.find(id)->probeCommand;
+            return QByteArray(p.data(), qsizetype(p.size()));
+        };
+        QVERIFY2(a->link()->send(probe("nvs"), &why), qPrintable(why));
+        QVERIFY2(b->link()->send(probe("geostar"), &why), qPrintable(why));
+        QVERIFY2(c->link()->send(probe("nemerix"), &why), qPrintable(why));
+        const quint64 aEpochs = a->state()->epochCount(), cEpochs = c->state()->epochCount();
+        QTRY_VERIFY_WITH_TIMEOUT(aDone.count() >= 1 && cDone.count() >= 1, 10000);
+        QVERIFY2(aDone.first().at(1).toBool(), qPrintable(aDone.first().at(0).toString()));
+        QVERIFY2(cDone.first().at(1).toBool(), qPrintable(cDone.first().at(0).toString()));
+        QVERIFY(bDone.isEmpty() || !bDone.first().at(1).toBool());
+        QTRY_VERIFY_WITH_TIMEOUT(a->state()->epochCount() >= aEpochs + 3 &&
+                                         c->state()->epochCount() >= cEpochs + 3,
+                                 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!bDone.isEmpty(), 20000);
+        QVERIFY(!bDone.first().at(1).toBool());
+
+        // The hung one is taken as lost after the silence limit, opened again, and heard.
+        auto lostForSilence = [&bState] {
+            for (const QList<QVariant> &x : bState)
+                if (x.at(0).value<ReceiverLink::State>() == ReceiverLink::State::Reconnecting &&
+                    x.at(1).toString().contains("no data"))
+                    return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(lostForSilence(), 20000);
+        const quint64 bEpochs = b->state()->epochCount();
+        QTRY_VERIFY_WITH_TIMEOUT(b->link()->state() == ReceiverLink::State::Connected &&
+                                         b->state()->epochCount() > bEpochs + 2,
+                                 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!strip->chips()[1]->status().startsWith("Silent"), 3000);
+
+        // The others never lost their link; their recordings hold every byte they received.
+        QCOMPARE(aState.count(), 0);
+        QCOMPARE(cState.count(), 0);
+        QCOMPARE(a->link()->connection(), aConn);
+        QCOMPARE(c->link()->connection(), cConn);
+        for (ui::ReceiverSession *s : w.sessions()) s->link()->stopRecording();
+        for (const auto &[file, received] :
+             {std::pair(files[0], fromA), std::pair(files[2], fromC)}) {
+            link::Recording r;
+            QVERIFY2(link::loadRecording(file, r, why), qPrintable(why));
+            QCOMPARE(r.bytes, received);
+        }
+        QVERIFY(fromC.size() > 100'000); // the flood was recorded too
+    }
+
+    // With two receivers, every dock's tab reads whole at 1280x800, in English and in Russian
+    // (the receiver named by its number: names cut seven tabs beside the fix to "Реш…").
+    void dockTabsStayWhole_data() {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << "en";
+        QTest::newRow("ru") << "ru";
+    }
+    void dockTabsStayWhole() {
+        QFETCH(QString, language);
+        QTranslator ru;
+        if (language == "ru") {
+            if (!ru.load(QStringLiteral(GNSS_RU_QM)))
+                QSKIP("no Russian translation built (Qt's linguist tools missing)");
+            QCoreApplication::installTranslator(&ru);
+        }
+        QSettings settings(dir_.filePath("tabs-" + language + ".ini"), QSettings::IniFormat);
+        app::MainWindow w(registry_, transports_, &settings);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.connectReceiversAtStart(
+                {{SourceSpec::Kind::Simulator, "nvs"}, {SourceSpec::Kind::Simulator, "geostar"}});
+        QTRY_VERIFY_WITH_TIMEOUT(connected(w.sessions()[0]) && connected(w.sessions()[1]), 10000);
+        QTRY_VERIFY(w.dock("settingsDock")->windowTitle().contains(" · ")); // says which
+        QTest::qWait(200);                                                  // the layout settles
+        int bars = 0;
+        for (QTabBar *bar : w.findChildren<QTabBar *>()) {
+            // The dock areas' tab bars (the main window's own children).
+            if (!bar->isVisible() || bar->count() < 2 || bar->parentWidget() != &w) continue;
+            ++bars;
+            QStringList tabs;
+            for (int i = 0; i < bar->count(); ++i) tabs << bar->tabText(i);
+            QVERIFY2(bar->sizeHint().width() <= bar->width(),
+                     qPrintable(QStringLiteral("%1 px wanted, %2 px there: %3")
+                                        .arg(bar->sizeHint().width())
+                                        .arg(bar->width())
+                                        .arg(tabs.join(" | "))));
+        }
+        QVERIFY(bars >= 3);
+        QCoreApplication::removeTranslator(&ru);
+    }
+
+    // Work begun for a receiver stays with it when another is selected: a corrections stream
+    // goes on feeding the receiver it was started for (the dock shows the selected one's, idle),
+    // and a settings form with changes not yet applied keeps its receiver, pinned to it.
+    void workStaysWithItsReceiver() {
+        QTcpServer base; // a base's RTCM over TCP, one second of frames every 250 ms
+        QVERIFY(base.listen(QHostAddress::LocalHost, 0));
+        sim::RtcmBaseStation station;
+        QList<QPointer<QTcpSocket>> clients;
+        connect(&base, &QTcpServer::newConnection, this, [&] {
+            while (QTcpSocket *c = base.nextPendingConnection()) clients << c;
+        });
+        QTimer tick;
+        connect(&tick, &QTimer::timeout, this, [&] {
+            station.advance(1.0);
+            const QByteArray frames = QByteArray::fromStdString(station.takeOutput());
+            for (const auto &c : clients)
+                if (c) c->write(frames);
+        });
+        tick.start(250);
+
+        QSettings settings(dir_.filePath("work.ini"), QSettings::IniFormat);
+        app::MainWindow w(registry_, transports_, &settings);
+        w.resize(1280, 800);
+        w.show();
+        w.connectReceiversAtStart(
+                {{SourceSpec::Kind::Simulator, "nvs"}, {SourceSpec::Kind::Simulator, "geostar"}});
+        ui::ReceiverSession *a = w.sessions()[0], *b = w.sessions()[1];
+        QTRY_VERIFY_WITH_TIMEOUT(connected(a) && connected(b), 10000);
+
+        ui::CorrectionsRequest r;
+        r.kind = ui::CorrectionsRequest::Kind::Tcp;
+        r.host = "127.0.0.1";
+        r.port = base.serverPort();
+        QString why;
+        QVERIFY2(w.corrections(a)->start(r, &why), qPrintable(why));
+        auto forwarded = [](ui::ReceiverSession *s) -> std::uint64_t {
+            const auto *f = s->link()->forwarderStats();
+            return f ? f->framesForwarded : 0;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(forwarded(a) >= 3, 10000);
+        auto *status = w.dock("correctionsDock")->findChild<QLabel *>("correctionsStatus");
+        QVERIFY(status);
+        QTRY_VERIFY2(status->text().contains("Receiving"), qPrintable(status->text()));
+
+        // Settings for the first receiver, changed and not applied.
+        config::SettingsEngine *engine = a->link()->settings();
+        QTRY_VERIFY_WITH_TIMEOUT(!engine->isBusy(), 20000);
+        auto *form = qobject_cast<ui::SettingsView *>(w.dock("settingsDock")->widget());
+        QVERIFY(form);
+        ui::SettingEditor *editor = form->editor("rtk.ELGPS");
+        QVERIFY(editor);
+        QWidget *input = editor->input();
+        input->setFocus();
+        QTest::keyClick(input, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(input, "17");
+        QTest::keyClick(input, Qt::Key_Tab);
+        QVERIFY(form->isEdited("rtk.ELGPS"));
+        // And a command typed in the console, not sent.
+        auto *console = qobject_cast<ui::ConsoleView *>(w.dock("consoleDock")->widget());
+        QVERIFY(console);
+        auto *sendBox = console->findChild<QLineEdit *>("consoleInput");
+        QVERIFY(sendBox);
+        QTest::keyClicks(sendBox, "$PNVGVER");
+
+        w.findChild<QAction *>("selectReceiver2")->trigger();
+        QCOMPARE(w.dockSession(w.dock("correctionsDock")), b);
+        // The stream goes on into the first receiver, none into the second.
+        const std::uint64_t before = forwarded(a);
+        QTRY_VERIFY_WITH_TIMEOUT(forwarded(a) >= before + 3, 10000);
+        QCOMPARE(forwarded(b), std::uint64_t(0));
+        QVERIFY(w.corrections(a)->active());
+        QVERIFY(!w.corrections(b)->active());
+        status = w.dock("correctionsDock")->findChild<QLabel *>("correctionsStatus");
+        QVERIFY2(!status->text().contains("Receiving"), qPrintable(status->text()));
+        // The form kept its receiver and its change.
+        QCOMPARE(w.pinnedSession(w.dock("settingsDock")), a);
+        QCOMPARE(qobject_cast<ui::SettingsView *>(w.dock("settingsDock")->widget()), form);
+        QVERIFY(form->isEdited("rtk.ELGPS"));
+        QVERIFY(w.dock("settingsDock")->windowTitle().contains("#1"));
+        QCOMPARE(w.pinnedSession(w.dock("consoleDock")), a);
+        QCOMPARE(console->typedCommand(), QString("$PNVGVER"));
+        // The docks without work follow the selection.
+        QCOMPARE(w.dockSession(w.dock("skyDock")), b);
+
+        // Back on the first: its stream's state is shown again.
+        w.findChild<QAction *>("selectReceiver1")->trigger();
+        status = w.dock("correctionsDock")->findChild<QLabel *>("correctionsStatus");
+        QTRY_VERIFY2(status->text().contains("Receiving"), qPrintable(status->text()));
+        w.corrections(a)->stop();
+    }
+
     // The set of receivers comes back at the next start, with their names and pinned docks.
     void theSetOfReceiversIsRestored() {
         QSettings settings(dir_.filePath("restore.ini"), QSettings::IniFormat);
@@ -226,7 +475,7 @@ private slots:
         QDockWidget *second = w.dock("fixDock-2");
         QVERIFY(second);
         QCOMPARE(w.pinnedSession(second), w.sessions()[1]);
-        QVERIFY(second->windowTitle().contains("Rover"));
+        QVERIFY(second->windowTitle().contains("#2"));
     }
 };
 

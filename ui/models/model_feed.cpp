@@ -87,6 +87,7 @@ void ModelFeed::updateCounts() {
     if (!counterSource_) return;
     LinkCounters c = counters_;
     c.bytes = counterSource_->framerStats().bytesIn;
+    c.skippedBytes = counterSource_->framerStats().bytesSkipped;
     c.sentences = c.checksumErrors = c.decodeErrors = 0;
     for (const AddressStats &a : counterSource_->addressStats()) {
         c.sentences += a.sentences;

@@ -35,6 +35,7 @@ struct LinkCounters {
     quint64 sentences = 0;
     quint64 checksumErrors = 0;
     quint64 decodeErrors = 0;
+    quint64 skippedBytes = 0; // bytes outside any sentence: junk, or binary between sentences
 };
 
 class ModelFeed : public QObject {

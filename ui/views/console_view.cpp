@@ -155,6 +155,10 @@ void ConsoleView::setExample(const QString &example) {
                     : tr("Command to send, e.g. %1 (the checksum is added)").arg(example));
 }
 
+QString ConsoleView::typedCommand() const {
+    return input_->text();
+}
+
 void ConsoleView::setHistory(const QStringList &history) {
     history_ = history;
 }

@@ -42,6 +42,8 @@ public:
     QString sendRefusal() const { return refusal_; }
     void setHistory(const QStringList &history);
     QStringList history() const { return history_; }
+    // What is typed in the send box, not yet sent.
+    QString typedCommand() const;
     void setFilter(const QString &addressPattern);
     int visibleLines() const;
 
