@@ -11,11 +11,14 @@ constexpr const char *kContext = "gnss::app::MainWindow";
 } // namespace
 
 // In the order of the View menu and of each group's tabs. The groups: the sky plot's on the
-// left (the signal levels below it), the fix's on the right, the console's at the bottom. The log's
-// docks join the sky plot's group (track, range statistics) and the console's (whole-log charts,
-// events, a wide list): the live groups keep the tabs they have, so that every tab's title stays
-// whole on a laptop in every language (ten tabs beside the fix were cut to "Ре…", "Поп…" in Russian
-// at 1280x800).
+// left (the signal levels below it; the receiver's identity beside the sky), the fix's on the
+// right (the settings form there, where it is tall), the console's at the bottom. With several
+// receivers the settings, console and corrections tabs carry a number and a colour: the fix's
+// group holds six tabs and has 55% of the width at the first start, so that they stay whole. The
+// log's docks join the sky plot's group (track, range statistics) and the console's (whole-log
+// charts, events, a wide list): the live groups keep the tabs they have, so that every tab's title
+// stays whole on a laptop in every language (ten tabs beside the fix were cut to "Ре…", "Поп…" in
+// Russian at 1280x800).
 std::span<const DockRow> dockRows() {
     using M = MainWindow;
     constexpr auto L = Qt::LeftDockWidgetArea, R = Qt::RightDockWidgetArea,
@@ -40,8 +43,8 @@ std::span<const DockRow> dockRows() {
              QT_TRANSLATE_NOOP("gnss::app::MainWindow", "Corrections (RTCM)"), R, "right", nullptr,
              false, false, &M::makeCorrections, false, true},
             {"info", QT_TRANSLATE_NOOP("gnss::app::MainWindow", "Receiver"),
-             QT_TRANSLATE_NOOP("gnss::app::MainWindow", "Receiver information"), R, "right",
-             nullptr, false, false, &M::makeReceiverInfo},
+             QT_TRANSLATE_NOOP("gnss::app::MainWindow", "Receiver information"), L, "left", nullptr,
+             false, false, &M::makeReceiverInfo},
             {"satellites", QT_TRANSLATE_NOOP("gnss::app::MainWindow", "Satellites"),
              QT_TRANSLATE_NOOP("gnss::app::MainWindow", "Satellites"), R, "right", nullptr, false,
              false, &M::makeSatellites},

@@ -422,7 +422,15 @@ void MainWindow::saveLayout() {
 void MainWindow::restoreLayout() {
     if (!settings_) return;
     restoreGeometry(settings_->value("window/geometry").toByteArray());
-    restoreState(settings_->value("window/state").toByteArray());
+    if (!restoreState(settings_->value("window/state").toByteArray())) {
+        // The first start: the fix's group has 55% of the width and the sky's the rest,
+        // whatever their views' size hints ask, so that the tabs beside the fix stay whole.
+        QTimer::singleShot(0, this, [this] {
+            if (isVisible())
+                resizeDocks({dock("skyDock"), dock("fixDock")},
+                            {width() * 45 / 100, width() * 55 / 100}, Qt::Horizontal);
+        });
+    }
     if (auto *tracks = findChild<QAction *>("skyTracksAction"))
         tracks->setChecked(settings_->value("view/skyTracks", false).toBool());
     if (auto *charts = qobject_cast<ui::ChartsView *>(dock("chartsDock")->widget())) {

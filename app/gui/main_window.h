@@ -8,6 +8,7 @@
 #include "link/source_spec.h"
 
 #include <QHash>
+#include <QIcon>
 #include <QList>
 #include <QMainWindow>
 #include <QPointer>
@@ -175,6 +176,8 @@ private:
     // Whether a dock's view holds work begun for its receiver (edits not applied, a command
     // typed): such a dock keeps its receiver when the selection changes.
     static bool holdsWork(const QWidget *view);
+    // Puts each dock's receiver colour on its tab (Qt's dock tabs show no icon of their own).
+    void colourDockTabs();
     void saveReceivers();
     QList<SourceSpec> restoreReceivers();
     void restoreDocksOfReceivers();
@@ -234,6 +237,7 @@ private:
     QHash<QDockWidget *, DockBinding> docks_;
     ui::CompareModel *compare_ = nullptr;
     QHash<const ui::ReceiverSession *, QPointer<CorrectionsController>> corrections_;
+    QHash<QRgb, QIcon> tabSwatches_; // one icon per colour: a tab's is compared by its key
     ConnectionBar *bar_ = nullptr;
     ReceiversStrip *strip_ = nullptr;
     QMenu *receiverMenu_ = nullptr;

@@ -21,6 +21,7 @@
 #include <QPixmap>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabBar>
 
 namespace gnss::app {
 
@@ -263,20 +264,44 @@ void MainWindow::updateDockTitles() {
         QString title = dockTitle(row);
         const ui::ReceiverSession *s = it->shown;
         const bool receiver = s && s != logSession_;
-        // Which receiver, once there is more than one: its colour on every dock's tab; its
-        // number (the strip's, Ctrl+N) on a dock pinned to it and on those that act on it
-        // (settings, console, corrections). A number and not a name: seven tabs beside the fix
-        // stay whole at 1280x800 in Russian too (names cut them to "Реш…").
-        if (receiver && (it->pinned || (several && row.names))) {
+        // Which receiver, on a dock pinned to it and, once there is more than one, on those
+        // that act on it (settings, console, corrections): its number (the strip's, Ctrl+N) and
+        // its colour on the tab. A number and not a name, and no colour on the docks that follow
+        // the selection (the strip shows which that is): seven tabs beside the fix stay whole
+        // at 1280x800 in Russian too (names cut them to "Реш…").
+        const bool says = receiver && (it->pinned || (several && row.names));
+        if (says) {
             const int n = int(sessions_.indexOf(const_cast<ui::ReceiverSession *>(s))) + 1;
             title = it->pinned ? tr("%1 · #%2 (pinned)").arg(title).arg(n)
                                : tr("%1 · #%2").arg(title).arg(n);
         }
         if (it.key()->windowTitle() != title) it.key()->setWindowTitle(title);
-        const QColor colour = receiver && (several || it->pinned) ? s->colour() : QColor();
+        const QColor colour = says ? s->colour() : QColor();
         if (it.key()->property("receiverColour").value<QColor>() != colour) {
             it.key()->setProperty("receiverColour", colour);
             it.key()->setWindowIcon(colour.isValid() ? swatch(colour) : QIcon());
+        }
+    }
+    colourDockTabs();
+}
+
+void MainWindow::colourDockTabs() {
+    // Qt's dock tabs show the title alone: the receiver's colour is put on them here, by the
+    // title (unique in a tab group), and again whenever the tabs may have been made anew.
+    QHash<QString, QColor> colours;
+    for (auto it = docks_.cbegin(); it != docks_.cend(); ++it)
+        colours.insert(it.key()->windowTitle(),
+                       it.key()->property("receiverColour").value<QColor>());
+    for (QTabBar *bar : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
+        for (int i = 0; i < bar->count(); ++i) {
+            const QColor c = colours.value(bar->tabText(i));
+            QIcon icon;
+            if (c.isValid()) {
+                auto found = tabSwatches_.find(c.rgb());
+                if (found == tabSwatches_.end()) found = tabSwatches_.insert(c.rgb(), swatch(c));
+                icon = *found;
+            }
+            if (bar->tabIcon(i).cacheKey() != icon.cacheKey()) bar->setTabIcon(i, icon);
         }
     }
 }

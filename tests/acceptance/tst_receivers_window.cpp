@@ -336,8 +336,8 @@ private slots:
             QCoreApplication::installTranslator(&ru);
         }
         QSettings settings(dir_.filePath("tabs-" + language + ".ini"), QSettings::IniFormat);
+        // As gnss-workbench --sim nvs --sim geostar starts (maximised on the laptop's screen).
         app::MainWindow w(registry_, transports_, &settings);
-        w.resize(1280, 800);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         w.connectReceiversAtStart(
@@ -359,6 +359,18 @@ private slots:
                                         .arg(tabs.join(" | "))));
         }
         QVERIFY(bars >= 3);
+        // The tabs that name a receiver carry its colour; those that follow the selection not.
+        auto tabIcon = [&w](const QString &dock) {
+            const QString title = w.dock(dock)->windowTitle();
+            for (QTabBar *bar : w.findChildren<QTabBar *>())
+                for (int i = 0; i < bar->count(); ++i)
+                    if (bar->tabText(i) == title) return bar->tabIcon(i);
+            return QIcon();
+        };
+        QTRY_VERIFY(!tabIcon("settingsDock").isNull());
+        QCOMPARE(tabIcon("settingsDock").pixmap(12).toImage().pixelColor(6, 6),
+                 w.sessions()[0]->colour());
+        QVERIFY(tabIcon("fixDock").isNull());
         QCoreApplication::removeTranslator(&ru);
     }
 
