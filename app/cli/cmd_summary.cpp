@@ -1,6 +1,9 @@
 // gnss-cli summary: what a log holds, in a few lines (or one JSON object).
 #include "cli/log_open.h"
+#include "compare/accuracy.h"
 #include "core/json_writer.h"
+#include "state/epoch.h"
+#include "state/epochs_of_log.h"
 
 #include <cstdio>
 
@@ -27,13 +30,64 @@ std::string duration(double s) {
     return b;
 }
 
+// The range's positions against the point, decoded again in full (the index keeps no
+// ellipsoidal height).
+compare::AccuracyReport accuracyOf(const CliContext &ctx, const OpenedLog &log,
+                                   const compare::ReferencePoint &point) {
+    compare::Accuracy accuracy(point);
+    if (log.empty()) return accuracy.report();
+    const logview::LogView::Slice slice = log.view->slice(log.first, log.last);
+    epochsOfLog(slice.bytes, ctx.registry, slice.dialect, [&](const Epoch &e) { accuracy.add(e); });
+    return accuracy.report();
+}
+
+std::string accuracyText(const compare::AccuracyReport &r, const compare::ReferencePoint &p) {
+    char b[512];
+    std::string o;
+    auto line = [&](const char *fmt, auto... a) {
+        std::snprintf(b, sizeof b, fmt, a...);
+        o += b;
+    };
+    line("against %.8f, %.8f", p.latDeg, p.lonDeg);
+    if (p.height) line(", %.3f m", *p.height);
+    line(" (%zu positions):\n", r.positions);
+    if (!r.positions) return o;
+    line("  bias: east %.3f m, north %.3f m", r.biasEast, r.biasNorth);
+    if (r.biasUp) line(", up %.3f m", *r.biasUp);
+    o += "\n";
+    line("  horizontal: mean %.3f m, median %.3f m, R95 %.3f m, 2DRMS %.3f m; CEP50 %.3f m, "
+         "CEP95 %.3f m about the mean\n",
+         r.horizontal.mean, r.horizontal.median, r.horizontal.p95, r.drms2, r.cep50, r.cep95);
+    if (r.heights)
+        line("  vertical: mean %.3f m, median %.3f m, 95 %% %.3f m\n", r.vertical.mean,
+             r.vertical.median, r.vertical.p95);
+    else if (p.height)
+        o += "  vertical: no heights above the ellipsoid (no geoid separation given)\n";
+    o += "  within";
+    for (std::size_t k = 0; k < compare::kWithinMetres.size(); ++k)
+        line("%s %g m %.1f %%", k ? "," : "", compare::kWithinMetres[k], r.within.percent[k]);
+    o += "\n";
+    return o;
+}
+
 } // namespace
 
 int cmdSummary(const CliContext &ctx) {
+    std::optional<compare::ReferencePoint> point;
+    if (const auto text = ctx.args.option("reference")) {
+        std::string why;
+        point = compare::ReferencePoint::parse(*text, why);
+        if (!point) {
+            std::fprintf(stderr, "gnss-cli: --reference: %s\n", why.c_str());
+            return 2;
+        }
+    }
     OpenedLog log;
     if (const int rc = openLogForCommand(ctx, log)) return rc;
     logview::LogView &v = *log.view;
     const std::size_t first = log.first, last = log.last;
+    const std::optional<compare::AccuracyReport> accuracy =
+            point ? std::optional(accuracyOf(ctx, log, *point)) : std::nullopt;
     const logview::RangeStats all = v.stats(first, last);
     const logview::RangeStats still = v.stats(first, last, true);
     std::vector<logview::LogEvent> events;
@@ -63,6 +117,10 @@ int cmdSummary(const CliContext &ctx) {
             w.field("kind", logview::toString(e.kind)).field("text", e.text).endObject();
         }
         w.endArray();
+        if (accuracy) {
+            w.key("reference");
+            accuracy->writeJson(w, *point);
+        }
         w.key("warnings").beginArray();
         for (const auto &x : v.warnings()) w.value(x);
         w.endArray().endObject();
@@ -115,6 +173,7 @@ int cmdSummary(const CliContext &ctx) {
         else
             o += "CEP: no positions\n";
         if (all.maxHdop) line("max HDOP: %.2f\n", *all.maxHdop);
+        if (accuracy) o += accuracyText(*accuracy, *point);
         line("events: %zu\n", events.size());
         for (const auto &e : events) {
             logview::EpochRecord r;

@@ -123,7 +123,13 @@ constexpr OptionSpec kExportOptions[] = {
         {"out", "OUT", "the file to write (- for standard output)", 'o'}, kDialect, kLenient,
 };
 constexpr OptionSpec kSummaryOptions[] = {
-        {"json", "", "one JSON object instead of the text"}, kFrom, kTo, kDialect, kLenient,
+        {"json", "", "one JSON object instead of the text"},
+        kFrom,
+        kTo,
+        kDialect,
+        kLenient,
+        {"reference", "LAT,LON[,HEIGHT]",
+         "accuracy against this point (degrees; ellipsoidal metres; horizontal only without)"},
 };
 constexpr OptionSpec kPlayOptions[] = {
         {"pty", "", "play to a new pseudo-terminal (its path is printed on standard output)"},
@@ -168,7 +174,8 @@ constexpr CommandSpec kCommands[] = {
          "KML (the track coloured by fix type), CSV (one row per epoch, columns in "
          "docs/export.md) or nmea (the bytes of those epochs exactly as they are in FILE).\n"
          "Exit status: 0 written, 1 FILE unreadable or OUT not writable, 2 usage error.\n"},
-        {"summary", cmdSummary, "summary [--json] [--from T] [--to T] FILE|-",
+        {"summary", cmdSummary,
+         "summary [--json] [--from T] [--to T] [--reference LAT,LON[,HEIGHT]] FILE|-",
          "what a log holds: duration, fix availability, gaps, CEP, events", kSummaryOptions,
          "Indexes FILE (- reads standard input whole first) and prints its duration, epochs, "
          "availability per fix type, gaps, time "
@@ -176,6 +183,12 @@ constexpr CommandSpec kCommands[] = {
          "(speed under 0.5 m/s; every position when no speed is known), the largest HDOP and "
          "the events (fix changes, gaps, resets, checksum-error bursts, dialect changes, time "
          "marks, jamming, base station changes). --json prints one JSON object.\n"
+         "With --reference, the positions against that point too: the bias east, north and up "
+         "(mean position minus the point), the horizontal error (mean, median, R95, 2DRMS; "
+         "CEP50/CEP95 about the mean position), the vertical error (mean, median, 95 %; only "
+         "with a HEIGHT and a receiver that gives its geoid separation) and the share of "
+         "epochs within 2 cm, 10 cm, 50 cm, 1 m, 2 m and 5 m, overall and per fix type; in "
+         "JSON the \"reference\" object.\n"
          "Exit status: 0 done, 1 FILE unreadable, 2 usage error.\n"},
         {"play", cmdPlay,
          "play FILE|- --pty|--tcp PORT|--port P [--speed X] [--loop] [--from T] [--to T]",

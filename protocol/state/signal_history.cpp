@@ -1,8 +1,7 @@
 #include "state/signal_history.h"
 
-#include "core/stream_decoder.h"
 #include "state/epoch.h"
-#include "state/epoch_assembler.h"
+#include "state/epochs_of_log.h"
 
 #include <algorithm>
 
@@ -93,21 +92,8 @@ SignalHistory historyOfLog(std::string_view log, const DialectRegistry &registry
                            std::int64_t stepMs, const Dialect *dialect,
                            const std::atomic<bool> *cancel) {
     SignalHistory h(0, stepMs);
-    StreamDecoder decoder(registry, DecoderOptions{});
-    if (dialect) decoder.setDialect(dialect);
-    EpochAssembler assembler(decoder.dialect());
-    auto keep = [&](const Epoch &e) { h.add(e); };
-    constexpr std::size_t kChunk = 1 << 20;
-    for (std::size_t at = 0; at < log.size(); at += kChunk) {
-        if (cancel && cancel->load(std::memory_order_relaxed)) return h;
-        decoder.feed(log.substr(at, kChunk), [&](const SentenceEvent &ev) {
-            if (!ev.message) return;
-            assembler.setDialect(decoder.dialect());
-            assembler.add(ev.sentence, *ev.message, keep);
-        });
-    }
-    decoder.finish();
-    assembler.flush(keep);
+    epochsOfLog(
+            log, registry, dialect, [&](const Epoch &e) { h.add(e); }, cancel);
     return h;
 }
 

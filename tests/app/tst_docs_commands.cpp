@@ -168,7 +168,8 @@ QHash<QString, Treatment> table() {
              synopsis()},
             {"gnss-cli export --format gpx|kml|csv|nmea [--from T] [--to T] FILE -o OUT",
              synopsis()},
-            {"gnss-cli summary [--json] [--from T] [--to T] FILE", synopsis()},
+            {"gnss-cli summary [--json] [--from T] [--to T] [--reference LAT,LON[,HEIGHT]] FILE",
+             synopsis()},
             {"gnss-cli play FILE --pty|--tcp PORT|--port P [--baud B] [--speed X] [--loop] "
              "[--from T] [--to T]",
              synopsis()},
@@ -177,6 +178,10 @@ QHash<QString, Treatment> table() {
              "drive.nmea",
              run(0, {}, {"> drive.nmea", "> again.nmea && cmp again.nmea drive.nmea"})},
             {"gnss-cli summary drive.nmea", run()},
+            {"gnss-sim --dialect nvs --stdout --speed 1000 --duration 120 --noise 0 --offset "
+             "0.3,-0.2,0.5 > off.nmea",
+             run()},
+            {"gnss-cli summary --reference 55.7512,37.6184,166.6 off.nmea", run()},
             {"gnss-cli export --format gpx --from 10:15:00 --to 10:20:00 drive.nmea -o part.gpx",
              run()},
             // A minute of the same receiver, and a reader of the pseudo-terminal until play ends.

@@ -4,6 +4,9 @@
 #include "raw_pty.h"
 #include "scenario_log.h"
 
+#include "builtin/simulators.h"
+#include "sim/receiver.h"
+
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -93,6 +96,51 @@ private slots:
         QVERIFY(runCli({"summary", plain}).out.contains("dialect: nmea (no vendor sentences)"));
         QCOMPARE(runCli({"summary", dir_.filePath("missing.nmea")}).exitCode, 1);
         QCOMPARE(runCli({"summary"}).exitCode, 2);
+    }
+
+    // --reference: a simulated NV08C-RTK told to report its position 0.3 m east, 0.2 m south
+    // and 0.5 m up of the truth (--noise 0), against the simulator's observer: the bias comes
+    // back, and the shares say every epoch is within 50 cm and none within 10 cm.
+    void summaryAgainstAReference() {
+        gnss::sim::SimOptions o;
+        o.noise = 0;
+        o.differences.east = 0.3;
+        o.differences.north = -0.2;
+        o.differences.up = 0.5;
+        auto rx = gnss::sim::builtinSimulators().make("nvs", o);
+        QVERIFY(rx);
+        const QString path = dir_.filePath("offset.nmea");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            rx->advance(120);
+            f.write(QByteArray::fromStdString(rx->takeOutput()));
+        }
+        const Run r = runCli({"summary", "--json", "--reference", "55.7512,37.6184,166.6", path});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject ref = QJsonDocument::fromJson(r.out).object()["reference"].toObject();
+        QVERIFY2(ref["positions"].toInt() > 100, r.out.constData());
+        const QJsonObject bias = ref["bias_m"].toObject();
+        QVERIFY2(std::abs(bias["east"].toDouble() - 0.3) < 0.01, r.out.constData());
+        QVERIFY2(std::abs(bias["north"].toDouble() + 0.2) < 0.01, r.out.constData());
+        QVERIFY2(std::abs(bias["up"].toDouble() - 0.5) < 0.01, r.out.constData());
+        QVERIFY(std::abs(ref["horizontal_m"].toObject()["r95"].toDouble() - 0.361) < 0.01);
+        QVERIFY(std::abs(ref["vertical_m"].toObject()["p95"].toDouble() - 0.5) < 0.01);
+        QCOMPARE(ref["within"].toObject()["0.1"].toDouble(), 0.0);
+        QCOMPARE(ref["within"].toObject()["0.5"].toDouble(), 100.0);
+        // Horizontal only without a height; the words say the same.
+        const Run flat = runCli({"summary", "--json", "--reference", "55.7512,37.6184", path});
+        const QJsonObject flatRef =
+                QJsonDocument::fromJson(flat.out).object()["reference"].toObject();
+        QVERIFY(!flatRef["bias_m"].toObject().contains("up"));
+        QVERIFY(!flatRef.contains("vertical_m"));
+        const Run text = runCli({"summary", "--reference", "55.7512,37.6184,166.6", path});
+        QVERIFY2(text.out.contains("bias: east 0.300 m, north -0.200 m, up 0.500 m"),
+                 text.out.constData());
+        // A malformed point is refused before the log is read.
+        const Run bad = runCli({"summary", "--reference", "55.7,north", path});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("longitude"), bad.err.constData());
     }
 
     // "-": standard input, read whole (through a temporary file, removed after), as a file is.
