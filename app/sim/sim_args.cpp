@@ -20,7 +20,7 @@ const char *const kUsageHead =
         "                [--seed N] [--speed X] [--duration S] [--baud B] [--faults SPEC]\n"
         "                [--internal-base] [--start now|HH:MM:SS] [--offset E,N,U]\n"
         "                [--cn0-offset [SYS:]DB,...] [--drop SATS] [--latency MS]\n"
-        "                [--noise X]\n"
+        "                [--noise X] [--ttff SPEC]\n"
         "       gnss-sim --rtcm-base [--base-position LAT,LON,H] [--station ID]\n"
         "                [--pty | --tcp PORT | --stdout] [--seed N] [--speed X] [--duration S]\n"
         "                [--baud B]\n"
@@ -68,6 +68,10 @@ const char *const kUsageTail =
         "                 constellation's (GPS:-3,GLONASS:2; G R E C J S also name them)\n"
         "  --drop SATS    never report these satellites (G05,R12,E31)\n"
         "  --latency MS   send each output MS milliseconds after the epoch it belongs to\n"
+        "  --ttff SPEC    times to first fix per start: cold=60:8,warm=38:5,hot=12:2,power=3\n"
+        "                 (MEAN[:SPREAD] seconds, each start drawn from a normal distribution;\n"
+        "                 default power 3 s, hot 2, warm 6, cold 15; the VT002 its datasheet's\n"
+        "                 12/38/60 s with 15 % spread)\n"
         "  --noise X      the share of the position and C/N0 noise reported: 1 as modelled\n"
         "                 (default), 0 the truth, so receivers of any family on one sky\n"
         "                 differ by the options above alone\n"
@@ -253,6 +257,13 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
         } else if (a == "--start") {
             if (value(v) && !startTime(v, out.options.startAfter))
                 fail("--start: expected now or a UTC time HH:MM:SS, got '" + std::string(v) + "'");
+        } else if (a == "--ttff") {
+            if (!value(v)) continue;
+            std::string why;
+            if (auto t = sim::TtffModel::parse(v, why))
+                out.options.ttff = *t;
+            else
+                fail("--ttff: " + why);
         } else if (a == "--faults") {
             if (!value(v)) continue;
             std::string why;

@@ -9,17 +9,6 @@ namespace gnss::sim {
 
 namespace {
 
-// Times to first fix by restart kind (seconds): short enough for tests, long enough to see.
-double ttffOf(ResetKind k) {
-    switch (k) {
-    case ResetKind::PowerCycle: return 3.0;
-    case ResetKind::Hot: return 2.0;
-    case ResetKind::Warm: return 6.0;
-    case ResetKind::Cold: return 15.0;
-    }
-    return 3.0;
-}
-
 DecoderOptions decoderOptionsFor(const Dialect &d) {
     DecoderOptions o;
     o.dialect = std::string(d.id);
@@ -35,7 +24,9 @@ Receiver::Receiver(const Dialect &dialect, int defaultBaud, const SimOptions &op
     : dialect_(dialect), options_(options), registry_(standardSentenceRules(), {&dialect}),
       decoder_(registry_, decoderOptionsFor(dialect)), sky_(options.seed, options.observer),
       faultRng_(options.seed ^ 0x5EED5EEDu), defaultBaud_(defaultBaud),
-      baud_(options.baud > 0 ? options.baud : defaultBaud), ttff_(ttffOf(ResetKind::PowerCycle)) {
+      baud_(options.baud > 0 ? options.baud : defaultBaud),
+      ttffModel_(options.ttff.over(TtffModel::builtin())), ttffRng_(options.seed ^ 0x77FF0001u) {
+    ttff_ = ttffModel_.draw(ResetKind::PowerCycle, ttffRng_);
     // The first epoch at power-on, on the UTC grid of epochs (whole seconds and their parts,
     // as real receivers): with a start of its own (startAfter), the first whole one after it.
     const double shift = std::fmod(options_.startAfter, 1.0);
@@ -112,8 +103,13 @@ FixKind Receiver::fixAfter(double seconds) const {
     return seconds >= ttff_ ? FixKind::Autonomous : FixKind::None;
 }
 
+void Receiver::setFamilyTtff(const TtffModel &family) {
+    ttffModel_ = options_.ttff.over(family.over(TtffModel::builtin()));
+    ttff_ = ttffModel_.draw(ResetKind::PowerCycle, ttffRng_);
+}
+
 void Receiver::reset(ResetKind kind) {
-    ttff_ = ttffOf(kind);
+    ttff_ = ttffModel_.draw(kind, ttffRng_);
     trackingSince_ = now_;
     lastFix_ = FixKind::None;
     if (kind == ResetKind::PowerCycle) // a reply not yet out is lost with the power

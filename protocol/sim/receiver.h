@@ -20,6 +20,7 @@
 #include "sim/differences.h"
 #include "sim/faults.h"
 #include "sim/sky_model.h"
+#include "sim/ttff_model.h"
 
 #include <cstdint>
 #include <memory>
@@ -47,13 +48,8 @@ struct SimOptions {
     // The share of the modelled noise reported (SkyModel::setNoise): 0 reports the truth, so
     // receivers of different families on one sky differ by their Differences alone.
     double noise = 1;
-};
-
-enum class ResetKind : std::uint8_t {
-    PowerCycle, // settings reload from flash, warm start
-    Cold,       // command: cold start (almanac/ephemeris dropped), settings kept
-    Warm,       // command: warm start, settings kept
-    Hot,        // command: hot start, settings kept
+    // Times to first fix per kind of start set on purpose (gnss-sim --ttff), over the family's.
+    TtffModel ttff;
 };
 
 class Receiver {
@@ -144,8 +140,11 @@ protected:
     void reply(const Sentence &command, const std::string &sentence, int thenBaud = 0);
     // Changes the PVT rate: the next epoch is on the new grid.
     void rescheduleEpochs();
-    // The time to first fix of the last reset kind, seconds.
+    // The time to first fix of the last start, seconds (drawn from the TTFF model).
     double ttff() const { return ttff_; }
+    // A family's own times to first fix (its datasheet's), under what the options set: the
+    // power-on start is drawn again from them. Called from the family's constructor.
+    void setFamilyTtff(const TtffModel &family);
     double sinceTracking() const { return now_ - trackingSince_; }
 
     // Seconds since 10:00:00 UTC of the first day: time() plus the start (whole seconds of it
@@ -198,6 +197,8 @@ private:
     double nextEpoch_ = 0;
     double trackingSince_ = 0;
     double ttff_ = 0;
+    TtffModel ttffModel_;
+    std::mt19937 ttffRng_;
     bool hungUp_ = false;
     double offUntil_ = -1;      // the powercut fault: off until then, then a power cycle
     bool powerCutDone_ = false; // (once per run)
