@@ -4170,7 +4170,7 @@ Serial number: %3</source>
         <translation>Шкала времени журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/dock_table.cpp" line="+78"/>
+        <location filename="../app/gui/dock_table.cpp" line="+81"/>
         <source>Events</source>
         <translation>События</translation>
     </message>
@@ -4395,7 +4395,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+132"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+133"/>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
@@ -4653,7 +4653,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+188"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+212"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
@@ -4690,12 +4690,12 @@ Serial number: %3</source>
         <translation>Не удаётся записывать в %1: сначала подключитесь к приёмнику и проверьте, что папка доступна для записи.</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+81"/>
         <source>The new language is used from the next start of GNSS Workbench.</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_sessions.cpp" line="-137"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="-161"/>
         <source>%1 keeps what was begun for %2: pinned to it</source>
         <translation>%1 сохраняет начатое для %2: закреплено за ним</translation>
     </message>
@@ -4720,7 +4720,7 @@ Serial number: %3</source>
         <translation>Закрыть эту панель</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>%1 · #%2 (pinned)</source>
         <translation>%1 · №%2 (закреплена)</translation>
     </message>
@@ -4730,7 +4730,7 @@ Serial number: %3</source>
         <translation>%1 · №%2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+49"/>
         <source>Silent for %1 s</source>
         <translation>Молчит %1 с</translation>
     </message>
@@ -5925,6 +5925,72 @@ Serial number: %3</source>
         <location line="+100"/>
         <source>No valid sentence and no answer to any probe: check the baud rate and that the receiver sends NMEA</source>
         <translation>Нет ни корректных сообщений, ни ответа на запросы: проверьте скорость и то, что приёмник передаёт NMEA</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::qualify::TtffCampaign</name>
+    <message>
+        <location filename="../protocol/qualify/ttff_campaign.cpp" line="+26"/>
+        <source>the receiver&apos;s dialect is not known: no restart command to send</source>
+        <translation>диалект приёмника неизвестен: нет команды перезапуска</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 has no %2 start (it has: %3)</source>
+        <translation>у %1 нет старта «%2» (есть: %3)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+143"/>
+        <source>Cancelled after %n run(s)</source>
+        <translation>
+            <numerusform>Отменено после %n прогона</numerusform>
+            <numerusform>Отменено после %n прогонов</numerusform>
+            <numerusform>Отменено после %n прогонов</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>Done: %n run(s)</source>
+        <translation>
+            <numerusform>Готово: %n прогон</numerusform>
+            <numerusform>Готово: %n прогона</numerusform>
+            <numerusform>Готово: %n прогонов</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 of %3</source>
+        <translation>%1 %2 из %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: waiting for a 3D fix held %2 s (ephemerides), %3 s</source>
+        <translation>%1: ожидание 3D-решения, удерживаемого %2 с (эфемериды), %3 с</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: restarting</source>
+        <translation>%1: перезапуск</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: waiting for a 3D fix, %2 s</source>
+        <translation>%1: ожидание 3D-решения, %2 с</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: done, pausing</source>
+        <translation>%1: готово, пауза</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: link lost, waiting for it</source>
+        <translation>%1: связь потеряна, ожидание</translation>
     </message>
 </context>
 <context>

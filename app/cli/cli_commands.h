@@ -41,5 +41,7 @@ int cmdRtcm(const CliContext &ctx);
 // NTRIP casters (cmd_ntrip.cpp): the source table, or a mountpoint's RTCM as JSON and/or a file.
 int cmdNtrip(const CliContext &ctx);
 int cmdCompare(const CliContext &ctx);
+// A time-to-first-fix campaign on a live receiver (cmd_ttff.cpp).
+int cmdTtff(const CliContext &ctx);
 
 } // namespace gnss::cli

@@ -67,6 +67,19 @@ constexpr OptionSpec kRecordOptions[] = {
         kLinkBaud, {"out", "FILE", "write the bytes received to FILE, their index to FILE.idx"},
         kDuration,
 };
+constexpr OptionSpec kTtffOptions[] = {
+        kPort,
+        kTcp,
+        kSim,
+        kLinkBaud,
+        {"start", "cold|warm|hot", "a kind of start to measure (repeatable, run in that order)"},
+        {"runs", "N", "restarts of each kind (default 10)"},
+        {"timeout", "S", "a run that has no 3D fix after S seconds is a timeout (default 180)"},
+        {"pause", "S", "seconds between runs (default 5)"},
+        {"hold", "S", "before a warm or hot start, a 3D fix held S seconds (default 30)"},
+        {"reference", "LAT,LON", "the first fix's distance from this point (degrees)"},
+        {"json", "", "one JSON object at the end instead of a line per run and a table"},
+};
 constexpr OptionSpec kSendOptions[] = {
         kPort,
         kTcp,
@@ -309,6 +322,25 @@ constexpr CommandSpec kCommands[] = {
          "and at the end one summary object (frames, bytes, bytes skipped, CRC failures, frames "
          "per message type) on standard error. Bytes outside frames are skipped.\n"
          "Exit status: 0 the input was read to its end, 1 it could not be read, 2 usage error.\n"},
+        {"ttff", cmdTtff,
+         "ttff --port P|--tcp HOST:PORT|--sim D --start cold|warm|hot [--start ...] [--runs N] "
+         "[OPTIONS]",
+         "a time-to-first-fix campaign: N restarts of each kind, their statistics", kTtffOptions,
+         "Restarts the receiver N times for each --start with its dialect's own command "
+         "($PNVGRST,F or W; CSTART, WSTART, HSTART; $PNMRX111,COLD, WARM or HOT: never a "
+         "sticky bit) and measures on this computer's clock, from the moment the command is "
+         "written, the time to the first position, to 2D and to 3D (the TTFF, as datasheets "
+         "state it) and, when the receiver reports them, to DGNSS, RTK float and RTK fixed. "
+         "Before a warm or hot start the receiver holds a 3D fix --hold seconds (its "
+         "ephemerides). A start the receiver does not have is refused before anything is "
+         "sent, naming those it has. A run without a fix after --timeout is counted as a "
+         "timeout; a link lost during a run marks it lost, and the campaign goes on once the "
+         "link is back. Progress goes to standard error; a line per run, then per kind of "
+         "start the runs, fixes, timeouts and the TTFF's mean, median, p90, p95, min and max. "
+         "With --json one object: starts (cold/warm/hot: runs, fixed, timeouts, lost, ttff_s) "
+         "and runs (every run's times).\n"
+         "Exit status: 0 done, 1 the receiver cannot be opened or identified, 2 usage error "
+         "or a start it lacks, 130 interrupted (the runs so far are printed).\n"},
         {"compare", cmdCompare, "compare SOURCE SOURCE [SOURCE...] [--duration S] [--json]",
          "receivers side by side: position and C/N0 differences", kCompareOptions,
          "SOURCE is a log FILE or a live receiver (--port P, --tcp HOST:PORT, --gpsd G, --sim D; "

@@ -190,6 +190,15 @@ QHash<QString, Treatment> table() {
                  {"drive.nmea --pty --speed 10",
                   "minute.nmea --pty --speed 1000 | { read dev; echo $dev; "
                   "timeout 20 cat $dev > /dev/null; }; exit ${PIPESTATUS[0]}"})},
+            {"gnss-cli ttff --port P|--tcp HOST:PORT|--sim D --start cold|warm|hot [--start ...] "
+             "[--runs N] [--timeout S] [--pause S] [--hold S] [--reference LAT,LON] [--json]",
+             synopsis()},
+            // Run by tests/qualify/tst_ttff_cli on a pseudo-terminal of its own.
+            {"gnss-sim --dialect nemerix --pty --link /tmp/vt002 --speed 20 --ttff cold=40:4 < "
+             "/dev/null &",
+             hardware("a simulator left running in the background")},
+            {"gnss-cli ttff --port /tmp/vt002 --start cold --runs 5 --pause 0.5",
+             hardware("the simulator started above")},
             {"gnss-cli rtcm [FILE|-]", synopsis()},
             {"printf '\\xD3\\x00\\x13\\x3E\\xD7\\xD3\\x02\\x02\\x98\\x0E\\xDE\\xEF\\x34\\xB4\\xBD"
              "\\x62\\xAC\\x09\\x41\\x98\\x6F\\x33\\x36\\x0B\\x98' | gnss-cli rtcm",

@@ -1,0 +1,111 @@
+// gnss-cli ttff end to end: gnss-sim on a pseudo-terminal told its restart times (--ttff) and run
+// 20 times faster (--speed 20: a host second is 20 simulated ones), measured by the real
+// QSerialPort link. The medians come back within 10 % of what the simulator was told; a start the
+// receiver lacks is refused before anything is sent; a receiver that never fixes gives timeouts and
+// the campaign still ends.
+#include "cli_run.h"
+#include "sim_process.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+using gnss::link::test::SimProcess;
+using gnss::test::Run;
+
+namespace {
+
+constexpr double kSpeed = 20;
+
+QByteArray why(const Run &r) {
+    return "exit " + QByteArray::number(r.exitCode) + "\nstdout: " + r.out.right(3000) +
+           "\nstderr: " + r.err.right(3000);
+}
+
+} // namespace
+
+class TstTtffCli : public QObject {
+    Q_OBJECT
+private slots:
+    // Cold starts of 40 s and hot starts of 20 s (simulated), three of each.
+    void aCampaignMeasuresWhatTheSimulatorWasTold() {
+        SimProcess sim({"--dialect", "nemerix", "--baud", "115200", "--speed", "20", "--ttff",
+                        "cold=40,hot=20"});
+        REQUIRE_SIM(sim);
+        const Run r =
+                gnss::test::runCli({"ttff", "--port", sim.device, "--baud", "115200", "--start",
+                                    "cold", "--start", "hot", "--runs", "3", "--pause", "0.2",
+                                    "--hold", "0.5", "--timeout", "20", "--json"},
+                                   {}, 120000);
+        QVERIFY2(r.exitCode == 0, why(r));
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QVERIFY2(!o.isEmpty(), why(r));
+        for (const auto &[kind, told] : {std::pair("cold", 40.0), std::pair("hot", 20.0)}) {
+            const QJsonObject s = o["starts"].toObject()[kind].toObject();
+            QCOMPARE(s["runs"].toInt(), 3);
+            QCOMPARE(s["fixed"].toInt(), 3);
+            const double median = s["ttff_s"].toObject()["median"].toDouble() * kSpeed;
+            QVERIFY2(std::abs(median - told) <= 0.1 * told,
+                     qPrintable(QString("%1: %2 s simulated\n").arg(kind).arg(median) + why(r)));
+        }
+        QCOMPARE(o["runs"].toArray().size(), 6);
+        QCOMPARE(o["receiver"].toString(), QString("Nemerix VT002"));
+        // The words: a line per run, then the table.
+        QVERIFY(r.err.contains("cold 1 of 3"));
+    }
+
+    // The NV08C-RTK has no hot start: said, and nothing sent (the simulator would have
+    // restarted; its fix is still there right after).
+    void aStartTheReceiverLacksIsRefused() {
+        const Run r = gnss::test::runCli({"ttff", "--sim", "nvs", "--start", "hot"}, {}, 60000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("has no hot start") && r.err.contains("cold, warm"), why(r));
+        QVERIFY(r.err.contains("nothing was sent"));
+        QCOMPARE(gnss::test::runCli({"ttff", "--sim", "nvs"}).exitCode, 2);
+        QCOMPARE(gnss::test::runCli({"ttff", "--sim", "nvs", "--start", "tepid"}).exitCode, 2);
+        QCOMPARE(gnss::test::runCli({"ttff", "--sim", "nvs", "--start", "cold", "--runs", "0"})
+                         .exitCode,
+                 2);
+    }
+
+    // Unplugged in the middle of the first run (the line drops 100 simulated seconds after the
+    // campaign's program took it, for 20 s, and comes back at the same name): that run is lost,
+    // the campaign waits for the receiver and the second run fixes.
+    void anUnplugMidRunIsSurvived() {
+        QTemporaryDir dir;
+        const QString link = dir.filePath("vt002");
+        SimProcess sim({"--dialect", "nemerix", "--baud", "115200", "--speed", "20", "--ttff",
+                        "cold=200", "--faults", "hangup=100/20x1", "--link", link});
+        REQUIRE_SIM(sim);
+        const Run r =
+                gnss::test::runCli({"ttff", "--port", link, "--baud", "115200", "--start", "cold",
+                                    "--runs", "2", "--pause", "0.2", "--timeout", "30", "--json"},
+                                   {}, 120000);
+        QVERIFY2(r.exitCode == 0, why(r));
+        const QJsonArray runs = QJsonDocument::fromJson(r.out).object()["runs"].toArray();
+        QCOMPARE(runs.size(), 2);
+        QCOMPARE(runs[0].toObject()["outcome"].toString(), QString("lost"));
+        QCOMPARE(runs[1].toObject()["outcome"].toString(), QString("fixed"));
+        QVERIFY2(std::abs(runs[1].toObject()["ttff_s"].toDouble() * kSpeed - 200) <= 20, why(r));
+        QVERIFY2(r.err.contains("link lost"), why(r));
+    }
+
+    // Never a fix (a cold start of ten simulated minutes, a one-second timeout): both runs time
+    // out, and the campaign ends with its table.
+    void aReceiverThatNeverFixesTimesOut() {
+        SimProcess sim({"--dialect", "geostar", "--baud", "115200", "--ttff", "cold=600"});
+        REQUIRE_SIM(sim);
+        const Run r =
+                gnss::test::runCli({"ttff", "--port", sim.device, "--baud", "115200", "--start",
+                                    "cold", "--runs", "2", "--timeout", "1", "--pause", "0.1"},
+                                   {}, 60000);
+        QVERIFY2(r.exitCode == 0, why(r));
+        QCOMPARE(r.out.count("cold 1: timeout") + r.out.count("cold 2: timeout"), 2);
+        QVERIFY2(r.out.contains("cold      2     0        2"), why(r));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstTtffCli)
+#include "tst_ttff_cli.moc"
