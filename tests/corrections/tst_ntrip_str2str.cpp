@@ -22,6 +22,8 @@
 #include <QTcpSocket>
 #include <QTest>
 
+#include <memory>
+
 using namespace gnss;
 using namespace gnss::corrections;
 using namespace corrections_test;
@@ -93,19 +95,28 @@ struct SimBaseCaster {
     }
 };
 
-// The caster fed by the test: frames pushed into str2str's input port.
+// The caster fed by the test: frames pushed into str2str's input port. A port found free can be
+// taken by another suite's connection before str2str binds it ("stream server start error"):
+// then it is tried again on other ports.
 struct FedCaster {
-    quint16 inPort = closedPort();
-    Str2StrCaster caster{QString("tcpsvr://:%1").arg(inPort), closedPort()};
+    quint16 inPort = 0;
+    std::unique_ptr<Str2StrCaster> started;
     QTcpSocket input;
     QByteArray relayed; // what str2str relays back from the caster's clients (-b 1)
     bool ok = false;
     FedCaster() {
-        if (!caster.ok) return;
         QObject::connect(&input, &QTcpSocket::readyRead, [this] { relayed += input.readAll(); });
-        input.connectToHost(QStringLiteral("127.0.0.1"), inPort);
-        ok = input.waitForConnected(3000);
+        for (int attempt = 0; attempt < 3 && !ok; ++attempt) {
+            inPort = closedPort();
+            started = std::make_unique<Str2StrCaster>(QString("tcpsvr://:%1").arg(inPort),
+                                                      closedPort());
+            if (!started->ok) continue;
+            input.connectToHost(QStringLiteral("127.0.0.1"), inPort);
+            ok = input.waitForConnected(3000);
+            if (!ok) input.abort();
+        }
     }
+    Str2StrCaster &caster() { return *started; }
 };
 
 NtripSettings settings(quint16 port, int version = 1) {
@@ -132,8 +143,8 @@ private slots:
     void framesPushedIntoTheCasterArriveByteExact() {
         REQUIRE_STR2STR();
         FedCaster fed;
-        QVERIFY2(fed.ok, fed.caster.proc.readAll().constData());
-        NtripSource source(settings(fed.caster.casterPort));
+        QVERIFY2(fed.ok, fed.caster().proc.readAll().constData());
+        NtripSource source(settings(fed.caster().casterPort));
         SourceWatch watch(source);
         source.start();
         QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
@@ -177,7 +188,7 @@ private slots:
         REQUIRE_STR2STR();
         FedCaster fed;
         QVERIFY(fed.ok);
-        NtripSettings s = settings(fed.caster.casterPort);
+        NtripSettings s = settings(fed.caster().casterPort);
         s.password = password;
         s.mountpoint = mountpoint;
         NtripSource source(s);
@@ -193,7 +204,7 @@ private slots:
         REQUIRE_STR2STR();
         FedCaster fed;
         QVERIFY(fed.ok);
-        NtripSource source(settings(fed.caster.casterPort, 2));
+        NtripSource source(settings(fed.caster().casterPort, 2));
         SourceWatch watch(source);
         source.start();
         QTRY_COMPARE_WITH_TIMEOUT(source.state(), State::Receiving, 5000);
@@ -209,7 +220,7 @@ private slots:
         REQUIRE_STR2STR();
         FedCaster fed;
         QVERIFY(fed.ok);
-        NtripSettings s = settings(fed.caster.casterPort);
+        NtripSettings s = settings(fed.caster().casterPort);
         s.ggaIntervalMs = 300;
         NtripSource source(s);
         source.setRoverPosition(roverPosition());
@@ -223,7 +234,7 @@ private slots:
         REQUIRE_STR2STR();
         FedCaster fed;
         QVERIFY(fed.ok);
-        NtripSource source(settings(fed.caster.casterPort));
+        NtripSource source(settings(fed.caster().casterPort));
         QSignalSpy got(&source, &NtripSource::sourceTableReceived);
         source.fetchSourceTable();
         QVERIFY(got.wait(5000));
