@@ -5,25 +5,66 @@
 
 namespace gnss {
 
+namespace {
+
+// The length of the valid UTF-8 sequence at s[i] (2..4), or 0 when it is not one (a stray
+// byte, an overlong form, a surrogate, past U+10FFFF, cut short).
+std::size_t utf8Sequence(std::string_view s, std::size_t i) {
+    const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+    const unsigned char c = b(i);
+    std::size_t n = 0;
+    unsigned char lo = 0x80, hi = 0xBF; // the second byte's range
+    if (c >= 0xC2 && c <= 0xDF) {
+        n = 2;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+        n = 3;
+        if (c == 0xE0) lo = 0xA0;
+        if (c == 0xED) hi = 0x9F;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        n = 4;
+        if (c == 0xF0) lo = 0x90;
+        if (c == 0xF4) hi = 0x8F;
+    } else {
+        return 0;
+    }
+    if (i + n > s.size() || b(i + 1) < lo || b(i + 1) > hi) return 0;
+    for (std::size_t k = 2; k < n; ++k)
+        if (b(i + k) < 0x80 || b(i + k) > 0xBF) return 0;
+    return n;
+}
+
+} // namespace
+
 void appendJsonString(std::string &out, std::string_view s) {
     out.push_back('"');
-    for (char c : s) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
         switch (c) {
         case '"': out += "\\\""; break;
         case '\\': out += "\\\\"; break;
         case '\n': out += "\\n"; break;
         case '\r': out += "\\r"; break;
         case '\t': out += "\\t"; break;
-        default:
-            if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) {
+        default: {
+            const auto u = static_cast<unsigned char>(c);
+            // Text in UTF-8 stays as it is; a byte that is not text (a control character, or
+            // junk from a serial line) is written as the code point of its value.
+            if (u >= 0x80) {
+                if (const std::size_t n = utf8Sequence(s, i)) {
+                    out.append(s.substr(i, n));
+                    i += n - 1;
+                    break;
+                }
+            }
+            if (u < 0x20 || u >= 0x7F) {
                 static const char hex[] = "0123456789abcdef";
-                const auto u = static_cast<unsigned char>(c);
                 out += "\\u00";
                 out.push_back(hex[u >> 4]);
                 out.push_back(hex[u & 15]);
             } else {
                 out.push_back(c);
             }
+        }
         }
     }
     out.push_back('"');

@@ -52,7 +52,8 @@ private:
     bool afterKey_ = false;
 };
 
-// Appends `s` as a JSON string literal (quoted and escaped).
+// Appends `s` as a JSON string literal (quoted and escaped): UTF-8 text as it is, any other byte
+// (control characters, junk) as \u00XX, the code point of its value.
 void appendJsonString(std::string &out, std::string_view s);
 
 } // namespace gnss
