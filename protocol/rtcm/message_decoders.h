@@ -6,10 +6,11 @@
 
 namespace gnss::rtcm {
 
-void decodeStationArp(BitReader &r, RtcmMessage &m);    // station_messages.cpp
-void decodeAntennaInfo(BitReader &r, RtcmMessage &m);   // station_messages.cpp
-void decodeMsm(BitReader &r, RtcmMessage &m);           // msm.cpp
-void decodeEphemeris(BitReader &r, RtcmMessage &m);     // ephemeris_messages.cpp
-void decodeGlonassBiases(BitReader &r, RtcmMessage &m); // glonass_biases.cpp
+void decodeStationArp(BitReader &r, RtcmMessage &m);        // station_messages.cpp
+void decodeAntennaInfo(BitReader &r, RtcmMessage &m);       // station_messages.cpp
+void decodeMsm(BitReader &r, RtcmMessage &m);               // msm.cpp
+void decodeEphemeris(BitReader &r, RtcmMessage &m);         // ephemeris_messages.cpp
+void decodeGlonassBiases(BitReader &r, RtcmMessage &m);     // glonass_biases.cpp
+void decodeLegacyObservables(BitReader &r, RtcmMessage &m); // legacy_observables.cpp
 
 } // namespace gnss::rtcm

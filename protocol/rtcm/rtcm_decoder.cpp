@@ -5,10 +5,9 @@ namespace gnss::rtcm {
 namespace {
 
 // Messages this library does not decode but whose DF003 reference station id follows DF002
-// directly: legacy GPS/GLONASS observables (1001-1004, 1009-1012), system parameters (1013),
-// Unicode text (1029).
+// directly: system parameters (1013), Unicode text (1029).
 bool stationFollowsNumber(unsigned n) {
-    return (n >= 1001 && n <= 1004) || (n >= 1009 && n <= 1013) || n == 1029;
+    return n == 1013 || n == 1029;
 }
 
 } // namespace
@@ -55,6 +54,8 @@ RtcmMessage decodeMessage(std::span<const std::uint8_t> payload) {
     default:
         if (isMsm(m.number)) {
             decodeMsm(r, m);
+        } else if (isLegacyObservables(m.number)) {
+            decodeLegacyObservables(r, m);
         } else if (stationFollowsNumber(m.number)) {
             if (r.has(12))
                 m.station = static_cast<unsigned>(r.u(12));

@@ -30,6 +30,12 @@ std::string encodeMsm(const MsmHeader &h);
 std::string encodeEphemeris(unsigned number, const Ephemeris &e);
 // 1230; mask from b.present, invalid values (no bias) sent as −32768.
 std::string encodeGlonassBiases(const GlonassBiases &b);
+// 1001-1004 or 1009-1012 (o.number), the first 31 satellites (legacy_encoder.cpp). An extended
+// message sends the satellite's ambiguity, or the whole light-ms (GLONASS: 2 ms) of its L1
+// pseudorange when none; the others send the L1 pseudorange modulo that when it does not fit.
+// Phase ranges and the L2 pseudorange go as differences to the L1 pseudorange sent; absent ones
+// as "invalid", an absent CNR as 0, an absent L1 pseudorange as 0, absent L2 as all invalid.
+std::string encodeLegacy(const LegacyObservables &o);
 
 // The payload builders behind the frame functions (for tests that cut or corrupt payloads).
 std::vector<std::uint8_t> stationArpPayload(const StationArp &a);
@@ -37,5 +43,6 @@ std::vector<std::uint8_t> antennaInfoPayload(unsigned number, const AntennaInfo 
 std::vector<std::uint8_t> msmPayload(const MsmHeader &h);
 std::vector<std::uint8_t> ephemerisPayload(unsigned number, const Ephemeris &e);
 std::vector<std::uint8_t> glonassBiasesPayload(const GlonassBiases &b);
+std::vector<std::uint8_t> legacyPayload(const LegacyObservables &o);
 
 } // namespace gnss::rtcm

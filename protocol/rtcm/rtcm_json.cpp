@@ -1,5 +1,6 @@
 #include "rtcm/rtcm_json.h"
 
+#include "rtcm/observed_signals.h"
 #include "rtcm/rtcm_stream_decoder.h"
 
 #include <string>
@@ -85,6 +86,46 @@ void writeBody(JsonWriter &w, const GlonassBiases &b) {
     for (std::size_t i = 0; i < 4; ++i)
         if (b.present[i]) w.field(GlonassBiases::kSignals[i], b.biases[i]);
     w.endObject();
+}
+
+void writeSignal(JsonWriter &w, System system, unsigned band, const LegacySignal &s) {
+    w.beginObject().field("code", s.code);
+    if (const auto name = legacySignalName(system, band, s.code); !name.empty())
+        w.field("name", name);
+    if (s.pseudorange) w.field("pseudorange", *s.pseudorange);
+    if (s.phaseRange) w.field("phase_range", *s.phaseRange);
+    w.field("lock_time", s.lockTime);
+    if (s.cnr) w.field("cnr", *s.cnr);
+    w.endObject();
+}
+
+// As an MSM's: system, epoch, "satellites" (ids) and "signals" (RINEX names, observedSignals()),
+// then each satellite's values under "observations".
+void writeBody(JsonWriter &w, const LegacyObservables &o) {
+    w.field("system", systemName(o.system()));
+    w.field(o.system() == System::Glonass ? "tod_ms" : "tow_ms", o.epochMs);
+    w.field("synchronous", o.synchronous).field("smoothing", o.smoothing);
+    w.field("smoothing_interval", o.smoothingInterval);
+    const ObservedSignals seen =
+            observedSignals(RtcmMessage{.body = o}).value_or(ObservedSignals{});
+    w.key("satellites").beginArray();
+    for (const unsigned id : seen.satellites) w.value(id);
+    w.endArray().key("signals").beginArray();
+    for (const auto name : seen.signalNames) w.beginObject().field("name", name).endObject();
+    w.endArray().key("observations").beginArray();
+    for (const LegacySatellite &s : o.satellites) {
+        w.beginObject().field("id", s.id);
+        if (s.frequencyChannel) w.field("frequency_channel", *s.frequencyChannel);
+        if (s.ambiguity) w.field("ambiguity", *s.ambiguity);
+        w.key("l1");
+        writeSignal(w, o.system(), 1, s.l1);
+        if (s.l2) {
+            w.key("l2");
+            writeSignal(w, o.system(), 2, *s.l2);
+        }
+        w.endObject();
+    }
+    w.endArray();
 }
 
 void writeBody(JsonWriter &, const std::monostate &) {}

@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace gnss::rtcm {
 
@@ -108,11 +109,51 @@ struct GlonassBiases {
     std::array<std::optional<double>, 4> biases{}; // DF423-426, metres; none when not valid
 };
 
+// Legacy RTK observables: 1001-1004 GPS (L1; L1 extended; L1/L2; L1/L2 extended) and
+// 1009-1012 GLONASS (the same four). One signal per band; distances in metres.
+struct LegacySignal {
+    unsigned code = 0; // code indicator: DF010/DF016 (GPS), DF039/DF046 (GLONASS)
+    // L1: DF011 × 0.02 (+ DF014 × 299792.458 GPS, DF041/DF044 × 599584.916 GLONASS); modulo one
+    // light-ms (two for GLONASS) without the ambiguity (1001, 1003, 1009, 1011).
+    // L2: L1 + DF017/DF047 × 0.02; none when sent as invalid (−8192).
+    std::optional<double> pseudorange;
+    // L1 pseudorange + DF012/DF042 (L1) or DF018/DF048 (L2) × 0.0005; none when −524288 (invalid).
+    std::optional<double> phaseRange;
+    unsigned lockTime = 0;     // lock time indicator: DF013/DF019 (GPS), DF043/DF049 (GLONASS)
+    std::optional<double> cnr; // dB-Hz, DF015/DF020/DF045/DF050 × 0.25 (extended only; 0 = none)
+};
+
+struct LegacySatellite {
+    unsigned id = 0;                     // DF009 GPS PRN, DF038 GLONASS slot
+    std::optional<int> frequencyChannel; // GLONASS: DF040 − 7
+    std::optional<unsigned> ambiguity;   // DF014 / DF044 (extended messages), light-ms / 2 ms
+    LegacySignal l1;
+    std::optional<LegacySignal> l2; // 1003, 1004, 1011, 1012
+};
+
+struct LegacyObservables {
+    unsigned number = 1001;         // DF002: which of the eight
+    unsigned station = 0;           // DF003
+    std::uint32_t epochMs = 0;      // DF004 GPS time of week, DF034 GLONASS time of day (ms)
+    bool synchronous = false;       // DF005: more observables of this epoch follow
+    bool smoothing = false;         // DF007 / DF036 divergence-free smoothing
+    unsigned smoothingInterval = 0; // DF008 / DF037 (coded)
+    std::vector<LegacySatellite> satellites; // DF006 / DF035 of them (at most 31)
+
+    // The last two bits of the offset from 1001 / 1009: bit 1 = L2 too, bit 0 = extended.
+    System system() const { return number >= 1009 ? System::Glonass : System::Gps; }
+    unsigned kind() const { return (number - (number >= 1009 ? 1009 : 1001)) & 3; }
+    bool hasL2() const { return kind() >= 2; }
+    bool extended() const { return kind() % 2 == 1; }
+};
+
 struct RtcmMessage {
     unsigned number = 0;    // DF002; 0 when the payload is too short to hold one
     std::size_t length = 0; // payload bytes
     std::optional<unsigned> station;
-    std::variant<std::monostate, StationArp, AntennaInfo, MsmHeader, Ephemeris, GlonassBiases> body;
+    std::variant<std::monostate, StationArp, AntennaInfo, MsmHeader, Ephemeris, GlonassBiases,
+                 LegacyObservables>
+            body;
     std::string_view error; // why the body is missing (static text); empty when decoded or
                             // when the message is simply not one this decoder reads
 };
@@ -129,5 +170,13 @@ unsigned msmPrn(System system, unsigned satelliteId);
 // Satellite and signal data bits of an MSM body; the payload must hold header + this.
 std::size_t msmBodyBits(unsigned msmType, unsigned satellites, unsigned cells);
 inline constexpr std::size_t kMsmHeaderBits = 169; // before the cell mask
+
+// Is `number` a legacy observables message (1001-1004, 1009-1012)?
+bool isLegacyObservables(unsigned number);
+// RINEX observation code of a legacy signal: band 1 or 2 and its code indicator ("1C", "2P"...).
+std::string_view legacySignalName(System system, unsigned band, unsigned code);
+// Header and per-satellite bits of a legacy observables message (0 for other numbers).
+std::size_t legacyHeaderBits(unsigned number);
+std::size_t legacySatelliteBits(unsigned number);
 
 } // namespace gnss::rtcm

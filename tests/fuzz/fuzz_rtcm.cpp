@@ -3,9 +3,9 @@
 // Input: byte 0 picks a chunking, the rest is the correction stream. Checks that
 // bytesIn == bytesInFrames + bytesSkipped after finish(), that frames add up to the per-type
 // counts, that every frame's CRC is what the encoder computes for its payload, that every
-// message's JSON is valid, that a decoded station, antenna, MSM header or bias message encodes
-// back to the same values (in no more bytes: trailing bytes of a frame are not kept), and that the
-// chunked run gives exactly the output of a one-shot run.
+// message's JSON is valid, that a decoded station, antenna, MSM header, bias or legacy
+// observables message encodes back to the same values (in no more bytes: trailing bytes of a
+// frame are not kept), and that the chunked run gives exactly the output of a one-shot run.
 #include "fuzz_common.h"
 #include "rtcm/rtcm_encoder.h"
 #include "rtcm/rtcm_json.h"
@@ -39,6 +39,8 @@ void checkReencodes(const RtcmMessage &m, const std::string &original) {
         frameBytes = encodeMsm(*h);
     else if (const auto *b = std::get_if<GlonassBiases>(&m.body))
         frameBytes = encodeGlonassBiases(*b);
+    else if (const auto *o = std::get_if<LegacyObservables>(&m.body))
+        frameBytes = encodeLegacy(*o);
     else
         return;
     check(frameBytes.size() >= kFrameOverhead, "a decoded message does not encode", original);

@@ -147,6 +147,28 @@ void settingsSeeds() {
 
 void profileSeeds() {
     const DialectRegistry reg = makeBuiltinRegistry();
+// Legacy observables 1001-1004 and 1009-1012: two satellites each, one without L2 pseudorange
+// and L1 phase (sent as invalid); all eight in one stream too.
+void legacyRtcmSeeds() {
+    std::string all;
+    for (const unsigned number : {1001u, 1002u, 1003u, 1004u, 1009u, 1010u, 1011u, 1012u}) {
+        LegacyObservables o{.number = number, .station = 2003, .epochMs = 345600000};
+        o.synchronous = number != 1004 && number != 1012;
+        for (unsigned i = 0; i < 2; ++i) {
+            LegacySatellite s{.id = 5 + i, .l1 = {.pseudorange = 21e6 + 1234.56 * i}};
+            if (number >= 1009) s.frequencyChannel = int(i) - 2;
+            if (i == 0) s.l1.phaseRange = 21e6 + 0.5, s.l1.cnr = 44.25;
+            s.l2 = LegacySignal{.code = i, .phaseRange = 21e6 + 1234.56 * i - 3.5, .cnr = 40};
+            if (i == 0) s.l2->pseudorange = 21e6 + 4.2;
+            o.satellites.push_back(s);
+        }
+        const std::string f = encodeLegacy(o);
+        writeRtcm(std::to_string(number), f);
+        all += f;
+    }
+    writeRtcm("legacy_stream", all);
+}
+
     const auto dialects = reg.dialects();
     for (std::size_t d = 0; d < dialects.size(); ++d) {
         config::Profile p;
@@ -387,3 +409,4 @@ int main(int argc, char **argv) {
     std::printf("%d seeds written under %s\n", g_written, argv[1]);
     return 0;
 }
+    legacyRtcmSeeds();

@@ -17,9 +17,9 @@ class TstRtcmDecoder : public QObject {
 private slots:
     void randomPayloadsNeverCrashAndPrintValidJson_data() {
         QTest::addColumn<uint>("number");
-        std::vector<unsigned> numbers = {1001, 1004, 1005, 1006, 1007, 1008, 1009, 1012,
-                                         1013, 1019, 1020, 1029, 1033, 1042, 1044, 1045,
-                                         1046, 1230, 0,    1070, 1078, 4000, 4095};
+        std::vector<unsigned> numbers = {1001, 1002, 1003, 1004, 1005, 1006, 1007, 1008, 1009,
+                                         1010, 1011, 1012, 1013, 1019, 1020, 1029, 1033, 1042,
+                                         1044, 1045, 1046, 1230, 0,    1070, 1078, 4000, 4095};
         for (unsigned n = 1071; n <= 1137; ++n)
             if (isMsm(n)) numbers.push_back(n);
         for (const unsigned n : numbers) QTest::addRow("%u", n) << n;

@@ -125,8 +125,11 @@ private slots:
         QTest::addColumn<QString>("json");
         QTest::newRow("unknown 4000")
                 << QByteArray("\xFA\x00\x01\x02\x03", 5) << "{\"type\":4000,\"length\":5}";
-        QTest::newRow("1004 has a station id") << QByteArray("\x3E\xC1\x00\x00", 4)
-                                               << "{\"type\":1004,\"length\":4,\"station\":256}";
+        QTest::newRow("1013 has a station id") << QByteArray("\x3F\x51\x00\x00", 4)
+                                               << "{\"type\":1013,\"length\":4,\"station\":256}";
+        QTest::newRow("truncated 1004") << QByteArray("\x3E\xC1\x00\x00", 4)
+                                        << "{\"type\":1004,\"length\":4,\"station\":256,"
+                                           "\"error\":\"truncated in the header\"}";
         QTest::newRow("empty keep-alive")
                 << QByteArray()
                 << "{\"type\":0,\"length\":0,\"error\":\"empty message (keep-alive frame)\"}";
