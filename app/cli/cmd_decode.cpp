@@ -163,6 +163,8 @@ int cmdStats(const CliContext &ctx) {
         scan.framer = dec.framerStats();
         scan.addresses = dec.addressStats();
         scan.dialect = dec.dialect();
+        scan.rtcm = dec.rtcmStats();
+        scan.rtcmTypes = dec.rtcmTypes();
     }
     const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -194,6 +196,13 @@ int cmdStats(const CliContext &ctx) {
         // As summary names it: a log without vendor sentences is a standard NMEA one.
         w.field("dialect", dec.dialect() ? dec.dialect()->id : std::string_view("nmea"));
         w.field("bytes", fs.bytesIn).field("bytes_skipped", fs.bytesSkipped);
+        // Skipped bytes that were RTCM 3 frames (a base interleaving them) are not junk.
+        w.field("bytes_junk", scan.junkBytes());
+        w.key("rtcm").beginObject().field("frames", scan.rtcm.frames);
+        w.field("bytes", scan.rtcm.bytesInFrames).field("crc_failures", scan.rtcm.crcFailures);
+        w.key("types").beginObject();
+        for (const auto &[type, n] : scan.rtcmTypes) w.field(std::to_string(type), n);
+        w.endObject().endObject();
         w.field("sentences", sentences).field("decoded", decoded).field("decode_errors", errors);
         w.field("unknown", unknown).field("checksum_bad", bad).field("checksum_missing", missing);
         w.field("rejected", rejected).field("truncated", fs.truncated);
@@ -239,6 +248,16 @@ int cmdStats(const CliContext &ctx) {
                       (unsigned long long)fs.binaryAborted, (unsigned long long)rejected,
                       (unsigned long long)epochs);
         o += line;
+        if (scan.rtcm.frames) {
+            // "RTCM 3: 610 frames, 45210 bytes (1005 x10, 1077 x600); junk: 0 bytes"
+            std::string types;
+            for (const auto &[type, n] : scan.rtcmTypes)
+                types += (types.empty() ? "" : ", ") + std::to_string(type) + " x" +
+                         std::to_string(n);
+            o += "RTCM 3: " + std::to_string(scan.rtcm.frames) + " frames, " +
+                 std::to_string(scan.rtcm.bytesInFrames) + " bytes (" + types +
+                 "); junk: " + std::to_string(scan.junkBytes()) + " bytes\n";
+        }
         std::snprintf(line, sizeof line,
                       "time: %.3f s (%.0f MB/s, %.0f sentences/s, %u thread%s)\n", seconds,
                       seconds > 0 ? mb / seconds : 0.0,

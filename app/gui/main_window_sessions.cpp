@@ -336,6 +336,9 @@ void MainWindow::updateReceivers() {
                 parts << tr("%1 KiB skipped").arg(c.skippedBytes / 1024);
             e.status = parts.join(QStringLiteral(" · "));
         } else {
+            if (c.rtcmFrames)
+                parts << tr("%n RTCM frame(s)", nullptr,
+                            int(std::min<quint64>(c.rtcmFrames, INT_MAX)));
             e.status = lk->stateText();
             if (e.status.size() > 48) e.status = e.status.left(47) + QChar(0x2026);
         }

@@ -148,8 +148,19 @@ bool StreamDecoder::checksumAcceptable(const Sentence &s, const Dialect *ruleDia
     return false;
 }
 
+void StreamDecoder::finish() {
+    framer_.finish();
+    rtcm_.finish([this](const rtcm::RtcmFrame &f) { onFrame(f); });
+}
+
+void StreamDecoder::onFrame(const rtcm::RtcmFrame &f) {
+    ++rtcmTypes_[f.messageNumber()];
+    if (frameHandler_) frameHandler_(f);
+}
+
 void StreamDecoder::feed(std::string_view bytes, const Handler &handler) {
     framer_.feed(bytes, [&](std::string_view line) { decodeLine(line, handler); });
+    rtcm_.feed(bytes, [this](const rtcm::RtcmFrame &f) { onFrame(f); });
 }
 
 void StreamDecoder::decodeLine(std::string_view line, const Handler &handler) {

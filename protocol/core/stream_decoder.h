@@ -2,15 +2,22 @@
 // StreamDecoder: bytes in, decoded sentences out, everything counted.
 //
 //   bytes → Framer → Sentence::parse → checksum policy → DialectRegistry::lookup → decode
+//        ↘ RtcmFramer → RTCM 3 frames (CRC-24Q right), counted per message type
 //
+// One stream may interleave NMEA and RTCM 3 (a base that talks to the host and sends its
+// corrections on the same port): both framers see every byte. The bytes of RTCM frames are not
+// junk (junkBytes()); the frames go to a frame handler when one is set.
 // Never throws and never stops: every line ends up either decoded or reported with the reason
 // (unknown address, checksum bad or missing, malformed field), and counted per address.
 #include "core/dialect_registry.h"
 #include "core/framer.h"
 #include "core/function_ref.h"
+#include "rtcm/rtcm_framer.h"
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -62,13 +69,29 @@ public:
     // Feeds raw bytes from the receiver.
     void feed(std::string_view bytes, const Handler &handler);
     // End of stream (counts a dangling partial sentence).
-    void finish() { framer_.finish(); }
+    void finish();
     // Forgets a partial sentence without counting it (a baud switch: what came before is noise).
-    void resetFraming() { framer_.reset(); }
+    void resetFraming() {
+        framer_.reset();
+        rtcm_.reset();
+    }
     // Decodes one already-framed line (no terminator).
     void decodeLine(std::string_view line, const Handler &handler);
 
     const FramerStats &framerStats() const { return framer_.stats(); }
+    // RTCM 3 frames found in the same bytes, and how many of each message type.
+    const rtcm::RtcmFramerStats &rtcmStats() const { return rtcm_.stats(); }
+    const std::map<unsigned, std::uint64_t> &rtcmTypes() const { return rtcmTypes_; }
+    // Bytes that are neither in a sentence nor in an RTCM frame.
+    std::uint64_t junkBytes() const {
+        const std::uint64_t skipped = framer_.stats().bytesSkipped;
+        const std::uint64_t frames = rtcm_.stats().bytesInFrames;
+        return skipped > frames ? skipped - frames : 0;
+    }
+    // Called with each RTCM frame as it is found (none: they are only counted).
+    void setFrameHandler(std::function<void(const rtcm::RtcmFrame &)> handler) {
+        frameHandler_ = std::move(handler);
+    }
     // Per-address counters, in order of first appearance.
     const std::vector<AddressStats> &addressStats() const { return stats_; }
     std::uint64_t malformed() const { return malformed_; } // lines that are not sentences
@@ -90,6 +113,7 @@ private:
         DialectRegistry::Match match;
         std::uint32_t statsIndex;
     };
+    void onFrame(const rtcm::RtcmFrame &f);
     Resolved resolve(std::string_view address);
     void forgetAddresses(); // what resolve() learnt (the dialect changed)
     Resolved resolveSlow(std::string_view address);
@@ -99,6 +123,9 @@ private:
     const DialectRegistry &registry_;
     DecoderOptions options_;
     Framer framer_;
+    rtcm::RtcmFramer rtcm_;
+    std::map<unsigned, std::uint64_t> rtcmTypes_;
+    std::function<void(const rtcm::RtcmFrame &)> frameHandler_;
     const Dialect *dialect_ = nullptr;
     bool autoDetect_ = true;
     std::vector<AddressStats> stats_;

@@ -238,6 +238,11 @@ LogScanResult scanLog(std::string_view log, const DialectRegistry &registry,
         if (!inForce) inForce = r.finalDialect;
     }
     result.dialect = inForce;
+    rtcm::RtcmFramer frames;
+    const auto count = [&](const rtcm::RtcmFrame &f) { ++result.rtcmTypes[f.messageNumber()]; };
+    frames.feed(log, count);
+    frames.finish(count);
+    result.rtcm = frames.stats();
     return result;
 }
 

@@ -20,6 +20,14 @@ namespace gnss {
 
 struct LogScanResult {
     FramerStats framer;
+    // RTCM 3 frames among the sentences (one pass over the whole log: a cut at a line end may
+    // fall inside a frame), and how many of each type; junk: bytes in neither.
+    rtcm::RtcmFramerStats rtcm;
+    std::map<unsigned, std::uint64_t> rtcmTypes;
+    std::uint64_t junkBytes() const {
+        return framer.bytesSkipped > rtcm.bytesInFrames ? framer.bytesSkipped - rtcm.bytesInFrames
+                                                        : 0;
+    }
     std::vector<AddressStats> addresses; // in order of first appearance
     std::uint64_t epochs = 0;
     const Dialect *dialect = nullptr; // the dialect in force at the end

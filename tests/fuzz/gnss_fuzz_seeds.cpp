@@ -58,6 +58,23 @@ void writeRtcm(const std::string &name, const std::string &frames) {
     write("fuzz_rtcm", name, "\x23" + frames);
 }
 
+// fuzz_mixed_stream: NMEA sentences and RTCM frames interleaved on one line, as a base that
+// talks NMEA and sends its corrections on the same port; byte 0 picks the chunking.
+void mixedSeeds(const std::string &station, const std::string &observations) {
+    const std::string gga =
+            "$GPGGA,100000.00,5545.0720,N,03737.1042,E,1,08,1.00,151.2,M,14.6,M,,*53\r\n";
+    const std::string rmc = "$GPRMC,100000.00,A,5545.0720,N,03737.1042,E,0.0,0.0,150324,,,A*5D\r\n";
+    std::string clean, noisy, cut;
+    for (int i = 0; i < 4; ++i) {
+        clean += gga + observations + rmc + (i == 0 ? station : std::string());
+        noisy += gga + "\x01\xff junk" + observations + "$GPR" + station + rmc;
+    }
+    cut = clean.substr(0, clean.size() / 2) + gga + clean.substr(clean.size() / 2 + 7);
+    write("fuzz_mixed_stream", "clean", std::string(1, '\0') + clean);
+    write("fuzz_mixed_stream", "noisy", "\x23" + noisy);
+    write("fuzz_mixed_stream", "cut", "\x11" + cut);
+}
+
 MsmHeader msm(System s, unsigned type) {
     MsmHeader h = rtcm_test::msmHeader(s, type, satMask({2, 5, 13, 24}), sigMask({2, 9, 16}));
     h.station = 2003;
@@ -76,6 +93,7 @@ void rtcmSeeds() {
                    .z = 3975521.4643};
     const std::string s1005 = encodeStationArp(arp);
     writeRtcm("1005", s1005);
+    mixedSeeds(s1005, encodeMsm(msm(System::Gps, 7)));
     arp.antennaHeight = 1.234;
     writeRtcm("1006", encodeStationArp(arp));
 
@@ -129,24 +147,6 @@ void rtcmSeeds() {
                                       s1005.substr(0, 10));
 }
 
-void settingsSeeds() {
-    const auto &dialects = fuzz::dialectsWithSettings();
-    for (std::size_t d = 0; d < dialects.size(); ++d) {
-        const auto schema = dialects[d]->settings;
-        for (std::size_t i = 0; i < schema.size(); ++i) {
-            const SettingDef &def = schema[i];
-            std::string value(def.defaultValue);
-            if (value.empty() && !def.options.empty()) value = def.options.front().value;
-            if (value.empty()) continue;
-            const std::string bytes = std::string(1, char(d)) + fuzz::settingsRecord(i, value);
-            write("fuzz_settings_roundtrip",
-                  std::string(dialects[d]->id) + "_" + std::string(def.key), bytes);
-        }
-    }
-}
-
-void profileSeeds() {
-    const DialectRegistry reg = makeBuiltinRegistry();
 // Legacy observables 1001-1004 and 1009-1012: two satellites each, one without L2 pseudorange
 // and L1 phase (sent as invalid); all eight in one stream too.
 void legacyRtcmSeeds() {
@@ -169,6 +169,24 @@ void legacyRtcmSeeds() {
     writeRtcm("legacy_stream", all);
 }
 
+void settingsSeeds() {
+    const auto &dialects = fuzz::dialectsWithSettings();
+    for (std::size_t d = 0; d < dialects.size(); ++d) {
+        const auto schema = dialects[d]->settings;
+        for (std::size_t i = 0; i < schema.size(); ++i) {
+            const SettingDef &def = schema[i];
+            std::string value(def.defaultValue);
+            if (value.empty() && !def.options.empty()) value = def.options.front().value;
+            if (value.empty()) continue;
+            const std::string bytes = std::string(1, char(d)) + fuzz::settingsRecord(i, value);
+            write("fuzz_settings_roundtrip",
+                  std::string(dialects[d]->id) + "_" + std::string(def.key), bytes);
+        }
+    }
+}
+
+void profileSeeds() {
+    const DialectRegistry reg = makeBuiltinRegistry();
     const auto dialects = reg.dialects();
     for (std::size_t d = 0; d < dialects.size(); ++d) {
         config::Profile p;
@@ -402,6 +420,7 @@ int main(int argc, char **argv) {
     }
     g_out = argv[1];
     rtcmSeeds();
+    legacyRtcmSeeds();
     settingsSeeds();
     profileSeeds();
     ntripSeeds();
@@ -409,4 +428,3 @@ int main(int argc, char **argv) {
     std::printf("%d seeds written under %s\n", g_written, argv[1]);
     return 0;
 }
-    legacyRtcmSeeds();

@@ -87,7 +87,8 @@ void ModelFeed::updateCounts() {
     if (!counterSource_) return;
     LinkCounters c = counters_;
     c.bytes = counterSource_->framerStats().bytesIn;
-    c.skippedBytes = counterSource_->framerStats().bytesSkipped;
+    c.skippedBytes = counterSource_->junkBytes();
+    c.rtcmFrames = counterSource_->rtcmStats().frames;
     c.sentences = c.checksumErrors = c.decodeErrors = 0;
     for (const AddressStats &a : counterSource_->addressStats()) {
         c.sentences += a.sentences;

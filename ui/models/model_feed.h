@@ -35,7 +35,8 @@ struct LinkCounters {
     quint64 sentences = 0;
     quint64 checksumErrors = 0;
     quint64 decodeErrors = 0;
-    quint64 skippedBytes = 0; // bytes outside any sentence: junk, or binary between sentences
+    quint64 skippedBytes = 0; // bytes in neither a sentence nor an RTCM 3 frame: junk, binary
+    quint64 rtcmFrames = 0;   // RTCM 3 frames in the stream (a base that interleaves them)
 };
 
 class ModelFeed : public QObject {
