@@ -55,7 +55,8 @@ set(GNSS_VENDOR_TARGETS
 # base, names none either: each family's simulated receiver is its own target.)
 set(GNSS_VENDOR_FREE_LIBRARIES
   gnss_core gnss_rtcm_framing gnss_nmea gnss_state gnss_rtcm gnss_sim gnss_logview gnss_ntrip gnss_compare
-  gnss_qualify gnss_link gnss_config gnss_corrections gnss_session gnss_qualify_campaign
+  gnss_sites gnss_sites_store
+  gnss_qualify gnss_link gnss_config gnss_corrections gnss_serve gnss_session gnss_qualify_campaign
   gnss_ui gnss_ui_style gnss_ui_models gnss_ui_widgets gnss_ui_views gnss_ui_settings
   gnss_ui_logview gnss_app_common gnss_schema_catalog)
 

@@ -41,7 +41,11 @@ int cmdRtcm(const CliContext &ctx);
 // NTRIP casters (cmd_ntrip.cpp): the source table, or a mountpoint's RTCM as JSON and/or a file.
 int cmdNtrip(const CliContext &ctx);
 int cmdCompare(const CliContext &ctx);
+// A source's stream served (cmd_serve.cpp): an NTRIP caster of its RTCM, a raw TCP port.
+int cmdServe(const CliContext &ctx);
 // A time-to-first-fix campaign on a live receiver (cmd_ttff.cpp).
 int cmdTtff(const CliContext &ctx);
+// The user's site list (cmd_sites.cpp): list, add, remove, export, import.
+int cmdSites(const CliContext &ctx);
 
 } // namespace gnss::cli

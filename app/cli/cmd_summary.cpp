@@ -1,5 +1,6 @@
 // gnss-cli summary: what a log holds, in a few lines (or one JSON object).
 #include "cli/log_open.h"
+#include "cli/site_reference.h"
 #include "compare/accuracy.h"
 #include "core/json_writer.h"
 #include "state/epoch.h"
@@ -74,14 +75,7 @@ std::string accuracyText(const compare::AccuracyReport &r, const compare::Refere
 
 int cmdSummary(const CliContext &ctx) {
     std::optional<compare::ReferencePoint> point;
-    if (const auto text = ctx.args.option("reference")) {
-        std::string why;
-        point = compare::ReferencePoint::parse(*text, why);
-        if (!point) {
-            std::fprintf(stderr, "gnss-cli: --reference: %s\n", why.c_str());
-            return 2;
-        }
-    }
+    if (const int rc = referenceFromArgs(ctx.args, point)) return rc;
     OpenedLog log;
     if (const int rc = openLogForCommand(ctx, log)) return rc;
     logview::LogView &v = *log.view;

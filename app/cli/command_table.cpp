@@ -25,6 +25,9 @@ constexpr OptionSpec kGpsd{"gpsd", "HOST[:PORT][/DEVICE]",
                            "a receiver that gpsd holds, read through gpsd (port 2947 and every "
                            "device when left out); read only: gpsd owns the port"};
 constexpr OptionSpec kDuration{"duration", "S", "stop after S seconds"};
+constexpr OptionSpec kReferenceSite{"reference-site", "NAME",
+                                    "instead of --reference: a site of the list (gnss-cli sites), "
+                                    "its antenna height added; a unique prefix will do"};
 
 constexpr OptionSpec kDecodeOptions[] = {kDialect, kLenient, kAlias, kPrefix};
 constexpr OptionSpec kStatsOptions[] = {
@@ -77,7 +80,15 @@ constexpr OptionSpec kTtffOptions[] = {
         {"timeout", "S", "a run that has no 3D fix after S seconds is a timeout (default 180)"},
         {"pause", "S", "seconds between runs (default 5)"},
         {"hold", "S", "before a warm or hot start, a 3D fix held S seconds (default 30)"},
-        {"reference", "LAT,LON", "the first fix's distance from this point (degrees)"},
+        {"reference", "LAT,LON[,HEIGHT]",
+         "the first fix's distance, and the accuracy between runs, from this point (degrees, "
+         "ellipsoidal metres)"},
+        kReferenceSite,
+        {"limit", "START:STAT<=S",
+         "a limit to pass, e.g. cold:mean<=60 (STAT: mean, median, p90, p95, max; repeatable)"},
+        {"report", "FILE",
+         "write the report as PDF or HTML by FILE's extension, and the runs beside it as CSV "
+         "and JSON"},
         {"json", "", "one JSON object at the end instead of a line per run and a table"},
 };
 constexpr OptionSpec kSendOptions[] = {
@@ -125,6 +136,21 @@ constexpr OptionSpec kNtripOptions[] = {
         kSim,
         kLinkBaud,
 };
+constexpr OptionSpec kServeOptions[] = {
+        kPort,
+        {"baud", "B", "line speed of --port (default: detected)"},
+        kTcp,
+        kSim,
+        {"replay", "FILE", "a recorded file, served at its own pace from the first client on"},
+        {"loop", "", "with --replay: start again at the end"},
+        {"ntrip", "[ADDR:]PORT/MOUNT",
+         "an NTRIP caster (revision 1 and 2) with mountpoint MOUNT: the source's RTCM 3 frames "
+         "(ADDR: 127.0.0.1 when left out; PORT 0: a free one)"},
+        {"user", "U", "the caster's user name (the mountpoint then needs a password)"},
+        {"password-env", "VAR", "read the caster's password from environment variable VAR"},
+        {"raw", "[ADDR:]PORT", "the source's bytes, exactly, to every client of this TCP port"},
+        kDuration,
+};
 
 // The log viewer's commands (export, summary, play): the range and the decoding.
 constexpr OptionSpec kFrom{"from", "T",
@@ -143,6 +169,19 @@ constexpr OptionSpec kSummaryOptions[] = {
         kLenient,
         {"reference", "LAT,LON[,HEIGHT]",
          "accuracy against this point (degrees; ellipsoidal metres; horizontal only without)"},
+        kReferenceSite,
+};
+constexpr OptionSpec kSitesOptions[] = {
+        {"json", "", "list: the list as one JSON object (the export format)"},
+        {"llh", "LAT,LON[,HEIGHT]",
+         "add: the position (degrees, metres above the ellipsoid; the mark's, not the antenna's)"},
+        {"ecef", "X,Y,Z", "add: the position as Earth-centred, Earth-fixed metres"},
+        {"antenna-height", "H", "add: metres from the mark up to the antenna reference point"},
+        {"accuracy", "M", "add: how well the position is known, metres (e.g. horizontal sigma)"},
+        {"date", "YYYY-MM-DD", "add: when it was obtained (default: today, UTC)"},
+        {"method", "TEXT", "add: how it was obtained: known (default), survey-in, ppp, ..."},
+        {"note", "TEXT", "add: a note"},
+        {"replace", "", "add, import: replace a site of the same name"},
 };
 constexpr OptionSpec kPlayOptions[] = {
         {"pty", "", "play to a new pseudo-terminal (its path is printed on standard output)"},
@@ -188,7 +227,8 @@ constexpr CommandSpec kCommands[] = {
          "docs/export.md) or nmea (the bytes of those epochs exactly as they are in FILE).\n"
          "Exit status: 0 written, 1 FILE unreadable or OUT not writable, 2 usage error.\n"},
         {"summary", cmdSummary,
-         "summary [--json] [--from T] [--to T] [--reference LAT,LON[,HEIGHT]] FILE|-",
+         "summary [--json] [--from T] [--to T] [--reference LAT,LON[,HEIGHT] | --reference-site "
+         "NAME] FILE|-",
          "what a log holds: duration, fix availability, gaps, CEP, events", kSummaryOptions,
          "Indexes FILE (- reads standard input whole first) and prints its duration, epochs, "
          "availability per fix type, gaps, time "
@@ -201,8 +241,11 @@ constexpr CommandSpec kCommands[] = {
          "CEP50/CEP95 about the mean position), the vertical error (mean, median, 95 %; only "
          "with a HEIGHT and a receiver that gives its geoid separation) and the share of "
          "epochs within 2 cm, 10 cm, 50 cm, 1 m, 2 m and 5 m, overall and per fix type; in "
-         "JSON the \"reference\" object.\n"
-         "Exit status: 0 done, 1 FILE unreadable, 2 usage error.\n"},
+         "JSON the \"reference\" object. --reference-site NAME takes the point from the site "
+         "list (gnss-cli sites): the site's position with its antenna height added, where the "
+         "receiver's antenna is.\n"
+         "Exit status: 0 done, 1 FILE unreadable, 2 usage error or an unknown or ambiguous "
+         "site.\n"},
         {"play", cmdPlay,
          "play FILE|- --pty|--tcp PORT|--port P [--speed X] [--loop] [--from T] [--to T]",
          "play a log out at its own pace, like gpsfake", kPlayOptions,
@@ -337,9 +380,15 @@ constexpr CommandSpec kCommands[] = {
          "timeout; a link lost during a run marks it lost, and the campaign goes on once the "
          "link is back. Progress goes to standard error; a line per run, then per kind of "
          "start the runs, fixes, timeouts and the TTFF's mean, median, p90, p95, min and max. "
-         "With --json one object: starts (cold/warm/hot: runs, fixed, timeouts, lost, ttff_s) "
-         "and runs (every run's times).\n"
-         "Exit status: 0 done, 1 the receiver cannot be opened or identified, 2 usage error "
+         "With --json one object: starts (cold/warm/hot: runs, fixed, timeouts, lost, ttff_s), "
+         "runs (every run's times), limits (each with its value and pass) and, with "
+         "--reference (or --reference-site NAME, a site of gnss-cli sites), reference (the "
+         "accuracy of the positions between runs). --report FILE "
+         "writes the report (identity, settings as read back, conditions, tables, CDF plot, "
+         "limits, accuracy, every run) as FILE.pdf or FILE.html, with or without a display, and "
+         "FILE's base name .csv and .json beside it.\n"
+         "Exit status: 0 done and every --limit met, 1 the receiver cannot be opened or "
+         "identified, a limit was not met or the report could not be written, 2 usage error "
          "or a start it lacks, 130 interrupted (the runs so far are printed).\n"},
         {"compare", cmdCompare, "compare SOURCE SOURCE [SOURCE...] [--duration S] [--json]",
          "receivers side by side: position and C/N0 differences", kCompareOptions,
@@ -370,6 +419,50 @@ constexpr CommandSpec kCommands[] = {
          "credentials) or could not be reached, or no RTCM came within --duration, 2 usage "
          "error or a mountpoint the caster does not have.\n",
          0},
+        {"serve", cmdServe,
+         "serve --port P|--tcp HOST:PORT|--sim D|--replay FILE [--loop] --ntrip [ADDR:]PORT/MOUNT "
+         "[--user U --password-env VAR] [--raw [ADDR:]PORT] [--duration S]",
+         "serve a source: an NTRIP caster of its RTCM, a raw TCP port", kServeOptions,
+         "Serves the source to other programs. --ntrip is an NTRIP caster (revision 1: ICY 200 "
+         "OK; revision 2: HTTP/1.1, chunked) whose mountpoint carries the source's whole RTCM 3 "
+         "frames with a good CRC (what lies between them, NMEA, is left out), and whose source "
+         "table describes it from what is served: message types and rates, systems, the "
+         "station's position. With --user the mountpoint needs that user and the password in "
+         "the environment variable --password-env names; the source table never does. --raw "
+         "passes every byte of the source to every client (what clients send is ignored). Both "
+         "listen on 127.0.0.1 unless an address is given; PORT 0 takes a free port, and the "
+         "address listened on is said on standard error, as are clients connecting, refused "
+         "and leaving. A client that does not read is dropped once 1 MiB waits for it. A "
+         "--replay file is played at its own pace (an RTCM file by its epochs, a recording by "
+         "its index), from the moment the first client is served.\n"
+         "Exit status: 0 ended by --duration or the end of the replay, 1 the source cannot be "
+         "opened or a port cannot be listened on (in use), 2 usage error (nothing listens), 130 "
+         "interrupted.\n",
+         0},
+        {"sites", cmdSites,
+         "sites list [--json]\n"
+         "sites add NAME --llh LAT,LON[,HEIGHT]|--ecef X,Y,Z [--antenna-height H] [--accuracy M] "
+         "[--date D] [--method TEXT] [--note TEXT] [--replace]\n"
+         "sites remove NAME\n"
+         "sites export FILE.csv|FILE.json\n"
+         "sites import FILE.csv|FILE.json [--replace]",
+         "the list of named positions the GUI shares: list, add, remove, export, import",
+         kSitesOptions,
+         "The user's sites (survey marks, base-station points, known antenna positions), kept in "
+         "sites.json in the data folder the GUI uses ($GNSS_WORKBENCH_DATA_DIR when set), and "
+         "used by summary and ttff --reference-site NAME.\n"
+         "  list    a line per site (name, position, antenna height, accuracy, date, method); "
+         "--json the list as the export writes it\n"
+         "  add     a site NAME (up to 64 characters; names are unique whatever their case): its "
+         "mark's position, antenna height (default 0), accuracy, date, method and note\n"
+         "  remove  the site NAME (its full name)\n"
+         "  export  the list to FILE as CSV (name,lat,lon,height,antenna_height,accuracy,date,"
+         "method,note) or JSON, by its extension\n"
+         "  import  the sites of FILE into the list; one whose name is taken is kept as it was "
+         "and reported, unless --replace\n"
+         "Exit status: 0 done, 1 the list or FILE cannot be read or written, a name taken (add, "
+         "import: the rest is imported), 2 usage error, a malformed position, NAME or FILE "
+         "(nothing written), an unknown site.\n"},
 };
 
 // Calls f with each line of a '\n'-separated text.

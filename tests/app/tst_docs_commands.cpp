@@ -145,6 +145,10 @@ QHash<QString, Treatment> table() {
              run(0, "QT_QPA_PLATFORM=offscreen",
                  {"--sim geostar", "--sim geostar --quit-after 2"})},
             {"gnss-cli summary --json", run(0, {}, {"--json", "--json yesterday.nmea"})},
+            // Run by tests/qualify/tst_ttff_cli (limitsAndTheReport) on a simulator of its own.
+            {"gnss-cli ttff --report r.pdf", synopsis()},
+            {"gnss-sim --ttff cold=60:9,hot=12 --speed 20", synopsis()},
+            {"gnss-cli serve --sim nvs --raw 0", run(0, {}, {"--raw 0", "--raw 0 --duration 2"})},
             {"gnss-sim --dialect D --pty", synopsis()},
             {"gnss-sim --faults badcs=0.05,binary=0.2,hangup=60",
              run(0, {},
@@ -168,7 +172,8 @@ QHash<QString, Treatment> table() {
              synopsis()},
             {"gnss-cli export --format gpx|kml|csv|nmea [--from T] [--to T] FILE -o OUT",
              synopsis()},
-            {"gnss-cli summary [--json] [--from T] [--to T] [--reference LAT,LON[,HEIGHT]] FILE",
+            {"gnss-cli summary [--json] [--from T] [--to T] [--reference LAT,LON[,HEIGHT] | "
+             "--reference-site NAME] FILE",
              synopsis()},
             {"gnss-cli play FILE --pty|--tcp PORT|--port P [--baud B] [--speed X] [--loop] "
              "[--from T] [--to T]",
@@ -191,13 +196,24 @@ QHash<QString, Treatment> table() {
                   "minute.nmea --pty --speed 1000 | { read dev; echo $dev; "
                   "timeout 20 cat $dev > /dev/null; }; exit ${PIPESTATUS[0]}"})},
             {"gnss-cli ttff --port P|--tcp HOST:PORT|--sim D --start cold|warm|hot [--start ...] "
-             "[--runs N] [--timeout S] [--pause S] [--hold S] [--reference LAT,LON] [--json]",
+             "[--runs N] [--timeout S] [--pause S] [--hold S] [--reference LAT,LON[,HEIGHT] | "
+             "--reference-site NAME] [--limit START:STAT<=S ...] [--report FILE.pdf|FILE.html] "
+             "[--json]",
              synopsis()},
+            // The site list (tests/sites/tst_sites_cli runs them in a data folder of its own).
+            {"gnss-cli sites list [--json]", synopsis()},
+            {"gnss-cli sites add NAME --llh LAT,LON[,HEIGHT]|--ecef X,Y,Z [--antenna-height H] "
+             "[--accuracy M] [--date D] [--method TEXT] [--note TEXT] [--replace]",
+             synopsis()},
+            {"gnss-cli sites remove NAME", synopsis()},
+            {"gnss-cli sites export FILE.csv|FILE.json", synopsis()},
+            {"gnss-cli sites import FILE.csv|FILE.json [--replace]", synopsis()},
             // Run by tests/qualify/tst_ttff_cli on a pseudo-terminal of its own.
             {"gnss-sim --dialect nemerix --pty --link /tmp/vt002 --speed 20 --ttff cold=40:4 < "
              "/dev/null &",
              hardware("a simulator left running in the background")},
-            {"gnss-cli ttff --port /tmp/vt002 --start cold --runs 5 --pause 0.5",
+            {"gnss-cli ttff --port /tmp/vt002 --start cold --runs 5 --pause 0.5 --limit "
+             "cold:mean<=60 --report vt002.pdf",
              hardware("the simulator started above")},
             {"gnss-cli rtcm [FILE|-]", synopsis()},
             {"printf '\\xD3\\x00\\x13\\x3E\\xD7\\xD3\\x02\\x02\\x98\\x0E\\xDE\\xEF\\x34\\xB4\\xBD"
@@ -217,6 +233,18 @@ QHash<QString, Treatment> table() {
             {"NTRIP_PW=pass gnss-cli ntrip --caster 127.0.0.1:2101 --mount SIM --user user "
              "--password-env NTRIP_PW --ntrip-version 1",
              hardware("the str2str caster above: tst_ntrip_str2str")},
+            {"gnss-cli serve --port P [--baud B] | --tcp HOST:PORT | --sim D | --replay FILE "
+             "[--loop] [--ntrip [ADDR:]PORT/MOUNT [--user U --password-env VAR]] [--raw "
+             "[ADDR:]PORT] [--duration S]",
+             synopsis()},
+            {"NTRIP_PW=... gnss-cli serve --tcp 127.0.0.1:5000 --ntrip 2101/BASE --user me "
+             "--password-env NTRIP_PW",
+             hardware("gnss-sim --rtcm-base on port 5000: tst_serve_cli serves it so")},
+            {"str2str -in ntrip://me:pass@127.0.0.1:2101/BASE -out file://base.rtcm",
+             hardware("the caster above: tst_serve_cli runs str2str so")},
+            {"gnss-cli serve --sim nmea --raw 0 --duration 2", run()},
+            {"gnss-cli serve --replay base.rtcm --loop --ntrip 0.0.0.0:2101/BASE",
+             hardware("a caster on every interface until Ctrl-C")},
             {"gnss-cli compare SOURCE SOURCE [SOURCE...] [--duration S] [--json] [--dialect D] "
              "[--lenient]",
              synopsis()},

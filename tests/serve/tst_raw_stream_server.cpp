@@ -1,0 +1,87 @@
+// RawStreamServer on 127.0.0.1:0: every client gets the same bytes, exactly (NMEA and RTCM
+// alike); what clients send is read and ignored; the client list; a client that does not read
+// is dropped while the other gets everything.
+#include "serve/raw_stream_server.h"
+#include "serve_test_client.h"
+
+#include <QCryptographicHash>
+#include <QSignalSpy>
+
+using namespace gnss::serve;
+using namespace serve_test;
+
+class TstRawStreamServer : public QObject {
+    Q_OBJECT
+private slots:
+    void everyClientGetsTheSameBytes() {
+        RawStreamServer server;
+        QVERIFY(server.listen());
+        QCOMPARE(server.address().toString(), QStringLiteral("127.0.0.1"));
+        QSignalSpy came(&server, &RawStreamServer::clientConnected);
+        TestClient a(server.port()), b(server.port());
+        QTRY_COMPARE_WITH_TIMEOUT(came.size(), 2, 3000);
+        QByteArray sent;
+        for (const QByteArray &e : corrections_test::baseEpochs(3)) {
+            const QByteArray bytes = "$GPGSV,1,1,00*79\r\n" + e + QByteArray("\x00\xff", 2);
+            server.publish(bytes);
+            sent += bytes;
+        }
+        // Whatever a client sends is read and discarded.
+        a.socket.write("anything at all\r\n");
+        b.socket.write(QByteArray(5000, 'x'));
+        QTRY_COMPARE_WITH_TIMEOUT(a.received, sent, 3000);
+        QTRY_COMPARE_WITH_TIMEOUT(b.received, sent, 3000);
+        QTRY_COMPARE_WITH_TIMEOUT(server.bytesIgnored(), quint64(17 + 5000), 3000);
+        const QList<ClientInfo> list = server.clients();
+        QCOMPARE(list.size(), 2);
+        for (const ClientInfo &c : list) {
+            QCOMPARE(c.address.toString(), QStringLiteral("127.0.0.1"));
+            QVERIFY(c.port == a.socket.localPort() || c.port == b.socket.localPort());
+            QVERIFY(c.streaming);
+            QVERIFY(c.user.isEmpty());
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(server.clients().value(0).bytesSent, quint64(sent.size()), 3000);
+    }
+
+    void aClientThatGoesIsForgotten() {
+        RawStreamServer server;
+        QVERIFY(server.listen());
+        QSignalSpy gone(&server, &RawStreamServer::clientDisconnected);
+        auto a = std::make_unique<TestClient>(server.port());
+        QTRY_COMPARE_WITH_TIMEOUT(server.clients().size(), 1, 3000);
+        a.reset();
+        QTRY_COMPARE_WITH_TIMEOUT(gone.size(), 1, 3000);
+        QCOMPARE(server.clients().size(), 0);
+        server.publish("after"); // nobody: nothing happens
+    }
+
+    void aClientThatDoesNotReadIsDropped() {
+        RawStreamServer server;
+        ServeLimits limits;
+        limits.queueBytes = 32 * 1024;
+        limits.socketSendBuffer = 8 * 1024;
+        server.setLimits(limits);
+        QVERIFY(server.listen());
+        TestClient fast(server.port()), slow(server.port(), {}, false);
+        QTRY_COMPARE_WITH_TIMEOUT(server.clients().size(), 2, 3000);
+        slow.socket.setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, 4096);
+        QByteArray block(16 * 1024, 'r');
+        QCryptographicHash sent(QCryptographicHash::Sha256);
+        qint64 total = 0;
+        for (int i = 0; i < 8000 && server.droppedSlow() == 0; ++i) {
+            block[0] = char(i);
+            server.publish(block);
+            sent.addData(block);
+            total += block.size();
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        }
+        QCOMPARE(server.droppedSlow(), 1u);
+        QTRY_COMPARE_WITH_TIMEOUT(fast.received.size(), total, 10000);
+        QCOMPARE(QCryptographicHash::hash(fast.received, QCryptographicHash::Sha256),
+                 sent.result());
+        QCOMPARE(server.clients().size(), 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TstRawStreamServer)
+#include "tst_raw_stream_server.moc"
