@@ -56,6 +56,8 @@ packages=(
   lintian
   # man --warnings checks that the manual pages format cleanly.
   man-db
+  # pdftotext reads the qualification report's PDF back in its tests.
+  poppler-utils
 )
 # The fuzz preset (tests/fuzz): Debian's clang 14 and its libFuzzer.
 [ "$mode" = fuzz ] && packages+=(clang-14 libfuzzer-14-dev)

@@ -57,7 +57,8 @@ set(GNSS_VENDOR_FREE_LIBRARIES
   gnss_core gnss_rtcm_framing gnss_nmea gnss_state gnss_rtcm gnss_sim gnss_logview gnss_ntrip gnss_compare
   gnss_sites gnss_sites_store
   gnss_qualify gnss_link gnss_config gnss_corrections gnss_serve gnss_session gnss_qualify_campaign
-  gnss_ui gnss_ui_style gnss_ui_models gnss_ui_widgets gnss_ui_views gnss_ui_settings
+  gnss_qualify_report
+  gnss_ui gnss_ui_style gnss_ui_models gnss_ui_widgets gnss_ui_views gnss_ui_settings gnss_ui_qualify
   gnss_ui_logview gnss_app_common gnss_schema_catalog)
 
 # Everything `target` links, directly or through others (targets only, each once).

@@ -496,7 +496,7 @@
         <translation>пустой адрес</translation>
     </message>
     <message>
-        <location filename="../protocol/core/stream_decoder.cpp" line="+173"/>
+        <location filename="../protocol/core/stream_decoder.cpp" line="+184"/>
         <source>unknown sentence</source>
         <translation>неизвестное сообщение</translation>
     </message>
@@ -3648,6 +3648,103 @@
     </message>
 </context>
 <context>
+    <name>SiteStore</name>
+    <message>
+        <location filename="../protocol/sites/site_store.cpp" line="+56"/>
+        <location line="+130"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="-121"/>
+        <source>cannot make the folder %1</source>
+        <translation>не удалось создать папку %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+20"/>
+        <source>%1: a site file is .json or .csv</source>
+        <translation>%1: файл пунктов бывает .json или .csv</translation>
+    </message>
+    <message>
+        <location line="-15"/>
+        <location line="+5"/>
+        <source>cannot read %1: %2</source>
+        <translation>не удалось прочитать %1: %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+13"/>
+        <source>cannot write %1: %2</source>
+        <translation>не удалось записать %1: %2</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>cannot write %1: %2 of %3 bytes written (is the disk full?)</source>
+        <translation>не удалось записать %1: записано %2 из %3 байт (диск заполнен?)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>not JSON: %1 at byte %2</source>
+        <translation>не JSON: %1 в байте %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not a site list (no &quot;format&quot;: &quot;%1&quot;)</source>
+        <translation>не список пунктов (нет &quot;format&quot;: &quot;%1&quot;)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>version %1 of the site list is newer than this program reads (%2)</source>
+        <translation>версия %1 списка пунктов новее, чем читает эта программа (%2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&quot;version&quot; must be %1</source>
+        <translation>&quot;version&quot; должно быть %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&quot;sites&quot; must be an array</source>
+        <translation>&quot;sites&quot; должно быть массивом</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>site %1</source>
+        <translation>пункт %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>site %1 (&quot;%2&quot;)</source>
+        <translation>пункт %1 (&quot;%2&quot;)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: not an object</source>
+        <translation>%1: не объект</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>field &quot;%1&quot; is missing</source>
+        <translation>нет поля &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>field &quot;%1&quot;: not a number</source>
+        <translation>поле &quot;%1&quot;: не число</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>field &quot;%1&quot;: not text</source>
+        <translation>поле &quot;%1&quot;: не текст</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>field &quot;name&quot; is missing or not text</source>
+        <translation>поле &quot;name&quot; отсутствует или не текст</translation>
+    </message>
+</context>
+<context>
     <name>SourceSpec</name>
     <message>
         <location filename="../protocol/link/source_spec.cpp" line="+50"/>
@@ -4170,7 +4267,7 @@ Serial number: %3</source>
         <translation>Шкала времени журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/dock_table.cpp" line="+81"/>
+        <location filename="../app/gui/dock_table.cpp" line="+84"/>
         <source>Events</source>
         <translation>События</translation>
     </message>
@@ -4180,18 +4277,18 @@ Serial number: %3</source>
         <translation>События журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="+309"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="+363"/>
         <source>Save events</source>
         <translation>Сохранить события</translation>
     </message>
     <message>
-        <location line="-55"/>
-        <location line="+55"/>
+        <location line="-94"/>
+        <location line="+94"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-96"/>
         <source>Export the comparison</source>
         <translation>Экспорт сравнения</translation>
     </message>
@@ -4206,8 +4303,23 @@ Serial number: %3</source>
         <translation>Не сохранено: %1</translation>
     </message>
     <message>
+        <location line="+32"/>
+        <source>Save the qualification report</source>
+        <translation>Сохранить отчёт о квалификации</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Report written: %1</source>
+        <translation>Отчёт записан: %1</translation>
+    </message>
+    <message>
         <location line="+51"/>
-        <location line="+14"/>
+        <location line="+15"/>
         <location filename="../app/gui/main_window_log.cpp" line="+255"/>
         <source>Not exported: %1</source>
         <translation>Не экспортировано: %1</translation>
@@ -4228,8 +4340,8 @@ Serial number: %3</source>
         <translation>Сохранить статистику</translation>
     </message>
     <message>
-        <location line="-67"/>
-        <location line="+69"/>
+        <location line="-107"/>
+        <location line="+109"/>
         <source>JSON (*.json)</source>
         <translation>JSON (*.json)</translation>
     </message>
@@ -4249,7 +4361,7 @@ Serial number: %3</source>
         <translation>Трек</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-9"/>
         <source>Signal history</source>
         <translation>Сигналы</translation>
     </message>
@@ -4267,6 +4379,16 @@ Serial number: %3</source>
         <location line="+1"/>
         <source>Compare receivers</source>
         <translation>Сравнение приёмников</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Qualification</source>
+        <translation>Квалификация</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Qualification (TTFF, accuracy)</source>
+        <translation>Квалификация (TTFF, точность)</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -4395,7 +4517,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+133"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+135"/>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
@@ -4410,7 +4532,7 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dock_table.cpp" line="-46"/>
+        <location filename="../app/gui/dock_table.cpp" line="-49"/>
         <location line="+1"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
@@ -4512,7 +4634,7 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="-190"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="-230"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -4653,7 +4775,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+212"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+214"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
@@ -4695,7 +4817,7 @@ Serial number: %3</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_sessions.cpp" line="-161"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="-163"/>
         <source>%1 keeps what was begun for %2: pinned to it</source>
         <translation>%1 сохраняет начатое для %2: закреплено за ним</translation>
     </message>
@@ -4757,6 +4879,15 @@ Serial number: %3</source>
         <location line="+2"/>
         <source>%1 KiB skipped</source>
         <translation>пропущено %1 КиБ</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n RTCM frame(s)</source>
+        <translation>
+            <numerusform>%n кадр RTCM</numerusform>
+            <numerusform>%n кадра RTCM</numerusform>
+            <numerusform>%n кадров RTCM</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+9"/>
@@ -4985,6 +5116,45 @@ Serial number: %3</source>
         <location line="+5"/>
         <source>&amp;Baud rates to try:</source>
         <translation>&amp;Скорости для перебора:</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::app::QualificationController</name>
+    <message>
+        <location filename="../app/gui/qualification_controller.cpp" line="+95"/>
+        <source>%1: not connected</source>
+        <translation>%1: не подключён</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+5"/>
+        <location line="+92"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="-90"/>
+        <source>No receiver to qualify.</source>
+        <translation>Нет приёмника для квалификации.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Nothing was sent.</source>
+        <translation>Ничего не отправлено.</translation>
+    </message>
+    <message>
+        <location line="+73"/>
+        <source>The qualification campaign has ended.</source>
+        <translation>Серия испытаний завершена.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+15"/>
+        <source>%1: done, %n run(s)</source>
+        <translation>
+            <numerusform>%1: готово, %n запуск</numerusform>
+            <numerusform>%1: готово, %n запуска</numerusform>
+            <numerusform>%1: готово, %n запусков</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5928,6 +6098,583 @@ Serial number: %3</source>
     </message>
 </context>
 <context>
+    <name>gnss::qualify::Report</name>
+    <message>
+        <location filename="../protocol/qualify/plots.cpp" line="+127"/>
+        <source>cold</source>
+        <translation>холодный</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>warm</source>
+        <translation>тёплый</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hot</source>
+        <translation>горячий</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>Time to first fix, s</source>
+        <translation>Время до первого решения, с</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location filename="../protocol/qualify/report.cpp" line="+374"/>
+        <source>No run has fixed yet</source>
+        <translation>Ещё ни один запуск не дал решения</translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>Horizontal error, %1</source>
+        <translation>Горизонтальная ошибка, %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No positions</source>
+        <translation>Нет координат</translation>
+    </message>
+    <message>
+        <location filename="../protocol/qualify/report.cpp" line="-293"/>
+        <source>%1 h %2 min %3 s</source>
+        <translation>%1 ч %2 мин %3 с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 min %2 s</source>
+        <translation>%1 мин %2 с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+229"/>
+        <location line="+1"/>
+        <location line="+100"/>
+        <source>%1 s</source>
+        <translation>%1 с</translation>
+    </message>
+    <message>
+        <location line="-325"/>
+        <source>fixed</source>
+        <translation>решение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timeout</source>
+        <translation>тайм-аут</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lost</source>
+        <translation>связь потеряна</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>mean</source>
+        <translation>среднее</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>median</source>
+        <translation>медиана</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+293"/>
+        <source>P90</source>
+        <translation>P90</translation>
+    </message>
+    <message>
+        <location line="-292"/>
+        <location line="+234"/>
+        <location line="+58"/>
+        <source>P95</source>
+        <translation>P95</translation>
+    </message>
+    <message>
+        <location line="-291"/>
+        <source>max</source>
+        <translation>макс.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>No fix</source>
+        <translation>Нет решения</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Estimated</source>
+        <translation>Счисление</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+373"/>
+        <source>2D</source>
+        <translation>2D</translation>
+    </message>
+    <message>
+        <location line="-372"/>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+372"/>
+        <source>DGNSS</source>
+        <translation>DGNSS</translation>
+    </message>
+    <message>
+        <location line="-371"/>
+        <location line="+371"/>
+        <source>RTK float</source>
+        <translation>RTK float</translation>
+    </message>
+    <message>
+        <location line="-370"/>
+        <location line="+370"/>
+        <source>RTK fixed</source>
+        <translation>RTK fixed</translation>
+    </message>
+    <message>
+        <location line="-369"/>
+        <source>Manual</source>
+        <translation>Заданная позиция</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulator</source>
+        <translation>Симулятор</translation>
+    </message>
+    <message>
+        <location line="+149"/>
+        <location line="+260"/>
+        <source>Receiver qualification report</source>
+        <translation>Отчёт о квалификации приёмника</translation>
+    </message>
+    <message>
+        <location line="-238"/>
+        <source>Generated %1 by GNSS Workbench</source>
+        <translation>Создан %1 программой GNSS Workbench</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Conditions</source>
+        <translation>Условия</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Started</source>
+        <translation>Начало</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ended</source>
+        <translation>Конец</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Duration</source>
+        <translation>Длительность</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Kinds of start</source>
+        <translation>Виды старта</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Runs per start</source>
+        <translation>Запусков каждого вида</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Timeout</source>
+        <translation>Тайм-аут</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pause between runs</source>
+        <translation>Пауза между запусками</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>latitude %1°, longitude %2°</source>
+        <translation>широта %1°, долгота %2°</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>height %1</source>
+        <translation>высота %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>height none</source>
+        <translation>высота не задана</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference point</source>
+        <translation>Опорная точка</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Location</source>
+        <translation>Место</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Comparison</source>
+        <translation>Сравнение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time to first 3D fix in seconds, per receiver and kind of start.</source>
+        <translation>Время до первого 3D-решения в секундах, по приёмникам и видам старта.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+21"/>
+        <location line="+128"/>
+        <source>Receiver</source>
+        <translation>Приёмник</translation>
+    </message>
+    <message>
+        <location line="-149"/>
+        <location line="+58"/>
+        <location line="+92"/>
+        <source>Start</source>
+        <translation>Старт</translation>
+    </message>
+    <message>
+        <location line="-150"/>
+        <location line="+58"/>
+        <location line="+85"/>
+        <source>Runs</source>
+        <translation>Запуски</translation>
+    </message>
+    <message>
+        <location line="-143"/>
+        <location line="+58"/>
+        <source>Fixed</source>
+        <translation>С решением</translation>
+    </message>
+    <message>
+        <location line="-58"/>
+        <location line="+58"/>
+        <source>Mean</source>
+        <translation>Среднее</translation>
+    </message>
+    <message>
+        <location line="-58"/>
+        <location line="+59"/>
+        <source>Median</source>
+        <translation>Медиана</translation>
+    </message>
+    <message>
+        <location line="-47"/>
+        <source>Time to first fix, all receivers (CDF)</source>
+        <translation>Время до первого решения, все приёмники (ФР)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Identity</source>
+        <translation>Идентификация</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Model</source>
+        <translation>Модель</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Firmware</source>
+        <translation>Прошивка</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Port</source>
+        <translation>Порт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Baud</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Settings</source>
+        <translation>Настройки</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No settings were read</source>
+        <translation>Настройки не прочитаны</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Setting</source>
+        <translation>Параметр</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Time to first fix</source>
+        <translation>Время до первого решения</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Time to first fix of %1 (CDF)</source>
+        <translation>Время до первого решения: %1 (ФР)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+121"/>
+        <source>No runs</source>
+        <translation>Нет запусков</translation>
+    </message>
+    <message>
+        <location line="-118"/>
+        <source>Seconds from the restart to the first 3D fix, of the runs that fixed.</source>
+        <translation>Секунды от перезапуска до первого 3D-решения, по запускам с решением.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Timeouts</source>
+        <translation>Тайм-ауты</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lost</source>
+        <translation>Потеряны</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Min</source>
+        <translation>Мин.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Max</source>
+        <translation>Макс.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Limits</source>
+        <translation>Пределы</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Limit</source>
+        <translation>Предел</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Measured</source>
+        <translation>Измерено</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Итог</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 %2 ≤ %3 s</source>
+        <translation>%1 %2 ≤ %3 с</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no run fixed</source>
+        <translation>ни одного решения</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>pass</source>
+        <translation>выполнен</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>fail</source>
+        <translation>не выполнен</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 of %2 limits not met</source>
+        <translation>не выполнено пределов: %1 из %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All limits met</source>
+        <translation>Все пределы выполнены</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Accuracy against the reference point</source>
+        <translation>Точность относительно опорной точки</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Positions</source>
+        <translation>Координаты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bias east</source>
+        <translation>Смещение на восток</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bias north</source>
+        <translation>Смещение на север</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bias up</source>
+        <translation>Смещение вверх</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Horizontal mean</source>
+        <translation>Горизонталь, среднее</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Horizontal median</source>
+        <translation>Горизонталь, медиана</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CEP50</source>
+        <translation>CEP50</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CEP95</source>
+        <translation>CEP95</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>2DRMS</source>
+        <translation>2DRMS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R95</source>
+        <translation>R95</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Horizontal max</source>
+        <translation>Горизонталь, максимум</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertical mean</source>
+        <translation>Вертикаль, среднее</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Vertical median</source>
+        <translation>Вертикаль, медиана</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Vertical 95 %</source>
+        <translation>Вертикаль, 95 %</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Share of epochs within a horizontal distance of the reference point.</source>
+        <translation>Доля эпох в пределах горизонтального расстояния от опорной точки.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fix</source>
+        <translation>Решение</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Epochs</source>
+        <translation>Эпохи</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>≤ %1</source>
+        <translation>≤ %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>All</source>
+        <translation>Все</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Horizontal error of %1 (histogram)</source>
+        <translation>Горизонтальная ошибка: %1 (гистограмма)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Seconds from the restart to the first fix of each kind; the satellites used and the distance from the reference point at the first 3D fix.</source>
+        <translation>Секунды от перезапуска до первого решения каждого вида; спутники в решении и расстояние от опорной точки при первом 3D-решении.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Run</source>
+        <translation>Запуск</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Outcome</source>
+        <translation>Итог</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Position</source>
+        <translation>Позиция</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>3D (TTFF)</source>
+        <translation>3D (TTFF)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Satellites</source>
+        <translation>Спутники</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Distance, %1</source>
+        <translation>Расстояние, %1</translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <location line="+144"/>
+        <location line="+3"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Не удалось записать %1: %2</translation>
+    </message>
+    <message>
+        <location line="-17"/>
+        <source>%1: a report is .pdf or .html</source>
+        <translation>%1: отчёт бывает .pdf или .html</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: the runs would overwrite the report</source>
+        <translation>%1: файл запусков перезаписал бы отчёт</translation>
+    </message>
+</context>
+<context>
     <name>gnss::qualify::TtffCampaign</name>
     <message>
         <location filename="../protocol/qualify/ttff_campaign.cpp" line="+26"/>
@@ -5945,7 +6692,7 @@ Serial number: %3</source>
         <translation>нет</translation>
     </message>
     <message numerus="yes">
-        <location line="+143"/>
+        <location line="+170"/>
         <source>Cancelled after %n run(s)</source>
         <translation>
             <numerusform>Отменено после %n прогона</numerusform>
@@ -5963,17 +6710,22 @@ Serial number: %3</source>
         </translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%1 %2 of %3</source>
         <translation>%1 %2 из %3</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>%1: waiting for a 3D fix held %2 s (ephemerides), %3 s</source>
         <translation>%1: ожидание 3D-решения, удерживаемого %2 с (эфемериды), %3 с</translation>
     </message>
     <message>
         <location line="+4"/>
+        <source>%1: waiting for the other receivers</source>
+        <translation>%1: ожидание остальных приёмников</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1: restarting</source>
         <translation>%1: перезапуск</translation>
     </message>
@@ -5991,6 +6743,57 @@ Serial number: %3</source>
         <location line="+1"/>
         <source>%1: link lost, waiting for it</source>
         <translation>%1: связь потеряна, ожидание</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::serve::NtripCaster</name>
+    <message>
+        <location filename="../protocol/serve/ntrip_caster.cpp" line="+162"/>
+        <source>malformed request: %1</source>
+        <translation>неверный запрос: %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>no mountpoint %1</source>
+        <translation>нет точки подключения %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>wrong user name or password for %1</source>
+        <translation>неверные имя пользователя или пароль для %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no credentials for %1</source>
+        <translation>нет учётных данных для %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>source table sent</source>
+        <translation>таблица источников отправлена</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::serve::StreamClients</name>
+    <message>
+        <location filename="../protocol/serve/stream_clients.cpp" line="+61"/>
+        <source>no request within %1 s</source>
+        <translation>нет запроса за %1 с</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>closed by the client</source>
+        <translation>закрыто клиентом</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>dropped: it did not read its data (%1 KiB waiting)</source>
+        <translation>отключён: не читал данные (ожидает %1 КиБ)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>the server stopped</source>
+        <translation>сервер остановлен</translation>
     </message>
 </context>
 <context>
@@ -6093,6 +6896,217 @@ Serial number: %3</source>
         <location line="+48"/>
         <source>Not connected: nothing was sent</source>
         <translation>Нет подключения: ничего не отправлено</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::AccuracyPanel</name>
+    <message>
+        <location filename="../ui/qualify/accuracy_panel.cpp" line="+29"/>
+        <source>LAT,LON[,HEIGHT] — empty: the mean of the positions</source>
+        <translation>ШИР,ДОЛ[,ВЫСОТА] — пусто: среднее координат</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A known point in degrees and, for the vertical error, its height above the ellipsoid in metres: 55.7522,37.6156,180.2</source>
+        <translation>Известная точка в градусах и, для вертикальной ошибки, её высота над эллипсоидом в метрах: 55.7522,37.6156,180.2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Site</source>
+        <translation>Пункт</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Use a site of your site list as the reference</source>
+        <translation>Взять опорную точку из списка пунктов</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Save as site…</source>
+        <translation>Сохранить как пункт…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the mean of these positions in your site list (a survey-in by the workbench)</source>
+        <translation>Сохранить среднее этих координат в списке пунктов (осреднение программой)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Reference:</source>
+        <translation>Опорная точка:</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+62"/>
+        <source>No site list</source>
+        <translation>Нет списка пунктов</translation>
+    </message>
+    <message>
+        <location line="-58"/>
+        <source>No sites yet (gnss-cli sites add, or Save as site)</source>
+        <translation>Пунктов пока нет (gnss-cli sites add или «Сохранить как пункт»)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Save as site</source>
+        <translation>Сохранить как пункт</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Site name:</source>
+        <translation>Имя пункта:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Statistic</source>
+        <translation>Показатель</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>No site named %1</source>
+        <translation>Нет пункта %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Reference: the site %1</source>
+        <translation>Опорная точка: пункт %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No positions to average yet.</source>
+        <translation>Координат для осреднения пока нет.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>A site named %1 is already in the list</source>
+        <translation>Пункт %1 уже есть в списке</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Saved the mean of %1 positions as the site %2</source>
+        <translation>Среднее %1 координат сохранено как пункт %2</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>Positions</source>
+        <translation>Координаты</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The reference is not a point: %1</source>
+        <translation>Опорная точка задана неверно: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>No positions yet.</source>
+        <translation>Координат пока нет.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n position(s) against the reference %1, %2</source>
+        <translation>
+            <numerusform>%n позиция относительно опорной точки %1, %2</numerusform>
+            <numerusform>%n позиции относительно опорной точки %1, %2</numerusform>
+            <numerusform>%n позиций относительно опорной точки %1, %2</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n position(s) against their mean %1, %2 (no reference typed)</source>
+        <translation>
+            <numerusform>%n позиция относительно их среднего %1, %2 (опорная точка не задана)</numerusform>
+            <numerusform>%n позиции относительно их среднего %1, %2 (опорная точка не задана)</numerusform>
+            <numerusform>%n позиций относительно их среднего %1, %2 (опорная точка не задана)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bias east</source>
+        <translation>Смещение на восток</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bias north</source>
+        <translation>Смещение на север</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bias up</source>
+        <translation>Смещение вверх</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Horizontal mean</source>
+        <translation>Горизонталь, среднее</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Horizontal median</source>
+        <translation>Горизонталь, медиана</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CEP50</source>
+        <translation>CEP50</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CEP95</source>
+        <translation>CEP95</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>2DRMS</source>
+        <translation>2DRMS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R95</source>
+        <translation>R95</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Horizontal max</source>
+        <translation>Горизонталь, максимум</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertical mean</source>
+        <translation>Вертикаль, среднее</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Vertical median</source>
+        <translation>Вертикаль, медиана</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Vertical 95%</source>
+        <translation>Вертикаль, 95%</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2%</source>
+        <translation>%1: %2%</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Within (all)</source>
+        <translation>В пределах (все)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Within (%1, %n epoch(s))</source>
+        <translation>
+            <numerusform>В пределах (%1, %n эпоха)</numerusform>
+            <numerusform>В пределах (%1, %n эпохи)</numerusform>
+            <numerusform>В пределах (%1, %n эпох)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -7291,7 +8305,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::LogSummaryView</name>
     <message>
-        <location filename="../ui/logview/log_summary_view.cpp" line="+19"/>
+        <location filename="../ui/logview/log_summary_view.cpp" line="+22"/>
         <source>%1 s</source>
         <translation>%1 с</translation>
     </message>
@@ -7311,7 +8325,17 @@ Serial number: %3</source>
         <translation>Сохранить JSON…</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+13"/>
+        <source>Range</source>
+        <translation>Диапазон</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Accuracy</source>
+        <translation>Точность</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>Indexing…</source>
         <translation>Индексация…</translation>
     </message>
@@ -7321,7 +8345,7 @@ Serial number: %3</source>
         <translation>Журнал не открыт</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Selected range: epochs %1 to %2</source>
         <translation>Выбранный интервал: эпохи с %1 по %2</translation>
     </message>
@@ -7543,6 +8567,320 @@ Serial number: %3</source>
         <location line="+1"/>
         <source>Unknown</source>
         <translation>Неизвестные</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::QualificationView</name>
+    <message>
+        <location filename="../ui/qualify/qualification_view.cpp" line="+32"/>
+        <source>cold</source>
+        <translation>холодный</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>warm</source>
+        <translation>тёплый</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hot</source>
+        <translation>горячий</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>fixed</source>
+        <translation>решение</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timed out</source>
+        <translation>тайм-аут</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>link lost</source>
+        <translation>связь потеряна</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>The selected receiver</source>
+        <translation>Выбранный приёмник</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every receiver, at once</source>
+        <translation>Все приёмники сразу</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>On:</source>
+        <translation>Где:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cold</source>
+        <translation>Холодный</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Warm</source>
+        <translation>Тёплый</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hot</source>
+        <translation>Горячий</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Starts:</source>
+        <translation>Старты:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Runs of each:</source>
+        <translation>Запусков каждого:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+3"/>
+        <location line="+2"/>
+        <source> s</source>
+        <translation> с</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>A run without a 3D fix after this long is counted as a timeout</source>
+        <translation>Запуск без 3D-решения за это время считается тайм-аутом</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timeout:</source>
+        <translation>Тайм-аут:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pause:</source>
+        <translation>Пауза:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Before a warm or hot start the receiver holds a 3D fix this long, so that it has its ephemerides</source>
+        <translation>Перед тёплым или горячим стартом приёмник держит 3D-решение столько времени, чтобы получить эфемериды</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Hold fix:</source>
+        <translation>Держать решение:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>cold:mean&lt;=60, hot:p95&lt;=15</source>
+        <translation>cold:mean&lt;=60, hot:p95&lt;=15</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limits to pass, separated by commas: START:STATISTIC&lt;=SECONDS, the statistic one of mean, median, p90, p95, max</source>
+        <translation>Пределы через запятую: СТАРТ:ПОКАЗАТЕЛЬ&lt;=СЕКУНДЫ (cold, warm, hot; mean, median, p90, p95, max)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Limits:</source>
+        <translation>Пределы:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+34"/>
+        <location line="+9"/>
+        <source>Start</source>
+        <translation>Старт</translation>
+    </message>
+    <message>
+        <location line="-42"/>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save report…</source>
+        <translation>Сохранить отчёт…</translation>
+    </message>
+    <message>
+        <location line="-41"/>
+        <source>No campaign yet.</source>
+        <translation>Испытаний ещё не было.</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>%v of %m runs</source>
+        <translation>%v из %m запусков</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+9"/>
+        <source>Receiver</source>
+        <translation>Приёмник</translation>
+    </message>
+    <message>
+        <location line="-9"/>
+        <location line="+13"/>
+        <source>Runs</source>
+        <translation>Запуски</translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>Fixed</source>
+        <translation>С решением</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timeouts</source>
+        <translation>Тайм-ауты</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Lost</source>
+        <translation>Потеряны</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Mean</source>
+        <translation>Среднее</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Median</source>
+        <translation>Медиана</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P90</source>
+        <translation>P90</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>P95</source>
+        <translation>P95</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Min</source>
+        <translation>Мин.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Max</source>
+        <translation>Макс.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Limits</source>
+        <translation>Пределы</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Times to a 3D fix in seconds, of the runs that fixed</source>
+        <translation>Время до 3D-решения в секундах, по запускам с решением</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Results</source>
+        <translation>Итоги</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>CDF</source>
+        <translation>ФР</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run</source>
+        <translation>Запуск</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Outcome</source>
+        <translation>Итог</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Position</source>
+        <translation>Позиция</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>2D</source>
+        <translation>2D</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>3D (TTFF)</source>
+        <translation>3D (TTFF)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>DGNSS</source>
+        <translation>DGNSS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTK float</source>
+        <translation>RTK float</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RTK fixed</source>
+        <translation>RTK fixed</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Satellites</source>
+        <translation>Спутники</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Distance</source>
+        <translation>Расстояние</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Accuracy</source>
+        <translation>Точность</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Run %1 of %2; about %3 min left</source>
+        <translation>Запуск %1 из %2; осталось около %3 мин</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 %2 ≤ %3 s: %4</source>
+        <translation>%1 %2 ≤ %3 с: %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>pass</source>
+        <translation>выполнен</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>FAIL</source>
+        <translation>НЕ ВЫПОЛНЕН</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Choose at least one kind of start.</source>
+        <translation>Выберите хотя бы один вид старта.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>A limit is not understood: %1</source>
+        <translation>Предел не распознан: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The reference point (Accuracy tab) is not a point.</source>
+        <translation>Опорная точка (вкладка «Точность») задана неверно.</translation>
     </message>
 </context>
 <context>

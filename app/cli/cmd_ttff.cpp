@@ -1,12 +1,21 @@
 // gnss-cli ttff: a time-to-first-fix campaign on one live receiver (qualify::TtffCampaign, as the
 // window runs it): N restarts of each kind asked, a line per run, the statistics at the end.
+#include "config/settings_engine.h"
+#include "config/settings_snapshot.h"
+
 #include "cli/cli_output.h"
 #include "cli/cli_source.h"
 #include "cli/event_loop.h"
+#include "cli/site_reference.h"
 #include "compare/accuracy.h"
 #include "core/json_writer.h"
 #include "link/vendor_detector.h"
+#include "qualify/limits.h"
+#include "qualify/report.h"
 #include "qualify/ttff_campaign.h"
+
+#include <QDateTime>
+#include <QEventLoop>
 
 #include <cstdio>
 
@@ -50,6 +59,32 @@ std::string statsText(const std::vector<qualify::TtffRun> &runs) {
         o += b;
     }
     return o;
+}
+
+std::string limitsText(const std::vector<qualify::LimitResult> &results) {
+    std::string o;
+    char b[256];
+    for (const qualify::LimitResult &r : results) {
+        if (r.value)
+            std::snprintf(b, sizeof b, "limit %s: %.1f s, %s\n", r.limit.text().c_str(), *r.value,
+                          r.pass ? "pass" : "FAIL");
+        else
+            std::snprintf(b, sizeof b, "limit %s: no run fixed, FAIL\n", r.limit.text().c_str());
+        o += b;
+    }
+    return o;
+}
+
+// The receiver's settings as read back, for the report (a receiver that answers nothing leaves
+// them empty; the campaign goes on).
+std::vector<std::pair<QString, QString>> readSettings(link::Connection &conn,
+                                                      const Dialect *dialect) {
+    config::SettingsEngine engine;
+    engine.attach(&conn, dialect);
+    QEventLoop wait;
+    QObject::connect(&engine, &config::SettingsEngine::finished, &wait, &QEventLoop::quit);
+    if (engine.read()) wait.exec();
+    return config::settingsSnapshot(engine);
 }
 
 bool seconds(const Args &args, const char *name, int &ms) {
@@ -99,14 +134,24 @@ int cmdTtff(const CliContext &ctx) {
     if (!seconds(args, "timeout", plan.timeoutMs) || !seconds(args, "pause", plan.pauseMs) ||
         !seconds(args, "hold", plan.holdMs))
         return 2;
-    if (const auto text = args.option("reference")) {
+    std::optional<compare::ReferencePoint> reference;
+    if (const int rc = referenceFromArgs(args, reference)) return rc;
+    if (reference) plan.reference = std::pair(reference->latDeg, reference->lonDeg);
+    std::vector<qualify::Limit> limits;
+    for (const std::string &text : args.options("limit")) {
         std::string why;
-        const auto p = compare::ReferencePoint::parse(*text, why);
-        if (!p) {
-            std::fprintf(stderr, "gnss-cli: --reference: %s\n", why.c_str());
+        const auto l = qualify::Limit::parse(text, why);
+        if (!l) {
+            std::fprintf(stderr, "gnss-cli: --limit %s\n", why.c_str());
             return 2;
         }
-        plan.reference = std::pair(p->latDeg, p->lonDeg);
+        limits.push_back(*l);
+    }
+    const auto reportPath = args.option("report");
+    if (reportPath && !qualify::reportFormatOf(QString::fromStdString(*reportPath))) {
+        std::fprintf(stderr, "gnss-cli: --report %s: a report is .pdf or .html\n",
+                     reportPath->c_str());
+        return 2;
     }
     std::string error;
     const auto spec = sourceFromArgs(args, {Kind::Serial, Kind::Tcp, Kind::Simulator}, error);
@@ -114,7 +159,8 @@ int cmdTtff(const CliContext &ctx) {
         std::fprintf(stderr, "gnss-cli: %s\n", error.c_str());
         return 2;
     }
-    EventLoop loop;
+    // A PDF is painted: a QGuiApplication (offscreen without a display).
+    EventLoop loop(reportPath.has_value());
     OpenOptions o;
     QString why;
     bool refused = false;
@@ -129,8 +175,10 @@ int cmdTtff(const CliContext &ctx) {
     detector.setActive(true);
     const Dialect *dialect = nullptr;
     bool identified = false;
+    link::VendorIdentity identity;
     QObject::connect(&detector, &link::VendorDetector::finished,
                      [&](const link::VendorIdentity &id) {
+                         identity = id;
                          dialect = ctx.registry.find(utf8(id.dialect));
                          if (dialect) conn->stream()->setDialect(dialect);
                          identified = true;
@@ -144,7 +192,18 @@ int cmdTtff(const CliContext &ctx) {
         return 2;
     }
     const bool json = args.flag("json");
+    qualify::ReportReceiver receiver;
+    if (reportPath) {
+        conn->commands()->setDialect(dialect);
+        receiver.settings = readSettings(*conn, dialect);
+    }
+    const QDateTime started = QDateTime::currentDateTimeUtc();
+    std::optional<compare::Accuracy> accuracy;
+    if (reference) accuracy.emplace(*reference);
     qualify::TtffCampaign campaign(conn.get(), dialect, plan);
+    QObject::connect(&campaign, &qualify::TtffCampaign::epoch, [&](const Epoch &e) {
+        if (accuracy) accuracy->add(e);
+    });
     QString last;
     QObject::connect(&campaign, &qualify::TtffCampaign::progress, [&](const QString &text) {
         // Each new state once (the seconds tick on a terminal only).
@@ -163,19 +222,63 @@ int cmdTtff(const CliContext &ctx) {
     campaign.start();
     const int rc = loop.exec();
     if (rc) campaign.cancel();
+    const auto verdicts = qualify::checkLimits(limits, campaign.runs());
+    bool allPass = true;
+    for (const auto &v : verdicts) allPass = allPass && v.pass;
     std::string out;
     if (json) {
         JsonWriter w(out);
         w.beginObject().field("receiver", dialect->displayName);
         w.field("source", utf8(spec->toString()));
         qualify::writeCampaignJson(w, campaign.runs());
+        qualify::writeLimitsJson(w, verdicts);
+        if (accuracy) {
+            w.key("reference");
+            accuracy->report().writeJson(w, *reference);
+        }
         w.endObject();
         out += '\n';
     } else {
-        out = statsText(campaign.runs());
+        out = statsText(campaign.runs()) + limitsText(verdicts);
     }
     std::fwrite(out.data(), 1, out.size(), stdout);
-    return rc ? rc : 0;
+    std::fflush(stdout);
+    if (reportPath) {
+        qualify::ReportInput in;
+        in.started = started;
+        in.ended = QDateTime::currentDateTimeUtc();
+        in.reference = reference;
+        in.starts = plan.starts;
+        in.runsPerStart = plan.runs;
+        in.timeoutS = plan.timeoutMs / 1000.0;
+        in.pauseS = plan.pauseMs / 1000.0;
+        in.limits = limits;
+        receiver.name = QString::fromUtf8(dialect->displayName.data(),
+                                          qsizetype(dialect->displayName.size()));
+        receiver.model = identity.model;
+        receiver.firmware = identity.firmware;
+        receiver.port = spec->kind == Kind::Serial || spec->kind == Kind::Tcp ? spec->place()
+                                                                              : spec->displayName();
+        receiver.baud = conn->transport() ? conn->transport()->baud() : 0;
+        receiver.runs = campaign.runs();
+        if (accuracy && accuracy->report().positions) {
+            receiver.accuracy = accuracy->report();
+            receiver.horizontalErrors = accuracy->horizontalErrors();
+        }
+        in.receivers.push_back(std::move(receiver));
+        QString why;
+        const QStringList files =
+                qualify::writeReport(in, QString::fromStdString(*reportPath), &why);
+        if (files.isEmpty()) {
+            std::fprintf(stderr, "gnss-cli: %s\n", utf8(why).c_str());
+            return rc ? rc : 1;
+        }
+        for (const QString &f : files)
+            std::fprintf(stderr, "gnss-cli: wrote %s\n", utf8(f).c_str());
+    }
+    if (rc) return rc;
+    // A limit the receiver did not meet: it failed what it was held to.
+    return allPass ? 0 : 1;
 }
 
 } // namespace gnss::cli

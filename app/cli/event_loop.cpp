@@ -1,5 +1,7 @@
 #include "cli/event_loop.h"
 
+#include <QGuiApplication>
+
 #include <csignal>
 
 namespace gnss::cli {
@@ -15,19 +17,30 @@ void onSignal(int signal) {
 
 } // namespace
 
-EventLoop::EventLoop() {
+EventLoop::EventLoop(bool withGui) {
+    if (withGui) {
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+        app_ = std::make_unique<QGuiApplication>(argc_, argv_);
+    } else {
+        app_ = std::make_unique<QCoreApplication>(argc_, argv_);
+    }
+    signalPoll_ = std::make_unique<QTimer>();
     g_stop = 0;
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
-    QObject::connect(&signalPoll_, &QTimer::timeout, [] {
+    QObject::connect(signalPoll_.get(), &QTimer::timeout, [] {
         if (g_stop) QCoreApplication::exit(128 + g_stop);
     });
-    signalPoll_.start(kSignalPollMs);
+    signalPoll_->start(kSignalPollMs);
+}
+
+EventLoop::~EventLoop() {
+    signalPoll_.reset(); // before the application
 }
 
 void EventLoop::stopAfter(double seconds) {
     if (seconds > 0)
-        QTimer::singleShot(static_cast<int>(seconds * 1000), &app_,
+        QTimer::singleShot(static_cast<int>(seconds * 1000), app_.get(),
                            [] { QCoreApplication::exit(0); });
 }
 

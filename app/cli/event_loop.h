@@ -6,14 +6,19 @@
 #include <QCoreApplication>
 #include <QTimer>
 
+#include <memory>
+
 namespace gnss::cli {
 
 class EventLoop {
 public:
-    EventLoop();
+    // `withGui`: a QGuiApplication on the offscreen platform (unless QT_QPA_PLATFORM says
+    // otherwise), for what paints (a PDF report), with or without a display.
+    explicit EventLoop(bool withGui = false);
+    ~EventLoop();
     // Ends the loop after `seconds` (none when <= 0).
     void stopAfter(double seconds);
-    int exec() { return app_.exec(); }
+    int exec() { return app_->exec(); }
     // The exit status of an interruption (128 + the signal), 0 when none came.
     static int interruptedStatus();
 
@@ -21,8 +26,8 @@ private:
     int argc_ = 1;
     char name_[9] = "gnss-cli";
     char *argv_[2] = {name_, nullptr};
-    QCoreApplication app_{argc_, argv_};
-    QTimer signalPoll_;
+    std::unique_ptr<QCoreApplication> app_;
+    std::unique_ptr<QTimer> signalPoll_; // made after the application
 };
 
 } // namespace gnss::cli

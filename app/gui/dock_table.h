@@ -39,6 +39,9 @@ struct DockRow {
     // Acts on its receiver (the settings form, the console, corrections): its title names the
     // receiver whenever there are several.
     bool names = false;
+    // Put away in the first layout (a tool for some users: View menu, --show-dock), so that the
+    // groups' tabs stay whole on a laptop; shown, it joins its group.
+    bool putAway = false;
 };
 
 std::span<const DockRow> dockRows();

@@ -6,6 +6,7 @@
 #include "gui/dock_table.h"
 #include "gui/preferences.h"
 #include "link/source_spec.h"
+#include "sites/site_store.h"
 
 #include <QHash>
 #include <QIcon>
@@ -41,6 +42,7 @@ class ConsoleView;
 class ReceiverSession;
 class ReceiverStateModel;
 class SatelliteModel;
+class AccuracyPanel;
 class SkyPlotView;
 class RtkView;
 class ChartsView;
@@ -53,6 +55,7 @@ using link::SourceSpec;
 
 class ConnectionBar;
 class CorrectionsController;
+class QualificationController;
 class ReceiversStrip;
 class LogPlayer;
 class LogViewer;
@@ -83,6 +86,9 @@ public:
     CorrectionsController *corrections(ui::ReceiverSession *s = nullptr);
     // The receivers compared (the Compare dock's model).
     ui::CompareModel *comparison() const { return compare_; }
+    // Time-to-first-fix campaigns and accuracy on the receivers (the Qualification dock's).
+    QualificationController *qualification();
+    const sites::SiteStore &siteStore() const { return siteStore_; }
     QDockWidget *dock(const QString &objectName) const;
     // The docks by short name ("settings" for settingsDock), for --show-dock.
     QStringList dockNames() const;
@@ -205,6 +211,8 @@ private:
     QWidget *makeSettings(ui::ReceiverSession &s);
     QWidget *makeSignalHistory(ui::ReceiverSession &s);
     QWidget *makeCompare(ui::ReceiverSession &s);
+    QWidget *makeQualification(ui::ReceiverSession &s);
+    void useSites(ui::AccuracyPanel *panel);
     void updateCompareReceivers();
     QWidget *makeLogTrack(ui::ReceiverSession &s);
     QWidget *makeLogSummary(ui::ReceiverSession &s);
@@ -236,6 +244,9 @@ private:
     int sessionsMade_ = 0;
     QHash<QDockWidget *, DockBinding> docks_;
     ui::CompareModel *compare_ = nullptr;
+    QualificationController *qualification_ = nullptr;
+    // The user's site list (references for the accuracy, shared with gnss-cli sites).
+    sites::SiteStore siteStore_;
     QHash<const ui::ReceiverSession *, QPointer<CorrectionsController>> corrections_;
     QHash<QRgb, QIcon> tabSwatches_; // one icon per colour: a tab's is compared by its key
     ConnectionBar *bar_ = nullptr;

@@ -3,11 +3,13 @@
 #include "gui/corrections_controller.h"
 #include "gui/log_viewer.h"
 #include "gui/main_window.h"
+#include "gui/qualification_controller.h"
 #include "logview/log_events_view.h"
 #include "logview/log_summary_view.h"
 #include "logview/whole_log_panels.h"
 #include "models/compare_model.h"
 #include "models/receiver_session.h"
+#include "qualify/accuracy_panel.h"
 #include "session/receiver_link.h"
 #include "settings/settings_view.h"
 #include "views/attitude_view.h"
@@ -34,6 +36,7 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTableView>
+#include <QTimer>
 
 namespace gnss::app {
 
@@ -57,8 +60,20 @@ void MainWindow::createDocks() {
             groupEnd.insert(group, d);
         }
     }
-    for (const DockRow &row : dockRows())
+    for (const DockRow &row : dockRows()) {
         if (row.front && !row.log) dock(dockObjectName(row))->raise();
+        if (!row.putAway) continue;
+        QDockWidget *d = dock(dockObjectName(row));
+        d->hide();
+        // Brought out (a campaign's form, table and plots), it gets room: the bottom row of a
+        // laptop's layout is a few lines tall.
+        connect(d, &QDockWidget::visibilityChanged, this, [this, d](bool visible) {
+            if (visible && !d->isFloating() && d->height() < height() * 0.35)
+                QTimer::singleShot(0, this, [this, d] {
+                    resizeDocks({d}, {int(height() * 0.42)}, Qt::Vertical);
+                });
+        });
+    }
 }
 
 QDockWidget *MainWindow::makeDock(const DockRow &row, const QString &objectName,
@@ -263,6 +278,45 @@ QWidget *MainWindow::makeCompare(ui::ReceiverSession &) {
     return view;
 }
 
+QualificationController *MainWindow::qualification() {
+    if (!qualification_) {
+        qualification_ = new QualificationController(
+                {[this] { return sessions_; }, [this] { return current_; }}, this);
+        qualification_->setDisplayPrefs(prefs_.display);
+        connect(this, &MainWindow::displayPrefsChanged, qualification_,
+                &QualificationController::setDisplayPrefs);
+        connect(qualification_, &QualificationController::message, this,
+                [this](const QString &m) { statusBar()->showMessage(m, 10000); });
+        for (ui::ReceiverSession *s : sessions_) qualification_->follow(s);
+    }
+    return qualification_;
+}
+
+void MainWindow::useSites(ui::AccuracyPanel *panel) {
+    panel->setSiteStore(&siteStore_);
+    connect(panel, &ui::AccuracyPanel::message, this,
+            [this](const QString &m) { statusBar()->showMessage(m, 10000); });
+}
+
+QWidget *MainWindow::makeQualification(ui::ReceiverSession &) {
+    auto *view = new ui::QualificationView(this);
+    qualification()->attach(view);
+    useSites(view->accuracy());
+    connect(this, &MainWindow::receiversChanged, view,
+            [this, view] { view->setReceiverCount(int(sessions_.size())); });
+    connect(view, &ui::QualificationView::reportRequested, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save the qualification report"),
+                                                          QStringLiteral("qualification.pdf"),
+                                                          tr("PDF (*.pdf);;HTML (*.html)"));
+        if (path.isEmpty()) return;
+        QString error;
+        const QStringList files = qualification_->writeReport(path, &error);
+        statusBar()->showMessage(
+                files.isEmpty() ? error : tr("Report written: %1").arg(files.join(", ")), 15000);
+    });
+    return view;
+}
+
 void MainWindow::updateCompareReceivers() {
     if (!compare_) return;
     QList<ui::CompareModel::Receiver> list;
@@ -317,6 +371,7 @@ QWidget *MainWindow::makeLogEvents(ui::ReceiverSession &) {
 QWidget *MainWindow::makeLogSummary(ui::ReceiverSession &) {
     auto *summary = new ui::LogSummaryView(logViewer_->cursor(), this);
     followDisplayPrefs(summary);
+    useSites(summary->accuracy());
     connect(summary, &ui::LogSummaryView::exportRequested, this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Save statistics"),
                                                           QStringLiteral("statistics.json"),

@@ -3,6 +3,7 @@
 #include "gui/connection_bar.h"
 #include "gui/log_viewer.h"
 #include "gui/main_window.h"
+#include "gui/qualification_controller.h"
 #include "gui/receivers_strip.h"
 #include "link/connection.h"
 #include "link/recording_name.h"
@@ -61,6 +62,7 @@ ui::ReceiverSession *MainWindow::newSession() {
         s->messages()->setTimeZone(p.time);
     });
     sessions_ << s;
+    if (qualification_) qualification_->follow(s);
     return s;
 }
 
@@ -334,11 +336,11 @@ void MainWindow::updateReceivers() {
                 parts << tr("%n error(s)", nullptr, int(c.checksumErrors + c.decodeErrors));
             if (c.skippedBytes >= 1024) // a line's worth at the start is not worth saying
                 parts << tr("%1 KiB skipped").arg(c.skippedBytes / 1024);
-            e.status = parts.join(QStringLiteral(" · "));
-        } else {
             if (c.rtcmFrames)
                 parts << tr("%n RTCM frame(s)", nullptr,
                             int(std::min<quint64>(c.rtcmFrames, INT_MAX)));
+            e.status = parts.join(QStringLiteral(" · "));
+        } else {
             e.status = lk->stateText();
             if (e.status.size() > 48) e.status = e.status.left(47) + QChar(0x2026);
         }

@@ -175,4 +175,60 @@ void AccuracyReport::writeJson(JsonWriter &w, const ReferencePoint &point) const
     w.endObject().endObject();
 }
 
+std::vector<double> Accuracy::horizontalErrors() const {
+    std::vector<double> out;
+    out.reserve(samples_.size());
+    for (const Sample &s : samples_) out.push_back(std::hypot(s.east, s.north));
+    return out;
+}
+
+bool PositionSet::add(const Epoch &e) {
+    if (e.fix == FixType::None || !e.lat || !e.lon) return false;
+    add(*e.lat, *e.lon, e.altEllipsoid(), e.fix);
+    return true;
+}
+
+void PositionSet::add(double latDeg, double lonDeg, std::optional<double> height, FixType fix) {
+    points_.push_back({latDeg, lonDeg, height, fix});
+}
+
+std::optional<ReferencePoint> PositionSet::mean() const {
+    if (points_.empty()) return std::nullopt;
+    // Averaged in ECEF, then back: right across the antimeridian as anywhere.
+    double x = 0, y = 0, z = 0, h = 0;
+    bool heights = true;
+    for (const Point &p : points_) {
+        const wgs84::Ecef e = wgs84::toEcef({p.lat, p.lon, p.height.value_or(0)});
+        x += e.x;
+        y += e.y;
+        z += e.z;
+        heights = heights && p.height;
+        h += p.height.value_or(0);
+    }
+    const double n = double(points_.size());
+    const auto g = wgs84::toGeodetic({x / n, y / n, z / n});
+    if (!g) return std::nullopt;
+    ReferencePoint r;
+    r.latDeg = g->latDeg;
+    r.lonDeg = g->lonDeg;
+    if (heights) r.height = h / n;
+    return r;
+}
+
+Accuracy PositionSet::against(const ReferencePoint &point) const {
+    Accuracy a(point);
+    for (const Point &p : points_) {
+        Epoch e;
+        e.fix = p.fix;
+        e.lat = p.lat;
+        e.lon = p.lon;
+        if (p.height) {
+            e.altMsl = *p.height;
+            e.geoidSep = 0.0;
+        }
+        a.add(e);
+    }
+    return a;
+}
+
 } // namespace gnss::compare

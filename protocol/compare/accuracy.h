@@ -65,6 +65,9 @@ public:
     bool add(const Epoch &e);
     AccuracyReport report() const;
     const ReferencePoint &point() const { return point_; }
+    // Every position's horizontal distance from the point, metres, in the order added (for a
+    // histogram or a plot over time).
+    std::vector<double> horizontalErrors() const;
 
 private:
     struct Sample {
@@ -75,6 +78,30 @@ private:
     ReferencePoint point_;
     double ecef_[3];
     std::vector<Sample> samples_;
+};
+
+// Positions kept to be measured later: against a point given then, or against their own mean
+// (the accuracy "of the period" when no reference is known). What the live and the log views use.
+class PositionSet {
+public:
+    // An epoch with a fix and a position is kept (true).
+    bool add(const Epoch &e);
+    // A position (degrees; height above the ellipsoid when known).
+    void add(double latDeg, double lonDeg, std::optional<double> height, FixType fix);
+    std::size_t size() const { return points_.size(); }
+    void clear() { points_.clear(); }
+    // Their mean (with a height when every position has one); nullopt when empty.
+    std::optional<ReferencePoint> mean() const;
+    // Every position measured against `point`.
+    Accuracy against(const ReferencePoint &point) const;
+
+private:
+    struct Point {
+        double lat, lon;
+        std::optional<double> height;
+        FixType fix;
+    };
+    std::vector<Point> points_;
 };
 
 } // namespace gnss::compare

@@ -59,7 +59,7 @@ TtffCampaign::TtffCampaign(link::Connection *connection, const Dialect *dialect,
     connect(connection_, &link::Connection::linkLost, this, [this] {
         if (phase_ == Phase::Running || phase_ == Phase::Restarting)
             endRun(RunOutcome::Lost);
-        else if (phase_ == Phase::Settling)
+        else if (phase_ == Phase::Settling || phase_ == Phase::Ready)
             --runIndex_;
         if (phase_ != Phase::Done && phase_ != Phase::Idle) {
             phase_ = Phase::WaitingForLink;
@@ -120,7 +120,27 @@ void TtffCampaign::nextRun() {
     phase_ = plan_.starts[startIndex_] == ReceiverAction::ColdStart ? Phase::Restarting
                                                                     : Phase::Settling;
     inPhase_.start();
-    if (phase_ == Phase::Restarting) restart();
+    if (phase_ == Phase::Restarting) restartOrWait();
+    say();
+}
+
+void TtffCampaign::restartOrWait() {
+    if (!barrier_) {
+        phase_ = Phase::Restarting;
+        restart();
+        return;
+    }
+    phase_ = Phase::Ready;
+    inPhase_.start();
+    say();
+    emit readyToRestart();
+}
+
+void TtffCampaign::go() {
+    if (phase_ != Phase::Ready) return;
+    phase_ = Phase::Restarting;
+    inPhase_.start();
+    restart();
     say();
 }
 
@@ -145,6 +165,7 @@ void TtffCampaign::onEpoch(const Epoch &e) {
     const bool fix3d = e.fix >= FixType::Fix3D && e.fix <= FixType::RtkFixed && e.lat && e.lon;
     if (fix3d && !fixNow_) fixHeld_.start();
     fixNow_ = fix3d;
+    emit epoch(e);
     if (phase_ != Phase::Running || !tracker_) return;
     tracker_->add(e, double(sinceCommand_.nsecsElapsed()) / 1e9);
     if (tracker_->fixed3d()) endRun(RunOutcome::Fixed);
@@ -168,10 +189,7 @@ void TtffCampaign::endRun(RunOutcome outcome) {
 void TtffCampaign::tick() {
     switch (phase_) {
     case Phase::Settling:
-        if (fixNow_ && fixHeld_.isValid() && fixHeld_.elapsed() >= plan_.holdMs) {
-            phase_ = Phase::Restarting;
-            restart();
-        }
+        if (fixNow_ && fixHeld_.isValid() && fixHeld_.elapsed() >= plan_.holdMs) restartOrWait();
         break;
     case Phase::Running:
         if (sinceCommand_.elapsed() >= plan_.timeoutMs) endRun(RunOutcome::TimedOut);
@@ -200,6 +218,7 @@ QString TtffCampaign::stateText() const {
                 .arg(run)
                 .arg(plan_.holdMs / 1000)
                 .arg(s, 0, 'f', 0);
+    case Phase::Ready: return tr("%1: waiting for the other receivers").arg(run);
     case Phase::Restarting: return tr("%1: restarting").arg(run);
     case Phase::Running:
         return tr("%1: waiting for a 3D fix, %2 s")

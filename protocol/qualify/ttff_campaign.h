@@ -17,6 +17,7 @@
 #include <vector>
 
 namespace gnss {
+struct Epoch;
 class EpochAssembler;
 struct SentenceEvent;
 namespace link {
@@ -46,6 +47,14 @@ public:
                  QObject *parent = nullptr);
     ~TtffCampaign() override;
 
+    // With several receivers the same restarts at the same time: each campaign, when it would
+    // restart, waits (readyToRestart()) until go() is called — the caller calls it on all once
+    // all are ready. Off by default (restarts as soon as each is ready).
+    void setBarrier(bool on) { barrier_ = on; }
+    bool readyToGo() const { return phase_ == Phase::Ready; }
+    bool waitingForLink() const { return phase_ == Phase::WaitingForLink; }
+    void go();
+
     void start();
     void cancel();
     bool running() const { return phase_ != Phase::Done; }
@@ -58,13 +67,18 @@ signals:
     void progress(const QString &text);
     void runFinished(const gnss::qualify::TtffRun &run);
     void finished(bool cancelled);
+    // Every epoch the receiver gives during the campaign (its positions between runs are what
+    // the accuracy against the reference is measured on).
+    void epoch(const gnss::Epoch &e);
+    void readyToRestart();
 
 private:
-    enum class Phase { Idle, Settling, Restarting, Running, Pausing, WaitingForLink, Done };
+    enum class Phase { Idle, Settling, Ready, Restarting, Running, Pausing, WaitingForLink, Done };
     void onSentence(const SentenceEvent &ev);
     void onEpoch(const Epoch &e);
     void nextRun();
     void restart();
+    void restartOrWait();
     void endRun(RunOutcome outcome);
     void tick();
     void say();
@@ -83,6 +97,7 @@ private:
     bool fixNow_ = false;
     QTimer tick_;
     bool cancelled_ = false;
+    bool barrier_ = false;
 };
 
 } // namespace gnss::qualify

@@ -6,6 +6,7 @@
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
 #include "common/app_transports.h"
+#include "compare/accuracy.h"
 #include "gui/log_player.h"
 #include "gui/log_viewer.h"
 #include "gui/main_window.h"
@@ -22,6 +23,8 @@
 #include "models/message_stats_model.h"
 #include "models/receiver_state_model.h"
 #include "models/satellite_model.h"
+#include "qualify/accuracy_panel.h"
+#include "qualify/qualify_plots.h"
 #include "raw_pty.h"
 #include "scenario_log.h"
 #include "tab_titles.h"
@@ -264,6 +267,30 @@ private slots:
         QCOMPARE(summary->valueOf("Epochs"), QString::number(b - a + 1));
         // Epochs 100..199 are RTK float (quality 5) in the scenario.
         QVERIFY(summary->valueOf("RTK float (availability)").startsWith("100.0 %"));
+        // The accuracy of the range against a typed point: what compare::Accuracy gives for
+        // the range's positions, and a histogram of each of them.
+        ui::AccuracyPanel *accuracy = summary->accuracy();
+        accuracy->setReferenceText("55.7512,37.6184");
+        std::string why;
+        compare::Accuracy expected(*compare::ReferencePoint::parse("55.7512,37.6184", why));
+        w->logViewer()->view()->withRecords([&, a = a, b = b](auto all) {
+            for (std::size_t i = a; i <= b; ++i) {
+                Epoch e;
+                e.fix = all[i].fixType();
+                if (all[i].hasPosition()) {
+                    e.lat = all[i].lat;
+                    e.lon = all[i].lon;
+                }
+                expected.add(e);
+            }
+        });
+        const compare::AccuracyReport r = expected.report();
+        QVERIFY(r.positions > 50);
+        QTRY_COMPARE(accuracy->histogram()->count(), r.positions);
+        QCOMPARE(accuracy->valueOf("CEP95"), ui::fmt::length(r.cep95, 3, ui::UnitSystem::Metric));
+        QCOMPARE(accuracy->valueOf("Bias north"),
+                 ui::fmt::length(r.biasNorth, 3, ui::UnitSystem::Metric));
+        QVERIFY(accuracy->valueOf("Within (all)").contains("5.00 m"));
         cursor->clearRange();
         QCOMPARE(summary->valueOf("Epochs"), QString("600"));
 

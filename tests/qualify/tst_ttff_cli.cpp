@@ -6,9 +6,12 @@
 #include "cli_run.h"
 #include "sim_process.h"
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -68,6 +71,71 @@ private slots:
         QCOMPARE(gnss::test::runCli({"ttff", "--sim", "nvs", "--start", "cold", "--runs", "0"})
                          .exitCode,
                  2);
+        // A limit or a report that cannot be: refused before the receiver is opened.
+        const Run limit = gnss::test::runCli(
+                {"ttff", "--sim", "nvs", "--start", "cold", "--limit", "cold:avg<=60"});
+        QCOMPARE(limit.exitCode, 2);
+        QVERIFY2(limit.err.contains("mean, median, p90, p95 or max"), why(limit));
+        const Run report = gnss::test::runCli(
+                {"ttff", "--sim", "nvs", "--start", "cold", "--report", "campaign.txt"});
+        QCOMPARE(report.exitCode, 2);
+        QVERIFY2(report.err.contains(".pdf or .html"), why(report));
+    }
+
+    // Limits held and reported (one met, one not: exit 1), and the report to hand over with its
+    // CSV and JSON beside it, made without a display; pdftotext reads the identity and the
+    // table back.
+    void limitsAndTheReport() {
+        SimProcess sim({"--dialect", "nemerix", "--baud", "115200", "--speed", "20", "--ttff",
+                        "cold=40:4"});
+        REQUIRE_SIM(sim);
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath("vt002.pdf");
+        const Run r = gnss::test::runCli({"ttff",
+                                          "--port",
+                                          sim.device,
+                                          "--baud",
+                                          "115200",
+                                          "--start",
+                                          "cold",
+                                          "--runs",
+                                          "2",
+                                          "--pause",
+                                          "0.2",
+                                          "--timeout",
+                                          "20",
+                                          "--limit",
+                                          "cold:mean<=60",
+                                          "--limit",
+                                          "cold:max<=0.5",
+                                          "--reference",
+                                          "55.7512,37.6184,167.1",
+                                          "--report",
+                                          pdf,
+                                          "--json"},
+                                         {}, 120000);
+        QVERIFY2(r.exitCode == 1, why(r)); // a limit not met
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        const QJsonArray limits = o["limits"].toArray();
+        QCOMPARE(limits.size(), 2);
+        QCOMPARE(limits[0].toObject()["pass"].toBool(), true);
+        QCOMPARE(limits[1].toObject()["pass"].toBool(), false);
+        QVERIFY(limits[1].toObject()["value_s"].toDouble() > 0.5);
+        QVERIFY2(o["reference"].toObject()["positions"].toInt() > 0, why(r));
+        for (const char *f : {"vt002.pdf", "vt002.csv", "vt002.json"})
+            QVERIFY2(QFile::exists(dir.filePath(f)), f);
+        QFile csv(dir.filePath("vt002.csv"));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        QCOMPARE(csv.readAll().count('\n'), 3); // the header and a row per run
+        const QString pdftotext = QStandardPaths::findExecutable("pdftotext");
+        if (pdftotext.isEmpty()) QSKIP("pdftotext (poppler-utils) is not installed");
+        QProcess p;
+        p.start(pdftotext, {"-layout", pdf, "-"});
+        QVERIFY(p.waitForFinished(20000));
+        const QString text = QString::fromUtf8(p.readAllStandardOutput());
+        QVERIFY2(text.contains("VT002") && text.contains(sim.device), qPrintable(text.left(1500)));
+        QVERIFY(text.contains("Median") && text.contains("cold"));
+        QVERIFY(text.contains("Limits"));
     }
 
     // Unplugged in the middle of the first run (the line drops 100 simulated seconds after the

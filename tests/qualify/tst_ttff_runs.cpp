@@ -3,6 +3,7 @@
 // the first 3D fix), and a campaign's statistics per kind of start with its JSON.
 #include "core/json_writer.h"
 #include "core/wgs84.h"
+#include "qualify/limits.h"
 #include "qualify/ttff.h"
 #include "state/epoch.h"
 
@@ -112,6 +113,100 @@ private slots:
         QCOMPARE(o["runs"].toArray().size(), 12);
         QCOMPARE(o["runs"].toArray()[10].toObject()["outcome"].toString(), QString("timeout"));
         QCOMPARE(o["runs"].toArray()[0].toObject()["ttff_s"].toDouble(), 31.0);
+    }
+
+    // A limit as the user types it, and what is refused with the reason.
+    void limitsAreParsed_data() {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("canonical"); // empty: refused
+        QTest::addColumn<QString>("why");       // part of the refusal
+        QTest::newRow("mean") << "cold:mean<=60"
+                              << "cold:mean<=60"
+                              << "";
+        QTest::newRow("spaces, seconds") << " hot p95 <= 12.5 s"
+                                         << "hot:p95<=12.5"
+                                         << "";
+        QTest::newRow("sign") << "warm:max≤40"
+                              << "warm:max<=40"
+                              << "";
+        QTest::newRow("median") << "warm:median<=38"
+                                << "warm:median<=38"
+                                << "";
+        QTest::newRow("p90") << "cold:p90<=90"
+                             << "cold:p90<=90"
+                             << "";
+        QTest::newRow("no operator") << "cold:mean=60"
+                                     << ""
+                                     << "no <=";
+        QTest::newRow("start") << "lukewarm:mean<=60"
+                               << ""
+                               << "cold, warm or hot";
+        QTest::newRow("statistic") << "cold:avg<=60"
+                                   << ""
+                                   << "mean, median";
+        QTest::newRow("no statistic") << "cold<=60"
+                                      << ""
+                                      << "no statistic";
+        QTest::newRow("number") << "cold:mean<=sixty"
+                                << ""
+                                << "positive number";
+        QTest::newRow("zero") << "cold:mean<=0"
+                              << ""
+                              << "positive number";
+    }
+    void limitsAreParsed() {
+        QFETCH(QString, text);
+        QFETCH(QString, canonical);
+        QFETCH(QString, why);
+        std::string reason;
+        const auto l = Limit::parse(text.toStdString(), reason);
+        if (canonical.isEmpty()) {
+            QVERIFY(!l);
+            QVERIFY2(QString::fromStdString(reason).contains(why), reason.c_str());
+            QVERIFY(QString::fromStdString(reason).contains("cold:mean<=60")); // the example
+        } else {
+            QVERIFY2(l, reason.c_str());
+            QCOMPARE(QString::fromStdString(l->text()), canonical);
+        }
+    }
+
+    // Each limit against its kind's statistic; a kind without a fixed run fails.
+    void limitsAreChecked() {
+        std::vector<TtffRun> runs;
+        for (int i = 0; i < 4; ++i)
+            runs.push_back(fixedRun(ReceiverAction::ColdStart, i + 1, 50.0 + i * 10)); // 50..80
+        TtffRun timeout;
+        timeout.start = ReceiverAction::WarmStart;
+        runs.push_back(timeout);
+        std::string why;
+        const std::vector<Limit> limits = {
+                *Limit::parse("cold:mean<=65", why), *Limit::parse("cold:max<=70", why),
+                *Limit::parse("cold:median<=65", why), *Limit::parse("warm:mean<=40", why),
+                *Limit::parse("hot:mean<=10", why)};
+        const auto r = checkLimits(limits, runs);
+        QCOMPARE(r.size(), std::size_t(5));
+        QCOMPARE(*r[0].value, 65.0);
+        QVERIFY(r[0].pass); // equal is within
+        QCOMPARE(*r[1].value, 80.0);
+        QVERIFY(!r[1].pass);
+        QCOMPARE(*r[2].value, 65.0);
+        QVERIFY(r[2].pass);
+        QVERIFY(!r[3].value && !r[3].pass); // no warm run fixed
+        QVERIFY(!r[4].value && !r[4].pass); // no hot run at all
+        std::string out;
+        JsonWriter w(out);
+        w.beginObject();
+        writeLimitsJson(w, r);
+        w.endObject();
+        const QJsonArray a = QJsonDocument::fromJson(QByteArray::fromStdString(out))
+                                     .object()
+                                     .value("limits")
+                                     .toArray();
+        QCOMPARE(a.size(), 5);
+        QCOMPARE(a[1].toObject().value("limit").toString(), QString("cold:max<=70"));
+        QCOMPARE(a[1].toObject().value("value_s").toDouble(), 80.0);
+        QCOMPARE(a[1].toObject().value("pass").toBool(), false);
+        QVERIFY(a[3].toObject().value("value_s").isNull());
     }
 };
 

@@ -1,6 +1,7 @@
 #include "logview/log_summary_view.h"
 #include "widgets/read_only_table.h"
 
+#include "qualify/accuracy_panel.h"
 #include "style/gnss_style.h"
 
 #include <QCheckBox>
@@ -9,7 +10,9 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QTableWidget>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace gnss::ui {
@@ -41,10 +44,23 @@ LogSummaryView::LogSummaryView(LogCursor *cursor, QWidget *parent)
     save->setObjectName("exportSummary");
     row->addWidget(save);
     layout->addLayout(row);
-    table_ = readOnlyTable(2, "summaryTable", this);
+    // Tabs, not a split: the dock stays as short as the sky plot's group allows on a laptop.
+    auto *tabs = new QTabWidget(this);
+    tabs->setObjectName("summaryTabs");
+    table_ = readOnlyTable(2, "summaryTable", tabs);
     table_->horizontalHeader()->hide();
     table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    layout->addWidget(table_, 1);
+    accuracy_ = new AccuracyPanel(tabs);
+    accuracy_->setObjectName("logAccuracy");
+    accuracy_->setOrientation(Qt::Vertical);
+    tabs->addTab(table_, tr("Range"));
+    tabs->addTab(accuracy_, tr("Accuracy"));
+    layout->addWidget(tabs, 1);
+    accuracyLater_ = new QTimer(this);
+    accuracyLater_->setSingleShot(true);
+    accuracyLater_->setInterval(200);
+    connect(accuracyLater_, &QTimer::timeout, this, &LogSummaryView::reloadAccuracy);
+    connect(accuracy_, &AccuracyPanel::referenceChanged, this, &LogSummaryView::reloadAccuracy);
     connect(stationary_, &QCheckBox::toggled, this, &LogSummaryView::reload);
     connect(save, &QPushButton::clicked, this, &LogSummaryView::exportRequested);
     connect(cursor_, &LogCursor::indexChanged, this, &LogSummaryView::reload);
@@ -58,7 +74,25 @@ bool LogSummaryView::stationaryOnly() const {
 
 void LogSummaryView::setDisplayPrefs(const DisplayPrefs &prefs) {
     prefs_ = prefs;
+    accuracy_->setUnits(prefs.units);
     reload();
+}
+
+void LogSummaryView::reloadAccuracy() {
+    compare::PositionSet positions;
+    const logview::LogView *log = cursor_->log();
+    if (log && !cursor_->empty()) {
+        const auto [first, last] = cursor_->selection();
+        log->withRecords(
+                [&, first = first, last = last](std::span<const logview::EpochRecord> all) {
+                    for (std::size_t i = first; i <= last && i < all.size(); ++i) {
+                        const logview::EpochRecord &r = all[i];
+                        if (r.hasPosition() && r.fixType() != FixType::None)
+                            positions.add(r.lat, r.lon, std::nullopt, r.fixType());
+                    }
+                });
+    }
+    accuracy_->show(positions);
 }
 
 QString LogSummaryView::valueOf(const QString &name) const {
@@ -82,10 +116,12 @@ void LogSummaryView::reload() {
     if (!log || cursor_->empty()) {
         stats_ = {};
         title_->setText(log ? tr("Indexing…") : tr("No log open"));
+        accuracyLater_->start();
         return;
     }
     const auto [first, last] = cursor_->selection();
     stats_ = log->stats(first, last, stationary_->isChecked());
+    accuracyLater_->start();
     const auto a = log->epoch(first), b = log->epoch(last);
     title_->setText((cursor_->hasRange() ? tr("Selected range: epochs %1 to %2")
                                          : tr("Whole log: epochs %1 to %2"))
