@@ -5676,8 +5676,8 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+3"/>
-        <source>Data but never a valid sentence at %1 baud: wrong framing (data bits, parity, stop bits) or the receiver is not sending NMEA?</source>
-        <translation>Данные есть, но ни одного корректного сообщения на скоростях %1 бод: неверный формат кадра (биты данных, чётность, стоповые биты) или приёмник не передаёт NMEA?</translation>
+        <source>Data but never a valid sentence or RTCM 3 frame at %1 baud: wrong framing (data bits, parity, stop bits) or the receiver is not sending NMEA or RTCM?</source>
+        <translation>Данные есть, но ни одного верного предложения или кадра RTCM 3 на скоростях %1 бод: неверный формат кадра (биты данных, чётность, стоповые биты) или приёмник не передаёт NMEA или RTCM?</translation>
     </message>
 </context>
 <context>
@@ -5917,6 +5917,11 @@ Serial number: %3</source>
         <location filename="../protocol/link/link_opener.cpp" line="+19"/>
         <source>%1 (valid NMEA)</source>
         <translation>%1 (корректный NMEA)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (valid RTCM 3)</source>
+        <translation>%1 (верный RTCM 3)</translation>
     </message>
     <message>
         <location line="+1"/>

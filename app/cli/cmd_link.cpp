@@ -176,6 +176,7 @@ void writeBaudTries(JsonWriter &w, const link::BaudDetection &d) {
                 .field("bytes", static_cast<std::int64_t>(a.bytes))
                 .field("valid", a.validSentences)
                 .field("invalid", a.badSentences)
+                .field("rtcm_frames", a.rtcmFrames)
                 .endObject();
     w.endArray();
 }

@@ -38,6 +38,7 @@ void BaudDetector::start() {
     bytesConnection_ = connect(transport_, &Transport::bytesReceived, this, &BaudDetector::onBytes);
     eventConnection_ =
             connect(stream_, &SentenceStream::sentenceDecoded, this, &BaudDetector::onEvent);
+    frameConnection_ = connect(stream_, &SentenceStream::rtcmFrame, this, &BaudDetector::onFrame);
     tryNext();
 }
 
@@ -89,6 +90,17 @@ void BaudDetector::onEvent(const SentenceEvent &event) {
     }
 }
 
+void BaudDetector::onFrame() {
+    // A frame's CRC-24Q at a wrong speed is as unlikely as a sentence's checksum: as good.
+    if (!running_ || !listening_ || result_.tried.empty()) return;
+    BaudAttempt &a = result_.tried.back();
+    if (++a.rtcmFrames >= required_) {
+        timer_.stop();
+        result_.baud = a.baud;
+        done(true);
+    }
+}
+
 void BaudDetector::rateDone() {
     tryNext();
 }
@@ -99,6 +111,7 @@ void BaudDetector::done(bool found) {
     timer_.stop();
     disconnect(bytesConnection_);
     disconnect(eventConnection_);
+    disconnect(frameConnection_);
     result_.found = found;
     if (!found && result_.error.isEmpty()) {
         QStringList rates;
@@ -113,8 +126,9 @@ void BaudDetector::done(bool found) {
                         ? tr("No data at any rate (tried %1 baud): check the cable, the port and "
                              "that the receiver is powered")
                                   .arg(list)
-                        : tr("Data but never a valid sentence at %1 baud: wrong framing (data "
-                             "bits, parity, stop bits) or the receiver is not sending NMEA?")
+                        : tr("Data but never a valid sentence or RTCM 3 frame at %1 baud: wrong "
+                             "framing (data bits, parity, stop bits) or the receiver is not "
+                             "sending NMEA or RTCM?")
                                   .arg(list);
         // Leave the port where it started.
         if (transport_ && !result_.tried.empty()) transport_->setBaud(result_.tried.front().baud);

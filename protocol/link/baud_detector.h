@@ -1,7 +1,8 @@
 #pragma once
 // BaudDetector: finds the speed a receiver talks at. Tries the likely rates (the current one
-// first, then the receivers' usual defaults), listens at each for checksum-valid sentences, and
-// settles on the first that gives them. When none does it says which rates it tried and what it
+// first, then the receivers' usual defaults), listens at each for checksum-valid sentences or
+// CRC-valid RTCM 3 frames (a port that carries a base's corrections only), and settles on the
+// first that gives them. When none does it says which rates it tried and what it
 // saw, so the user knows whether to check the cable (nothing at all) or the framing/protocol
 // (bytes, but never a valid sentence).
 #include "core/stream_decoder.h"
@@ -24,6 +25,7 @@ struct BaudAttempt {
     qint64 bytes = 0;
     int validSentences = 0;
     int badSentences = 0; // framed, but checksum wrong or missing
+    int rtcmFrames = 0;   // RTCM 3 frames with a good CRC
 };
 
 struct BaudDetection {
@@ -46,7 +48,7 @@ public:
     void setCandidates(QList<int> rates) { candidates_ = std::move(rates); }
     // How long to listen at each rate (a 1 Hz receiver needs a bit over a second).
     void setListenMs(int ms) { listenMs_ = ms; }
-    // Valid sentences needed to settle on a rate.
+    // Valid sentences (or RTCM frames) needed to settle on a rate.
     void setRequiredSentences(int n) { required_ = n; }
     // Sent at each rate, for receivers that only speak when asked (empty: listen only).
     void setProbe(const QByteArray &sentence) { probe_ = sentence; }
@@ -64,6 +66,7 @@ private:
     void tryNext();
     void onBytes(const QByteArray &bytes);
     void onEvent(const SentenceEvent &event);
+    void onFrame();
     void rateDone();
     void done(bool found);
 
@@ -79,7 +82,7 @@ private:
     bool listening_ = false;
     BaudDetection result_;
     QTimer timer_;
-    QMetaObject::Connection bytesConnection_, eventConnection_;
+    QMetaObject::Connection bytesConnection_, eventConnection_, frameConnection_;
 };
 
 } // namespace gnss::link

@@ -17,6 +17,7 @@ LinkOpener::~LinkOpener() {
 
 QString LinkOpener::attemptText(const BaudAttempt &a) {
     if (a.validSentences > 0) return tr("%1 (valid NMEA)").arg(a.baud);
+    if (a.rtcmFrames > 0) return tr("%1 (valid RTCM 3)").arg(a.baud);
     if (a.bytes == 0) return tr("%1 (no data)").arg(a.baud);
     return tr("%1 (data, no valid sentence)").arg(a.baud);
 }

@@ -8,6 +8,10 @@ SentenceStream::SentenceStream(Transport *transport, const DialectRegistry &regi
                                DecoderOptions options, QObject *parent)
     : QObject(parent), transport_(transport), decoder_(registry, std::move(options)) {
     announced_ = decoder_.dialect();
+    decoder_.setFrameHandler([this](const rtcm::RtcmFrame &f) {
+        emit rtcmFrame(f.messageNumber(), QByteArray(reinterpret_cast<const char *>(f.bytes.data()),
+                                                     qsizetype(f.bytes.size())));
+    });
     if (transport) connect(transport, &Transport::bytesReceived, this, &SentenceStream::feed);
 }
 

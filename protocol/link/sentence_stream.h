@@ -1,8 +1,9 @@
 #pragma once
 // SentenceStream: the one decoder of a link. The transport's bytes are framed and decoded here
-// once, and every sentence (decoded, or with the reason it was not) is published to whoever
-// listens: the command queue, the baud and vendor detectors, the settings engine, the views'
-// session, the command line. Byte, sentence and error counts come from here only.
+// once (NMEA, and RTCM 3 frames beside it), and every sentence (decoded, or with the reason it was
+// not) is published to whoever listens: the command queue, the baud and vendor detectors, the
+// settings engine, the views' session, the command line. Byte, sentence and error counts come from
+// here only.
 //
 // A SentenceEvent refers to the line and the message only during the signal; listeners that
 // keep something copy it. Connections must be direct (the default within one thread).
@@ -43,6 +44,9 @@ signals:
     void sentenceDecoded(const gnss::SentenceEvent &event);
     // The dialect in force changed (detected, forced, or back to unknown).
     void dialectChanged(const gnss::Dialect *dialect);
+    // An RTCM 3 frame with a good CRC in the same bytes (a base that interleaves them, or a port
+    // that carries RTCM only): its message number and the whole frame.
+    void rtcmFrame(unsigned messageNumber, const QByteArray &frame);
 
 private:
     void announceDialect();

@@ -1,9 +1,11 @@
 // BaudDetector against a fake line that talks only at one speed (garbage at the others): settles
-// on that speed, and says "no data" or "wrong framing?" when no speed works.
+// on that speed — found by its sentences, or by its RTCM 3 frames on a port that carries only
+// corrections — and says "no data" or "wrong framing?" when no speed works.
 #include "core/sentence_builder.h"
 #include "fake_transport.h"
 #include "link/baud_detector.h"
 #include "rate_rows.h"
+#include "rtcm/rtcm_encoder.h"
 #include "run_to_finish.h"
 
 #include <QTest>
@@ -15,13 +17,27 @@ using gnss::link::test::FakeTransport;
 
 namespace {
 
-// Feeds the transport every 50 ms: a valid GGA at `rightBaud`, line noise at other speeds.
+// An RTCM 3 station message (1005), a base's corrections port's usual content.
+QByteArray stationFrame() {
+    rtcm::StationArp a;
+    a.station = 7;
+    a.gps = true;
+    a.x = 2846000.1;
+    a.y = 2190000.5;
+    a.z = 5249000.9;
+    return QByteArray::fromStdString(rtcm::encodeStationArp(a));
+}
+
+// Feeds the transport every 50 ms: a valid GGA (or, `rtcm`, an RTCM 3 frame) at `rightBaud`,
+// line noise at other speeds.
 class FakeReceiver {
 public:
-    FakeReceiver(FakeTransport &t, int rightBaud, bool silent = false) : t_(t) {
-        QObject::connect(&timer_, &QTimer::timeout, [this, rightBaud, silent] {
+    FakeReceiver(FakeTransport &t, int rightBaud, bool silent = false, bool rtcm = false) : t_(t) {
+        QObject::connect(&timer_, &QTimer::timeout, [this, rightBaud, silent, rtcm] {
             if (silent) return;
-            if (t_.baud() == rightBaud)
+            if (t_.baud() == rightBaud && rtcm)
+                t_.feed(stationFrame());
+            else if (t_.baud() == rightBaud)
                 t_.feed(QByteArray::fromStdString(
                                 buildSentence("GPGGA,100000.00,5540.0000,N,03730.0000,E,1,08,"
                                               "0.9,150.0,M,14.0,M,,")) +
@@ -46,8 +62,9 @@ struct Detection {
     SentenceStream stream{&link, gnss::test::builtinRegistry()};
     BaudDetector d{&stream};
 
-    Detection(int rightBaud, bool silent, const QList<int> &candidates, int listenMs)
-        : rx(openedFirst(link), rightBaud, silent) {
+    Detection(int rightBaud, bool silent, const QList<int> &candidates, int listenMs,
+              bool rtcm = false)
+        : rx(openedFirst(link), rightBaud, silent, rtcm) {
         if (!candidates.isEmpty()) d.setCandidates(candidates);
         d.setListenMs(listenMs);
     }
@@ -77,6 +94,19 @@ private slots:
         QCOMPARE(d.result().baud, rate);
         QCOMPARE(link.baud(), rate);
         QCOMPARE(d.result().tried.front().baud, 9600); // the current rate first
+    }
+
+    // A port that carries RTCM 3 only (a base's COM2): found by its CRC-valid frames.
+    void anRtcmOnlyPortIsFoundByItsFrames_data() { gnss::link::test::everyRateRows(); }
+    void anRtcmOnlyPortIsFoundByItsFrames() {
+        QFETCH(int, rate);
+        Detection detection(rate, false, {}, 200, true);
+        QVERIFY(detection.run(10000));
+        const BaudDetector &d = detection.d;
+        QVERIFY2(d.result().found, qPrintable(d.result().error));
+        QCOMPARE(d.result().baud, rate);
+        QCOMPARE(d.result().tried.back().validSentences, 0);
+        QVERIFY(d.result().tried.back().rtcmFrames >= 2);
     }
 
     void silenceSaysNoDataAtAnyRate() {
