@@ -22,6 +22,7 @@ class QLabel;
 class QSettings;
 class QDockWidget;
 class QToolBar;
+class QTabBar;
 class QMenu;
 class QThread;
 
@@ -184,6 +185,7 @@ private:
     static bool holdsWork(const QWidget *view);
     // Puts each dock's receiver colour on its tab (Qt's dock tabs show no icon of their own).
     void colourDockTabs();
+    void keepTabsWhole(QTabBar *bar);
     void saveReceivers();
     QList<SourceSpec> restoreReceivers();
     void restoreDocksOfReceivers();

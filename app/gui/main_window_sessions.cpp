@@ -305,6 +305,27 @@ void MainWindow::colourDockTabs() {
             }
             if (bar->tabIcon(i).cacheKey() != icon.cacheKey()) bar->setTabIcon(i, icon);
         }
+        keepTabsWhole(bar);
+    }
+}
+
+void MainWindow::keepTabsWhole(QTabBar *bar) {
+    // A group's docks are at least as wide as its tabs' whole titles (Russian ones are long;
+    // the layout would otherwise give the room to the centre and cut them to "Реш…"), up to
+    // 45 % of the window, so that the groups together still fit a laptop.
+    const QFontMetrics fm(bar->font());
+    int needed = 0;
+    for (int i = 0; i < bar->count(); ++i)
+        needed += fm.horizontalAdvance(bar->tabText(i)) + fm.height() * 2 +
+                  (bar->tabIcon(i).isNull() ? 0 : bar->iconSize().width() + 4);
+    needed = std::min(needed, width() * 45 / 100);
+    for (auto it = docks_.cbegin(); it != docks_.cend(); ++it) {
+        QDockWidget *d = it.key();
+        for (int i = 0; i < bar->count(); ++i)
+            if (bar->tabText(i) == d->windowTitle() && d->minimumWidth() != needed) {
+                d->setMinimumWidth(needed);
+                break;
+            }
     }
 }
 
