@@ -4775,7 +4775,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+214"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+236"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
@@ -4817,7 +4817,7 @@ Serial number: %3</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_sessions.cpp" line="-163"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="-185"/>
         <source>%1 keeps what was begun for %2: pinned to it</source>
         <translation>%1 сохраняет начатое для %2: закреплено за ним</translation>
     </message>
@@ -4852,7 +4852,7 @@ Serial number: %3</source>
         <translation>%1 · №%2</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+70"/>
         <source>Silent for %1 s</source>
         <translation>Молчит %1 с</translation>
     </message>
@@ -4890,7 +4890,7 @@ Serial number: %3</source>
         </translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>No data</source>
         <translation>Нет данных</translation>
     </message>
@@ -5665,12 +5665,12 @@ Serial number: %3</source>
         <translation>Для определения скорости нужен открытый последовательный порт</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Baud detection cancelled</source>
         <translation>Определение скорости отменено</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+79"/>
         <source>No data at any rate (tried %1 baud): check the cable, the port and that the receiver is powered</source>
         <translation>Нет данных ни на одной скорости (проверено: %1 бод): проверьте кабель, порт и питание приёмника</translation>
     </message>
@@ -6126,7 +6126,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+7"/>
-        <location filename="../protocol/qualify/report.cpp" line="+374"/>
+        <location filename="../protocol/qualify/report.cpp" line="+387"/>
         <source>No run has fixed yet</source>
         <translation>Ещё ни один запуск не дал решения</translation>
     </message>
@@ -6137,11 +6137,27 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+89"/>
         <source>No positions</source>
         <translation>Нет координат</translation>
     </message>
     <message>
-        <location filename="../protocol/qualify/report.cpp" line="-293"/>
+        <location line="-13"/>
+        <source>Epoch</source>
+        <translation>Эпоха</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>horizontal</source>
+        <translation>горизонталь</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>vertical</source>
+        <translation>вертикаль</translation>
+    </message>
+    <message>
+        <location filename="../protocol/qualify/report.cpp" line="-306"/>
         <source>%1 h %2 min %3 s</source>
         <translation>%1 ч %2 мин %3 с</translation>
     </message>
@@ -6152,14 +6168,14 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+229"/>
+        <location line="+242"/>
         <location line="+1"/>
         <location line="+100"/>
         <source>%1 s</source>
         <translation>%1 с</translation>
     </message>
     <message>
-        <location line="-325"/>
+        <location line="-338"/>
         <source>fixed</source>
         <translation>решение</translation>
     </message>
@@ -6185,19 +6201,19 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+293"/>
+        <location line="+306"/>
         <source>P90</source>
         <translation>P90</translation>
     </message>
     <message>
-        <location line="-292"/>
-        <location line="+234"/>
+        <location line="-305"/>
+        <location line="+247"/>
         <location line="+58"/>
         <source>P95</source>
         <translation>P95</translation>
     </message>
     <message>
-        <location line="-291"/>
+        <location line="-304"/>
         <source>max</source>
         <translation>макс.</translation>
     </message>
@@ -6213,35 +6229,35 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+373"/>
+        <location line="+390"/>
         <source>2D</source>
         <translation>2D</translation>
     </message>
     <message>
-        <location line="-372"/>
+        <location line="-389"/>
         <source>3D</source>
         <translation>3D</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+372"/>
+        <location line="+389"/>
         <source>DGNSS</source>
         <translation>DGNSS</translation>
     </message>
     <message>
-        <location line="-371"/>
-        <location line="+371"/>
+        <location line="-388"/>
+        <location line="+388"/>
         <source>RTK float</source>
         <translation>RTK float</translation>
     </message>
     <message>
-        <location line="-370"/>
-        <location line="+370"/>
+        <location line="-387"/>
+        <location line="+387"/>
         <source>RTK fixed</source>
         <translation>RTK fixed</translation>
     </message>
     <message>
-        <location line="-369"/>
+        <location line="-386"/>
         <source>Manual</source>
         <translation>Заданная позиция</translation>
     </message>
@@ -6251,13 +6267,13 @@ Serial number: %3</source>
         <translation>Симулятор</translation>
     </message>
     <message>
-        <location line="+149"/>
-        <location line="+260"/>
+        <location line="+162"/>
+        <location line="+264"/>
         <source>Receiver qualification report</source>
         <translation>Отчёт о квалификации приёмника</translation>
     </message>
     <message>
-        <location line="-238"/>
+        <location line="-242"/>
         <source>Generated %1 by GNSS Workbench</source>
         <translation>Создан %1 программой GNSS Workbench</translation>
     </message>
@@ -6344,26 +6360,26 @@ Serial number: %3</source>
     <message>
         <location line="+1"/>
         <location line="+21"/>
-        <location line="+128"/>
+        <location line="+132"/>
         <source>Receiver</source>
         <translation>Приёмник</translation>
     </message>
     <message>
-        <location line="-149"/>
+        <location line="-153"/>
         <location line="+58"/>
-        <location line="+92"/>
+        <location line="+96"/>
         <source>Start</source>
         <translation>Старт</translation>
     </message>
     <message>
-        <location line="-150"/>
+        <location line="-154"/>
         <location line="+58"/>
-        <location line="+85"/>
+        <location line="+89"/>
         <source>Runs</source>
         <translation>Запуски</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-147"/>
         <location line="+58"/>
         <source>Fixed</source>
         <translation>С решением</translation>
@@ -6442,12 +6458,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+121"/>
+        <location line="+125"/>
         <source>No runs</source>
         <translation>Нет запусков</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-122"/>
         <source>Seconds from the restart to the first 3D fix, of the runs that fixed.</source>
         <translation>Секунды от перезапуска до первого 3D-решения, по запускам с решением.</translation>
     </message>
@@ -6525,6 +6541,11 @@ Serial number: %3</source>
         <location line="+7"/>
         <source>Accuracy against the reference point</source>
         <translation>Точность относительно опорной точки</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Accuracy about the mean position (no reference point)</source>
+        <translation>Точность относительно средней позиции (опорной точки нет)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -6627,6 +6648,11 @@ Serial number: %3</source>
         <translation>Горизонтальная ошибка: %1 (гистограмма)</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Horizontal and vertical error of %1 over time</source>
+        <translation>Горизонтальная и вертикальная ошибки: %1 во времени</translation>
+    </message>
+    <message>
         <location line="+7"/>
         <source>Seconds from the restart to the first fix of each kind; the satellites used and the distance from the reference point at the first 3D fix.</source>
         <translation>Секунды от перезапуска до первого решения каждого вида; спутники в решении и расстояние от опорной точки при первом 3D-решении.</translation>
@@ -6697,7 +6723,7 @@ Serial number: %3</source>
         <translation>нет</translation>
     </message>
     <message numerus="yes">
-        <location line="+170"/>
+        <location line="+169"/>
         <source>Cancelled after %n run(s)</source>
         <translation>
             <numerusform>Отменено после %n прогона</numerusform>
@@ -6906,7 +6932,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::AccuracyPanel</name>
     <message>
-        <location filename="../ui/qualify/accuracy_panel.cpp" line="+29"/>
+        <location filename="../ui/qualify/accuracy_panel.cpp" line="+31"/>
         <source>LAT,LON[,HEIGHT] — empty: the mean of the positions</source>
         <translation>ШИР,ДОЛ[,ВЫСОТА] — пусто: среднее координат</translation>
     </message>
@@ -6916,53 +6942,48 @@ Serial number: %3</source>
         <translation>Известная точка в градусах и, для вертикальной ошибки, её высота над эллипсоидом в метрах: 55.7522,37.6156,180.2</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Site</source>
-        <translation>Пункт</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Use a site of your site list as the reference</source>
-        <translation>Взять опорную точку из списка пунктов</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Save as site…</source>
-        <translation>Сохранить как пункт…</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Keep the mean of these positions in your site list (a survey-in by the workbench)</source>
-        <translation>Сохранить среднее этих координат в списке пунктов (осреднение программой)</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+15"/>
         <source>Reference:</source>
         <translation>Опорная точка:</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+62"/>
+        <location line="+84"/>
         <source>No site list</source>
         <translation>Нет списка пунктов</translation>
     </message>
     <message>
-        <location line="-58"/>
-        <source>No sites yet (gnss-cli sites add, or Save as site)</source>
-        <translation>Пунктов пока нет (gnss-cli sites add или «Сохранить как пункт»)</translation>
+        <location line="-100"/>
+        <source>Sites</source>
+        <translation>Пункты</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+1"/>
+        <source>Use a site of your site list as the reference, or keep the mean of these positions as a site (a survey-in by the workbench)</source>
+        <translation>Взять опорную точку из списка пунктов или сохранить среднее этих координат как пункт (осреднение программой)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>No sites yet (gnss-cli sites add, or save the mean below)</source>
+        <translation>Пунктов пока нет (gnss-cli sites add или сохраните среднее ниже)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Save the mean as a site…</source>
+        <translation>Сохранить среднее как пункт…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Save as site</source>
         <translation>Сохранить как пункт</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Site name:</source>
         <translation>Имя пункта:</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Statistic</source>
         <translation>Показатель</translation>
     </message>
@@ -6972,7 +6993,22 @@ Serial number: %3</source>
         <translation>Значение</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>Histogram</source>
+        <translation>Гистограмма</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Over time</source>
+        <translation>Во времени</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The horizontal error&apos;s histogram, or the horizontal and vertical errors epoch by epoch</source>
+        <translation>Гистограмма горизонтальной ошибки или горизонтальная и вертикальная ошибки по эпохам</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>No site named %1</source>
         <translation>Нет пункта %1</translation>
     </message>
@@ -6992,7 +7028,7 @@ Serial number: %3</source>
         <translation>Пункт %1 уже есть в списке</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Saved the mean of %1 positions as the site %2</source>
         <translation>Среднее %1 координат сохранено как пункт %2</translation>
     </message>
@@ -7002,7 +7038,7 @@ Serial number: %3</source>
         <translation>Координаты</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source>The reference is not a point: %1</source>
         <translation>Опорная точка задана неверно: %1</translation>
     </message>
@@ -8695,13 +8731,13 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+34"/>
+        <location line="+35"/>
         <location line="+9"/>
         <source>Start</source>
         <translation>Старт</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-43"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
@@ -8716,9 +8752,9 @@ Serial number: %3</source>
         <translation>Испытаний ещё не было.</translation>
     </message>
     <message>
-        <location line="+69"/>
-        <source>%v of %m runs</source>
-        <translation>%v из %m запусков</translation>
+        <location line="+70"/>
+        <source>Runs done of the campaign&apos;s runs</source>
+        <translation>Выполнено запусков из всех запусков серии</translation>
     </message>
     <message>
         <location line="+4"/>

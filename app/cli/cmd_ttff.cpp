@@ -198,12 +198,12 @@ int cmdTtff(const CliContext &ctx) {
         receiver.settings = readSettings(*conn, dialect);
     }
     const QDateTime started = QDateTime::currentDateTimeUtc();
-    std::optional<compare::Accuracy> accuracy;
-    if (reference) accuracy.emplace(*reference);
+    // The positions between runs: the accuracy against the reference (or, in the report, their
+    // own mean) and the location the report names.
+    compare::PositionSet positions;
     qualify::TtffCampaign campaign(conn.get(), dialect, plan);
-    QObject::connect(&campaign, &qualify::TtffCampaign::epoch, [&](const Epoch &e) {
-        if (accuracy) accuracy->add(e);
-    });
+    QObject::connect(&campaign, &qualify::TtffCampaign::epoch,
+                     [&](const Epoch &e) { positions.add(e); });
     QString last;
     QObject::connect(&campaign, &qualify::TtffCampaign::progress, [&](const QString &text) {
         // Each new state once (the seconds tick on a terminal only).
@@ -232,9 +232,9 @@ int cmdTtff(const CliContext &ctx) {
         w.field("source", utf8(spec->toString()));
         qualify::writeCampaignJson(w, campaign.runs());
         qualify::writeLimitsJson(w, verdicts);
-        if (accuracy) {
+        if (reference) {
             w.key("reference");
-            accuracy->report().writeJson(w, *reference);
+            positions.against(*reference).report().writeJson(w, *reference);
         }
         w.endObject();
         out += '\n';
@@ -261,9 +261,15 @@ int cmdTtff(const CliContext &ctx) {
                                                                               : spec->displayName();
         receiver.baud = conn->transport() ? conn->transport()->baud() : 0;
         receiver.runs = campaign.runs();
-        if (accuracy && accuracy->report().positions) {
-            receiver.accuracy = accuracy->report();
-            receiver.horizontalErrors = accuracy->horizontalErrors();
+        if (const auto mean = positions.mean()) {
+            const compare::Accuracy a = positions.against(reference ? *reference : *mean);
+            receiver.accuracy = a.report();
+            receiver.horizontalErrors = a.horizontalErrors();
+            receiver.verticalErrors = a.verticalErrors();
+            in.location = QStringLiteral("%1°, %2°")
+                                  .arg(mean->latDeg, 0, 'f', 7)
+                                  .arg(mean->lonDeg, 0, 'f', 7);
+            if (mean->height) in.location += QStringLiteral(", %1 m").arg(*mean->height, 0, 'f', 1);
         }
         in.receivers.push_back(std::move(receiver));
         QString why;

@@ -234,6 +234,7 @@ qualify::ReportInput QualificationController::reportInput() const {
                     const compare::Accuracy a = it->against(*point);
                     r.accuracy = a.report();
                     r.horizontalErrors = a.horizontalErrors();
+                    r.verticalErrors = a.verticalErrors();
                 }
                 if (in.location.isEmpty())
                     if (const auto m = it->mean())

@@ -182,6 +182,13 @@ std::vector<double> Accuracy::horizontalErrors() const {
     return out;
 }
 
+std::vector<double> Accuracy::verticalErrors() const {
+    std::vector<double> out;
+    out.reserve(samples_.size());
+    for (const Sample &s : samples_) out.push_back(s.up ? std::abs(*s.up) : std::nan(""));
+    return out;
+}
+
 bool PositionSet::add(const Epoch &e) {
     if (e.fix == FixType::None || !e.lat || !e.lon) return false;
     add(*e.lat, *e.lon, e.altEllipsoid(), e.fix);

@@ -68,6 +68,8 @@ public:
     // Every position's horizontal distance from the point, metres, in the order added (for a
     // histogram or a plot over time).
     std::vector<double> horizontalErrors() const;
+    // ... and each one's vertical distance |up| (NaN where a position or the point has no height).
+    std::vector<double> verticalErrors() const;
 
 private:
     struct Sample {

@@ -306,4 +306,101 @@ void paintHistogram(QPainter &p, const QRectF &area, const std::vector<double> &
     p.restore();
 }
 
+void paintErrorSeries(QPainter &p, const QRectF &area, const std::vector<double> &horizontal,
+                      const std::vector<double> &vertical, const QString &unitSymbol,
+                      double perMetre, const QColor &horizontalColour, const QColor &verticalColour,
+                      const QColor &text, const QColor &grid) {
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing);
+    plotSizeFont(p, area);
+    if (!(perMetre > 0) || !std::isfinite(perMetre)) perMetre = 1;
+    double most = 0;
+    bool anyVertical = false;
+    for (double x : horizontal)
+        if (std::isfinite(x)) most = std::max(most, std::abs(x) * perMetre);
+    for (double x : vertical)
+        if (std::isfinite(x)) {
+            most = std::max(most, std::abs(x) * perMetre);
+            anyVertical = true;
+        }
+    const std::size_t n = std::max(horizontal.size(), vertical.size());
+    PlotAxes axes;
+    axes.ySuffix = QChar(0x00a0) + unitSymbol;
+    axes.xTitle = PlotTr::tr("Epoch");
+    axes.xStep = plotNiceStep(std::max<double>(double(n), 1), 8);
+    axes.xMax = plotRoundUp(std::max<double>(double(n), 1), axes.xStep);
+    // Room above the largest error (the legend is there).
+    const double span = most > 0 ? most * 1.15 : 1;
+    axes.yStep = plotNiceStep(span, 5);
+    axes.yMax = plotRoundUp(span, axes.yStep);
+    const QRectF plot = plotPaintAxes(p, area, axes, text, grid);
+    if (plot.isEmpty()) {
+        p.restore();
+        return;
+    }
+    if (n == 0) {
+        plotCentredText(p, plot, text, PlotTr::tr("No positions"));
+        p.restore();
+        return;
+    }
+    const double width = std::max(1.5, area.height() / 250);
+    p.setClipRect(plot);
+    // Per pixel column the largest error of its epochs: a day of epochs stays a line.
+    auto draw = [&](const std::vector<double> &values, const QColor &colour) {
+        // Per column: kNone (no epoch there: the line goes on), kGap (epochs without a value:
+        // the line breaks), else the largest value.
+        constexpr double kNone = -1, kGap = -2;
+        const int columns = std::max(1, int(plot.width()));
+        std::vector<double> top(std::size_t(columns), kNone);
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const int c = std::clamp(int(double(i) / axes.xMax * columns), 0, columns - 1);
+            double &t = top[std::size_t(c)];
+            if (std::isfinite(values[i]))
+                t = std::max(t, std::abs(values[i]) * perMetre);
+            else if (t == kNone)
+                t = kGap;
+        }
+        QPainterPath path;
+        bool open = false;
+        for (int c = 0; c < columns; ++c) {
+            const double t = top[std::size_t(c)];
+            if (t == kNone) continue;
+            if (t == kGap) {
+                open = false;
+                continue;
+            }
+            const QPointF at(plot.left() + c + 0.5, plot.bottom() - t / axes.yMax * plot.height());
+            if (open)
+                path.lineTo(at);
+            else
+                path.moveTo(at);
+            open = true;
+        }
+        p.setPen(QPen(colour, width));
+        p.setBrush(Qt::NoBrush);
+        p.drawPath(path);
+    };
+    draw(horizontal, horizontalColour);
+    if (anyVertical) draw(vertical, verticalColour);
+    p.setClipping(false);
+    // The legend, top right inside the plot.
+    const QFontMetricsF fm(p.font());
+    const double lh = fm.height();
+    double x = plot.right() - lh * 0.5;
+    const std::pair<QString, QColor> keys[] = {
+            {PlotTr::tr("horizontal"), horizontalColour},
+            {PlotTr::tr("vertical"), verticalColour},
+    };
+    for (int k = anyVertical ? 1 : 0; k >= 0; --k) {
+        const double w = fm.horizontalAdvance(keys[k].first);
+        x -= w;
+        p.setPen(text);
+        p.drawText(QPointF(x, plot.top() + lh), keys[k].first);
+        x -= lh * 1.4;
+        p.fillRect(QRectF(x, plot.top() + lh * 0.55, lh, lh * 0.3), keys[k].second);
+        x -= lh * 0.8;
+    }
+    p.restore();
+}
+
 } // namespace gnss::qualify

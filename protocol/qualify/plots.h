@@ -41,4 +41,13 @@ void paintHistogram(QPainter &p, const QRectF &area, const std::vector<double> &
                     const QString &unitSymbol, double perMetre, const QColor &bars,
                     const QColor &text, const QColor &grid, double cep50 = 0, double cep95 = 0);
 
+// Errors over time: the horizontal and the vertical distance from the reference (metres, in the
+// order of the epochs; a vertical NaN where there is no height), shown in `unitSymbol`
+// (`perMetre` of them a metre) against the epoch's number; a long series is drawn as the largest
+// error of each pixel's epochs.
+void paintErrorSeries(QPainter &p, const QRectF &area, const std::vector<double> &horizontal,
+                      const std::vector<double> &vertical, const QString &unitSymbol,
+                      double perMetre, const QColor &horizontalColour, const QColor &verticalColour,
+                      const QColor &text, const QColor &grid);
+
 } // namespace gnss::qualify

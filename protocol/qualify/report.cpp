@@ -128,26 +128,39 @@ QString reportReceiverTitle(const ReportInput &in, std::size_t i) {
     return in.receivers.size() > 1 ? QStringLiteral("#%1 %2").arg(i + 1).arg(name) : name;
 }
 
-QImage reportCdfImage(const std::vector<CdfSeries> &series, int scale) {
+// A plot on white, `scale` times the report's plot size, in the report's colours.
+const QColor kReportText(0x22, 0x22, 0x22), kReportGrid(0xdd, 0xdd, 0xdd),
+        kReportFirst(0x1f, 0x77, 0xb4), kReportSecond(0xff, 0x7f, 0x0e);
+
+template <class Paint> QImage reportPlotImage(int scale, Paint paint) {
     QImage image(kReportPlotWidth * scale, kReportPlotHeight * scale, QImage::Format_RGB32);
     image.fill(Qt::white);
     QPainter p(&image);
     p.setBackground(Qt::white);
-    paintCdf(p, QRectF(image.rect()), series, QColor(0x22, 0x22, 0x22), QColor(0xdd, 0xdd, 0xdd));
+    paint(p, QRectF(image.rect()));
     return image;
 }
 
+QImage reportCdfImage(const std::vector<CdfSeries> &series, int scale) {
+    return reportPlotImage(scale, [&](QPainter &p, const QRectF &area) {
+        paintCdf(p, area, series, kReportText, kReportGrid);
+    });
+}
+
 QImage reportHistogramImage(const ReportReceiver &r, const LengthUnit &unit, int scale) {
-    QImage image(kReportPlotWidth * scale, kReportPlotHeight * scale, QImage::Format_RGB32);
-    image.fill(Qt::white);
-    QPainter p(&image);
-    p.setBackground(Qt::white);
     const double cep50 = r.accuracy ? r.accuracy->cep50 : 0,
                  cep95 = r.accuracy ? r.accuracy->cep95 : 0;
-    paintHistogram(p, QRectF(image.rect()), r.horizontalErrors, unit.symbol, unit.perMetre,
-                   QColor(0x1f, 0x77, 0xb4), QColor(0x22, 0x22, 0x22), QColor(0xdd, 0xdd, 0xdd),
-                   cep50, cep95);
-    return image;
+    return reportPlotImage(scale, [&](QPainter &p, const QRectF &area) {
+        paintHistogram(p, area, r.horizontalErrors, unit.symbol, unit.perMetre, kReportFirst,
+                       kReportText, kReportGrid, cep50, cep95);
+    });
+}
+
+QImage reportErrorSeriesImage(const ReportReceiver &r, const LengthUnit &unit, int scale) {
+    return reportPlotImage(scale, [&](QPainter &p, const QRectF &area) {
+        paintErrorSeries(p, area, r.horizontalErrors, r.verticalErrors, unit.symbol, unit.perMetre,
+                         kReportFirst, kReportSecond, kReportText, kReportGrid);
+    });
 }
 
 // Builds the report's XHTML: the sections in order, each an <h2>.
@@ -425,7 +438,8 @@ void ReportHtmlBuilder::limits(const ReportReceiver &r) {
 void ReportHtmlBuilder::accuracy(const ReportReceiver &r) {
     const compare::AccuracyReport &a = *r.accuracy;
     const LengthUnit &u = in_.length;
-    heading("h3", tr("Accuracy against the reference point"));
+    heading("h3", in_.reference ? tr("Accuracy against the reference point")
+                                : tr("Accuracy about the mean position (no reference point)"));
     openTable({});
     pair(tr("Positions"), QString::number(a.positions));
     pair(tr("Bias east"), reportLength(a.biasEast, u));
@@ -469,6 +483,9 @@ void ReportHtmlBuilder::accuracy(const ReportReceiver &r) {
         const std::size_t index = images_.size();
         image(reportHistogramImage(r, u, scale_), QStringLiteral("histogram-%1.png").arg(index),
               tr("Horizontal error of %1 (histogram)").arg(reportOrDash(r.name)));
+        image(reportErrorSeriesImage(r, u, scale_),
+              QStringLiteral("errors-%1.png").arg(images_.size()),
+              tr("Horizontal and vertical error of %1 over time").arg(reportOrDash(r.name)));
     }
 }
 

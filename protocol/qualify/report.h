@@ -31,7 +31,8 @@ struct ReportReceiver {
     std::vector<std::pair<QString, QString>> settings; // label → value, as read back
     std::vector<TtffRun> runs;
     std::optional<compare::AccuracyReport> accuracy;
-    std::vector<double> horizontalErrors; // metres, for the histogram
+    std::vector<double> horizontalErrors; // metres, for the histogram and the errors over time
+    std::vector<double> verticalErrors;   // |up| metres in the same order, NaN: no height
 };
 
 struct LengthUnit {

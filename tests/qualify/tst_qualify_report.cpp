@@ -21,7 +21,9 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+
 #include <QXmlStreamReader>
+#include <cmath>
 
 using namespace gnss;
 using namespace gnss::qualify;
@@ -184,8 +186,8 @@ private slots:
         QVERIFY2(!xml.hasError(), qPrintable(xml.errorString() +
                                              QStringLiteral(" at line %1").arg(xml.lineNumber())));
         QCOMPARE(runRows, runCount(in));
-        // Comparison CDF, a CDF per receiver, the NVS's histogram.
-        QCOMPARE(images, 4);
+        // Comparison CDF, a CDF per receiver, the NVS's histogram and errors over time.
+        QCOMPARE(images, 5);
         QVERIFY2(h2Texts.contains(QStringLiteral("#1 NVS NV08C-RTK")),
                  qPrintable(h2Texts.join('|')));
         QVERIFY(h2Texts.contains(QStringLiteral("#2 GeoStar GeoS-5")));
@@ -237,7 +239,7 @@ private slots:
             if (xml.isStartElement() && xml.name() == QLatin1String("img")) ++images;
         }
         QVERIFY(!xml.hasError());
-        QCOMPARE(images, 2); // the CDF and the histogram
+        QCOMPARE(images, 3); // the CDF, the histogram and the errors over time
         QVERIFY(!html.contains(QLatin1String(">pass<")));
         QVERIFY(!html.contains(QLatin1String("#1 ")));
         QVERIFY(html.contains(QLatin1String("<th>Start</th><th>Run</th>")));
@@ -460,6 +462,51 @@ private slots:
                            Qt::black, Qt::gray);
             p.end();
             if (size.width() > 100) QVERIFY(distinctColours(empty) > 1); // the axes and a text
+        }
+    }
+
+    // Errors over time: a horizontal error that jumps from 1 m to 4 m half way is drawn low on
+    // the left and high on the right; the vertical where there are heights only; a long series
+    // and empty ones paint without trouble.
+    void errorsOverTimeFollowTheEpochs() {
+        QImage image(900, 420, QImage::Format_RGB32);
+        image.fill(Qt::white);
+        const QRgb blue = qRgb(0, 0, 255), orange = qRgb(255, 127, 14);
+        std::vector<double> horizontal(200, 1.0), vertical(200, std::nan(""));
+        for (std::size_t i = 100; i < 200; ++i) horizontal[i] = 4.0;
+        for (std::size_t i = 0; i < 50; ++i) vertical[i] = 2.0;
+        {
+            QPainter p(&image);
+            paintErrorSeries(p, QRectF(image.rect()), horizontal, vertical, QStringLiteral("m"),
+                             1.0, QColor(blue), QColor(orange), Qt::black, QColor(220, 220, 220));
+        }
+        // Rows of column x whose pixel is mostly that colour (antialiased: partly white).
+        auto rowsOf = [&](int x, QRgb colour) {
+            std::vector<int> rows;
+            for (int y = 0; y < image.height(); ++y) {
+                const QRgb c = image.pixel(x, y);
+                const int d = std::abs(qRed(c) - qRed(colour)) +
+                              std::abs(qGreen(c) - qGreen(colour)) +
+                              std::abs(qBlue(c) - qBlue(colour));
+                if (d < 200) rows.push_back(y);
+            }
+            return rows;
+        };
+        const auto left = rowsOf(image.width() * 3 / 10, blue);
+        const auto right = rowsOf(image.width() * 8 / 10, blue);
+        QVERIFY(!left.empty() && !right.empty());
+        QVERIFY2(left.front() > right.front() + image.height() / 4,
+                 qPrintable(QString("%1 %2").arg(left.front()).arg(right.front())));
+        QVERIFY(!rowsOf(image.width() * 2 / 10, orange).empty()); // heights at the start
+        QVERIFY(rowsOf(image.width() * 7 / 10, orange).empty());  // none later
+        std::vector<double> day(86400, 0.5);
+        for (const QSize size : {QSize(900, 420), QSize(4, 4)}) {
+            QImage other(size, QImage::Format_RGB32);
+            QPainter p(&other);
+            paintErrorSeries(p, QRectF(other.rect()), day, {}, QStringLiteral("ft"), 3.28084,
+                             Qt::blue, Qt::red, Qt::black, Qt::gray);
+            paintErrorSeries(p, QRectF(other.rect()), {}, {}, QStringLiteral("m"), 1.0, Qt::blue,
+                             Qt::red, Qt::black, Qt::gray);
         }
     }
 };

@@ -6,6 +6,7 @@
 #include "style/gnss_style.h"
 #include "widgets/read_only_table.h"
 
+#include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -14,6 +15,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QTableWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -31,21 +33,17 @@ AccuracyPanel::AccuracyPanel(QWidget *parent) : QWidget(parent) {
                               "above the ellipsoid in metres: 55.7522,37.6156,180.2"));
     auto *row = new QHBoxLayout;
     row->addWidget(reference_, 1);
+    // One button, short: the log statistics dock is narrow. Its menu: the sites to take as the
+    // reference, and the mean of the positions shown kept as a new one.
     siteButton_ = new QToolButton(this);
     siteButton_->setObjectName("accuracySite");
-    siteButton_->setText(tr("Site"));
-    siteButton_->setToolTip(tr("Use a site of your site list as the reference"));
+    siteButton_->setText(tr("Sites"));
+    siteButton_->setToolTip(tr("Use a site of your site list as the reference, or keep the mean "
+                               "of these positions as a site (a survey-in by the workbench)"));
     siteButton_->setPopupMode(QToolButton::InstantPopup);
     siteButton_->setMenu(new QMenu(siteButton_));
-    saveButton_ = new QToolButton(this);
-    saveButton_->setObjectName("accuracySaveSite");
-    saveButton_->setText(tr("Save as site…"));
-    saveButton_->setToolTip(tr("Keep the mean of these positions in your site list (a survey-in "
-                               "by the workbench)"));
     row->addWidget(siteButton_);
-    row->addWidget(saveButton_);
     siteButton_->hide();
-    saveButton_->hide();
     form->addRow(tr("Reference:"), row);
     layout->addLayout(form);
     // The list as it is now (gnss-cli may have changed it) each time the menu opens.
@@ -59,28 +57,50 @@ AccuracyPanel::AccuracyPanel(QWidget *parent) : QWidget(parent) {
             return;
         }
         if (list.sites().empty())
-            menu->addAction(tr("No sites yet (gnss-cli sites add, or Save as site)"))
+            menu->addAction(tr("No sites yet (gnss-cli sites add, or save the mean below)"))
                     ->setEnabled(false);
         for (const sites::Site &site : list.sites()) {
             const QString name = QString::fromStdString(site.name);
             menu->addAction(name, this, [this, name] { useSite(name); });
         }
-    });
-    connect(saveButton_, &QToolButton::clicked, this, [this] {
-        bool ok = false;
-        const QString name = QInputDialog::getText(this, tr("Save as site"), tr("Site name:"),
-                                                   QLineEdit::Normal, {}, &ok);
-        if (!ok) return;
-        QString why;
-        if (!saveMeanAsSite(name, &why)) emit message(why);
+        menu->addSeparator();
+        QAction *save = menu->addAction(tr("Save the mean as a site…"), this, [this] {
+            bool ok = false;
+            const QString name = QInputDialog::getText(this, tr("Save as site"), tr("Site name:"),
+                                                       QLineEdit::Normal, {}, &ok);
+            if (!ok) return;
+            QString why;
+            if (!saveMeanAsSite(name, &why)) emit message(why);
+        });
+        save->setEnabled(lastMean_.has_value());
     });
     auto *split = split_ = new QSplitter(Qt::Horizontal, this);
     table_ = readOnlyTable(2, "accuracyTable", split);
     table_->setHorizontalHeaderLabels({tr("Statistic"), tr("Value")});
-    histogram_ = new ErrorHistogram(split);
+    // The plot: the histogram, or the errors over time (a choice, not tabs: the dock stays narrow).
+    auto *plots = new QWidget(split);
+    auto *plotsLayout = new QVBoxLayout(plots);
+    plotsLayout->setContentsMargins(0, 0, 0, 0);
+    auto *which = new QComboBox(plots);
+    which->setObjectName("accuracyPlotChoice");
+    which->addItem(tr("Histogram"));
+    which->addItem(tr("Over time"));
+    which->setToolTip(tr("The horizontal error's histogram, or the horizontal and vertical "
+                         "errors epoch by epoch"));
+    which->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    which->setMinimumContentsLength(8);
+    auto *stack = new QStackedWidget(plots);
+    histogram_ = new ErrorHistogram(stack);
     histogram_->setObjectName("accuracyHistogram");
+    overTime_ = new ErrorSeriesPlot(stack);
+    overTime_->setObjectName("accuracyOverTime");
+    stack->addWidget(histogram_);
+    stack->addWidget(overTime_);
+    plotsLayout->addWidget(which);
+    plotsLayout->addWidget(stack, 1);
+    connect(which, &QComboBox::currentIndexChanged, stack, &QStackedWidget::setCurrentIndex);
     split->addWidget(table_);
-    split->addWidget(histogram_);
+    split->addWidget(plots);
     layout->addWidget(split, 1);
     connect(reference_, &QLineEdit::editingFinished, this, &AccuracyPanel::referenceChanged);
 }
@@ -88,7 +108,6 @@ AccuracyPanel::AccuracyPanel(QWidget *parent) : QWidget(parent) {
 void AccuracyPanel::setSiteStore(const sites::SiteStore *store) {
     store_ = store;
     siteButton_->setVisible(store != nullptr);
-    saveButton_->setVisible(store != nullptr);
 }
 
 bool AccuracyPanel::useSite(const QString &name, QString *why) {
@@ -188,6 +207,11 @@ void AccuracyPanel::say(const QString &text) {
     addRow(tr("Positions"), text);
 }
 
+void AccuracyPanel::clearPlots() {
+    histogram_->setValues({}, fmt::lengthUnit(units_), fmt::lengthFactor(units_), 0, 0);
+    overTime_->setValues({}, {}, fmt::lengthUnit(units_), fmt::lengthFactor(units_));
+}
+
 void AccuracyPanel::show(const compare::PositionSet &positions) {
     table_->setRowCount(0);
     std::optional<compare::ReferencePoint> point = reference();
@@ -196,7 +220,7 @@ void AccuracyPanel::show(const compare::PositionSet &positions) {
         std::string why;
         compare::ReferencePoint::parse(reference_->text().trimmed().toStdString(), why);
         say(tr("The reference is not a point: %1").arg(QString::fromStdString(why)));
-        histogram_->setValues({}, fmt::lengthUnit(units_), fmt::lengthFactor(units_), 0, 0);
+        clearPlots();
         return;
     }
     lastMean_ = positions.mean();
@@ -204,7 +228,7 @@ void AccuracyPanel::show(const compare::PositionSet &positions) {
     if (!point) point = lastMean_;
     if (!point || positions.size() == 0) {
         say(tr("No positions yet."));
-        histogram_->setValues({}, fmt::lengthUnit(units_), fmt::lengthFactor(units_), 0, 0);
+        clearPlots();
         return;
     }
     const compare::Accuracy acc = positions.against(*point);
@@ -245,6 +269,8 @@ void AccuracyPanel::show(const compare::PositionSet &positions) {
     table_->resizeColumnToContents(0);
     histogram_->setValues(acc.horizontalErrors(), fmt::lengthUnit(units_),
                           fmt::lengthFactor(units_), r.cep50, r.cep95);
+    overTime_->setValues(acc.horizontalErrors(), acc.verticalErrors(), fmt::lengthUnit(units_),
+                         fmt::lengthFactor(units_));
 }
 
 } // namespace gnss::ui

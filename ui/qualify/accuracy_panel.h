@@ -3,10 +3,10 @@
 // ellipsoidal metres) or, when none is typed, their own mean — as a table (bias east, north, up;
 // horizontal mean, median, CEP50, CEP95, 2DRMS, R95, max; vertical mean, median, 95 %; the share
 // of epochs within 2 cm .. 5 m, overall and per fix type) beside a histogram of the horizontal
-// errors. The Qualification dock shows it live; the log viewer's statistics over the range.
-// With a site store (the user's site list, shared with gnss-cli): "Site" fills the reference
-// with a site's antenna position, and "Save as site" keeps the mean of the positions shown (a
-// survey-in by the workbench) as a site.
+// errors or (chosen above it) the horizontal and vertical errors over time. The Qualification dock
+// shows it live; the log viewer's statistics over the range. With a site store (the user's site
+// list, shared with gnss-cli), the Sites menu fills the reference with a site's antenna position,
+// or keeps the mean of the positions shown (a survey-in by the workbench) as a site.
 #include "compare/accuracy.h"
 #include "models/value_format.h"
 
@@ -26,11 +26,15 @@ class SiteStore;
 namespace gnss::ui {
 
 class ErrorHistogram;
+class ErrorSeriesPlot;
 
 class AccuracyPanel : public QWidget {
     Q_OBJECT
 public:
     explicit AccuracyPanel(QWidget *parent = nullptr);
+    // Modest, whatever its table and plot would like: a dock holding it keeps the width its
+    // other views ask for (the log statistics share the sky plot's group on a laptop).
+    QSize sizeHint() const override { return {320, 240}; }
 
     void setUnits(UnitSystem u);
     // The site list to pick references from and save means to (none: no site buttons).
@@ -51,6 +55,7 @@ public:
     // The value beside a row's name ("" when there is no such row).
     QString valueOf(const QString &name) const;
     ErrorHistogram *histogram() const { return histogram_; }
+    ErrorSeriesPlot *overTime() const { return overTime_; }
     // The histogram beside the table (default) or under it (a narrow dock).
     void setOrientation(Qt::Orientation o);
 
@@ -61,14 +66,16 @@ signals:
 private:
     void addRow(const QString &name, const QString &value);
     void say(const QString &text);
+    void clearPlots();
     QString len(double metres, int decimals = 3) const;
 
     UnitSystem units_ = UnitSystem::Metric;
     QLineEdit *reference_;
     QTableWidget *table_;
     ErrorHistogram *histogram_;
+    ErrorSeriesPlot *overTime_;
     QSplitter *split_;
-    QToolButton *siteButton_, *saveButton_;
+    QToolButton *siteButton_;
     const sites::SiteStore *store_ = nullptr;
     std::optional<compare::ReferencePoint> lastMean_;
     std::optional<double> lastCep95_;

@@ -134,7 +134,7 @@ QualificationView::QualificationView(QWidget *parent) : QWidget(parent) {
     scroll->setWidget(formBox);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setMinimumWidth(std::min(formBox->sizeHint().width() + 16, 240));
+    scroll->setMinimumWidth(std::min(formBox->sizeHint().width() + 24, 340));
     scroll->setMaximumWidth(420);
     outer->addWidget(scroll);
 
@@ -142,8 +142,9 @@ QualificationView::QualificationView(QWidget *parent) : QWidget(parent) {
     bar_ = new QProgressBar(tabs_);
     bar_->setRange(0, 1);
     bar_->setValue(0);
-    bar_->setFormat(tr("%v of %m runs"));
-    bar_->setMaximumWidth(220);
+    bar_->setFormat(QStringLiteral("%v / %m"));
+    bar_->setToolTip(tr("Runs done of the campaign's runs"));
+    bar_->setFixedWidth(bar_->fontMetrics().horizontalAdvance(QStringLiteral("0000 / 0000")) + 40);
     tabs_->setCornerWidget(bar_, Qt::TopRightCorner);
     results_ = readOnlyTable(13, "qualifyResults", tabs_);
     results_->setHorizontalHeaderLabels({tr("Receiver"), tr("Start"), tr("Runs"), tr("Fixed"),

@@ -16,7 +16,7 @@ QColor gridColour(const QPalette &p) {
 } // namespace
 
 CdfPlot::CdfPlot(QWidget *parent) : QWidget(parent) {
-    setMinimumSize(160, 60);
+    setMinimumSize(160, 40);
 }
 
 void CdfPlot::setSeries(std::vector<qualify::CdfSeries> series) {
@@ -32,7 +32,7 @@ void CdfPlot::paintEvent(QPaintEvent *) {
 }
 
 ErrorHistogram::ErrorHistogram(QWidget *parent) : QWidget(parent) {
-    setMinimumSize(160, 60);
+    setMinimumSize(160, 40);
 }
 
 void ErrorHistogram::setValues(std::vector<double> metres, const QString &unit, double perMetre,
@@ -51,6 +51,26 @@ void ErrorHistogram::paintEvent(QPaintEvent *) {
     qualify::paintHistogram(
             p, QRectF(rect()), values_, unit_, perMetre_, palette().color(QPalette::Highlight),
             palette().color(QPalette::WindowText), gridColour(palette()), cep50_, cep95_);
+}
+
+ErrorSeriesPlot::ErrorSeriesPlot(QWidget *parent) : QWidget(parent) {
+    setMinimumSize(160, 40);
+}
+
+void ErrorSeriesPlot::setValues(std::vector<double> horizontal, std::vector<double> vertical,
+                                const QString &unit, double perMetre) {
+    horizontal_ = std::move(horizontal);
+    vertical_ = std::move(vertical);
+    unit_ = unit;
+    perMetre_ = perMetre;
+    update();
+}
+
+void ErrorSeriesPlot::paintEvent(QPaintEvent *) {
+    QPainter p(this);
+    qualify::paintErrorSeries(p, QRectF(rect()), horizontal_, vertical_, unit_, perMetre_,
+                              palette().color(QPalette::Highlight), QColor(0xff, 0x7f, 0x0e),
+                              palette().color(QPalette::WindowText), gridColour(palette()));
 }
 
 } // namespace gnss::ui

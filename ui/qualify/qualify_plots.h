@@ -42,4 +42,22 @@ private:
     double perMetre_ = 1, cep50_ = 0, cep95_ = 0;
 };
 
+class ErrorSeriesPlot : public QWidget {
+    Q_OBJECT
+public:
+    explicit ErrorSeriesPlot(QWidget *parent = nullptr);
+    // Horizontal and vertical errors in metres, in epoch order (vertical NaN: no height).
+    void setValues(std::vector<double> horizontal, std::vector<double> vertical,
+                   const QString &unit, double perMetre);
+    std::size_t count() const { return horizontal_.size(); }
+
+protected:
+    void paintEvent(QPaintEvent *) override;
+
+private:
+    std::vector<double> horizontal_, vertical_;
+    QString unit_ = QStringLiteral("m");
+    double perMetre_ = 1;
+};
+
 } // namespace gnss::ui
