@@ -321,9 +321,11 @@ void MainWindow::keepTabsWhole(QTabBar *bar) {
     needed = std::min(needed, width() * 45 / 100);
     for (auto it = docks_.cbegin(); it != docks_.cend(); ++it) {
         QDockWidget *d = it.key();
+        // Never narrower than its own view needs (a narrower one wraps its texts taller).
+        const int least = std::max(needed, d->minimumSizeHint().width());
         for (int i = 0; i < bar->count(); ++i)
-            if (bar->tabText(i) == d->windowTitle() && d->minimumWidth() != needed) {
-                d->setMinimumWidth(needed);
+            if (bar->tabText(i) == d->windowTitle() && d->minimumWidth() != least) {
+                d->setMinimumWidth(least);
                 break;
             }
     }
