@@ -10,6 +10,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTimer>
@@ -18,6 +19,9 @@
 namespace gnss::ui {
 
 namespace {
+// Tall enough for the reference row, a few rows of statistics and a legible plot.
+constexpr int kAccuracyHeight = 380;
+
 QString seconds(const std::optional<double> &s) {
     return s ? QCoreApplication::translate("gnss::ui::LogSummaryView", "%1 s")
                            .arg(*s, 0, 'f', *s < 100 ? 1 : 0)
@@ -50,11 +54,20 @@ LogSummaryView::LogSummaryView(LogCursor *cursor, QWidget *parent)
     table_ = readOnlyTable(2, "summaryTable", tabs);
     table_->horizontalHeader()->hide();
     table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    accuracy_ = new AccuracyPanel(tabs);
+    // The accuracy tab scrolls: its table and plot keep a readable height in a short dock, and
+    // they never make the dock (and the window) taller than a laptop's screen.
+    auto *scroll = new QScrollArea(tabs);
+    scroll->setObjectName("logAccuracyScroll");
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    accuracy_ = new AccuracyPanel(scroll);
     accuracy_->setObjectName("logAccuracy");
     accuracy_->setOrientation(Qt::Vertical);
+    accuracy_->setMinimumHeight(kAccuracyHeight);
+    scroll->setWidget(accuracy_);
     tabs->addTab(table_, tr("Range"));
-    tabs->addTab(accuracy_, tr("Accuracy"));
+    tabs->addTab(scroll, tr("Accuracy"));
     layout->addWidget(tabs, 1);
     accuracyLater_ = new QTimer(this);
     accuracyLater_->setSingleShot(true);
