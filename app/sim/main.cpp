@@ -13,6 +13,9 @@
 // attempt is refused, as by a serial-to-Ethernet server that is down); DOWN seconds later the
 // same port listens again, its address on a new line of standard output.
 // With --rtcm-base the same loop carries an RTCM 3 base station's stream instead.
+// --com2 opens a second pseudo-terminal for the receiver's second port (an NV08C-RTK base's RTCM):
+// what the receiver sends there is written to it, what a program writes to it is read and
+// dropped (the simulated receivers take commands on their first port only).
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
 #include "posix/termios_speed.h"
@@ -223,6 +226,13 @@ int main(int argc, char **argv) {
         ioFd = STDOUT_FILENO;
     }
 
+    int com2Fd = -1; // --com2: the receiver's second port
+    bool com2Idle = true;
+    std::string com2Buffer;
+    if (args.com2) {
+        com2Fd = openPty(deviceBaud, args.com2Link);
+        if (com2Fd < 0) return 1;
+    }
     bool watchStdin = args.transport == simapp::Transport::Stdout || !stdinIsDevNull();
     std::string outBuffer;
     double last = monotonicSeconds();
@@ -259,9 +269,10 @@ int main(int argc, char **argv) {
         backAt = rx->time() + down;
     };
     while (!g_stop) {
-        pollfd fds[3];
+        pollfd fds[4];
         int n = 0;
-        int stdinIdx = -1, ioIdx = -1, listenIdx = -1;
+        int stdinIdx = -1, ioIdx = -1, listenIdx = -1, com2Idx = -1;
+        if (com2Fd >= 0 && !com2Idle) fds[com2Idx = n++] = {com2Fd, POLLIN, 0};
         if (watchStdin) fds[stdinIdx = n++] = {STDIN_FILENO, POLLIN, 0};
         if (ioFd >= 0 && ioFd != STDOUT_FILENO && !ptyIdle) fds[ioIdx = n++] = {ioFd, POLLIN, 0};
         if (listenFd >= 0) fds[listenIdx = n++] = {listenFd, POLLIN, 0};
@@ -270,6 +281,14 @@ int main(int argc, char **argv) {
             pollfd probe{ioFd, POLLIN, 0};
             ::poll(&probe, 1, 0);
             ptyIdle = (probe.revents & POLLHUP) != 0;
+        }
+        if (com2Fd >= 0) { // the second port: is a program on it, and drop what it wrote
+            pollfd probe{com2Fd, POLLIN, 0};
+            ::poll(&probe, 1, 0);
+            com2Idle = (probe.revents & POLLHUP) != 0;
+            if (com2Idx >= 0 && (fds[com2Idx].revents & POLLIN))
+                while (::read(com2Fd, buf, sizeof buf) > 0) {
+                }
         }
 
         if (stdinIdx >= 0 && (fds[stdinIdx].revents & (POLLIN | POLLHUP))) {
@@ -346,6 +365,13 @@ int main(int argc, char **argv) {
         } else {
             outBuffer.clear();
         }
+        if (rx && com2Fd >= 0) {
+            com2Buffer += rx->takeOutput(2);
+            if (com2Idle)
+                com2Buffer.clear();
+            else
+                flushTo(com2Fd, com2Buffer);
+        }
         if (rx && rx->hungUp()) break; // the hang-up fault: drop the line
         if (args.duration > 0 && simulated + elapsed >= args.duration) {
             if (ioFd >= 0 && peerPresent) drainTo(ioFd, outBuffer);
@@ -373,6 +399,8 @@ int main(int argc, char **argv) {
         heldBefore = peerPresent && ioFd >= 0;
     }
     if (ioFd >= 0 && ioFd != STDOUT_FILENO) ::close(ioFd);
+    if (com2Fd >= 0) ::close(com2Fd);
+    if (!args.com2Link.empty()) ::unlink(args.com2Link.c_str());
     if (listenFd >= 0) ::close(listenFd);
     if (!args.link.empty()) ::unlink(args.link.c_str());
     // Stopped by SIGINT/SIGTERM: the status a shell gives a program the signal ended (130, 143),

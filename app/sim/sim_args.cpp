@@ -16,7 +16,8 @@ namespace {
 
 // The usage text around the dialect list, which comes from the records.
 const char *const kUsageHead =
-        "usage: gnss-sim --dialect D [--pty [--link PATH] | --tcp PORT | --stdout]\n"
+        "usage: gnss-sim --dialect D [--pty [--link PATH] [--com2 [--com2-link PATH]]\n"
+        "                | --tcp PORT | --stdout]\n"
         "                [--seed N] [--speed X] [--duration S] [--baud B] [--faults SPEC]\n"
         "                [--internal-base] [--start now|HH:MM:SS] [--offset E,N,U]\n"
         "                [--cn0-offset [SYS:]DB,...] [--drop SATS] [--latency MS]\n"
@@ -34,6 +35,11 @@ const char *const kUsageTail =
         "                 line of standard output\n"
         "  --link PATH    keep a symbolic link at PATH to the pseudo-terminal (a new one after\n"
         "                 each hang-up that comes back); removed at the end\n"
+        "  --com2         a second pseudo-terminal, the receiver's second port (the\n"
+        "                 NV08C-RTK's COM2: RTCM 3 there once $PNVGRZA,2 sets protocol 7 in\n"
+        "                 base mode; other receivers send nothing on it); its path is the\n"
+        "                 second line of standard output\n"
+        "  --com2-link PATH  a symbolic link at PATH to the second pseudo-terminal\n"
         "  --tcp PORT     listen on 127.0.0.1:PORT (one client at a time); its address is the\n"
         "                 first line of standard output\n"
         "  --stdout       write to standard output, read commands from standard input\n"
@@ -199,6 +205,10 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
             if (flag()) out.transport = Transport::Pty;
         } else if (a == "--link") {
             if (value(v)) out.link = std::string(v);
+        } else if (a == "--com2") {
+            out.com2 = flag();
+        } else if (a == "--com2-link") {
+            if (value(v)) out.com2Link = std::string(v), out.com2 = true;
         } else if (a == "--stdout") {
             if (flag()) out.transport = Transport::Stdout;
         } else if (a == "--tcp") {
@@ -281,6 +291,10 @@ bool parseSimArgs(const sim::SimulatorTable &simulators, int argc, char **argv, 
     out.base.seed = out.options.seed;
     if (out.transport != Transport::Pty && !out.link.empty()) {
         error = "--link names a pseudo-terminal: it goes with --pty";
+        return false;
+    }
+    if (out.com2 && (out.transport != Transport::Pty || out.rtcmBase)) {
+        error = "--com2 is a receiver's second pseudo-terminal: it goes with --dialect and --pty";
         return false;
     }
     if (out.rtcmBase) {

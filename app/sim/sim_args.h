@@ -14,7 +14,9 @@ struct SimArgs {
     std::string dialect;
     Transport transport = Transport::Pty;
     int tcpPort = 0;
-    std::string link; // --link PATH: a symbolic link to the pseudo-terminal in use
+    std::string link;     // --link PATH: a symbolic link to the pseudo-terminal in use
+    bool com2 = false;    // --com2: a second pseudo-terminal for the receiver's port 2
+    std::string com2Link; // --com2-link PATH
     double speed = 1.0;
     double duration = 0; // --duration S: end after S simulated seconds (0: run on)
     sim::SimOptions options;

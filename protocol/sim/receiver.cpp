@@ -99,6 +99,25 @@ std::string Receiver::takeOutput() {
     return s;
 }
 
+std::string Receiver::takeOutput(int port) {
+    auto it = otherPorts_.find(port);
+    if (it == otherPorts_.end()) return {};
+    std::string s;
+    s.swap(it->second);
+    return s;
+}
+
+void Receiver::sendBytes(std::string_view bytes, int port) {
+    if (port != 0) {
+        std::string &out = otherPorts_[port];
+        out.append(bytes);
+        if (out.size() > kTxBuffer * 16) out.erase(0, out.size() - std::size_t(kTxBuffer * 16));
+        return;
+    }
+    if (hungUp_ || options_.faults.silentAt(now_)) return;
+    if (takeLineTime(bytes.size(), true)) write(std::string(bytes));
+}
+
 FixKind Receiver::fixAfter(double seconds) const {
     return seconds >= ttff_ ? FixKind::Autonomous : FixKind::None;
 }

@@ -23,6 +23,7 @@
 #include "sim/ttff_model.h"
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <random>
 #include <string>
@@ -65,6 +66,9 @@ public:
     void advance(double seconds);
     // Everything the receiver sent since the last call.
     std::string takeOutput();
+    // What it sent on another of its ports (`port` as its dialect numbers them, not the host's)
+    // since the last call: an NV08C-RTK base's RTCM on COM2. Not paced, no faults.
+    std::string takeOutput(int port);
 
     // The receiver's current baud, and the speed the host set on its side of the line
     // (0 = unknown/not a serial line: never garbled). While they differ, output is garbled
@@ -134,6 +138,9 @@ protected:
     void reset(ResetKind kind);
     // Sends an output sentence (CR LF added; faults applied).
     void send(const std::string &sentence);
+    // Sends bytes as they are (an RTCM 3 frame), on the host's port when `port` is 0, else on
+    // that other port (takeOutput(port)).
+    void sendBytes(std::string_view bytes, int port = 0);
     // Sends a reply to `command` (noreply/slowreply faults apply). `thenBaud` > 0 switches the
     // receiver's baud once this reply is out (PNVGRZA, BDR...). Replies to one command keep
     // their order.
@@ -208,6 +215,7 @@ private:
     SkySnapshot last_;
     std::vector<Pending> pending_;
     std::string out_;
+    std::map<int, std::string> otherPorts_; // output of ports other than the host's
     // Output held back by the latency difference: when it may leave, and the bytes.
     std::vector<std::pair<double, std::string>> delayed_;
 };

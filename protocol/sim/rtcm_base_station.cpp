@@ -22,12 +22,6 @@ constexpr double kMoscowOffset = 3 * 3600.0;              // GLONASS time is UTC
 // indicator: a base is left running, so its locks are long.
 constexpr double kTrackingBeforeStart = 600;
 
-struct Cell {
-    std::uint8_t satellite; // MSM satellite id (GPS PRN, GLONASS slot)
-    double rangeMs;         // pseudorange in light-milliseconds
-    double snr;             // dB-Hz
-};
-
 // DF402, the MSM lock-time indicator: 0 below 32 ms, then one step per doubling, 15 from 524 s.
 unsigned lockIndicator(double seconds) {
     const double ms = seconds * 1000;
@@ -50,10 +44,24 @@ std::uint32_t RtcmBaseStation::glonassTodMs(double t) {
 RtcmBaseStation::RtcmBaseStation(const BaseStationConfig &config)
     : config_(config),
       model_(config.seed, Observer{config.latDeg, config.lonDeg, config.height, 0}) {
+    reconfigure(config);
+}
+
+void RtcmBaseStation::reconfigure(const BaseStationConfig &config) {
+    if (config.latDeg != config_.latDeg || config.lonDeg != config_.lonDeg ||
+        config.height != config_.height || config.seed != config_.seed)
+        model_ = SkyModel(config.seed, Observer{config.latDeg, config.lonDeg, config.height, 0});
+    config_ = config;
+    config_.observationInterval = std::max(1, config.observationInterval);
     const wgs84::Ecef e = wgs84::toEcef({config.latDeg, config.lonDeg, config.height});
     ecef_[0] = e.x;
     ecef_[1] = e.y;
     ecef_[2] = e.z;
+}
+
+void RtcmBaseStation::startAt(double t) {
+    now_ = t;
+    nextEpoch_ = std::ceil(t - 1e-9);
 }
 
 void RtcmBaseStation::advance(double seconds) {
@@ -73,9 +81,15 @@ std::string RtcmBaseStation::takeOutput() {
 void RtcmBaseStation::epoch(double t) {
     ++epochs_;
     sky_ = model_.update(t, UseMask{}, FixKind::Autonomous);
-    out_ += msm4(Constellation::Gps, t, true);
-    out_ += msm4(Constellation::Glonass, t, false);
     const long second = std::lround(t);
+    if (second % config_.observationInterval == 0) {
+        const bool legacyObservations =
+                config_.observations == BaseStationConfig::Observations::Legacy;
+        for (const Constellation system : {Constellation::Gps, Constellation::Glonass}) {
+            const bool more = system == Constellation::Gps;
+            out_ += legacyObservations ? legacy(system, t, more) : msm4(system, t, more);
+        }
+    }
     if (config_.stationInterval > 0 && second % config_.stationInterval == 0) {
         rtcm::StationArp arp;
         arp.station = config_.stationId;
@@ -83,6 +97,7 @@ void RtcmBaseStation::epoch(double t) {
         arp.x = ecef_[0];
         arp.y = ecef_[1];
         arp.z = ecef_[2];
+        arp.antennaHeight = config_.antennaHeight;
         out_ += rtcm::encodeStationArp(arp);
     }
     if (config_.biasesInterval > 0 && second % config_.biasesInterval == 0) {
@@ -94,8 +109,7 @@ void RtcmBaseStation::epoch(double t) {
     }
 }
 
-std::string RtcmBaseStation::msm4(Constellation system, double t, bool moreFollow) {
-    const bool glonass = system == Constellation::Glonass;
+std::vector<RtcmBaseStation::Cell> RtcmBaseStation::cells(Constellation system) {
     const double baseRadius =
             std::sqrt(ecef_[0] * ecef_[0] + ecef_[1] * ecef_[1] + ecef_[2] * ecef_[2]);
     std::normal_distribution<double> noise(0.0, 0.5);
@@ -118,7 +132,35 @@ std::string RtcmBaseStation::msm4(Constellation system, double t, bool moreFollo
     }
     std::sort(cells.begin(), cells.end(),
               [](const Cell &a, const Cell &b) { return a.satellite < b.satellite; });
+    return cells;
+}
 
+std::string RtcmBaseStation::legacy(Constellation system, double t, bool moreFollow) {
+    const bool glonass = system == Constellation::Glonass;
+    rtcm::LegacyObservables o;
+    o.number = glonass ? 1010 : 1002;
+    o.station = config_.stationId;
+    o.epochMs = glonass ? glonassTodMs(t) : gpsTowMs(t);
+    o.synchronous = moreFollow;
+    for (const Cell &c : cells(system)) {
+        if (o.satellites.size() == 31) break; // DF006: five bits
+        rtcm::LegacySatellite sat;
+        sat.id = c.satellite;
+        // A GLONASS slot's frequency channel: the constellation pairs antipodal slots on one.
+        if (glonass) sat.frequencyChannel = static_cast<int>((c.satellite * 5) % 14) - 7;
+        const double metres = c.rangeMs / kLightMsPerMetre;
+        sat.l1.pseudorange = metres;
+        sat.l1.phaseRange = metres;
+        sat.l1.lockTime = 127; // DF013: locked for more than 937 s
+        sat.l1.cnr = c.snr;
+        o.satellites.push_back(sat);
+    }
+    return rtcm::encodeLegacy(o);
+}
+
+std::string RtcmBaseStation::msm4(Constellation system, double t, bool moreFollow) {
+    const bool glonass = system == Constellation::Glonass;
+    const std::vector<Cell> cells = this->cells(system);
     std::uint64_t satelliteMask = 0;
     for (const Cell &c : cells) satelliteMask |= std::uint64_t(1) << (64 - c.satellite);
     const std::uint32_t signalMask = 1u << (32 - 2); // signal id 2: L1 C/A ("1C") in both

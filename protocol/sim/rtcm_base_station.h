@@ -14,11 +14,17 @@
 #include "sim/sky_model.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace gnss::sim {
 
 struct BaseStationConfig {
+    // The observables: MSM4 (1074 GPS, 1084 GLONASS), or the legacy extended L1 messages (1002,
+    // 1010) that an NV08C-RTK base sends.
+    enum class Observations { Msm4, Legacy };
+
     double latDeg = 55.7512; // the sky model's default observer
     double lonDeg = 37.6184;
     double height = 166.6;   // ellipsoidal height, metres
@@ -26,11 +32,20 @@ struct BaseStationConfig {
     std::uint32_t seed = 1;  // sky and noise
     int stationInterval = 1; // seconds between 1005s (0: none)
     int biasesInterval = 10; // seconds between 1230s (0: none)
+    Observations observations = Observations::Msm4;
+    int observationInterval = 1;         // seconds between observation epochs (1 or more)
+    std::optional<double> antennaHeight; // the station as 1006 with it, 1005 without
 };
 
 class RtcmBaseStation {
 public:
     explicit RtcmBaseStation(const BaseStationConfig &config = {});
+
+    // Starts the clock at `t` (a receiver that becomes a base mid-run): the first epoch is the
+    // first whole second from there.
+    void startAt(double t);
+    // Another position, station or rate from now on (time and the sky go on).
+    void reconfigure(const BaseStationConfig &config);
 
     // Runs for `seconds` of simulated time: one epoch at every whole second reached (the first
     // at time 0).
@@ -52,7 +67,15 @@ public:
 
 private:
     void epoch(double t);
+    struct Cell {
+        std::uint8_t satellite; // MSM satellite id (GPS PRN, GLONASS slot)
+        double rangeMs;         // pseudorange in light-milliseconds
+        double snr;             // dB-Hz
+    };
+    // The satellites of `system` above the horizon, by id, with their ranges from the station.
+    std::vector<Cell> cells(Constellation system);
     std::string msm4(Constellation system, double t, bool moreFollow);
+    std::string legacy(Constellation system, double t, bool moreFollow);
 
     BaseStationConfig config_;
     SkyModel model_;

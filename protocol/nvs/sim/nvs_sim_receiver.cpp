@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace gnss::sim {
 
@@ -27,6 +28,25 @@ std::string protocolKey(int port) {
     return "port." + std::string(nvs::portName(port)) + ".protocol";
 }
 constexpr std::string_view kStationsKey = "idl.stations";
+
+// Three numbers "a,b,c" (BASEXYZ, BASEBLH in radians); false for anything else.
+bool parseNumbers(const std::string &text, double (&v)[3]) {
+    std::size_t at = 0;
+    for (int i = 0; i < 3; ++i) {
+        const std::size_t comma = i < 2 ? text.find(',', at) : text.size();
+        if (comma == std::string::npos) return false;
+        const std::string part = text.substr(at, comma - at);
+        char *end = nullptr;
+        v[i] = std::strtod(part.c_str(), &end);
+        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(v[i])) return false;
+        at = comma + 1;
+    }
+    return true;
+}
+
+double distance(const wgs84::Ecef &a, const wgs84::Ecef &b) {
+    return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z);
+}
 
 } // namespace
 
@@ -119,6 +139,10 @@ void NvsReceiver::onHostBytes(std::string_view bytes) {
 
 void NvsReceiver::onReset(ResetKind kind) {
     if (kind == ResetKind::PowerCycle) restoreFromFlash();
+    // A base averaging its position starts over (MODE 3 after any restart).
+    averagingSince_ = mode() == 3 ? time() : -1;
+    averaged_ = 0;
+    averageSum_[0] = averageSum_[1] = averageSum_[2] = 0;
     epochIndex_ = 0;
     sendTestResults_ = true;
     rtcmTotal_ = rtcmErrors_ = 0;
@@ -188,8 +212,9 @@ void NvsReceiver::onEpoch(const SkySnapshot &snap) {
         std::uniform_real_distribution<double> gap(0.8, 1.2);
         nextMark_ += gap(random());
     }
+    if (isBase()) baseEpoch(snap);
     const long long protocol = store_.integer(protocolKey(kCurrentPort));
-    if (protocol == 7) { // RTCM on this port: raw-data frames instead of NMEA
+    if (protocol == 7 && !isBase()) { // RTCM on this port: raw-data frames instead of NMEA
         if (epochIndex_ % 5 == 0) {
             std::uniform_int_distribution<int> len(60, 200);
             send(rtcm3Frame(random(), 1077, len(random())));
@@ -197,9 +222,10 @@ void NvsReceiver::onEpoch(const SkySnapshot &snap) {
     } else if (protocol == 1) {
         if (sendTestResults_)
             for (const std::string &s : sentencesOf("PNVGTST", snap)) send(s);
+        const SkySnapshot shown = reported(snap);
         for (const nvs::RzbEntry &e : outputList(kCurrentPort)) {
             if (e.rate <= 0 || epochIndex_ % e.rate != 0) continue;
-            for (const std::string &s : sentencesOf(e.address, snap)) send(s);
+            for (const std::string &s : sentencesOf(e.address, shown)) send(s);
         }
     }
     sendTestResults_ = false;
@@ -240,7 +266,14 @@ void NvsReceiver::onCommand(const Sentence &s, const Message *decoded, std::stri
 void NvsReceiver::handleRtk(const Sentence &s, const nvs::Rtk &m) {
     const double oldInterval = epochInterval();
     const int oldMode = mode();
+    const std::string oldXyz = store_.value("rtk.BASEXYZ"), oldBlh = store_.value("rtk.BASEBLH");
+    const std::string oldAverage = store_.value("rtk.AVGTIME");
     store_.apply(m); // a value the receiver does not take leaves the one it had
+    if (store_.value("rtk.BASEXYZ") != oldXyz)
+        syncBasePosition(true);
+    else if (store_.value("rtk.BASEBLH") != oldBlh)
+        syncBasePosition(false);
+    if (mode() == 3 && store_.value("rtk.AVGTIME") != oldAverage) onReset(ResetKind::Hot);
     // The answer names every parameter asked, as often as asked, with the value in force;
     // unknown names are left out.
     std::vector<nvs::RtkSet> answer;
@@ -373,6 +406,93 @@ void NvsReceiver::handleIdl(const Sentence &s, const nvs::Idl &m) {
         }
         break;
     case nvs::IdlKind::Item: break; // a reply, not a command
+    }
+}
+
+// ---- Base station -------------------------------------------------------------------------
+
+std::optional<wgs84::Geodetic> NvsReceiver::basePosition() const {
+    double xyz[3];
+    if (!parseNumbers(store_.value("rtk.BASEXYZ"), xyz)) return std::nullopt;
+    return wgs84::toGeodetic({xyz[0], xyz[1], xyz[2]});
+}
+
+void NvsReceiver::setBasePosition(const wgs84::Geodetic &g) {
+    const wgs84::Ecef xyz = wgs84::toEcef(g);
+    store_.set("rtk.BASEXYZ", fixed(xyz.x, 4) + "," + fixed(xyz.y, 4) + "," + fixed(xyz.z, 4));
+    store_.set("rtk.BASEBLH", fixed(wgs84::radians(g.latDeg), 10) + "," +
+                                      fixed(wgs84::radians(g.lonDeg), 10) + "," +
+                                      fixed(g.height, 4));
+}
+
+void NvsReceiver::syncBasePosition(bool fromXyz) {
+    double v[3];
+    if (fromXyz) {
+        if (auto g = basePosition()) setBasePosition(*g);
+        return;
+    }
+    // BASEBLH: B and L in radians (or the NMEA form the reply may use: not written here).
+    if (!parseNumbers(store_.value("rtk.BASEBLH"), v)) return;
+    setBasePosition({wgs84::degrees(v[0]), wgs84::degrees(v[1]), v[2]});
+}
+
+SkySnapshot NvsReceiver::reported(const SkySnapshot &snap) const {
+    if (!isBase() || snap.fix == FixKind::None || averagingSince_ >= 0 ||
+        store_.integer("rtk.BASENMEA") != 0)
+        return snap;
+    const auto base = basePosition();
+    if (!base) return snap;
+    SkySnapshot s = snap;
+    s.lat = base->latDeg;
+    s.lon = base->lonDeg;
+    s.altMsl = base->height - s.geoidSep;
+    s.errNorth = s.errEast = s.errUp = 0;
+    return s;
+}
+
+void NvsReceiver::baseEpoch(const SkySnapshot &snap) {
+    if (snap.fix == FixKind::None) return; // no position of its own yet: nothing to send
+    const wgs84::Geodetic own{snap.lat, snap.lon, snap.altMsl + snap.geoidSep};
+    if (averagingSince_ >= 0) { // MODE 3: averaging, no RTCM until it ends
+        const wgs84::Ecef e = wgs84::toEcef(own);
+        averageSum_[0] += e.x, averageSum_[1] += e.y, averageSum_[2] += e.z;
+        ++averaged_;
+        if (time() - averagingSince_ < store_.real("rtk.AVGTIME", 30) * 60) return;
+        const double n = double(averaged_);
+        if (auto g =
+                    wgs84::toGeodetic({averageSum_[0] / n, averageSum_[1] / n, averageSum_[2] / n}))
+            setBasePosition(*g);
+        averagingSince_ = -1;
+    }
+    const auto base = basePosition();
+    if (!base) return;
+    const double threshold = store_.real("rtk.BASETH", 500);
+    beyondThreshold_ =
+            threshold > 0 && distance(wgs84::toEcef(*base), wgs84::toEcef(own)) > threshold;
+    if (beyondThreshold_) return;
+    BaseStationConfig config;
+    config.latDeg = base->latDeg;
+    config.lonDeg = base->lonDeg;
+    config.height = base->height;
+    config.stationId = static_cast<unsigned>(store_.integer("rtk.BASEID", kBaseStation));
+    config.seed = options().seed;
+    config.biasesInterval = 0;
+    config.observations = BaseStationConfig::Observations::Legacy;
+    config.observationInterval = std::max(1, static_cast<int>(store_.integer("rtk.RTCMRATE", 1)));
+    if (!baseTx_) {
+        baseTx_ = std::make_unique<RtcmBaseStation>(config);
+        baseTx_->startAt(time()); // on the simulated clock: its epochs at whole seconds
+        baseTx_->advance(0);
+    } else {
+        baseTx_->reconfigure(config);
+        baseTx_->advance(time() - baseTx_->time());
+    }
+    const std::string frames = baseTx_->takeOutput();
+    if (frames.empty()) return;
+    for (int port = 1; port <= 3; ++port) {
+        if (nvs::portNumber(nvs::portName(port)) != port) continue;
+        if (store_.integer(protocolKey(port)) != 7) continue;
+        sendBytes(frames, port == kCurrentPort ? 0 : port);
     }
 }
 

@@ -14,12 +14,23 @@
 //   the reply carries the value in force), PNVGIDL MODE/ADD/REMOVE/CLEAR/SHOW.
 // PNVGCFG,W saves to the simulated flash; a power cycle (Receiver::powerCycle(), SIGHUP to
 // gnss-sim) and PNVGCFG,R restore from it; PNVGRST keeps the settings in force (spec table 4.3).
+//
+// As a base (MODE 1, or 3 once AVGTIME minutes of its own positions are averaged into BASEXYZ)
+// it sends RTCM 3 on every port PNVGRZA set to protocol 7: #1002 and #1010 every RTCMRATE
+// seconds (once a second for 0, "as the PVT rate"), the station (1005) with BASEID every second.
+// BASEXYZ and BASEBLH are one antenna reference point: writing either sets both. Past BASETH
+// metres between that point and its own position it sends no RTCM; with BASENMEA 0 its NMEA
+// reports the base position. The host is on COM1; COM2's output is takeOutput(2).
 #include "sim/dialect_receiver.h"
 #include "sim/standard_output.h"
 
+#include "core/wgs84.h"
 #include "nvs/nvs_messages.h"
 #include "nvs/nvs_schema.h"
 #include "rtcm/rtcm_framer.h"
+#include "sim/rtcm_base_station.h"
+
+#include <memory>
 
 #include <optional>
 
@@ -67,6 +78,21 @@ private:
     void handleCfg(const Sentence &s, const nvs::Cfg &m);
     void handlePps(const Sentence &s, const nvs::Pps &m);
     void handleIdl(const Sentence &s, const nvs::Idl &m);
+
+    // Base station (MODE 1 and 3).
+    bool isBase() const { return mode() == 1 || mode() == 3; }
+    void baseEpoch(const SkySnapshot &snap);
+    // BASEXYZ or BASEBLH was written: the other follows (one antenna reference point).
+    void syncBasePosition(bool fromXyz);
+    void setBasePosition(const wgs84::Geodetic &g);
+    std::optional<wgs84::Geodetic> basePosition() const;
+    // The epoch as NMEA reports it: at the base position with BASENMEA 0 in base mode.
+    SkySnapshot reported(const SkySnapshot &snap) const;
+    std::unique_ptr<RtcmBaseStation> baseTx_;
+    double averagingSince_ = -1; // MODE 3: averaging since (simulated time), -1 when done
+    double averageSum_[3] = {0, 0, 0};
+    long long averaged_ = 0;
+    bool beyondThreshold_ = false; // BASETH exceeded: no RTCM
 
     std::int64_t epochIndex_ = 0;
     bool sendTestResults_ = true;
