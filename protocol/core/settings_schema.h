@@ -40,6 +40,33 @@ enum class SettingRole : std::uint8_t {
     SnrMask,       // dB-Hz below which signals are not used
     OutputRate,    // navigation/output rate, Hz
     PortSpeed,     // the speed of the port the host is on, bit/s
+    // A base station (protocol/base): whatever the vendor calls them.
+    BaseMode,             // rover, base at a set position, base that averages its own (options'
+                          // meanings say which value is which)
+    BasePosition,         // the base's antenna reference point, ECEF "X,Y,Z" in metres
+    BaseStationId,        // the RTCM station id it sends (DF003)
+    BaseRtcmInterval,     // seconds between the base's observables
+    BaseThreshold,        // metres between the set position and its own past which it stops
+    BaseAveragingMinutes, // how long the receiver averages its own position
+    BaseAveragingInput,   // which of its fixes it averages
+    BaseNmeaPosition,     // whose position its NMEA reports in base mode (options' meanings)
+    PortSpeedOf,          // a port's speed, bit/s (SettingDef::port names the port)
+    PortProtocol,         // what a port carries (SettingDef::port; options' meanings)
+};
+
+// What an option of an enumerated setting means, where a role needs to know (which value of the
+// mode is a base, which protocol is RTCM 3).
+enum class OptionMeaning : std::uint8_t {
+    None,
+    Autonomous,    // BaseMode: a receiver on its own
+    Rover,         // BaseMode: an RTK rover
+    BaseFixed,     // BaseMode: a base at the position set
+    BaseAveraging, // BaseMode: a base that averages its own position first
+    Off,           // PortProtocol: nothing
+    Nmea,          // PortProtocol: NMEA 0183
+    Rtcm3,         // PortProtocol: RTCM 3
+    BasePosition,  // BaseNmeaPosition: the set base position
+    OwnPosition,   // BaseNmeaPosition: the receiver's own fix
 };
 
 struct SettingCommand; // setting_command.h
@@ -47,6 +74,7 @@ struct SettingCommand; // setting_command.h
 struct SettingOption {
     std::string_view value; // what is sent ("1", "GPS", "ON")
     std::string_view label; // what the user reads
+    OptionMeaning meaning = OptionMeaning::None;
 };
 
 struct SettingDef {
@@ -67,6 +95,9 @@ struct SettingDef {
     // this, never from the texts above. nullptr: neither written nor read (not a setting).
     const SettingCommand *command = nullptr;
     SettingRole role = SettingRole::None;
+    // The receiver's port a per-port setting belongs to, as the vendor numbers them (1 = COM1);
+    // 0 for receiver-wide settings.
+    std::uint8_t port = 0;
 };
 
 struct KeyValue {

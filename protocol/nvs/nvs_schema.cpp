@@ -11,25 +11,29 @@ using T = SettingType;
 constexpr auto kNone = std::nullopt;
 
 constexpr O kOnOff[] = {{"0", "Off"}, {"1", "On"}};
-constexpr O kMode[] = {{"0", "Autonomous"},
-                       {"1", "Base station"},
-                       {"2", "RTK rover"},
-                       {"3", "Base station with automatic antenna position averaging"},
-                       {"4", "RTK rover + heading (NV08C-RTK-A only)"}};
+using M = OptionMeaning;
+constexpr O kMode[] = {
+        {"0", "Autonomous", M::Autonomous},
+        {"1", "Base station", M::BaseFixed},
+        {"2", "RTK rover", M::Rover},
+        {"3", "Base station with automatic antenna position averaging", M::BaseAveraging},
+        {"4", "RTK rover + heading (NV08C-RTK-A only)", M::Rover}};
 constexpr O kPvtRate[] = {{"1", "1 Hz"}, {"2", "2 Hz"}, {"5", "5 Hz"}, {"10", "10 Hz"}};
 constexpr O kRtcmRate[] = {{"0", "Same as PVT rate"},
                            {"1", "Every 1 s"},
                            {"2", "Every 2 s"},
                            {"5", "Every 5 s"},
                            {"10", "Every 10 s"}};
-constexpr O kBaseNmea[] = {{"0", "Base coordinates"}, {"1", "Current 3D coordinates"}};
+constexpr O kBaseNmea[] = {{"0", "Base coordinates", M::BasePosition},
+                           {"1", "Current 3D coordinates", M::OwnPosition}};
 constexpr O kAvgMode[] = {
         {"0", "Any valid coordinates"}, {"1", "Fixed & Float"}, {"2", "Fixed only"}};
 constexpr O kSfMode[] = {{"0", "Disable"}, {"1", "Retain"}, {"2", "Transition"}, {"3", "Hybrid"}};
 constexpr O kIcbMode[] = {{"0", "Off"},
                           {"1", "Initial calibration (GPS as reference)"},
                           {"2", "Real-time recalibration"}};
-constexpr O kProtocol[] = {{"0", "Disabled"}, {"1", "NMEA 0183"}, {"7", "RTCM"}};
+constexpr O kProtocol[] = {
+        {"0", "Disabled", M::Off}, {"1", "NMEA 0183", M::Nmea}, {"7", "RTCM", M::Rtcm3}};
 constexpr O kTalker[] = {{"0", "GGA and RMC talker always GP"},
                          {"1", "Compatibility off: talker as specified"}};
 constexpr O kPpsType[] = {{"P", "Software-synchronised"},
@@ -68,7 +72,8 @@ constexpr std::string_view kRtk = "RTK engine";
                .readBack = "none documented (PNVGRZA answers only when set)",                      \
                .write = "$PNVGRZA," N ",<baud>,<protocol>",                                        \
                .command = &kPortCommands[N[0] - '1'],                                              \
-               .role = SPEED_ROLE},                                                                \
+               .role = SPEED_ROLE,                                                                 \
+               .port = N[0] - '0'},                                                                \
             SettingDef {                                                                           \
         .key = "port." NAME ".protocol", .label = NAME " protocol", .group = "Ports",              \
         .type = T::Enum, .options = kProtocol, .defaultValue = "1",                                \
@@ -76,7 +81,8 @@ constexpr std::string_view kRtk = "RTK engine";
                 "rate.",                                                                           \
         .access = SettingAccess::WriteOnly,                                                        \
         .readBack = "none documented (PNVGRZA answers only when set)",                             \
-        .write = "$PNVGRZA," N ",<baud>,<protocol>", .command = &kPortCommands[N[0] - '1']         \
+        .write = "$PNVGRZA," N ",<baud>,<protocol>", .command = &kPortCommands[N[0] - '1'],        \
+        .role = SettingRole::PortProtocol, .port = N[0] - '0'                                      \
     }
 
 #define OUTPUT(N, NAME)                                                                            \
@@ -114,10 +120,12 @@ constexpr std::string_view kRtk = "RTK engine";
 
 const SettingDef kSchema[] = {
         // ---- 4.14 PNVGRTK, Table 4 (33 parameters, in the spec's order) ----
-        RTK("MODE", "Operation mode", T::Enum, "", kNone, kNone, kMode, "2",
-            "Setting of operation mode: 0 Autonomous, 1 Base Station, 2 RTK-Rover (by default), "
-            "3 Base Station with automatic antenna position averaging, 4 RTK Rover + Heading "
-            "(NV08C-RTK-A only)."),
+        RTK_ROLE("MODE", "Operation mode", T::Enum, "", kNone, kNone, kMode, "2",
+                 "Setting of operation mode: 0 Autonomous, 1 Base Station, 2 RTK-Rover (by "
+                 "default), "
+                 "3 Base Station with automatic antenna position averaging, 4 RTK Rover + Heading "
+                 "(NV08C-RTK-A only).",
+                 SettingRole::BaseMode),
         RTK_ROLE("PVTRATE", "PVT rate", T::Enum, "Hz", kNone, kNone, kPvtRate, "5",
                  "PVT rate, Hz (1, 2, 5 by default, 10).", SettingRole::OutputRate),
         RTK("SYSGPS", "Use GPS", T::Bool, "", kNone, kNone, kOnOff, "1",
@@ -143,29 +151,40 @@ const SettingDef kSchema[] = {
         RTK("RTCMAGE", "Differential age threshold", T::Integer, "s", 1, 999, {}, "45",
             "Differential age threshold (max age of RTCM data to use for RTK), seconds (45 by "
             "default). Range as PNVGBSS reports the data age (up to 999 s)."),
-        RTK("BASEID", "Base station ID", T::Integer, "", 0, 4095, {}, "2",
-            "Station ID for Base mode, 0 - 4095 (2 by default)."),
-        RTK("RTCMRATE", "RTCM raw data rate", T::Enum, "s", kNone, kNone, kRtcmRate, "1",
-            "Rate of RTCM messages with raw data (#1002 and #1010): 0 - same as PVT rate; 1 (by "
-            "default), 2, 5, 10 - interval between RTCM messages, seconds."),
-        RTK("BASEXYZ", "Base antenna position (ECEF)", T::Coordinates, "m", kNone, kNone, {}, "",
-            "Base Station Antenna Reference Point ECEF-X,Y,Z, m (three values x,y,z)."),
+        RTK_ROLE("BASEID", "Base station ID", T::Integer, "", 0, 4095, {}, "2",
+                 "Station ID for Base mode, 0 - 4095 (2 by default).", SettingRole::BaseStationId),
+        RTK_ROLE("RTCMRATE", "RTCM raw data rate", T::Enum, "s", kNone, kNone, kRtcmRate, "1",
+                 "Rate of RTCM messages with raw data (#1002 and #1010): 0 - same as PVT rate; 1 "
+                 "(by "
+                 "default), 2, 5, 10 - interval between RTCM messages, seconds.",
+                 SettingRole::BaseRtcmInterval),
+        RTK_ROLE("BASEXYZ", "Base antenna position (ECEF)", T::Coordinates, "m", kNone, kNone, {},
+                 "", "Base Station Antenna Reference Point ECEF-X,Y,Z, m (three values x,y,z).",
+                 SettingRole::BasePosition),
         RTK("BASEBLH", "Base antenna position (B,L,H)", T::Coordinates, "rad,rad,m", kNone, kNone,
             {}, "",
             "Base Station Antenna Reference Point. Two formats: B,L,H (radians for B and L, "
             "metres for H) or NMEA format (ddmm.mmmm,N,dddmm.mmmm,E,H)."),
-        RTK("BASETH", "Base coordinates check threshold", T::Real, "m", 0, kNone, {}, "500",
-            "BASE coordinates checking threshold, m (500 m by default). If the distance between "
-            "BASE coordinates and the current 3D position in BASE mode exceeds it, RTCM output "
-            "stops, the current position is given in NMEA and PNVGBSS shows the distance."),
-        RTK("BASENMEA", "NMEA coordinates in base mode", T::Enum, "", kNone, kNone, kBaseNmea, "0",
-            "Type of coordinates used for NMEA output in BASE mode: 0 - BASE coordinates (by "
-            "default), 1 - current 3D coordinates."),
-        RTK("AVGTIME", "Position averaging time", T::Integer, "min", 1, kNone, {}, "30",
-            "Antenna position averaging time for Base mode, minutes (30 by default)."),
-        RTK("AVGMODE", "Position averaging input", T::Enum, "", kNone, kNone, kAvgMode, "0",
-            "Type of coordinates used for antenna position averaging: 0 (by default) - any valid "
-            "coordinates, 1 - Fixed & Float, 2 - Fixed only."),
+        RTK_ROLE(
+                "BASETH", "Base coordinates check threshold", T::Real, "m", 0, kNone, {}, "500",
+                "BASE coordinates checking threshold, m (500 m by default). If the distance "
+                "between "
+                "BASE coordinates and the current 3D position in BASE mode exceeds it, RTCM output "
+                "stops, the current position is given in NMEA and PNVGBSS shows the distance.",
+                SettingRole::BaseThreshold),
+        RTK_ROLE("BASENMEA", "NMEA coordinates in base mode", T::Enum, "", kNone, kNone, kBaseNmea,
+                 "0",
+                 "Type of coordinates used for NMEA output in BASE mode: 0 - BASE coordinates (by "
+                 "default), 1 - current 3D coordinates.",
+                 SettingRole::BaseNmeaPosition),
+        RTK_ROLE("AVGTIME", "Position averaging time", T::Integer, "min", 1, kNone, {}, "30",
+                 "Antenna position averaging time for Base mode, minutes (30 by default).",
+                 SettingRole::BaseAveragingMinutes),
+        RTK_ROLE("AVGMODE", "Position averaging input", T::Enum, "", kNone, kNone, kAvgMode, "0",
+                 "Type of coordinates used for antenna position averaging: 0 (by default) - any "
+                 "valid "
+                 "coordinates, 1 - Fixed & Float, 2 - Fixed only.",
+                 SettingRole::BaseAveragingInput),
         RTK("RAIM", "RAIM", T::Bool, "", kNone, kNone, kOnOff, "1",
             "RAIM mode: 0 - OFF, 1 - ON (by default)."),
         RTK("SFMODE", "Secondary filter mode", T::Enum, "", kNone, kNone, kSfMode, "0",
@@ -223,8 +242,8 @@ const SettingDef kSchema[] = {
         // ---- 4.4 PNVGRZA per port ----
         // The simulated and usual host is on COM1: its speed is the link's.
         PORT("1", "COM1", SettingRole::PortSpeed),
-        PORT("2", "COM2", SettingRole::None),
-        PORT("3", "USB", SettingRole::None),
+        PORT("2", "COM2", SettingRole::PortSpeedOf),
+        PORT("3", "USB", SettingRole::PortSpeedOf),
 
         // ---- 4.5 PNVGRZB output lists per port ----
         OUTPUT("1", "COM1"),
