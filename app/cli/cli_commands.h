@@ -47,5 +47,6 @@ int cmdServe(const CliContext &ctx);
 int cmdTtff(const CliContext &ctx);
 // The user's site list (cmd_sites.cpp): list, add, remove, export, import.
 int cmdSites(const CliContext &ctx);
+int cmdBase(const CliContext &ctx);
 
 } // namespace gnss::cli

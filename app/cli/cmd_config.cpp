@@ -19,6 +19,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_output.h"
 #include "cli/cli_source.h"
+#include "cli/settings_link.h"
 #include "config/refusal_text.h"
 #include "config/settings_engine.h"
 #include "link/command_queue.h"
@@ -43,124 +44,6 @@ void say(const QString &s) {
     std::fprintf(stderr, "gnss-cli: %s\n", s.toUtf8().constData());
 }
 
-// Runs an engine operation to its end.
-OperationReport run(SettingsEngine &engine, const std::function<bool()> &start) {
-    QEventLoop loop;
-    bool done = false;
-    auto c = QObject::connect(&engine, &SettingsEngine::finished, &loop, [&] {
-        done = true;
-        loop.quit();
-    });
-    start();
-    if (!done) loop.exec();
-    QObject::disconnect(c);
-    return engine.lastReport();
-}
-
-// The verification of an apply, one line per setting, then the summary.
-void printChecks(const OperationReport &r) {
-    for (const auto &c : r.checks) {
-        printJson([&](JsonWriter &w) {
-            w.beginObject()
-                    .field("key", c.key)
-                    .field("set", c.wanted)
-                    .field("reported", textOrNull(c.reported))
-                    .field("verdict", utf8(config::verdictName(c.verdict)))
-                    .endObject();
-        });
-    }
-    printJson([&](JsonWriter &w) {
-        w.beginObject()
-                .field("ok", r.ok())
-                .field("nothing_to_do", r.nothingToDo)
-                .field("commands", static_cast<int>(r.commands.size()))
-                .field("failed_commands", r.failedCommands())
-                .field("failed_checks", r.failedChecks());
-        w.key("companions").beginArray();
-        for (const auto &kv : r.companions) w.value(kv.key + "=" + kv.value);
-        w.endArray();
-        w.field("error", textOrNull(r.error)).endObject();
-    });
-}
-
-bool reportRead(const OperationReport &r) {
-    if (r.ok()) return true;
-    say(QObject::tr("reading the settings failed: %1")
-                .arg(r.error.isEmpty()
-                             ? QObject::tr("%n command(s) failed", nullptr, r.failedCommands())
-                             : r.error));
-    for (const auto &c : r.commands)
-        if (c.outcome != link::CommandOutcome::Accepted && c.outcome != link::CommandOutcome::Sent)
-            say(QString("  %1: %2").arg(c.sentence, c.detail));
-    return false;
-}
-
-struct Link {
-    std::unique_ptr<link::Connection> connection;
-    const Dialect *dialect = nullptr;
-    bool usageError = false; // no link because the options were wrong (exit 2, not 1)
-};
-
-// Opens the source (any the application knows), finds the speed and the dialect; an empty Link
-// after saying why.
-Link openLink(const CliContext &ctx, const Args &args) {
-    Link l;
-    std::string error;
-    const auto spec = sourceFromArgs(args,
-                                     {link::SourceSpec::Kind::Serial, link::SourceSpec::Kind::Tcp,
-                                      link::SourceSpec::Kind::Simulator},
-                                     error);
-    if (!spec) {
-        say(QString::fromStdString(error));
-        l.usageError = true;
-        return l;
-    }
-    const std::string dialectId = args.option("dialect").value_or(
-            spec->kind == link::SourceSpec::Kind::Simulator ? spec->name.toStdString() : "auto");
-    if (dialectId != "auto") {
-        l.dialect = ctx.registry.find(dialectId);
-        if (!l.dialect) {
-            say(QObject::tr("unknown dialect '%1'").arg(QString::fromStdString(dialectId)));
-            l.usageError = true;
-            return l;
-        }
-    }
-    OpenOptions o;
-    o.autoReconnect = false;
-    QString why;
-    l.connection = openConnection(ctx, *spec, o, why);
-    if (!l.connection) {
-        say(why);
-        return {};
-    }
-    if (!l.dialect) {
-        link::VendorDetector vendor(l.connection->stream());
-        QEventLoop loop;
-        link::VendorIdentity id;
-        QObject::connect(&vendor, &link::VendorDetector::finished,
-                         [&](const link::VendorIdentity &v) {
-                             id = v;
-                             loop.quit();
-                         });
-        QTimer::singleShot(0, &vendor, &link::VendorDetector::start);
-        loop.exec();
-        if (!id.found) {
-            say(QObject::tr("the receiver's dialect was not recognised (%1); give --dialect")
-                        .arg(id.error));
-            return {};
-        }
-        l.dialect = ctx.registry.find(id.dialect.toStdString());
-    }
-    if (l.dialect && l.dialect->settings.empty()) {
-        say(QObject::tr("the %1 dialect has no settings")
-                    .arg(QString::fromUtf8(l.dialect->id.data(),
-                                           static_cast<qsizetype>(l.dialect->id.size()))));
-        return {};
-    }
-    l.connection->stream()->setDialect(l.dialect);
-    return l;
-}
-
 // The schema keys of `typed` ("PVTRATE", "rtk.elgps": the forms findSetting takes), or false
 // with the unknown or ambiguous one said (and the keys it could mean).
 bool schemaKeys(const Dialect &d, std::vector<std::string> &keys) {
@@ -177,7 +60,7 @@ bool schemaKeys(const Dialect &d, std::vector<std::string> &keys) {
 
 int get(SettingsEngine &engine, std::vector<std::string> keys) {
     if (!schemaKeys(*engine.dialect(), keys)) return 2;
-    const auto r = run(engine, [&] { return engine.read(keys); });
+    const auto r = runOperation(engine, [&] { return engine.read(keys); });
     const bool ok = reportRead(r);
     std::string out;
     JsonWriter w(out);
@@ -201,18 +84,6 @@ int get(SettingsEngine &engine, std::vector<std::string> keys) {
     w.endArray().endObject();
     printLine(out);
     return ok ? 0 : 1;
-}
-
-int applyValues(SettingsEngine &engine, const std::function<bool()> &start) {
-    auto c = QObject::connect(&engine, &SettingsEngine::commandFinished,
-                              [](const link::CommandResult &r) { printCommandResult(r, false); });
-    const auto r = run(engine, start);
-    QObject::disconnect(c);
-    printChecks(r);
-    if (!r.error.isEmpty()) say(r.error);
-    if (r.ok()) return 0;
-    // A value out of range, a read-only setting: the request was wrong, and nothing was sent.
-    return r.refusedBeforeSending() ? 2 : 1;
 }
 
 } // namespace
@@ -274,7 +145,7 @@ int cmdConfig(const CliContext &ctx) {
         if (!schemaKeys(*l.dialect, keys)) return 2;
         for (std::size_t i = 0; i < sets.size(); ++i) sets[i].key = keys[i];
         // Only what differs is sent: the engine reads the receiver first.
-        if (!keys.empty()) run(engine, [&] { return engine.read(keys); });
+        if (!keys.empty()) runOperation(engine, [&] { return engine.read(keys); });
         return applyValues(engine, [&] { return engine.apply(sets); });
     }
     if (action == "action") {
@@ -286,7 +157,7 @@ int cmdConfig(const CliContext &ctx) {
     }
     const QString path = QString::fromStdString(rest.front());
     if (action == "export") {
-        if (!reportRead(run(engine, [&] { return engine.read(); }))) return 1;
+        if (!reportRead(runOperation(engine, [&] { return engine.read(); }))) return 1;
         QString error;
         const config::Profile p = engine.exportProfile();
         if (!config::saveProfile(path, p, &error)) {
@@ -315,7 +186,7 @@ int cmdConfig(const CliContext &ctx) {
     // written to. The receiver's model is known once it is read: nothing is written to a
     // receiver of another model; and the values that differ are all checked before the first
     // is sent (the engine's apply).
-    if (!reportRead(run(engine, [&] { return engine.read(); }))) return 1;
+    if (!reportRead(runOperation(engine, [&] { return engine.read(); }))) return 1;
     if (action == "apply") {
         if (const QString why =
                     config::profileMismatch(profile, l.dialect, engine.identity().model);

@@ -183,6 +183,36 @@ constexpr OptionSpec kSitesOptions[] = {
         {"note", "TEXT", "add: a note"},
         {"replace", "", "add, import: replace a site of the same name"},
 };
+constexpr OptionSpec kBaseOptions[] = {
+        kPort,
+        kTcp,
+        kSim,
+        kLinkBaud,
+        {"dialect", "D", "the receiver's dialect (default: identified by its probe)"},
+        {"ecef", "X,Y,Z",
+         "set: the antenna reference point (or the mark, with --antenna-height), "
+         "Earth-centred, Earth-fixed metres"},
+        {"llh", "LAT,LON,HEIGHT",
+         "set: the mark: degrees (decimal, DM or DMS, N/S/E/W or a sign) and metres above the "
+         "ellipsoid"},
+        {"msl", "",
+         "set: --llh's HEIGHT is above sea level (the receiver's geoid separation is "
+         "added)"},
+        {"site", "NAME", "set: a site of the list (gnss-cli sites), its antenna height included"},
+        {"antenna-height", "H", "set: metres from the mark up to the antenna reference point"},
+        {"station", "N", "set, survey --set: the RTCM station id"},
+        {"rtcm-port", "N",
+         "set, survey --set: the receiver's port that sends the RTCM 3 (1 = COM1)"},
+        {"rtcm-baud", "B", "that port's speed (default: as it is, else the receiver's default)"},
+        {"rtcm-interval", "S", "set, survey --set: seconds between the observables"},
+        {"save", "", "set: save the settings to the receiver's flash once verified"},
+        {"minutes", "M", "survey: average for M minutes"},
+        {"sigma", "METRES", "survey: average until the mean's accuracy is METRES (3D)"},
+        {"by-receiver", "", "survey: the receiver averages its own position (whole --minutes)"},
+        {"input", "V", "survey --by-receiver: which fixes it averages (a value of its schema)"},
+        {"save-site", "NAME", "survey: save the result as a site of the list"},
+        {"set", "", "survey: then set the base at the result (with the set options)"},
+};
 constexpr OptionSpec kPlayOptions[] = {
         {"pty", "", "play to a new pseudo-terminal (its path is printed on standard output)"},
         {"tcp", "PORT", "play to TCP clients on 127.0.0.1:PORT (starts with the first client)"},
@@ -439,6 +469,30 @@ constexpr CommandSpec kCommands[] = {
          "opened or a port cannot be listened on (in use), 2 usage error (nothing listens), 130 "
          "interrupted.\n",
          0},
+        {"base", cmdBase,
+         "base --port P|--tcp HOST:PORT|--sim D [--baud B] status\n"
+         "base ... survey --minutes M|--sigma METRES [--by-receiver [--input V]] "
+         "[--save-site NAME] [--set [--station N] [--rtcm-port N] [--rtcm-interval S] [--save]]\n"
+         "base ... set --ecef X,Y,Z|--llh LAT,LON,HEIGHT [--msl]|--site NAME [--antenna-height H] "
+         "[--station N] [--rtcm-port N [--rtcm-baud B]] [--rtcm-interval S] [--save]",
+         "set up a receiver as an RTK base: survey in, set, verify, status", kBaseOptions,
+         "For a receiver whose dialect can be a base (the NV08C-RTK). Everything typed is checked "
+         "before the port is opened.\n"
+         "  status  one JSON line: mode and role, position (ECEF and geodetic), station, RTCM "
+         "interval, threshold, averaging, the ports known to carry RTCM, the receiver's own fix "
+         "and its distance from the position (a warning past the threshold: the receiver sends "
+         "no corrections then)\n"
+         "  survey  averages the receiver's fixes for --minutes or until --sigma: a JSON line a "
+         "second (positions, mean, sigma east/north/up, the mean's accuracy, progress), then the "
+         "result; --by-receiver sets the receiver's own averaging and follows its time instead; "
+         "--save-site keeps the result as a site, --set makes it the base\n"
+         "  set     the base's mode, position, station, RTCM interval and port, each command's "
+         "outcome and each setting read back (verified or not), then the status\n"
+         "Exit status: 0 done and verified, 1 a command refused or failed, a value that did not "
+         "verify, no fix, the source cannot be opened, 2 usage error, a malformed position, an "
+         "unknown site, a receiver that cannot be a base, a value out of range (nothing sent), "
+         "130 interrupted.\n",
+         1},
         {"sites", cmdSites,
          "sites list [--json]\n"
          "sites add NAME --llh LAT,LON[,HEIGHT]|--ecef X,Y,Z [--antenna-height H] [--accuracy M] "

@@ -206,6 +206,27 @@ QHash<QString, Treatment> table() {
              "[--accuracy M] [--date D] [--method TEXT] [--note TEXT] [--replace]",
              synopsis()},
             {"gnss-cli sites remove NAME", synopsis()},
+            // The base station (tests/base/tst_base_cli runs them against gnss-sim).
+            {"gnss-cli base --port P [--baud B] | --tcp HOST:PORT | --sim D status", synopsis()},
+            {"gnss-cli base ... survey --minutes M | --sigma METRES [--by-receiver [--input V]] "
+             "[--save-site NAME] [--set ...]",
+             synopsis()},
+            {"gnss-cli base ... set --ecef X,Y,Z | --llh LAT,LON,HEIGHT [--msl] | --site NAME "
+             "[--antenna-height H] [--station N] [--rtcm-port N [--rtcm-baud B]] "
+             "[--rtcm-interval S] [--save]",
+             synopsis()},
+            {"gnss-sim --dialect nvs --pty --link /tmp/base --com2 --com2-link /tmp/base-com2 "
+             "--speed 10 < /dev/null &",
+             hardware("a simulator left running in the background: tst_base_cli")},
+            {"gnss-cli base --port /tmp/base survey --minutes 1 --save-site \"Roof\" --set "
+             "--rtcm-port 2 --save",
+             hardware("the simulator started above: tst_base_cli")},
+            {"gnss-cli serve --port /tmp/base-com2 --baud 115200 --ntrip 2101/NVSB &",
+             hardware("the simulator started above: tst_base_cli")},
+            {"gnss-sim --dialect nvs --pty --link /tmp/rover --speed 10 --seed 2 < /dev/null &",
+             hardware("a simulator left running in the background: tst_base_cli")},
+            {"gnss-cli ntrip --caster 127.0.0.1:2101 --mount NVSB --port /tmp/rover --duration 20",
+             hardware("the caster and rover started above: tst_base_cli")},
             {"gnss-cli sites export FILE.csv|FILE.json", synopsis()},
             {"gnss-cli sites import FILE.csv|FILE.json [--replace]", synopsis()},
             // Run by tests/qualify/tst_ttff_cli on a pseudo-terminal of its own.

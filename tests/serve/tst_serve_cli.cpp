@@ -6,6 +6,7 @@
 #include "local_port.h"
 #include "rtcm/rtcm_framer.h"
 #include "rtcm_fixtures.h"
+#include "serve_process.h"
 #include "sim_tcp_process.h"
 
 #include <QElapsedTimer>
@@ -21,6 +22,7 @@
 
 using gnss::link::test::SimTcpProcess;
 using gnss::test::Run;
+using gnss::test::ServeProcess;
 
 namespace {
 
@@ -31,39 +33,9 @@ QProcessEnvironment withPassword() {
     return env;
 }
 
-// `gnss-cli serve ARGS` running in the background; port() is what it said it listens on.
-struct Serve {
-    QProcess proc;
-    QByteArray err;
-    explicit Serve(const QStringList &args) {
-        proc.setProcessEnvironment(withPassword());
-        proc.start(QStringLiteral(GNSS_CLI_PATH), QStringList{"serve"} + args);
-        proc.waitForStarted(5000);
-    }
-    ~Serve() {
-        if (proc.state() != QProcess::NotRunning) {
-            proc.terminate();
-            if (!proc.waitForFinished(5000)) proc.kill();
-        }
-    }
-    // Waits (up to `ms`) for standard error to say `pattern`; its first capture, or empty.
-    QString waitFor(const QString &pattern, int ms = 10000) {
-        const QRegularExpression re(pattern);
-        QElapsedTimer t;
-        t.start();
-        while (t.elapsed() < ms) {
-            err += proc.readAllStandardError();
-            const auto m = re.match(QString::fromUtf8(err));
-            if (m.hasMatch()) return m.captured(1).isEmpty() ? m.captured(0) : m.captured(1);
-            if (proc.state() == QProcess::NotRunning) break;
-            proc.waitForReadyRead(100);
-        }
-        err += proc.readAllStandardError();
-        return {};
-    }
-    quint16 ntripPort() {
-        return quint16(waitFor("NTRIP caster on 127\\.0\\.0\\.1:(\\d+)").toUInt());
-    }
+// `gnss-cli serve ARGS` with the passwords above in its environment.
+struct Serve : ServeProcess {
+    explicit Serve(const QStringList &args) : ServeProcess(args, withPassword()) {}
 };
 
 // Connects to 127.0.0.1:port, sends `request` and reads until `done` says so (or 8 s pass).

@@ -437,7 +437,9 @@ void NvsReceiver::syncBasePosition(bool fromXyz) {
 }
 
 SkySnapshot NvsReceiver::reported(const SkySnapshot &snap) const {
-    if (!isBase() || snap.fix == FixKind::None || averagingSince_ >= 0 ||
+    // Past BASETH the receiver gives its own position (spec: "the current position is given in
+    // NMEA").
+    if (!isBase() || snap.fix == FixKind::None || averagingSince_ >= 0 || beyondThreshold_ ||
         store_.integer("rtk.BASENMEA") != 0)
         return snap;
     const auto base = basePosition();
