@@ -214,6 +214,7 @@ private:
     QWidget *makeSignalHistory(ui::ReceiverSession &s);
     QWidget *makeCompare(ui::ReceiverSession &s);
     QWidget *makeQualification(ui::ReceiverSession &s);
+    QWidget *makeBaseStation(ui::ReceiverSession &s);
     void useSites(ui::AccuracyPanel *panel);
     void updateCompareReceivers();
     QWidget *makeLogTrack(ui::ReceiverSession &s);

@@ -1,5 +1,6 @@
 // MainWindow's docks: each made from its row of the dock table (dock_table.h) for the session it
 // shows, laid out by the table, and the wiring each view needs in its own maker.
+#include "base/base_station_view.h"
 #include "gui/corrections_controller.h"
 #include "gui/log_viewer.h"
 #include "gui/main_window.h"
@@ -314,6 +315,16 @@ QWidget *MainWindow::makeQualification(ui::ReceiverSession &) {
         statusBar()->showMessage(
                 files.isEmpty() ? error : tr("Report written: %1").arg(files.join(", ")), 15000);
     });
+    return view;
+}
+
+QWidget *MainWindow::makeBaseStation(ui::ReceiverSession &s) {
+    // The receiver as an RTK base: its settings engine and its epochs, the window's sites.
+    auto *view = new ui::BaseStationView(s.link()->settings(), s.state(), this);
+    view->setSiteStore(&siteStore_);
+    followDisplayPrefs(view);
+    connect(view, &ui::BaseStationView::message, this,
+            [this](const QString &m) { statusBar()->showMessage(m, 10000); });
     return view;
 }
 

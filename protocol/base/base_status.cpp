@@ -40,7 +40,8 @@ BaseStatus baseStatus(const BaseRoles &roles,
     s.own = own;
     if (own && s.position) {
         s.distance = distanceBetween(own->position, *s.position);
-        s.beyondThreshold = s.threshold && *s.threshold > 0 && *s.distance > *s.threshold;
+        s.beyondThreshold =
+                s.isBase() && s.threshold && *s.threshold > 0 && *s.distance > *s.threshold;
     }
     return s;
 }

@@ -1,0 +1,170 @@
+// The Base station dock in the real window at 1280x800, with two simulated NV08C-RTKs on
+// pseudo-terminals (baud "auto"), ten times faster than real time: one is made a base from a
+// survey-in by the workbench (until the mean is known to 0.3 m), its RTCM on its COM2, each
+// setting verified by reading it back and the result kept as a site; its COM2 is served by
+// gnss-cli serve's caster; the other, a rover, takes that caster in its Corrections dock and
+// reaches RTK fixed. A GeoS-5 is said not to be able to be a base; a typed position 1 km away
+// is set with the threshold warning shown.
+#include "base/base_station_view.h"
+#include "builtin/dialects.h"
+#include "builtin/simulators.h"
+#include "cli_run.h"
+#include "common/app_transports.h"
+#include "gui/main_window.h"
+#include "models/receiver_session.h"
+#include "models/receiver_state_model.h"
+#include "serve_process.h"
+#include "session/receiver_link.h"
+#include "sim_process.h"
+#include "sites/site_store.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace gnss;
+using gnss::link::SourceSpec;
+using gnss::link::test::SimProcess;
+using gnss::session::ReceiverLink;
+
+namespace {
+
+bool connected(ui::ReceiverSession *s) {
+    return s->link()->state() == ReceiverLink::State::Connected && s->state()->epochCount() > 0;
+}
+
+template <class W> W *child(QWidget *root, const char *name) {
+    auto *w = root->findChild<W *>(QLatin1String(name));
+    if (!w) qWarning("no %s", name);
+    return w;
+}
+
+QString verdicts(QListWidget *list) {
+    QStringList lines;
+    for (int i = 0; i < list->count(); ++i) lines << list->item(i)->text();
+    return lines.join('\n');
+}
+
+} // namespace
+
+class TstBaseWindow : public QObject {
+    Q_OBJECT
+    DialectRegistry registry_ = makeBuiltinRegistry();
+    link::TransportFactory transports_ = app::makeTransportFactory(gnss::sim::builtinSimulators());
+    QTemporaryDir dir_;
+
+private slots:
+    void aSurveyedBaseFeedsARoverToRtkFixed() {
+        SimProcess base({"--dialect", "nvs", "--baud", "38400", "--speed", "10", "--com2"});
+        REQUIRE_SIM(base);
+        const QString com2 = gnss::link::test::firstLine(base.proc);
+        QVERIFY(com2.startsWith("/dev/"));
+        SimProcess rover({"--dialect", "nvs", "--speed", "10", "--seed", "2"});
+        REQUIRE_SIM(rover);
+        QSettings settings(dir_.filePath("window.ini"), QSettings::IniFormat);
+        qputenv(sites::SiteStore::kDirectoryVariable, dir_.filePath("data").toUtf8());
+        app::MainWindow w(registry_, transports_, &settings);
+        w.resize(1280, 800);
+        w.show();
+        w.connectReceiversAtStart({{SourceSpec::Kind::Serial, base.device, 0},
+                                   {SourceSpec::Kind::Serial, rover.device, 0}});
+        ui::ReceiverSession *b = w.sessions()[0], *r = w.sessions()[1];
+        QTRY_VERIFY_WITH_TIMEOUT(connected(b) && connected(r), 40000);
+        QTRY_VERIFY_WITH_TIMEOUT(b->dialect() && r->dialect(), 15000);
+        w.selectReceiver(b);
+        QVERIFY(w.showDock("base"));
+        auto *view = w.dock("baseDock")->findChild<ui::BaseStationView *>();
+        QVERIFY(view && view->isVisible() && view->canBeBase());
+        QVERIFY(w.minimumSizeHint().height() <= 740);
+        auto *status = child<QLabel>(view, "baseStatus");
+        QTRY_VERIFY_WITH_TIMEOUT(status->text().contains("RTK rover"), 15000);
+
+        // The workbench's survey-in, until the mean is known to 0.3 m.
+        child<QComboBox>(view, "surveyGoal")->setCurrentIndex(1);
+        child<QDoubleSpinBox>(view, "surveyGoalValue")->setValue(0.3);
+        QTest::mouseClick(child<QPushButton>(view, "surveyStart"), Qt::LeftButton);
+        QVERIFY(view->surveying());
+        QTRY_VERIFY_WITH_TIMEOUT(!view->surveying(), 30000);
+        const base::SurveyStatus s = view->survey().status();
+        QVERIFY(s.count >= 10 && s.accuracy <= 0.3);
+        QVERIFY(std::abs((s.mean.latDeg - 55.7512) * 111320) < 3);
+        QVERIFY(child<QLabel>(view, "surveyText")->text().contains("σ east"));
+        QVERIFY(!view->survey().history().empty());
+
+        // Set: station 42, RTCM on COM2; every setting verified by reading it back.
+        child<QSpinBox>(view, "baseStation")->setValue(42);
+        auto *port = child<QComboBox>(view, "basePort");
+        port->setCurrentIndex(port->findData(2));
+        QTest::mouseClick(child<QPushButton>(view, "baseSet"), Qt::LeftButton);
+        auto *list = child<QListWidget>(view, "baseVerdicts");
+        QTRY_VERIFY2_WITH_TIMEOUT(verdicts(list).contains("rtk.BASEXYZ"),
+                                  qPrintable(verdicts(list)), 15000);
+        QVERIFY2(verdicts(list).contains("rtk.MODE: 1 (verified)"), qPrintable(verdicts(list)));
+        QVERIFY2(verdicts(list).contains("rtk.BASEID: 42 (verified)"), qPrintable(verdicts(list)));
+        QTRY_VERIFY2(status->text().contains("base at a set position") &&
+                             status->text().contains("RTCM on port 2"),
+                     qPrintable(status->text()));
+        QVERIFY(!child<QLabel>(view, "baseWarning")->isVisible());
+
+        // Served from its COM2; the rover takes it in its Corrections dock.
+        gnss::test::ServeProcess serve({"--port", com2, "--baud", "115200", "--ntrip",
+                                        "127.0.0.1:0/NVSB", "--duration", "60"});
+        const quint16 casterPort = serve.ntripPort();
+        QVERIFY2(casterPort != 0, serve.err.constData());
+        w.selectReceiver(r);
+        QVERIFY(w.showDock("corrections"));
+        QDockWidget *dock = w.dock("correctionsDock");
+        dock->findChild<QLineEdit *>("correctionsHost")->setText("127.0.0.1");
+        dock->findChild<QSpinBox *>("correctionsPort")->setValue(casterPort);
+        dock->findChild<QLineEdit *>("correctionsMount")->setText("NVSB");
+        QTest::mouseClick(dock->findChild<QPushButton *>("correctionsStartStop"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(r->state()->state().epoch.fix == FixType::RtkFixed, 30000);
+    }
+
+    void aPositionPastTheThresholdIsWarnedOf() {
+        QSettings settings(dir_.filePath("window2.ini"), QSettings::IniFormat);
+        app::MainWindow w(registry_, transports_, &settings);
+        w.resize(1280, 800);
+        w.show();
+        w.connectReceiversAtStart({{SourceSpec::Kind::Simulator, "nvs", 0},
+                                   {SourceSpec::Kind::Simulator, "geostar", 0}});
+        ui::ReceiverSession *nvs = w.sessions()[0], *geos = w.sessions()[1];
+        QTRY_VERIFY_WITH_TIMEOUT(connected(nvs) && connected(geos), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(nvs->dialect() && geos->dialect(), 15000);
+        w.selectReceiver(geos);
+        QVERIFY(w.showDock("base"));
+        auto *view = w.dock("baseDock")->findChild<ui::BaseStationView *>();
+        QTRY_VERIFY(view && !view->canBeBase());
+        QVERIFY(child<QLabel>(view, "baseUnsupported")->text().contains("cannot be a base"));
+
+        w.selectReceiver(nvs);
+        view = w.dock("baseDock")->findChild<ui::BaseStationView *>();
+        QTRY_VERIFY(view && view->canBeBase());
+        QTRY_VERIFY_WITH_TIMEOUT(nvs->state()->state().epoch.lat.has_value(), 20000);
+        child<QComboBox>(view, "baseSource")->setCurrentIndex(2);
+        auto *position = child<QLineEdit>(view, "knownPosition");
+        // Malformed: said, nothing sent.
+        position->setText("95,37,150");
+        QTest::mouseClick(child<QPushButton>(view, "baseSet"), Qt::LeftButton);
+        auto *list = child<QListWidget>(view, "baseVerdicts");
+        QVERIFY2(verdicts(list).contains("beyond 90"), qPrintable(verdicts(list)));
+        // 1.1 km north of where it is (DMS): set, verified, and the warning shown.
+        position->setText("55°45'40.3\"N, 37°37'06.2\"E, 166.6");
+        QTest::mouseClick(child<QPushButton>(view, "baseSet"), Qt::LeftButton);
+        QTRY_VERIFY2_WITH_TIMEOUT(verdicts(list).contains("rtk.BASEXYZ"),
+                                  qPrintable(verdicts(list)), 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(child<QLabel>(view, "baseWarning")->isVisible(), 10000);
+        QVERIFY(child<QLabel>(view, "baseWarning")->text().contains("no corrections"));
+    }
+};
+
+QTEST_MAIN(TstBaseWindow)
+#include "tst_base_window.moc"
