@@ -101,7 +101,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/cli/cmd_config.cpp" line="+88"/>
+        <location filename="../app/cli/settings_link.cpp" line="+68"/>
         <source>reading the settings failed: %1</source>
         <translation>не удалось прочитать настройки: %1</translation>
     </message>
@@ -115,7 +115,7 @@
         </translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+27"/>
         <source>unknown dialect &apos;%1&apos;</source>
         <translation>неизвестный диалект «%1»</translation>
     </message>
@@ -130,7 +130,7 @@
         <translation>у диалекта %1 нет настроек</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location filename="../app/cli/cmd_config.cpp" line="+95"/>
         <source>config needs an action: get, set, export, apply, diff or action</source>
         <translation>для config нужно действие: get, set, export, apply, diff или action</translation>
     </message>
@@ -4267,7 +4267,7 @@ Serial number: %3</source>
         <translation>Шкала времени журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/dock_table.cpp" line="+84"/>
+        <location filename="../app/gui/dock_table.cpp" line="+87"/>
         <source>Events</source>
         <translation>События</translation>
     </message>
@@ -4277,18 +4277,18 @@ Serial number: %3</source>
         <translation>События журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="+363"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="+374"/>
         <source>Save events</source>
         <translation>Сохранить события</translation>
     </message>
     <message>
-        <location line="-94"/>
-        <location line="+94"/>
+        <location line="-104"/>
+        <location line="+104"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-106"/>
         <source>Export the comparison</source>
         <translation>Экспорт сравнения</translation>
     </message>
@@ -4318,7 +4318,7 @@ Serial number: %3</source>
         <translation>Отчёт записан: %1</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+61"/>
         <location line="+15"/>
         <location filename="../app/gui/main_window_log.cpp" line="+255"/>
         <source>Not exported: %1</source>
@@ -4340,8 +4340,8 @@ Serial number: %3</source>
         <translation>Сохранить статистику</translation>
     </message>
     <message>
-        <location line="-107"/>
-        <location line="+109"/>
+        <location line="-117"/>
+        <location line="+119"/>
         <source>JSON (*.json)</source>
         <translation>JSON (*.json)</translation>
     </message>
@@ -4361,7 +4361,7 @@ Serial number: %3</source>
         <translation>Трек</translation>
     </message>
     <message>
-        <location line="-9"/>
+        <location line="-12"/>
         <source>Signal history</source>
         <translation>Сигналы</translation>
     </message>
@@ -4389,6 +4389,16 @@ Serial number: %3</source>
         <location line="+1"/>
         <source>Qualification (TTFF, accuracy)</source>
         <translation>Квалификация (TTFF, точность)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Base</source>
+        <translation>База</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base station</source>
+        <translation>Базовая станция</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -4532,7 +4542,7 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dock_table.cpp" line="-49"/>
+        <location filename="../app/gui/dock_table.cpp" line="-52"/>
         <location line="+1"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
@@ -4634,7 +4644,7 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="-230"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="-240"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -4775,7 +4785,7 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_sessions.cpp" line="+236"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+238"/>
         <source>No fix</source>
         <translation>Нет решения</translation>
     </message>
@@ -4817,7 +4827,7 @@ Serial number: %3</source>
         <translation>Новый язык будет использован при следующем запуске GNSS Workbench.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_sessions.cpp" line="-185"/>
+        <location filename="../app/gui/main_window_sessions.cpp" line="-187"/>
         <source>%1 keeps what was begun for %2: pinned to it</source>
         <translation>%1 сохраняет начатое для %2: закреплено за ним</translation>
     </message>
@@ -4852,7 +4862,7 @@ Serial number: %3</source>
         <translation>%1 · №%2</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+72"/>
         <source>Silent for %1 s</source>
         <translation>Молчит %1 с</translation>
     </message>
@@ -6948,12 +6958,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+84"/>
+        <location line="+83"/>
         <source>No site list</source>
         <translation>Нет списка пунктов</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="-99"/>
         <source>Sites</source>
         <translation>Пункты</translation>
     </message>
@@ -6978,7 +6988,7 @@ Serial number: %3</source>
         <translation>Сохранить как пункт</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Site name:</source>
         <translation>Имя пункта:</translation>
     </message>
@@ -7255,6 +7265,399 @@ Serial number: %3</source>
             <numerusform>%n метки времени</numerusform>
             <numerusform>%n меток времени</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::BaseStationView</name>
+    <message>
+        <location filename="../ui/base/base_station_view.cpp" line="+38"/>
+        <source>base at a set position</source>
+        <translation>база в заданной точке</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>base averaging its own position</source>
+        <translation>база, осредняющая свои координаты</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RTK rover</source>
+        <translation>RTK-ровер</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>autonomous</source>
+        <translation>автономный режим</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not read yet</source>
+        <translation>ещё не прочитано</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>Read</source>
+        <translation>Прочитать</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Read the base settings from the receiver</source>
+        <translation>Прочитать настройки базы из приёмника</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Position of the base</source>
+        <translation>Координаты базы</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Survey-in by the workbench</source>
+        <translation>Осреднение программой</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Survey-in by the receiver</source>
+        <translation>Осреднение приёмником</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Known position</source>
+        <translation>Известная точка</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>For minutes</source>
+        <translation>Минут</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Until accuracy, m</source>
+        <translation>До точности, м</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+382"/>
+        <source>Start survey</source>
+        <translation>Начать осреднение</translation>
+    </message>
+    <message>
+        <location line="-364"/>
+        <source>How far the running mean was from the mean now: horizontally and vertically, a point a second</source>
+        <translation>Насколько текущее среднее отличалось от итогового: по горизонтали и по вертикали, точка в секунду</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source> min</source>
+        <translation> мин</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Averaging time:</source>
+        <translation>Время осреднения:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start the receiver&apos;s survey</source>
+        <translation>Запустить осреднение в приёмнике</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Makes the receiver a base that averages its own position, with the station, interval and port below</source>
+        <translation>Делает приёмник базой, осредняющей свои координаты, с номером станции, интервалом и портом ниже</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Latitude, longitude, height</source>
+        <translation>Широта, долгота, высота</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ECEF X, Y, Z (m)</source>
+        <translation>ECEF X, Y, Z (м)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Typed as:</source>
+        <translation>Формат:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>55°45&apos;04.3&quot;N, 37 37.104E, 166.6</source>
+        <translation>55°45&apos;04.3&quot;N, 37 37.104E, 166.6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Degrees as decimals, degrees and minutes or DMS, with N/S/E/W or a sign; the height in metres</source>
+        <translation>Градусы с долями, градусы и минуты или ГМС, с N/S/E/W или знаком; высота в метрах</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Sites</source>
+        <translation>Пункты</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Position:</source>
+        <translation>Координаты:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Height above sea level (the receiver&apos;s geoid separation is added)</source>
+        <translation>Высота над уровнем моря (добавляется высота геоида из приёмника)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Base settings</source>
+        <translation>Настройки базы</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> m</source>
+        <translation> м</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From the mark up to the antenna reference point (a known position)</source>
+        <translation>От марки до опорной точки антенны (для известной точки)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Antenna height:</source>
+        <translation>Высота антенны:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Station id:</source>
+        <translation>Номер станции:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Observables:</source>
+        <translation>Измерения:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>RTCM on:</source>
+        <translation>RTCM через:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save to the receiver&apos;s flash once verified</source>
+        <translation>Сохранить во флэш-память приёмника после проверки</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set base</source>
+        <translation>Задать базу</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save as site…</source>
+        <translation>Сохранить как пункт…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Keep the survey&apos;s result (or the position typed) in the site list</source>
+        <translation>Сохранить результат осреднения (или введённую точку) в списке пунктов</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Asking the receiver to average its position…</source>
+        <translation>Приёмнику отправлена команда осреднять координаты…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No sites yet</source>
+        <translation>Пунктов пока нет</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>No receiver yet.</source>
+        <translation>Приёмника пока нет.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The %1 cannot be a base station: its settings have no base mode.</source>
+        <translation>%1 не может быть базовой станцией: в его настройках нет режима базы.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>as it is</source>
+        <translation>как есть</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>as they are</source>
+        <translation>как есть</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the ports as they are</source>
+        <translation>порты как есть</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>port %1 (%2)</source>
+        <translation>порт %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>This receiver does not average its own position.</source>
+        <translation>Этот приёмник не осредняет свои координаты.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+220"/>
+        <source>The receiver&apos;s settings are busy: try again.</source>
+        <translation>Настройки приёмника заняты: повторите позже.</translation>
+    </message>
+    <message>
+        <location line="-210"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Every value was already in force.</source>
+        <translation>Все значения уже действовали.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Saved to flash.</source>
+        <translation>Сохранено во флэш-память.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Not saved to flash.</source>
+        <translation>Во флэш-память не сохранено.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Base settings verified.</source>
+        <translation>Настройки базы проверены.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Base settings not all verified.</source>
+        <translation>Не все настройки базы подтверждены.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The receiver averaged its position: %1</source>
+        <translation>Приёмник осреднил координаты: %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Survey-in done: accuracy %1</source>
+        <translation>Осреднение завершено: точность %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The receiver averages its position: %1 s left</source>
+        <translation>Приёмник осредняет координаты: осталось %1 с</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Waiting for the receiver&apos;s averaged position…</source>
+        <translation>Ожидание осреднённых координат от приёмника…</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Role: %1</source>
+        <translation>Роль: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Position: %1 %2, %3 (ECEF %4)</source>
+        <translation>Координаты: %1 %2, %3 (ECEF %4)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>station %1</source>
+        <translation>станция %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>observables: %1</source>
+        <translation>измерения: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>RTCM on port %1</source>
+        <translation>RTCM через порт %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>From its own fix: %1</source>
+        <translation>От собственного решения: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The base position is %1 from the receiver&apos;s own fix, past its threshold of %2: it sends no corrections.</source>
+        <translation>Координаты базы в %1 от собственного решения приёмника, больше порога %2: поправки не передаются.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Waiting for the receiver&apos;s fixes…</source>
+        <translation>Ожидание решений приёмника…</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>%n position(s) in %1 s. Mean %2 %3, %4.
+σ east %5, north %6, up %7; the mean known to %8.</source>
+        <translation>
+            <numerusform>%n позиция за %1 с. Среднее %2 %3, %4.
+σ восток %5, север %6, верх %7; среднее известно с точностью %8.</numerusform>
+            <numerusform>%n позиции за %1 с. Среднее %2 %3, %4.
+σ восток %5, север %6, верх %7; среднее известно с точностью %8.</numerusform>
+            <numerusform>%n позиций за %1 с. Среднее %2 %3, %4.
+σ восток %5, север %6, верх %7; среднее известно с точностью %8.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Stop survey</source>
+        <translation>Остановить осреднение</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The receiver reported its set position: it now reports its own.</source>
+        <translation>Приёмник выдавал заданные координаты базы: теперь он выдаёт собственные.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>No survey yet: start one first.</source>
+        <translation>Осреднения ещё не было: сначала запустите его.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The receiver finds its position itself: start its survey instead.</source>
+        <translation>Приёмник определяет координаты сам: запустите его осреднение.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Expected X, Y, Z in metres.</source>
+        <translation>Ожидаются X, Y, Z в метрах.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The receiver has not given its geoid separation yet.</source>
+        <translation>Приёмник ещё не сообщил высоту геоида.</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Save as site</source>
+        <translation>Сохранить как пункт</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Site name:</source>
+        <translation>Имя пункта:</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Site &apos;%1&apos; saved</source>
+        <translation>Пункт «%1» сохранён</translation>
     </message>
 </context>
 <context>
@@ -8346,7 +8749,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::LogSummaryView</name>
     <message>
-        <location filename="../ui/logview/log_summary_view.cpp" line="+22"/>
+        <location filename="../ui/logview/log_summary_view.cpp" line="+26"/>
         <source>%1 s</source>
         <translation>%1 с</translation>
     </message>
@@ -8366,7 +8769,7 @@ Serial number: %3</source>
         <translation>Сохранить JSON…</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+22"/>
         <source>Range</source>
         <translation>Диапазон</translation>
     </message>
