@@ -4065,7 +4065,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::CorrectionsController</name>
     <message>
-        <location filename="../app/gui/corrections_controller.cpp" line="+39"/>
+        <location filename="../app/gui/corrections_controller.cpp" line="+41"/>
         <source>The password was not read from the keychain: %1</source>
         <translation>Пароль не прочитан из связки ключей: %1</translation>
     </message>
@@ -4075,12 +4075,17 @@ Serial number: %3</source>
         <translation>Пароль не сохранён в связке ключей: %1</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+80"/>
         <source>Stopped</source>
         <translation>Остановлено</translation>
     </message>
     <message>
         <location line="+19"/>
+        <source>Showing the RTCM 3 the receiver itself sends</source>
+        <translation>Показан RTCM 3, который выдаёт сам приёмник</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Not started</source>
         <translation>Не запущено</translation>
     </message>
@@ -4277,7 +4282,7 @@ Serial number: %3</source>
         <translation>События журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="+374"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="+379"/>
         <source>Save events</source>
         <translation>Сохранить события</translation>
     </message>
@@ -4644,7 +4649,7 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="-240"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="-245"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -8245,6 +8250,11 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+5"/>
+        <source>Base station %1 (%2): %3; from the receiver&apos;s own fix %4</source>
+        <translation>Базовая станция %1 (%2): %3; от собственного решения приёмника %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Base station %1 (%2): %3; distance to the rover %4</source>
         <translation>Базовая станция %1 (%2): %3; расстояние до ровера %4</translation>
     </message>

@@ -5,6 +5,8 @@
 #include "corrections/tcp_correction_source.h"
 #include "gui/password_keychain.h"
 
+#include "link/connection.h"
+#include "link/sentence_stream.h"
 #include "session/receiver_link.h"
 #include "state/epoch.h"
 
@@ -102,6 +104,7 @@ bool CorrectionsController::start(const ui::CorrectionsRequest &r, QString *why)
         source_ = std::make_unique<corrections::TcpCorrectionSource>(r.host, quint16(r.port));
     }
     monitor_.reset();
+    ownOutput_ = false;
     if (target_) target_->resetCorrectionFraming();
     connect(source_.get(), &corrections::CorrectionSource::dataReceived, this,
             &CorrectionsController::onData);
@@ -138,11 +141,31 @@ bool CorrectionsController::active() const {
 }
 
 QString CorrectionsController::statusText() const {
+    if (ownOutput_ && !active()) return tr("Showing the RTCM 3 the receiver itself sends");
     return source_ ? source_->statusText() : tr("Not started");
 }
 
 void CorrectionsController::setTarget(session::ReceiverLink *receiver) {
     target_ = receiver;
+    if (!receiver) return;
+    connect(receiver, &session::ReceiverLink::connectionStarted, this,
+            &CorrectionsController::watch);
+    if (receiver->connection()) watch(receiver->connection());
+}
+
+void CorrectionsController::watch(link::Connection *connection) {
+    connect(connection->stream(), &link::SentenceStream::rtcmFrame, this,
+            [this](unsigned, const QByteArray &frame) { onOwnFrame(frame); });
+}
+
+void CorrectionsController::onOwnFrame(const QByteArray &frame) {
+    if (active()) return; // a source's corrections are what the dock shows then
+    if (!ownOutput_) {
+        ownOutput_ = true;
+        monitor_.reset();
+        emit statusChanged(statusText(), false);
+    }
+    monitor_.feed(std::string_view(frame.constData(), std::size_t(frame.size())), nowMs());
 }
 
 void CorrectionsController::setRoverFix(const Epoch &e) {

@@ -26,6 +26,9 @@ class ReceiverLink;
 namespace corrections {
 class CorrectionSource;
 } // namespace corrections
+namespace link {
+class Connection;
+}
 } // namespace gnss
 
 namespace gnss::app {
@@ -51,8 +54,12 @@ public:
     void recallPassword();
     static bool keychainAvailable();
 
-    // The receiver the corrections go to (null: none).
+    // The receiver the corrections go to (null: none). What it sends as RTCM 3 itself (a base's
+    // port, a receiver that interleaves RTCM with its NMEA) is shown while no source runs: the
+    // dock then says what the base sends.
     void setTarget(session::ReceiverLink *receiver);
+    // Whether the monitor shows the receiver's own RTCM (no source started).
+    bool showingOwnOutput() const { return ownOutput_; }
     // The receiver's latest fix: the GGA sent up, the baseline shown.
     void setRoverFix(const Epoch &epoch);
 
@@ -67,6 +74,8 @@ signals:
 
 private:
     void onData(const QByteArray &bytes);
+    void onOwnFrame(const QByteArray &frame);
+    void watch(link::Connection *connection);
 
     QSettings *settings_;
     corrections::CorrectionsMonitor monitor_;
@@ -74,6 +83,7 @@ private:
     QPointer<session::ReceiverLink> target_;
     QTimer ageSampler_;
     PasswordKeychain *keychain_;
+    bool ownOutput_ = false;
 };
 
 } // namespace gnss::app

@@ -231,7 +231,12 @@ QWidget *MainWindow::makeCorrections(ui::ReceiverSession &s) {
                 if (!c->start(r, &why)) view->showError(why);
             });
     connect(view, &ui::CorrectionsView::stopRequested, c, &CorrectionsController::stop);
-    connect(c, &CorrectionsController::statusChanged, view, &ui::CorrectionsView::setStatus);
+    connect(c, &CorrectionsController::statusChanged, view,
+            [c, view](const QString &text, bool active) {
+                view->setOwnOutput(c->showingOwnOutput());
+                view->setStatus(text, active);
+            });
+    view->setOwnOutput(c->showingOwnOutput());
     view->setStatus(c->statusText(), c->active()); // a stream of its own may be running
     return view;
 }

@@ -27,6 +27,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -127,6 +128,37 @@ private slots:
         dock->findChild<QLineEdit *>("correctionsMount")->setText("NVSB");
         QTest::mouseClick(dock->findChild<QPushButton *>("correctionsStartStop"), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(r->state()->state().epoch.fix == FixType::RtkFixed, 30000);
+    }
+
+    // A base's RTCM port opened as a receiver (baud "auto" finds it by its CRC-valid frames):
+    // the Corrections dock shows what the base sends, its types, rates and station position.
+    void theCorrectionsDockShowsWhatABaseSends() {
+        SimProcess base({"--dialect", "nvs", "--baud", "115200", "--speed", "10", "--com2"});
+        REQUIRE_SIM(base);
+        const QString com2 = gnss::link::test::firstLine(base.proc);
+        QVERIFY(com2.startsWith("/dev/"));
+        const gnss::test::Run set = gnss::test::runCli(
+                {"base", "--port", base.device, "--baud", "115200", "set", "--llh",
+                 "55.7512,37.6184,166.6", "--station", "77", "--rtcm-port", "2"});
+        QVERIFY2(set.exitCode == 0, set.err.constData());
+        QSettings settings(dir_.filePath("window3.ini"), QSettings::IniFormat);
+        app::MainWindow w(registry_, transports_, &settings);
+        w.resize(1280, 800);
+        w.show();
+        w.connectReceiversAtStart({{SourceSpec::Kind::Serial, com2, 0}});
+        QVERIFY(w.showDock("corrections"));
+        QDockWidget *dock = w.dock("correctionsDock");
+        auto *types = dock->findChild<QTableWidget *>("correctionsTypes");
+        QTRY_VERIFY_WITH_TIMEOUT(types->rowCount() >= 3, 30000);
+        QStringList numbers;
+        for (int i = 0; i < types->rowCount(); ++i) numbers << types->item(i, 0)->text();
+        QCOMPARE(numbers, (QStringList{"1002", "1005", "1010"}));
+        QTRY_VERIFY(types->item(0, 2)->text().toDouble() > 5); // ten a second at ×10
+        auto *status = dock->findChild<QLabel *>("correctionsStatus");
+        QVERIFY2(status->text().contains("receiver itself"), qPrintable(status->text()));
+        auto *station = dock->findChild<QLabel *>("correctionsBase");
+        QTRY_VERIFY2(station->text().contains("Base station 77"), qPrintable(station->text()));
+        QVERIFY(station->text().contains("55.75120"));
     }
 
     void aPositionPastTheThresholdIsWarnedOf() {

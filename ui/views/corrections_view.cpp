@@ -362,7 +362,8 @@ void CorrectionsView::refresh() {
                                       .arg(b->ecef.y, 0, 'f', 3)
                                       .arg(b->ecef.z, 0, 'f', 3);
         const auto baseline = monitor_.baselineMetres();
-        base_->setText(tr("Base station %1 (%2): %3; distance to the rover %4")
+        base_->setText((ownOutput_ ? tr("Base station %1 (%2): %3; from the receiver's own fix %4")
+                                   : tr("Base station %1 (%2): %3; distance to the rover %4"))
                                .arg(b->station)
                                .arg(b->message)
                                .arg(where, fmt::distance(baseline, 3, u)));

@@ -67,6 +67,9 @@ public:
 
     // The source's state: `active` while started (Start becomes Stop).
     void setStatus(const QString &text, bool active);
+    // The monitor shows the receiver's own RTCM output (a base), not a source's: the distance is
+    // then from the receiver's own fix.
+    void setOwnOutput(bool own) { ownOutput_ = own; }
     // Shown instead of the status when a request was refused before anything was started.
     void showError(const QString &text);
 
@@ -102,6 +105,7 @@ private:
     ReceiverStateModel *receiver_;
     std::function<const corrections::ForwarderStats *()> forwarded_;
     bool active_ = false;
+    bool ownOutput_ = false;
     bool keychain_ = false;
 
     QComboBox *kind_, *version_;
