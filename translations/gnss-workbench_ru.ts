@@ -4272,7 +4272,7 @@ Serial number: %3</source>
         <translation>Шкала времени журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/dock_table.cpp" line="+87"/>
+        <location filename="../app/gui/dock_table.cpp" line="+90"/>
         <source>Events</source>
         <translation>События</translation>
     </message>
@@ -4282,18 +4282,18 @@ Serial number: %3</source>
         <translation>События журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="+379"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="+399"/>
         <source>Save events</source>
         <translation>Сохранить события</translation>
     </message>
     <message>
-        <location line="-104"/>
-        <location line="+104"/>
+        <location line="-123"/>
+        <location line="+123"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="-106"/>
+        <location line="-125"/>
         <source>Export the comparison</source>
         <translation>Экспорт сравнения</translation>
     </message>
@@ -4323,7 +4323,7 @@ Serial number: %3</source>
         <translation>Отчёт записан: %1</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+80"/>
         <location line="+15"/>
         <location filename="../app/gui/main_window_log.cpp" line="+255"/>
         <source>Not exported: %1</source>
@@ -4345,8 +4345,8 @@ Serial number: %3</source>
         <translation>Сохранить статистику</translation>
     </message>
     <message>
-        <location line="-117"/>
-        <location line="+119"/>
+        <location line="-136"/>
+        <location line="+138"/>
         <source>JSON (*.json)</source>
         <translation>JSON (*.json)</translation>
     </message>
@@ -4366,7 +4366,7 @@ Serial number: %3</source>
         <translation>Трек</translation>
     </message>
     <message>
-        <location line="-12"/>
+        <location line="-15"/>
         <source>Signal history</source>
         <translation>Сигналы</translation>
     </message>
@@ -4404,6 +4404,16 @@ Serial number: %3</source>
         <location line="+1"/>
         <source>Base station</source>
         <translation>Базовая станция</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Serve</source>
+        <translation>Раздача</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serve streams (NTRIP caster, TCP)</source>
+        <translation>Раздача потоков (NTRIP-кастер, TCP)</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -4547,7 +4557,7 @@ Serial number: %3</source>
         <translation>Команда: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/dock_table.cpp" line="-52"/>
+        <location filename="../app/gui/dock_table.cpp" line="-55"/>
         <location line="+1"/>
         <source>Sky plot</source>
         <translation>Небосвод</translation>
@@ -4649,7 +4659,7 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="-245"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="-264"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -5206,6 +5216,80 @@ Serial number: %3</source>
         <location line="+2"/>
         <source>Close receiver</source>
         <translation>Закрыть приёмник</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::app::ServeController</name>
+    <message>
+        <location filename="../app/gui/serve_controller.cpp" line="+70"/>
+        <source>RTCM of %1</source>
+        <translation>RTCM от %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Corrections fed to %1</source>
+        <translation>Поправки, подаваемые в %1</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <location line="+54"/>
+        <source>&apos;%1&apos; is not an IP address</source>
+        <translation>«%1» — не IP-адрес</translation>
+    </message>
+    <message>
+        <location line="-53"/>
+        <source>Tick a stream to serve</source>
+        <translation>Отметьте поток для раздачи</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Give both a user and a password, or neither</source>
+        <translation>Укажите и пользователя, и пароль, или ни того, ни другого</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Mountpoint &apos;%1&apos;: %2</source>
+        <translation>Точка подключения «%1»: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Mountpoint &apos;%1&apos; is given twice</source>
+        <translation>Точка подключения «%1» указана дважды</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>NTRIP client %1 refused (%2): %3</source>
+        <translation>Клиенту NTRIP %1 отказано (%2): %3</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>No receiver to share</source>
+        <translation>Нет приёмника для раздачи</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Serving %1 on %2</source>
+        <translation>Раздаётся %1 на %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not serving</source>
+        <translation>Не раздаётся</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Sharing %1 on %2</source>
+        <translation>%1 раздаётся на %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not sharing</source>
+        <translation>Не раздаётся</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>raw</source>
+        <translation>TCP</translation>
     </message>
 </context>
 <context>
@@ -9658,6 +9742,123 @@ Serial number: %3</source>
         <location line="+1"/>
         <source>Last seen (UTC)</source>
         <translation>Последнее (UTC)</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::ui::ServeView</name>
+    <message>
+        <location filename="../ui/serve/serve_view.cpp" line="+29"/>
+        <source>Listening on %1: other computers can connect.</source>
+        <translation>Приём подключений на %1: могут подключаться другие компьютеры.</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>NTRIP caster</source>
+        <translation>NTRIP-кастер</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>127.0.0.1: this computer only; 0.0.0.0: every network it is on</source>
+        <translation>127.0.0.1 — только этот компьютер; 0.0.0.0 — все его сети</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>0: any free port</source>
+        <translation>0 — любой свободный порт</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+39"/>
+        <source>Listen on:</source>
+        <translation>Адрес и порт:</translation>
+    </message>
+    <message>
+        <location line="-35"/>
+        <source>no password</source>
+        <translation>без пароля</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>password</source>
+        <translation>пароль</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>User:</source>
+        <translation>Пользователь:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stream</source>
+        <translation>Поток</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+40"/>
+        <source>Mountpoint</source>
+        <translation>Точка подключения</translation>
+    </message>
+    <message>
+        <location line="-35"/>
+        <location line="+109"/>
+        <source>Start caster</source>
+        <translation>Запустить кастер</translation>
+    </message>
+    <message>
+        <location line="-102"/>
+        <source>Share a receiver (raw TCP)</source>
+        <translation>Раздать приёмник (TCP как есть)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Receiver:</source>
+        <translation>Приёмник:</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+95"/>
+        <source>Start sharing</source>
+        <translation>Начать раздачу</translation>
+    </message>
+    <message>
+        <location line="-86"/>
+        <source>Clients</source>
+        <translation>Клиенты</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Server</source>
+        <translation>Сервер</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Address</source>
+        <translation>Адрес</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>User</source>
+        <translation>Пользователь</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Since</source>
+        <translation>С</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Sent</source>
+        <translation>Отправлено</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>Stop caster</source>
+        <translation>Остановить кастер</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Stop sharing</source>
+        <translation>Остановить раздачу</translation>
     </message>
 </context>
 <context>

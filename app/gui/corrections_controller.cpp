@@ -178,6 +178,7 @@ void CorrectionsController::setRoverFix(const Epoch &e) {
 void CorrectionsController::onData(const QByteArray &bytes) {
     monitor_.feed(std::string_view(bytes.constData(), std::size_t(bytes.size())), nowMs());
     if (target_) target_->forwardCorrections(bytes);
+    emit correctionsReceived(bytes);
 }
 
 } // namespace gnss::app

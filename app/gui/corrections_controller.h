@@ -68,6 +68,8 @@ public:
 
 signals:
     void statusChanged(const QString &text, bool active);
+    // Bytes the source delivered (what goes to the receiver): for re-broadcasting them.
+    void correctionsReceived(const QByteArray &bytes);
     void passwordRecalled(const QString &password);
     // What the keychain said, in words (it may be locked or absent).
     void keychainMessage(const QString &text);

@@ -57,6 +57,7 @@ using link::SourceSpec;
 class ConnectionBar;
 class CorrectionsController;
 class QualificationController;
+class ServeController;
 class ReceiversStrip;
 class LogPlayer;
 class LogViewer;
@@ -89,6 +90,8 @@ public:
     ui::CompareModel *comparison() const { return compare_; }
     // Time-to-first-fix campaigns and accuracy on the receivers (the Qualification dock's).
     QualificationController *qualification();
+    // The Serve dock's servers (made on first use).
+    ServeController *serving();
     const sites::SiteStore &siteStore() const { return siteStore_; }
     QDockWidget *dock(const QString &objectName) const;
     // The docks by short name ("settings" for settingsDock), for --show-dock.
@@ -215,6 +218,7 @@ private:
     QWidget *makeCompare(ui::ReceiverSession &s);
     QWidget *makeQualification(ui::ReceiverSession &s);
     QWidget *makeBaseStation(ui::ReceiverSession &s);
+    QWidget *makeServe(ui::ReceiverSession &s);
     void useSites(ui::AccuracyPanel *panel);
     void updateCompareReceivers();
     QWidget *makeLogTrack(ui::ReceiverSession &s);
@@ -248,6 +252,7 @@ private:
     QHash<QDockWidget *, DockBinding> docks_;
     ui::CompareModel *compare_ = nullptr;
     QualificationController *qualification_ = nullptr;
+    ServeController *serve_ = nullptr;
     // The user's site list (references for the accuracy, shared with gnss-cli sites).
     sites::SiteStore siteStore_;
     QHash<const ui::ReceiverSession *, QPointer<CorrectionsController>> corrections_;

@@ -5,6 +5,7 @@
 #include "gui/log_viewer.h"
 #include "gui/main_window.h"
 #include "gui/qualification_controller.h"
+#include "gui/serve_controller.h"
 #include "logview/log_events_view.h"
 #include "logview/log_summary_view.h"
 #include "logview/whole_log_panels.h"
@@ -320,6 +321,25 @@ QWidget *MainWindow::makeQualification(ui::ReceiverSession &) {
         statusBar()->showMessage(
                 files.isEmpty() ? error : tr("Report written: %1").arg(files.join(", ")), 15000);
     });
+    return view;
+}
+
+ServeController *MainWindow::serving() {
+    if (!serve_) {
+        serve_ = new ServeController({[this] { return sessions_; },
+                                      [this](ui::ReceiverSession *s) { return corrections(s); }},
+                                     this);
+        connect(this, &MainWindow::receiversChanged, serve_, &ServeController::refresh);
+        connect(serve_, &ServeController::message, this,
+                [this](const QString &m) { statusBar()->showMessage(m, 10000); });
+    }
+    return serve_;
+}
+
+QWidget *MainWindow::makeServe(ui::ReceiverSession &) {
+    // Every receiver of the window: its RTCM or the corrections it is fed, as mountpoints.
+    auto *view = new ui::ServeView(this);
+    serving()->attach(view);
     return view;
 }
 

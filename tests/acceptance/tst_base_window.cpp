@@ -1,8 +1,8 @@
 // The Base station dock in the real window at 1280x800, with two simulated NV08C-RTKs on
 // pseudo-terminals (baud "auto"), ten times faster than real time: one is made a base from a
 // survey-in by the workbench (until the mean is known to 0.3 m), its RTCM on its COM2, each
-// setting verified by reading it back and the result kept as a site; its COM2 is served by
-// gnss-cli serve's caster; the other, a rover, takes that caster in its Corrections dock and
+// setting verified by reading it back; its COM2, opened as a third receiver, is served by the
+// Serve dock's caster; the other, a rover, takes that caster in its Corrections dock and
 // reaches RTK fixed. A GeoS-5 is said not to be able to be a base; a typed position 1 km away
 // is set with the threshold warning shown.
 #include "base/base_station_view.h"
@@ -11,9 +11,10 @@
 #include "cli_run.h"
 #include "common/app_transports.h"
 #include "gui/main_window.h"
+#include "gui/serve_controller.h"
 #include "models/receiver_session.h"
 #include "models/receiver_state_model.h"
-#include "serve_process.h"
+#include "serve/serve_view.h"
 #include "session/receiver_link.h"
 #include "sim_process.h"
 #include "sites/site_store.h"
@@ -28,6 +29,7 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -115,11 +117,25 @@ private slots:
                      qPrintable(status->text()));
         QVERIFY(!child<QLabel>(view, "baseWarning")->isVisible());
 
-        // Served from its COM2; the rover takes it in its Corrections dock.
-        gnss::test::ServeProcess serve({"--port", com2, "--baud", "115200", "--ntrip",
-                                        "127.0.0.1:0/NVSB", "--duration", "60"});
-        const quint16 casterPort = serve.ntripPort();
-        QVERIFY2(casterPort != 0, serve.err.constData());
+        // Its COM2 opened as a third receiver (baud "auto" finds it by its RTCM) and served from
+        // the Serve dock on a free port; the rover takes it in its Corrections dock.
+        ui::ReceiverSession *c2 = w.addReceiver({SourceSpec::Kind::Serial, com2, 0});
+        QTRY_VERIFY_WITH_TIMEOUT(c2->link()->state() == ReceiverLink::State::Connected, 30000);
+        QVERIFY(w.showDock("serve"));
+        auto *serveView = w.dock("serveDock")->findChild<ui::ServeView *>();
+        QVERIFY(serveView && serveView->isVisible());
+        QVERIFY(w.minimumSizeHint().height() <= 740);
+        auto *mounts = child<QTableWidget>(serveView, "serveMounts");
+        QCOMPARE(mounts->rowCount(), 6); // each receiver's RTCM, and the corrections fed to it
+        for (int i = 0; i < mounts->rowCount(); ++i)
+            mounts->item(i, 0)->setCheckState(i == 4 ? Qt::Checked : Qt::Unchecked);
+        QVERIFY(mounts->item(4, 0)->text().contains(c2->name()));
+        mounts->item(4, 1)->setText("NVSB");
+        child<QSpinBox>(serveView, "servePort")->setValue(0);
+        QTest::mouseClick(child<QPushButton>(serveView, "serveCasterStartStop"), Qt::LeftButton);
+        QVERIFY(w.serving()->casterRunning());
+        const quint16 casterPort = w.serving()->caster()->port();
+        QVERIFY(child<QLabel>(serveView, "serveCasterState")->text().contains("NVSB"));
         w.selectReceiver(r);
         QVERIFY(w.showDock("corrections"));
         QDockWidget *dock = w.dock("correctionsDock");
@@ -127,6 +143,11 @@ private slots:
         dock->findChild<QSpinBox *>("correctionsPort")->setValue(casterPort);
         dock->findChild<QLineEdit *>("correctionsMount")->setText("NVSB");
         QTest::mouseClick(dock->findChild<QPushButton *>("correctionsStartStop"), Qt::LeftButton);
+        // The client listed with what it was sent.
+        auto *clients = child<QTableWidget>(serveView, "serveClients");
+        QTRY_VERIFY_WITH_TIMEOUT(clients->rowCount() == 1 && clients->item(0, 3) &&
+                                         clients->item(0, 3)->text() == "NVSB",
+                                 10000);
         QTRY_VERIFY_WITH_TIMEOUT(r->state()->state().epoch.fix == FixType::RtkFixed, 30000);
     }
 
@@ -159,6 +180,51 @@ private slots:
         auto *station = dock->findChild<QLabel *>("correctionsBase");
         QTRY_VERIFY2(station->text().contains("Base station 77"), qPrintable(station->text()));
         QVERIFY(station->text().contains("55.75120"));
+    }
+
+    // The Serve dock's mistakes are said and nothing listens; a receiver shared on a raw port
+    // reaches a client byte for byte.
+    void theServeDockSharesAReceiver() {
+        QSettings settings(dir_.filePath("window4.ini"), QSettings::IniFormat);
+        app::MainWindow w(registry_, transports_, &settings);
+        w.resize(1280, 800);
+        w.show();
+        w.connectReceiversAtStart({{SourceSpec::Kind::Simulator, "nmea", 0}});
+        QTRY_VERIFY_WITH_TIMEOUT(connected(w.sessions()[0]), 20000);
+        QVERIFY(w.showDock("serve"));
+        auto *view = w.dock("serveDock")->findChild<ui::ServeView *>();
+        auto *mounts = child<QTableWidget>(view, "serveMounts");
+        auto *state = child<QLabel>(view, "serveCasterState");
+        auto *start = child<QPushButton>(view, "serveCasterStartStop");
+        child<QSpinBox>(view, "servePort")->setValue(0);
+        QVERIFY(mounts->item(0, 0)->checkState() == Qt::Unchecked); // it sends no RTCM
+        QTest::mouseClick(start, Qt::LeftButton);
+        QVERIFY2(state->text().contains("Tick a stream"), qPrintable(state->text()));
+        mounts->item(0, 0)->setCheckState(Qt::Checked);
+        mounts->item(0, 1)->setText("bad name");
+        QTest::mouseClick(start, Qt::LeftButton);
+        QVERIFY2(state->text().contains("bad name"), qPrintable(state->text()));
+        QVERIFY(!w.serving()->casterRunning());
+        mounts->item(0, 1)->setText("SIM");
+        child<QLineEdit>(view, "serveUser")->setText("u");
+        QTest::mouseClick(start, Qt::LeftButton);
+        QVERIFY2(state->text().contains("password"), qPrintable(state->text()));
+        QVERIFY(!w.serving()->casterRunning());
+
+        child<QSpinBox>(view, "serveRawPort")->setValue(0);
+        QTest::mouseClick(child<QPushButton>(view, "serveRawStartStop"), Qt::LeftButton);
+        QVERIFY(w.serving()->rawRunning());
+        QTcpSocket client;
+        client.connectToHost(QHostAddress::LocalHost, w.serving()->raw()->port());
+        QVERIFY(client.waitForConnected(3000));
+        QByteArray got;
+        QTRY_VERIFY_WITH_TIMEOUT((got += client.readAll()).contains("GGA,"), 10000);
+        auto *clients = child<QTableWidget>(view, "serveClients");
+        QTRY_COMPARE(clients->rowCount(), 1);
+        QCOMPARE(clients->item(0, 0)->text(), QString("raw"));
+        QTest::mouseClick(child<QPushButton>(view, "serveRawStartStop"), Qt::LeftButton);
+        QVERIFY(!w.serving()->rawRunning());
+        QTRY_COMPARE(client.state(), QAbstractSocket::UnconnectedState);
     }
 
     void aPositionPastTheThresholdIsWarnedOf() {
