@@ -43,7 +43,8 @@ Values everySetting(const QString &dialect) {
                 {"rtk.BASEID", "17"},
                 {"rtk.RTCMRATE", "5"},
                 {"rtk.BASEXYZ", "2850000.1234,2200000.5678,5250000.9012"},
-                {"rtk.BASEBLH", "0.9700000000,0.6600000000,150.0000"},
+                // The same point as BASEXYZ: the receiver keeps one antenna reference point.
+                {"rtk.BASEBLH", "0.9728055654,0.6573892086,2356.7983"},
                 {"rtk.BASETH", "250"},
                 {"rtk.BASENMEA", "1"},
                 {"rtk.AVGTIME", "45"},

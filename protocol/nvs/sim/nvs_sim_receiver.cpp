@@ -426,14 +426,21 @@ void NvsReceiver::setBasePosition(const wgs84::Geodetic &g) {
 }
 
 void NvsReceiver::syncBasePosition(bool fromXyz) {
-    double v[3];
-    if (fromXyz) {
-        if (auto g = basePosition()) setBasePosition(*g);
+    // The point just written, and the other form's point as it stands.
+    double xyz[3], blh[3];
+    const bool haveXyz = parseNumbers(store_.value("rtk.BASEXYZ"), xyz);
+    const bool haveBlh = parseNumbers(store_.value("rtk.BASEBLH"), blh);
+    if (fromXyz ? !haveXyz : !haveBlh) return;
+    const wgs84::Geodetic fromBlh{wgs84::degrees(blh[0]), wgs84::degrees(blh[1]), blh[2]};
+    // The other already names this point (both written together, or as the reply printed it):
+    // its text stays as written.
+    if (haveXyz && haveBlh && distance(wgs84::toEcef(fromBlh), {xyz[0], xyz[1], xyz[2]}) < 0.01)
         return;
+    if (fromXyz) {
+        if (auto g = wgs84::toGeodetic({xyz[0], xyz[1], xyz[2]})) setBasePosition(*g);
+    } else {
+        setBasePosition(fromBlh);
     }
-    // BASEBLH: B and L in radians (or the NMEA form the reply may use: not written here).
-    if (!parseNumbers(store_.value("rtk.BASEBLH"), v)) return;
-    setBasePosition({wgs84::degrees(v[0]), wgs84::degrees(v[1]), v[2]});
 }
 
 SkySnapshot NvsReceiver::reported(const SkySnapshot &snap) const {
