@@ -158,6 +158,10 @@ template <class Server> void reportClients(Server &server, const char *kind) {
                          say(std::string(kind) + " client " + peerOf(c) + " disconnected: " +
                              utf8(why) + " (" + std::to_string(c.bytesSent) + " bytes sent)");
                      });
+    QObject::connect(&server, &Server::clientTurnedAway, [kind](const serve::ClientInfo &c) {
+        say(std::string(kind) + " client " + peerOf(c) +
+            " turned away: as many clients as allowed are served");
+    });
 }
 
 } // namespace
@@ -276,7 +280,10 @@ int cmdServe(const CliContext &ctx) {
 
     loop.stopAfter(o.duration);
     rc = loop.exec();
-    if (file) file->stop();
+    if (file) {
+        file->disconnect(); // stopped here: not the end of the file
+        file->stop();
+    }
     caster.close();
     raw.close();
     if (o.ntrip) {
@@ -286,9 +293,12 @@ int cmdServe(const CliContext &ctx) {
             std::to_string(n.notFound) + " unknown mountpoint, " +
             std::to_string(n.badRequests + n.notAllowed) +
             " malformed; dropped: " + std::to_string(n.droppedSlow) + " slow, " +
-            std::to_string(n.headTimeouts) + " without a request");
+            std::to_string(n.headTimeouts) + " without a request, " +
+            std::to_string(caster.overCapacity()) + " over the client limit");
     }
-    if (o.raw) say("raw: dropped " + std::to_string(raw.droppedSlow()) + " slow");
+    if (o.raw)
+        say("raw: dropped " + std::to_string(raw.droppedSlow()) + " slow, " +
+            std::to_string(raw.overCapacity()) + " over the client limit");
     return rc;
 }
 

@@ -1,6 +1,8 @@
 // StreamClients: connected clients, bounded send queues, slow ones dropped.
 #include "serve/stream_clients.h"
 
+#include <algorithm>
+
 #include <QTcpSocket>
 
 namespace gnss::serve {
@@ -35,6 +37,11 @@ quint64 StreamClients::add(QTcpSocket *socket, bool awaitHead) {
     socket->setParent(this);
     if (int(clients_.size()) >= limits_.maxClients) {
         ++overCapacity_;
+        ClientInfo away;
+        away.address = socket->peerAddress();
+        away.port = socket->peerPort();
+        away.since = QDateTime::currentDateTimeUtc();
+        emit turnedAway(away);
         socket->abort();
         socket->deleteLater();
         return 0;
@@ -143,7 +150,10 @@ void StreamClients::remove(quint64 id, const QString &why) {
     c->deadline.stop();
     c->socket->disconnect(this);
     if (c->socket->state() != QAbstractSocket::UnconnectedState) {
+        // What the flush hands to the system is sent too (its bytesWritten no longer counts).
+        const qint64 queued = c->socket->bytesToWrite();
         c->socket->flush();
+        c->info.bytesSent += quint64(std::max<qint64>(0, queued - c->socket->bytesToWrite()));
         c->socket->disconnectFromHost();
         if (c->socket->state() != QAbstractSocket::UnconnectedState)
             c->socket->abort(); // a slow client's queue is not waited for

@@ -75,6 +75,8 @@ signals:
     void received(quint64 id, const QByteArray &bytes);
     // The list changed: a client came, started, left, or (at most once a second) bytes moved.
     void clientsChanged();
+    // A connection closed at once: the list already holds the most clients allowed.
+    void turnedAway(const gnss::serve::ClientInfo &client);
 
 private:
     struct Client;

@@ -14,6 +14,7 @@ StreamServer::StreamServer(QObject *parent)
     connect(&clients_, &StreamClients::connected, this, &StreamServer::clientConnected);
     connect(&clients_, &StreamClients::disconnected, this, &StreamServer::clientDisconnected);
     connect(&clients_, &StreamClients::clientsChanged, this, &StreamServer::clientsChanged);
+    connect(&clients_, &StreamClients::turnedAway, this, &StreamServer::clientTurnedAway);
 }
 
 StreamServer::~StreamServer() = default;

@@ -37,6 +37,8 @@ signals:
     void clientConnected(const gnss::serve::ClientInfo &client);
     void clientDisconnected(const gnss::serve::ClientInfo &client, const QString &why);
     void clientsChanged();
+    // A connection closed at once: as many clients as allowed are already served.
+    void clientTurnedAway(const gnss::serve::ClientInfo &client);
 
 protected:
     // `accepted` is called with each new connection the server takes on.
