@@ -64,6 +64,9 @@ private slots:
         QVERIFY(server.listen());
         TestClient fast(server.port()), slow(server.port(), {}, false);
         QTRY_COMPARE_WITH_TIMEOUT(server.clients().size(), 2, 3000);
+        quint64 countedForSlow = 0;
+        connect(&server, &RawStreamServer::clientDisconnected, this,
+                [&](const ClientInfo &c, const QString &) { countedForSlow = c.bytesSent; });
         slow.socket.setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, 4096);
         QByteArray block(16 * 1024, 'r');
         QCryptographicHash sent(QCryptographicHash::Sha256);
@@ -76,10 +79,36 @@ private slots:
             QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
         }
         QCOMPARE(server.droppedSlow(), 1u);
+        // What it is said to have been sent is what it reads then (the last flush counted).
+        slow.reading = true;
+        slow.socket.setReadBufferSize(0);
+        slow.received += slow.socket.readAll();
+        QTRY_VERIFY_WITH_TIMEOUT(slow.closed, 10000);
+        slow.received += slow.socket.readAll();
+        QCOMPARE(quint64(slow.received.size()), countedForSlow);
         QTRY_COMPARE_WITH_TIMEOUT(fast.received.size(), total, 10000);
         QCOMPARE(QCryptographicHash::hash(fast.received, QCryptographicHash::Sha256),
                  sent.result());
         QCOMPARE(server.clients().size(), 1);
+    }
+
+    // Beyond the client limit a connection is closed at once, and said.
+    void aClientBeyondTheLimitIsTurnedAway() {
+        RawStreamServer server;
+        ServeLimits limits;
+        limits.maxClients = 2;
+        server.setLimits(limits);
+        QVERIFY(server.listen());
+        QList<ClientInfo> away;
+        connect(&server, &RawStreamServer::clientTurnedAway, this,
+                [&](const ClientInfo &c) { away << c; });
+        TestClient a(server.port()), b(server.port());
+        QTRY_COMPARE_WITH_TIMEOUT(server.clients().size(), 2, 3000);
+        TestClient c(server.port());
+        QTRY_COMPARE_WITH_TIMEOUT(away.size(), 1, 3000);
+        QVERIFY(away[0].address.isLoopback());
+        QCOMPARE(server.overCapacity(), 1u);
+        QCOMPARE(server.clients().size(), 2);
     }
 };
 
