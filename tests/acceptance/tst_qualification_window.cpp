@@ -21,6 +21,7 @@
 #include "session/receiver_link.h"
 #include "sim_process.h"
 #include "sites/site_store.h"
+#include "window_children.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -43,15 +44,8 @@ using gnss::session::ReceiverLink;
 
 namespace {
 
-bool connected(ui::ReceiverSession *s) {
-    return s->link()->state() == ReceiverLink::State::Connected && s->state()->epochCount() > 0;
-}
-
-template <class W> W *child(QWidget *root, const char *name) {
-    auto *w = root->findChild<W *>(QLatin1String(name));
-    if (!w) qWarning("no %s", name);
-    return w;
-}
+using gnss::test::child;
+constexpr auto connected = gnss::test::connectedWithEpochs;
 
 } // namespace
 

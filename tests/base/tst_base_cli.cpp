@@ -8,6 +8,7 @@
 #include "rtcm/rtcm_framer.h"
 #include "serve_process.h"
 #include "sim_process.h"
+#include "str2str_process.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -292,14 +293,7 @@ private slots:
         const Run m = cli({"monitor", "--port", rover.device, "--baud", "115200", "--duration", "6",
                            "--epochs"},
                           {}, 30000);
-        for (int i = 0; i < 15 && rtk.state() != QProcess::NotRunning; ++i) {
-            rtk.terminate();
-            rtk.waitForFinished(200);
-        }
-        if (rtk.state() != QProcess::NotRunning) {
-            rtk.kill();
-            rtk.waitForFinished(3000);
-        }
+        gnss::test::stopStr2str(rtk);
         QVERIFY2(m.out.contains("\"rtk_fixed\""), why(m) + "\nstr2str: " + rtk.readAll());
     }
 };

@@ -8,6 +8,7 @@
 #include "rtcm_fixtures.h"
 #include "serve_process.h"
 #include "sim_tcp_process.h"
+#include "str2str_process.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -189,15 +190,7 @@ private slots:
         QVERIFY2(!serve.waitFor("receives BASE \\(user u\\)", 8000).isEmpty(),
                  serve.err.constData());
         QTest::qWait(3500);
-        // str2str forgets a SIGTERM that comes while it starts: asked until it goes.
-        for (int i = 0; i < 15 && rtk.state() != QProcess::NotRunning; ++i) {
-            rtk.terminate();
-            rtk.waitForFinished(200);
-        }
-        if (rtk.state() != QProcess::NotRunning) {
-            rtk.kill();
-            rtk.waitForFinished(3000);
-        }
+        gnss::test::stopStr2str(rtk);
         QFile f(out);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const gnss::rtcm::RtcmFramerStats s = framed(f.readAll());
