@@ -150,7 +150,7 @@ bool StreamDecoder::checksumAcceptable(const Sentence &s, const Dialect *ruleDia
 
 void StreamDecoder::finish() {
     framer_.finish();
-    rtcm_.finish([this](const rtcm::RtcmFrame &f) { onFrame(f); });
+    if (options_.frameRtcm) rtcm_.finish([this](const rtcm::RtcmFrame &f) { onFrame(f); });
 }
 
 void StreamDecoder::onFrame(const rtcm::RtcmFrame &f) {
@@ -160,7 +160,7 @@ void StreamDecoder::onFrame(const rtcm::RtcmFrame &f) {
 
 void StreamDecoder::feed(std::string_view bytes, const Handler &handler) {
     framer_.feed(bytes, [&](std::string_view line) { decodeLine(line, handler); });
-    rtcm_.feed(bytes, [this](const rtcm::RtcmFrame &f) { onFrame(f); });
+    if (options_.frameRtcm) rtcm_.feed(bytes, [this](const rtcm::RtcmFrame &f) { onFrame(f); });
 }
 
 void StreamDecoder::decodeLine(std::string_view line, const Handler &handler) {

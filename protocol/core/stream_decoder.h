@@ -32,6 +32,9 @@ struct DecoderOptions {
     bool lenient = false;
     // Renamed address prefixes: {"PXYZW", "PNMRX"} reads $PXYZW110 as $PNMRX110.
     std::vector<std::pair<std::string, std::string>> addressAliases;
+    // Look for RTCM 3 frames beside the sentences (off where a caller frames the bytes whole
+    // itself: the multi-threaded log scan, whose segments would each frame them again).
+    bool frameRtcm = true;
 };
 
 struct AddressStats {

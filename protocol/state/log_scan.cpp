@@ -24,7 +24,9 @@ struct SegmentRun {
 
 SegmentRun runSegment(std::string_view seg, const DialectRegistry &registry,
                       const DecoderOptions &options, const Dialect *forced) {
-    StreamDecoder dec(registry, options);
+    DecoderOptions sentencesOnly = options; // RTCM is framed once over the whole log, below
+    sentencesOnly.frameRtcm = false;
+    StreamDecoder dec(registry, sentencesOnly);
     if (forced) dec.setDialect(forced);
     EpochAssembler assembler(dec.dialect());
     SegmentRun r;
