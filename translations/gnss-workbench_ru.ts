@@ -4282,7 +4282,7 @@ Serial number: %3</source>
         <translation>События журнала</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="+399"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="+416"/>
         <source>Save events</source>
         <translation>Сохранить события</translation>
     </message>
@@ -4659,7 +4659,7 @@ Serial number: %3</source>
         <translation>Настройки приёмника</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_docks.cpp" line="-264"/>
+        <location filename="../app/gui/main_window_docks.cpp" line="-279"/>
         <source>Not sent: %1</source>
         <translation>Не отправлено: %1</translation>
     </message>
@@ -6906,7 +6906,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::serve::StreamClients</name>
     <message>
-        <location filename="../protocol/serve/stream_clients.cpp" line="+61"/>
+        <location filename="../protocol/serve/stream_clients.cpp" line="+68"/>
         <source>no request within %1 s</source>
         <translation>нет запроса за %1 с</translation>
     </message>
@@ -8121,7 +8121,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::ui::CorrectionsView</name>
     <message>
-        <location filename="../ui/views/corrections_view.cpp" line="+57"/>
+        <location filename="../ui/views/corrections_view.cpp" line="+59"/>
         <source>RTK fixed</source>
         <translation>RTK fixed</translation>
     </message>
@@ -8343,7 +8343,12 @@ Serial number: %3</source>
         <translation>Базовая станция %1 (%2): %3; расстояние до ровера %4</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
+        <source>%1 from the position set on %2</source>
+        <translation>%1 от координат, заданных на %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Base station: not yet received (1005/1006)</source>
         <translation>Базовая станция: данных пока нет (1005/1006)</translation>
     </message>

@@ -1,6 +1,8 @@
 // MainWindow's docks: each made from its row of the dock table (dock_table.h) for the session it
 // shows, laid out by the table, and the wiring each view needs in its own maker.
 #include "base/base_station_view.h"
+#include "base/base_status.h"
+#include "config/settings_engine.h"
 #include "gui/corrections_controller.h"
 #include "gui/log_viewer.h"
 #include "gui/main_window.h"
@@ -238,6 +240,21 @@ QWidget *MainWindow::makeCorrections(ui::ReceiverSession &s) {
                 view->setStatus(text, active);
             });
     view->setOwnOutput(c->showingOwnOutput());
+    // A base of this window set to send the same station: its position against the 1005/1006.
+    view->setSetBaseLookup([this](unsigned station) -> std::optional<ui::CorrectionsView::SetBase> {
+        for (ui::ReceiverSession *r : std::as_const(sessions_)) {
+            const config::SettingsEngine *engine = r->link()->settings();
+            const auto roles = engine && engine->dialect() ? base::baseRoles(*engine->dialect())
+                                                           : std::nullopt;
+            if (!roles) continue;
+            const base::BaseStatus b = base::baseStatus(
+                    *roles, [engine](std::string_view k) { return engine->receiverValue(k); },
+                    std::nullopt);
+            if (b.isBase() && b.position && b.station == std::to_string(station))
+                return ui::CorrectionsView::SetBase{r->name(), *b.position};
+        }
+        return std::nullopt;
+    });
     view->setStatus(c->statusText(), c->active()); // a stream of its own may be running
     return view;
 }

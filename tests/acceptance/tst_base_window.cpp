@@ -115,6 +115,14 @@ private slots:
         // the Serve dock on a free port; the rover takes it in its Corrections dock.
         ui::ReceiverSession *c2 = w.addReceiver({SourceSpec::Kind::Serial, com2, 0});
         QTRY_VERIFY_WITH_TIMEOUT(c2->link()->state() == ReceiverLink::State::Connected, 30000);
+        // What it sends, in its own Corrections dock: station 42 at the position set on the base.
+        w.selectReceiver(c2);
+        QVERIFY(w.showDock("corrections"));
+        auto *sent = w.dock("correctionsDock")->findChild<QLabel *>("correctionsBase");
+        QTRY_VERIFY2_WITH_TIMEOUT(sent->text().contains("from the position set on " + b->name()),
+                                  qPrintable(sent->text()), 15000);
+        QVERIFY2(sent->text().contains("Base station 42") && sent->text().contains("0.00"),
+                 qPrintable(sent->text()));
         QVERIFY(w.showDock("serve"));
         auto *serveView = w.dock("serveDock")->findChild<ui::ServeView *>();
         QVERIFY(serveView && serveView->isVisible());

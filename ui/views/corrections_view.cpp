@@ -32,6 +32,8 @@
 #include <QVBoxLayout>
 #include <QValueAxis>
 
+#include <cmath>
+
 namespace gnss::ui {
 
 namespace {
@@ -367,6 +369,14 @@ void CorrectionsView::refresh() {
                                .arg(b->station)
                                .arg(b->message)
                                .arg(where, fmt::distance(baseline, 3, u)));
+        // Against the position a base of the window was set to (the same station id).
+        if (const auto set = setBase_ ? setBase_(b->station) : std::nullopt) {
+            const double d = std::hypot(b->ecef.x - set->position.x, b->ecef.y - set->position.y,
+                                        b->ecef.z - set->position.z);
+            base_->setText(
+                    base_->text() + QLatin1Char('\n') +
+                    tr("%1 from the position set on %2").arg(fmt::length(d, 3, u), set->receiver));
+        }
     } else {
         base_->setText(tr("Base station: not yet received (1005/1006)"));
     }

@@ -9,12 +9,14 @@
 //
 // The view starts nothing itself: it asks (startRequested/stopRequested) and whoever owns the
 // source (the application's CorrectionsController) answers with setStatus().
+#include "core/wgs84.h"
 #include "models/value_format.h"
 
 #include <QString>
 #include <QWidget>
 
 #include <functional>
+#include <optional>
 
 class QCheckBox;
 class QComboBox;
@@ -70,6 +72,14 @@ public:
     // The monitor shows the receiver's own RTCM output (a base), not a source's: the distance is
     // then from the receiver's own fix.
     void setOwnOutput(bool own) { ownOutput_ = own; }
+    // Where a base of the window was set to send station `id` from (its receiver's name and the
+    // point): the 1005/1006 position is shown against it. Empty: no such base.
+    struct SetBase {
+        QString receiver;
+        wgs84::Ecef position;
+    };
+    using SetBaseLookup = std::function<std::optional<SetBase>(unsigned station)>;
+    void setSetBaseLookup(SetBaseLookup lookup) { setBase_ = std::move(lookup); }
     // Shown instead of the status when a request was refused before anything was started.
     void showError(const QString &text);
 
@@ -104,6 +114,7 @@ private:
     const corrections::CorrectionsMonitor &monitor_;
     ReceiverStateModel *receiver_;
     std::function<const corrections::ForwarderStats *()> forwarded_;
+    SetBaseLookup setBase_;
     bool active_ = false;
     bool ownOutput_ = false;
     bool keychain_ = false;
