@@ -1,8 +1,8 @@
 // gnss-cli ttff end to end: gnss-sim on a pseudo-terminal told its restart times (--ttff) and run
 // 20 times faster (--speed 20: a host second is 20 simulated ones), measured by the real
-// QSerialPort link. The medians come back within 10 % of what the simulator was told; a start the
-// receiver lacks is refused before anything is sent; a receiver that never fixes gives timeouts and
-// the campaign still ends.
+// QSerialPort link. The medians come back within 10 % of what the simulator was told (plus the
+// host's latency, on a loaded machine); a start the receiver lacks is refused before anything is
+// sent; a receiver that never fixes gives timeouts and the campaign still ends.
 #include "cli_run.h"
 #include "sim_process.h"
 
@@ -23,6 +23,16 @@ using gnss::test::Run;
 namespace {
 
 constexpr double kSpeed = 20;
+// A busy host (two sanitizer builds on two cores) delivers the fix's sentences late, never
+// early: measured times may run this much host time over what the simulator was told.
+constexpr double kHostLatency = 0.25; // seconds
+
+// Whether a time measured on the host (seconds) is what the simulator was told (simulated
+// seconds): within 10 % below, and 10 % plus the host's latency above.
+bool asTold(double hostSeconds, double told) {
+    const double simulated = hostSeconds * kSpeed;
+    return simulated >= 0.9 * told && simulated <= 1.1 * told + kHostLatency * kSpeed;
+}
 
 QByteArray why(const Run &r) {
     return "exit " + QByteArray::number(r.exitCode) + "\nstdout: " + r.out.right(3000) +
@@ -69,7 +79,7 @@ private slots:
             QCOMPARE(s["fixed"].toInt(), 3);
             const double median = s["ttff_s"].toObject()["median"].toDouble() * kSpeed;
             const double expected = told.at(kind);
-            QVERIFY2(std::abs(median - expected) <= 0.1 * expected,
+            QVERIFY2(asTold(median / kSpeed, expected),
                      qPrintable(QString("%1: %2 s simulated\n").arg(kind).arg(median) + why(r)));
         }
         QCOMPARE(o["runs"].toArray().size(), 3 * int(starts.size()));
@@ -175,7 +185,7 @@ private slots:
         QCOMPARE(runs.size(), 2);
         QCOMPARE(runs[0].toObject()["outcome"].toString(), QString("lost"));
         QCOMPARE(runs[1].toObject()["outcome"].toString(), QString("fixed"));
-        QVERIFY2(std::abs(runs[1].toObject()["ttff_s"].toDouble() * kSpeed - 200) <= 20, why(r));
+        QVERIFY2(asTold(runs[1].toObject()["ttff_s"].toDouble(), 200), why(r));
         QVERIFY2(r.err.contains("link lost"), why(r));
     }
 
