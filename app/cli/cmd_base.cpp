@@ -13,6 +13,7 @@
 #include "base/base_plan.h"
 #include "base/base_status.h"
 #include "base/position_text.h"
+#include "base/receiver_clock.h"
 #include "base/survey_in.h"
 #include "core/json_writer.h"
 #include "state/epoch_assembler.h"
@@ -210,28 +211,22 @@ public:
     // The receiver's clock, seconds: its epochs' UTC (across midnight), or the host's while it
     // gives none. A survey of M minutes is M minutes of the receiver's positions, whatever the
     // pace they arrive at (a simulator run faster than real time, a replay).
-    double clock() const { return clock_ + (timed_ ? 0 : host_.elapsed() / 1000.0); }
+    double clock() const { return clock_.timed() ? clock_.seconds() : host_.elapsed() / 1000.0; }
     // Waits up to `ms` for an epoch that carries the time (then clock() is the receiver's).
     void waitForTime(int ms) {
         QElapsedTimer t;
         t.start();
-        while (!timed_ && t.elapsed() < ms)
+        while (!clock_.timed() && t.elapsed() < ms)
             QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
     }
 
 private:
     void onEpoch(const Epoch &e) {
-        if (e.time) {
-            double t = static_cast<double>(e.time->nanos) / 1e9 + day_;
-            if (timed_ && t < clock_ - 43200) day_ += 86400, t += 86400;
-            clock_ = t;
-            timed_ = true;
-        }
-        if (e.fix == FixType::None || !e.lat || !e.lon) return;
+        clock_.add(e.time);
+        const auto position = e.position();
+        if (!position) return;
         if (e.geoidSep) geoidSep = e.geoidSep;
-        base::OwnFix f;
-        f.position = {*e.lat, *e.lon, e.altEllipsoid().value_or(e.altMsl.value_or(0))};
-        f.fix = std::string(toString(e.fix));
+        const base::OwnFix f{*position, std::string(toString(e.fix))};
         last = f;
         if (onFix) onFix(f, e);
     }
@@ -242,8 +237,7 @@ private:
         t.start();
         return t;
     }();
-    double clock_ = 0, day_ = 0;
-    bool timed_ = false;
+    base::ReceiverClock clock_;
 };
 
 std::function<std::optional<std::string>(std::string_view)> knownOf(const SettingsEngine &e) {
@@ -266,13 +260,7 @@ void printStatus(const base::BaseRoles &roles, const SettingsEngine &engine,
 
 // The position a set asks for, the antenna height added (and the geoid separation for --msl).
 std::optional<wgs84::Ecef> positionOf(const SetOptions &o, FixWatcher &fixes) {
-    if (o.ecef) {
-        if (!o.antennaHeight) return o.ecef;
-        auto g = wgs84::toGeodetic(*o.ecef); // the mark: the antenna is above it on the normal
-        if (!g) return o.ecef;
-        g->height += *o.antennaHeight;
-        return wgs84::toEcef(*g);
-    }
+    if (o.ecef) return base::raised(*o.ecef, o.antennaHeight.value_or(0));
     if (o.site) {
         sites::Site s = *o.site;
         if (o.antennaHeight) s.antennaHeight = *o.antennaHeight;
@@ -302,6 +290,20 @@ int applyBase(SettingsEngine &engine, const base::BaseRoles &roles, const SetOpt
         status = applyValues(engine, [&] { return engine.runAction(config::Action::SaveToFlash); });
     printStatus(roles, engine, fixes.wait(5000));
     return status;
+}
+
+// A survey's result kept in the user's site list (a site of that name replaced): 0, or 1 with
+// the reason said when the list cannot be read or written (never written over unread).
+int saveSurveySite(const std::string &name, const wgs84::Geodetic &antenna,
+                   std::optional<double> accuracy) {
+    sites::SiteStore store;
+    sites::SiteList list;
+    QString why;
+    if (!store.load(list, why)) return say(why.toStdString()), 1;
+    list.add(sites::surveyInSite(name, antenna, accuracy, sites::todayUtc()), true);
+    if (!store.save(list, why)) return say(why.toStdString()), 1;
+    say("site '" + name + "' saved");
+    return 0;
 }
 
 int survey(SettingsEngine &engine, const base::BaseRoles &roles, const SurveyOptions &so,
@@ -379,18 +381,8 @@ int survey(SettingsEngine &engine, const base::BaseRoles &roles, const SurveyOpt
             w.endObject().endObject();
         });
         printStatus(roles, engine, fixes.last);
-        if (so.saveSite && p) {
-            if (auto g = wgs84::toGeodetic(*p)) {
-                sites::SiteStore store;
-                sites::SiteList list;
-                QString why;
-                store.load(list, why);
-                list.add(sites::surveyInSite(*so.saveSite, *g, std::nullopt, sites::todayUtc()),
-                         true);
-                if (!store.save(list, why)) return say(why.toStdString()), 1;
-                say("site '" + *so.saveSite + "' saved");
-            }
-        }
+        if (const auto g = p ? wgs84::toGeodetic(*p) : std::nullopt; so.saveSite && g)
+            return saveSurveySite(*so.saveSite, *g, std::nullopt);
         return 0;
     }
     // The workbench averages the receiver's fixes: a base that reports its set position instead
@@ -425,15 +417,8 @@ int survey(SettingsEngine &engine, const base::BaseRoles &roles, const SurveyOpt
     fixes.onFix = nullptr;
     progressLine(true);
     const base::SurveyStatus s = in.status();
-    if (so.saveSite) {
-        sites::SiteStore store;
-        sites::SiteList list;
-        QString why;
-        if (!store.load(list, why)) return say(why.toStdString()), 1;
-        list.add(sites::surveyInSite(*so.saveSite, s.mean, s.accuracy, sites::todayUtc()), true);
-        if (!store.save(list, why)) return say(why.toStdString()), 1;
-        say("site '" + *so.saveSite + "' saved");
-    }
+    if (so.saveSite)
+        if (const int status = saveSurveySite(*so.saveSite, s.mean, s.accuracy)) return status;
     if (!so.set) return 0;
     set.ecef = s.meanEcef;
     set.request.position = s.meanEcef;

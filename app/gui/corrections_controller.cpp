@@ -169,8 +169,9 @@ void CorrectionsController::onOwnFrame(const QByteArray &frame) {
 }
 
 void CorrectionsController::setRoverFix(const Epoch &e) {
-    if (!e.lat || !e.lon || e.fix == FixType::None) return;
-    monitor_.setRoverPosition({*e.lat, *e.lon, e.altEllipsoid().value_or(e.altMsl.value_or(0))});
+    const auto position = e.position();
+    if (!position) return;
+    monitor_.setRoverPosition(*position);
     auto *ntrip = qobject_cast<corrections::NtripSource *>(source_.get());
     if (const auto p = corrections::ggaPositionOf(e); ntrip && p) ntrip->setRoverPosition(*p);
 }

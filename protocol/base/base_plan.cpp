@@ -47,6 +47,14 @@ std::optional<wgs84::Ecef> ecefOf(std::string_view text) {
     return wgs84::Ecef{v[0], v[1], v[2]};
 }
 
+wgs84::Ecef raised(const wgs84::Ecef &mark, double height) {
+    if (height == 0) return mark;
+    auto g = wgs84::toGeodetic(mark);
+    if (!g) return mark;
+    g->height += height;
+    return wgs84::toEcef(*g);
+}
+
 bool nearTheEllipsoid(const wgs84::Ecef &p) {
     const auto g = wgs84::toGeodetic(p);
     return g && std::abs(g->height) <= 100000;

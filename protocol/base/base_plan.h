@@ -43,6 +43,10 @@ BasePlan planBase(const BaseRoles &roles, const BaseRequest &request,
 std::string ecefText(const wgs84::Ecef &p);
 std::optional<wgs84::Ecef> ecefOf(std::string_view text);
 
+// The antenna reference point `height` metres above the mark `mark`, along the ellipsoid's
+// normal.
+wgs84::Ecef raised(const wgs84::Ecef &mark, double height);
+
 // A point within 100 km of the ellipsoid, as an antenna is: X,Y,Z typed in kilometres, or a
 // latitude typed into X, is not.
 bool nearTheEllipsoid(const wgs84::Ecef &p);

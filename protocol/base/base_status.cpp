@@ -52,7 +52,10 @@ void writeJson(JsonWriter &w, const BaseStatus &s) {
     w.field("role", meaningName(s.meaning));
     w.key("position");
     if (s.position) {
-        w.beginObject().field("x", s.position->x).field("y", s.position->y).field("z", s.position->z);
+        w.beginObject()
+                .field("x", s.position->x)
+                .field("y", s.position->y)
+                .field("z", s.position->z);
         if (s.positionGeodetic)
             w.field("lat", s.positionGeodetic->latDeg)
                     .field("lon", s.positionGeodetic->lonDeg)

@@ -25,7 +25,7 @@ struct BaseStatus {
     std::optional<wgs84::Ecef> position;
     std::optional<wgs84::Geodetic> positionGeodetic;
     std::optional<std::string> station, rtcmInterval, averagingMinutes, nmeaPosition;
-    std::optional<double> threshold; // metres
+    std::optional<double> threshold;                  // metres
     std::vector<std::pair<int, OptionMeaning>> ports; // ports whose protocol is known
     std::optional<OwnFix> own;
     std::optional<double> distance; // metres from the set point to the own fix

@@ -6,6 +6,7 @@
 #include "core/fix_type.h"
 #include "core/json_writer.h"
 #include "core/satellite.h"
+#include "core/wgs84.h"
 
 #include <optional>
 #include <string>
@@ -40,6 +41,12 @@ struct Epoch {
     std::optional<double> altEllipsoid() const {
         if (altMsl && geoidSep) return *altMsl + *geoidSep;
         return std::nullopt;
+    }
+    // The fix's position: its height above the ellipsoid, or above sea level when the receiver
+    // gives no geoid separation (0 with no height at all); none without a fix.
+    std::optional<wgs84::Geodetic> position() const {
+        if (fix == FixType::None || !lat || !lon) return std::nullopt;
+        return wgs84::Geodetic{*lat, *lon, altEllipsoid().value_or(altMsl.value_or(0))};
     }
     // ISO 8601 UTC ("2018-05-31T15:35:56.000Z") when the date is known, else "hh:mm:ss.sss".
     std::string timeText() const;

@@ -1,5 +1,6 @@
 // The workbench's survey-in (base/survey_in.h): its mean, σ east/north/up and the mean's accuracy
 // on positions drawn about a known point; the goals by time and by accuracy; the convergence.
+#include "base/receiver_clock.h"
 #include "base/survey_in.h"
 
 #include <QTest>
@@ -81,6 +82,21 @@ private slots:
         QVERIFY(std::abs(h.front().east) < 1e-6);
         QVERIFY(h.back().east < -1.5 && h.back().east > -2.5); // from the first position
         QVERIFY(h.back().accuracy > 0);
+    }
+
+    // The receiver's clock goes on across midnight, and waits for a time.
+    void theReceiverClockCrossesMidnight() {
+        base::ReceiverClock c;
+        c.add(std::nullopt);
+        QVERIFY(!c.timed());
+        c.add(TimeOfDay{86399'500'000'000LL});
+        QVERIFY(c.timed());
+        c.add(std::nullopt);
+        QCOMPARE(c.seconds(), 86399.5);
+        c.add(TimeOfDay{500'000'000LL});
+        QCOMPARE(c.seconds(), 86400.5);
+        c.add(TimeOfDay{400'000'000LL}); // a step back (a repeated epoch) is no new day
+        QCOMPARE(c.seconds(), 86400.4);
     }
 
     void nothingYet() {

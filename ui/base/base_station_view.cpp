@@ -48,15 +48,6 @@ QString ecefText(const wgs84::Ecef &p) {
     return QStringLiteral("%1, %2, %3").arg(p.x, 0, 'f', 3).arg(p.y, 0, 'f', 3).arg(p.z, 0, 'f', 3);
 }
 
-// The antenna reference point `height` metres above `mark` along the vertical.
-wgs84::Ecef raised(const wgs84::Ecef &mark, double height) {
-    if (height == 0) return mark;
-    auto g = wgs84::toGeodetic(mark);
-    if (!g) return mark;
-    g->height += height;
-    return wgs84::toEcef(*g);
-}
-
 } // namespace
 
 BaseStationView::BaseStationView(config::SettingsEngine *engine, ReceiverStateModel *state,
@@ -244,18 +235,14 @@ BaseStationView::BaseStationView(config::SettingsEngine *engine, ReceiverStateMo
         base::BaseRequest q;
         q.kind = base::BaseRequest::Kind::Averaging;
         q.averagingMinutes = receiverMinutes_->value();
-        if (station_->value() >= 0) q.station = station_->value();
-        if (interval_->currentData().isValid()) q.rtcmInterval = interval_->currentData().toInt();
-        if (port_->currentData().toInt() > 0) q.rtcmPort = port_->currentData().toInt();
-        const base::BasePlan plan = base::planBase(
-                *roles_, q, [this](std::string_view k) { return engine_->receiverValue(k); });
+        const base::BasePlan plan = planWithForm(q);
         verdicts_->clear();
         if (!plan.ok()) return verdicts_->addItem(QString::fromStdString(plan.error));
         positionBefore_ = engine_->receiverValue(roles_->position->key);
         survey_ = base::SurveyIn(base::SurveyGoal{});
         if (!engine_->apply(plan.values)) return;
         pending_ = Pending::Apply;
-        receiverSurveyStart_ = clock_;
+        receiverSurveyStart_ = clock_.seconds();
         receiverText_->setText(tr("Asking the receiver to average its position…"));
     });
     connect(setButton_, &QPushButton::clicked, this, &BaseStationView::setBase);
@@ -375,15 +362,10 @@ void BaseStationView::onFinished(const config::OperationReport &r) {
 
 void BaseStationView::onEpoch() {
     const Epoch &e = state_->state().epoch;
-    if (e.time) {
-        double t = static_cast<double>(e.time->nanos) / 1e9 + day_;
-        if (timed_ && t < clock_ - 43200) day_ += 86400, t += 86400;
-        clock_ = t;
-        timed_ = true;
-    }
-    const bool fix = e.fix != FixType::None && e.lat && e.lon;
-    if (fix && (surveying_ || receiverSurveyStart_ >= 0)) {
-        survey_.add(clock_, {*e.lat, *e.lon, e.altEllipsoid().value_or(e.altMsl.value_or(0))});
+    clock_.add(e.time);
+    const double now = clock_.seconds();
+    if (const auto position = e.position(); position && (surveying_ || receiverSurveyStart_ >= 0)) {
+        survey_.add(now, *position);
         if (surveying_ && survey_.done()) {
             stopSurvey();
             emit message(tr("Survey-in done: accuracy %1")
@@ -392,13 +374,13 @@ void BaseStationView::onEpoch() {
         showSurvey();
     }
     if (receiverSurveyStart_ >= 0 && roles_ && pending_ == Pending::None) {
-        const double left = receiverMinutes_->value() * 60.0 - (clock_ - receiverSurveyStart_);
+        const double left = receiverMinutes_->value() * 60.0 - (now - receiverSurveyStart_);
         receiverText_->setText(
                 left > 0 ? tr("The receiver averages its position: %1 s left").arg(std::ceil(left))
                          : tr("Waiting for the receiver's averaged position…"));
         // Its time is up: read its position every other second until it changes.
-        if (left <= 0 && std::fmod(clock_, 2.0) < 0.25 && engine_->canSend() &&
-            !engine_->isBusy() && engine_->read({std::string(roles_->position->key)}))
+        if (left <= 0 && std::fmod(now, 2.0) < 0.25 && engine_->canSend() && !engine_->isBusy() &&
+            engine_->read({std::string(roles_->position->key)}))
             pending_ = Pending::ReadPosition;
     }
     showStatus();
@@ -408,11 +390,9 @@ void BaseStationView::showStatus() {
     if (!roles_ || !engine_) return;
     const Epoch &e = state_->state().epoch;
     std::optional<base::OwnFix> own;
-    if (e.fix != FixType::None && e.lat && e.lon)
-        own = base::OwnFix{{*e.lat, *e.lon, e.altEllipsoid().value_or(e.altMsl.value_or(0))},
-                           std::string(toString(e.fix))};
-    const base::BaseStatus s = base::baseStatus(
-            *roles_, [this](std::string_view k) { return engine_->receiverValue(k); }, own);
+    if (const auto position = e.position())
+        own = base::OwnFix{*position, std::string(toString(e.fix))};
+    const base::BaseStatus s = base::baseStatus(*roles_, known(), own);
     QStringList lines;
     lines << tr("Role: %1").arg(roleText(s.meaning));
     if (s.positionGeodetic)
@@ -489,9 +469,7 @@ void BaseStationView::startSurvey() {
     surveying_ = true;
     surveyButton_->setText(tr("Stop survey"));
     // A base reporting its set position gives no fix of its own: it is told to report its own.
-    const base::BaseStatus now = base::baseStatus(
-            *roles_, [this](std::string_view k) { return engine_->receiverValue(k); },
-            std::nullopt);
+    const base::BaseStatus now = base::baseStatus(*roles_, known(), std::nullopt);
     if (now.isBase() && now.nmeaPosition == base::meaningName(OptionMeaning::BasePosition) &&
         !engine_->isBusy()) {
         for (const SettingOption &o : roles_->nmeaPosition->options)
@@ -526,7 +504,7 @@ std::optional<wgs84::Ecef> BaseStationView::wantedPosition(QString *why) const {
     if (format_->currentIndex() == 1) {
         const auto p = base::ecefOf(text);
         if (!p) return fail(tr("Expected X, Y, Z in metres."));
-        return raised(*p, antenna_->value());
+        return base::raised(*p, antenna_->value());
     }
     auto g = base::parseGeodetic(text, error);
     if (!g) return fail(QString::fromStdString(error));
@@ -547,17 +525,24 @@ void BaseStationView::setBase() {
     if (!position) return verdicts_->addItem(why);
     base::BaseRequest q;
     q.position = position;
-    if (station_->value() >= 0) q.station = station_->value();
-    if (interval_->currentData().isValid()) q.rtcmInterval = interval_->currentData().toInt();
-    if (port_->currentData().toInt() > 0) q.rtcmPort = port_->currentData().toInt();
-    const base::BasePlan plan = base::planBase(
-            *roles_, q, [this](std::string_view k) { return engine_->receiverValue(k); });
+    const base::BasePlan plan = planWithForm(q);
     if (!plan.ok()) return verdicts_->addItem(QString::fromStdString(plan.error));
     if (!engine_->canSend()) return verdicts_->addItem(engine_->sendRefusal());
     if (engine_->isBusy())
         return verdicts_->addItem(tr("The receiver's settings are busy: try again."));
     saveAfterApply_ = saveFlash_->isChecked();
     if (engine_->apply(plan.values)) pending_ = Pending::Apply;
+}
+
+std::function<std::optional<std::string>(std::string_view)> BaseStationView::known() const {
+    return [engine = engine_](std::string_view key) { return engine->receiverValue(key); };
+}
+
+base::BasePlan BaseStationView::planWithForm(base::BaseRequest q) const {
+    if (station_->value() >= 0) q.station = station_->value();
+    if (interval_->currentData().isValid()) q.rtcmInterval = interval_->currentData().toInt();
+    if (port_->currentData().toInt() > 0) q.rtcmPort = port_->currentData().toInt();
+    return base::planBase(*roles_, q, known());
 }
 
 void BaseStationView::pickSite(const QString &name) {

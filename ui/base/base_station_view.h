@@ -12,13 +12,15 @@
 //   - station, RTCM interval and the port that carries the RTCM; Set base applies them and reads
 //     them back, each setting's verdict listed; saved to flash when asked.
 // A survey's result, or the base's position, can be kept as a site.
-#include "base/base_roles.h"
+#include "base/base_plan.h"
+#include "base/receiver_clock.h"
 #include "base/survey_in.h"
 #include "models/value_format.h"
 
 #include <QPointer>
 #include <QWidget>
 
+#include <functional>
 #include <optional>
 
 class QCheckBox;
@@ -80,6 +82,10 @@ private:
     void showStatus();
     void showSurvey();
     void fillChoices();
+    // The receiver's values as the settings engine knows them.
+    std::function<std::optional<std::string>(std::string_view)> known() const;
+    // `q` with the form's station, interval and port, planned.
+    base::BasePlan planWithForm(base::BaseRequest q) const;
     void pickSite(const QString &name);
     void saveSite();
 
@@ -92,8 +98,7 @@ private:
     bool surveying_ = false;
     double receiverSurveyStart_ = -1; // the receiver's own averaging: its clock when it began
     std::optional<std::string> positionBefore_;
-    double clock_ = 0, day_ = 0; // the receiver's clock (its epochs' UTC, across midnight)
-    bool timed_ = false;
+    base::ReceiverClock clock_;
     enum class Pending { None, Read, Apply, Save, ReadPosition } pending_ = Pending::None;
     bool saveAfterApply_ = false;
 
