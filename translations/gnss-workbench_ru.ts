@@ -7384,7 +7384,7 @@ Serial number: %3</source>
         <translation>ещё не прочитано</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+37"/>
         <source>Read</source>
         <translation>Прочитать</translation>
     </message>
@@ -7425,12 +7425,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+382"/>
+        <location line="+372"/>
         <source>Start survey</source>
         <translation>Начать осреднение</translation>
     </message>
     <message>
-        <location line="-364"/>
+        <location line="-354"/>
         <source>How far the running mean was from the mean now: horizontally and vertically, a point a second</source>
         <translation>Насколько текущее среднее отличалось от итогового: по горизонтали и по вертикали, точка в секунду</translation>
     </message>
@@ -7550,7 +7550,7 @@ Serial number: %3</source>
         <translation>Сохранить результат осреднения (или введённую точку) в списке пунктов</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+31"/>
         <source>Asking the receiver to average its position…</source>
         <translation>Приёмнику отправлена команда осреднять координаты…</translation>
     </message>
@@ -7596,17 +7596,17 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+220"/>
+        <location line="+210"/>
         <source>The receiver&apos;s settings are busy: try again.</source>
         <translation>Настройки приёмника заняты: повторите позже.</translation>
     </message>
     <message>
-        <location line="-210"/>
-        <source>%1: %2 (%3)</source>
-        <translation>%1: %2 (%3)</translation>
+        <location line="-196"/>
+        <source>%1, %2: %3 (%4)</source>
+        <translation>%1, %2: %3 (%4)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Every value was already in force.</source>
         <translation>Все значения уже действовали.</translation>
     </message>
@@ -7636,7 +7636,7 @@ Serial number: %3</source>
         <translation>Приёмник осреднил координаты: %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+14"/>
         <source>Survey-in done: accuracy %1</source>
         <translation>Осреднение завершено: точность %1</translation>
     </message>
@@ -7651,7 +7651,7 @@ Serial number: %3</source>
         <translation>Ожидание осреднённых координат от приёмника…</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+17"/>
         <source>Role: %1</source>
         <translation>Роль: %1</translation>
     </message>
@@ -7709,7 +7709,7 @@ Serial number: %3</source>
         <translation>Остановить осреднение</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
         <source>The receiver reported its set position: it now reports its own.</source>
         <translation>Приёмник выдавал заданные координаты базы: теперь он выдаёт собственные.</translation>
     </message>
@@ -7734,7 +7734,7 @@ Serial number: %3</source>
         <translation>Приёмник ещё не сообщил высоту геоида.</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+61"/>
         <source>Save as site</source>
         <translation>Сохранить как пункт</translation>
     </message>

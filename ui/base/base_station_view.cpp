@@ -331,12 +331,15 @@ void BaseStationView::onFinished(const config::OperationReport &r) {
     pending_ = Pending::None;
     if (was == Pending::Apply || was == Pending::Save) {
         if (was == Pending::Apply) verdicts_->clear();
+        const config::SchemaTexts texts(roles_->dialect->id);
         for (const auto &c : r.checks) {
-            auto *item = new QListWidgetItem(tr("%1: %2 (%3)")
-                                                     .arg(QString::fromStdString(c.key),
-                                                          QString::fromStdString(c.wanted),
-                                                          config::verdictName(c.verdict)),
-                                             verdicts_);
+            // The setting as the form names it, then its key (what the console and docs say).
+            const SettingDef *def = findSetting(roles_->dialect->settings, c.key);
+            auto *item = new QListWidgetItem(
+                    tr("%1, %2: %3 (%4)")
+                            .arg(def ? texts(def->label) : QString(), QString::fromStdString(c.key),
+                                 QString::fromStdString(c.wanted), config::verdictName(c.verdict)),
+                    verdicts_);
             if (!config::isGood(c.verdict)) item->setForeground(QColor("#c62828"));
         }
         if (!r.error.isEmpty()) verdicts_->addItem(r.error);
