@@ -3841,7 +3841,12 @@
         <translation>Приёмник, подключённый к gpsd: gpsd://ХОСТ[:ПОРТ][/УСТРОЙСТВО] (если не указаны — порт 2947 и все устройства).</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+6"/>
+        <source>Show this dock in front of its tab group: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info, history, compare, qualify, base, serve; with a log open also logTrack, logSummary, logCharts, logEvents.</source>
+        <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info, history, compare, qualify, base, serve; при открытом журнале также logTrack, logSummary, logCharts, logEvents.</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>--at needs a log to open</source>
         <translation>--at указывается вместе с журналом</translation>
     </message>
@@ -3876,12 +3881,7 @@
         <translation>Код выхода: 0 окно закрыто, 1 открываемого журнала нет или --screenshot не удалось сохранить, 2 ошибка в командной строке.</translation>
     </message>
     <message>
-        <location line="+46"/>
-        <source>Show this dock in front of its tab group: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info, history, compare; with a log open also logTrack, logSummary, logCharts, logEvents.</source>
-        <translation>Показать эту панель поверх её группы вкладок: settings, console, sky, signal, fix, satellites, rtk, charts, corrections, deviation, attitude, stats, info, history, compare; при открытом журнале также logTrack, logSummary, logCharts, logEvents.</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+60"/>
         <source>Quit after this many seconds.</source>
         <translation>Выйти через указанное число секунд.</translation>
     </message>

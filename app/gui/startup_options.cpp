@@ -70,7 +70,7 @@ std::optional<StartupOptions> parseStartupOptions(const QStringList &arguments,
                                         "Show this dock in front of its tab group: settings, "
                                         "console, sky, signal, fix, satellites, rtk, charts, "
                                         "corrections, deviation, attitude, stats, info, history, "
-                                        "compare; with "
+                                        "compare, qualify, base, serve; with "
                                         "a log open also logTrack, logSummary, logCharts, "
                                         "logEvents."),
             "name");
