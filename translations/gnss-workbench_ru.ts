@@ -7425,12 +7425,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+372"/>
+        <location line="+381"/>
         <source>Start survey</source>
         <translation>Начать осреднение</translation>
     </message>
     <message>
-        <location line="-354"/>
+        <location line="-363"/>
         <source>How far the running mean was from the mean now: horizontally and vertically, a point a second</source>
         <translation>Насколько текущее среднее отличалось от итогового: по горизонтали и по вертикали, точка в секунду</translation>
     </message>
@@ -7561,16 +7561,16 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+33"/>
-        <source>No receiver yet.</source>
-        <translation>Приёмника пока нет.</translation>
+        <source>No receiver whose settings are known: a base station needs one that can be a base (the NV08C-RTK), identified on a link that takes commands.</source>
+        <translation>Нет приёмника с известными настройками: для базовой станции нужен приёмник, который может быть базой (NV08C-RTK), опознанный на линии, принимающей команды.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>The %1 cannot be a base station: its settings have no base mode.</source>
         <translation>%1 не может быть базовой станцией: в его настройках нет режима базы.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
         <source>as it is</source>
         <translation>как есть</translation>
     </message>

@@ -286,7 +286,9 @@ void BaseStationView::onDialect() {
     unsupported_->setVisible(!roles_);
     body_->setEnabled(roles_.has_value());
     if (!d)
-        unsupported_->setText(tr("No receiver yet."));
+        unsupported_->setText(tr("No receiver whose settings are known: a base station needs one "
+                                 "that can be a base (the NV08C-RTK), identified on a link that "
+                                 "takes commands."));
     else if (!roles_)
         unsupported_->setText(tr("The %1 cannot be a base station: its settings have no base mode.")
                                       .arg(QString::fromUtf8(d->displayName.data(),
@@ -294,7 +296,14 @@ void BaseStationView::onDialect() {
     if (!roles_) return;
     fillChoices();
     showStatus();
-    if (engine_->canSend() && !engine_->isBusy()) readBase();
+    // A replayed log or a receiver gpsd holds takes no commands: said, nothing to press.
+    if (!engine_->canSend()) {
+        unsupported_->setText(engine_->sendRefusal());
+        unsupported_->show();
+        body_->setEnabled(false);
+    } else if (!engine_->isBusy()) {
+        readBase();
+    }
 }
 
 void BaseStationView::fillChoices() {
