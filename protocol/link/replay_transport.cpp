@@ -5,6 +5,7 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <utility>
 
 namespace gnss::link {
 
@@ -12,6 +13,8 @@ namespace {
 
 // The pace of a timed replay: slices of 10 ms keep the receiver's own timing within a tick.
 constexpr int kReplayTickMs = 10;
+// How often an opening replay looks at its worker's progress.
+constexpr int kLoadPollMs = 20;
 
 // hhmmss[.sss] → seconds of the day; negative when not a time.
 double timeOfDay(std::string_view f) {
@@ -62,6 +65,8 @@ ReplayTransport::ReplayTransport(QString path, Timing timing, QObject *parent)
     timer_.setInterval(kReplayTickMs);
     timer_.setTimerType(Qt::PreciseTimer);
     connect(&timer_, &QTimer::timeout, this, &ReplayTransport::tick);
+    loadPoll_.setInterval(kLoadPollMs);
+    connect(&loadPoll_, &QTimer::timeout, this, &ReplayTransport::pollLoader);
 }
 
 ReplayTransport::~ReplayTransport() {
@@ -69,10 +74,14 @@ ReplayTransport::~ReplayTransport() {
 }
 
 void ReplayTransport::stopLoader() {
-    if (!loader_.joinable()) return;
-    cancelLoad_ = true; // the worker looks at it every few thousand lines
-    loader_.join();
-    cancelLoad_ = false;
+    loadPoll_.stop();
+    if (loader_.joinable()) {
+        cancelLoad_ = true; // the worker looks at it every few thousand lines
+        loader_.join();
+        cancelLoad_ = false;
+    }
+    loaded_.reset(); // a result it left is not applied
+    loadDone_ = false;
 }
 
 bool ReplayTransport::open() {
@@ -86,15 +95,12 @@ bool ReplayTransport::open() {
         return false;
     }
     setState(State::Connecting);
-    const int generation = ++loadGeneration_;
-    loader_ = std::thread([this, path = path_, timing = timing_, generation] {
+    loadPercent_ = -1;
+    percentShown_ = -1;
+    loader_ = std::thread([this, path = path_, timing = timing_] {
         auto loaded = std::make_shared<Loaded>();
-        int lastPercent = -1;
-        auto progress = [this, &lastPercent](int percent) {
-            if (percent == lastPercent) return;
-            lastPercent = percent;
-            QMetaObject::invokeMethod(
-                    this, [this, percent] { emit openingProgress(percent); }, Qt::QueuedConnection);
+        auto progress = [this](int percent) {
+            loadPercent_.store(percent, std::memory_order_relaxed);
         };
         if (!loadRecording(path, loaded->recording, loaded->error, &cancelLoad_)) {
             loaded->cancelled = loaded->error.isEmpty();
@@ -106,19 +112,27 @@ bool ReplayTransport::open() {
             loaded->cancelled = !buildTimeline(loaded->recording, timing, loaded->effective,
                                                loaded->timeline, cancelLoad_, progress);
         }
-        // Back on the transport's thread (dropped if the transport is gone by then).
-        QMetaObject::invokeMethod(
-                this,
-                [this, loaded, generation] {
-                    if (generation == loadGeneration_) finishOpen(loaded); // not a stale one
-                },
-                Qt::QueuedConnection);
+        loaded_ = std::move(loaded);
+        loadDone_.store(true, std::memory_order_release);
     });
+    loadPoll_.start();
     return true;
 }
 
+void ReplayTransport::pollLoader() {
+    const int percent = loadPercent_.load(std::memory_order_relaxed);
+    if (percent > percentShown_) {
+        percentShown_ = percent;
+        emit openingProgress(percent);
+    }
+    if (!loadDone_.load(std::memory_order_acquire)) return;
+    loadPoll_.stop();
+    loader_.join(); // it has handed its result over and is ending
+    loadDone_ = false;
+    finishOpen(std::exchange(loaded_, nullptr));
+}
+
 void ReplayTransport::finishOpen(const std::shared_ptr<Loaded> &loaded) {
-    if (loader_.joinable()) loader_.join(); // it has posted this and is ending
     if (state() != State::Connecting || loaded->cancelled) return;
     if (!loaded->error.isEmpty()) {
         fail(loaded->error, false);
@@ -138,7 +152,6 @@ void ReplayTransport::finishOpen(const std::shared_ptr<Loaded> &loaded) {
 
 void ReplayTransport::close() {
     stopLoader();
-    ++loadGeneration_; // a result already posted is not applied
     timer_.stop();
     setState(State::Closed);
 }

@@ -81,6 +81,7 @@ private:
     static bool buildTimeline(const Recording &recording, Timing timing, Timing &effective,
                               std::vector<Slice> &timeline, const std::atomic<bool> &cancel,
                               const std::function<void(int)> &progress);
+    void pollLoader();
     void finishOpen(const std::shared_ptr<Loaded> &loaded);
     void stopLoader();
     void tick();
@@ -99,9 +100,15 @@ private:
     double anchorPos_ = 0; // recording time at the last (re)start of the clock
     QElapsedTimer clock_;
     QTimer timer_;
+    // The worker hands its progress and result over through atomics and its own end (joined),
+    // which ThreadSanitizer can follow, not through functors posted in Qt's event queue.
+    QTimer loadPoll_;
     std::thread loader_;
     std::atomic<bool> cancelLoad_{false};
-    int loadGeneration_ = 0; // which open() a worker's result belongs to
+    std::atomic<int> loadPercent_{-1};
+    std::atomic<bool> loadDone_{false};
+    std::shared_ptr<Loaded> loaded_; // the worker's until loadDone_, then this thread's
+    int percentShown_ = -1;
 };
 
 } // namespace gnss::link
