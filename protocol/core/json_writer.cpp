@@ -33,11 +33,23 @@ std::size_t utf8Sequence(std::string_view s, std::size_t i) {
     return n;
 }
 
+// A byte written into a JSON string as it is.
+bool isPlainJsonByte(unsigned char u) {
+    return u >= 0x20 && u < 0x7F && u != '"' && u != '\\';
+}
+
 } // namespace
 
 void appendJsonString(std::string &out, std::string_view s) {
     out.push_back('"');
-    for (std::size_t i = 0; i < s.size(); ++i) {
+    std::size_t i = 0;
+    while (i < s.size()) {
+        // Printable ASCII other than the two escaped characters goes out as one run.
+        std::size_t plain = i;
+        while (plain < s.size() && isPlainJsonByte(static_cast<unsigned char>(s[plain]))) ++plain;
+        out.append(s.data() + i, plain - i);
+        if (plain == s.size()) break;
+        i = plain;
         const char c = s[i];
         switch (c) {
         case '"': out += "\\\""; break;
@@ -52,20 +64,17 @@ void appendJsonString(std::string &out, std::string_view s) {
             if (u >= 0x80) {
                 if (const std::size_t n = utf8Sequence(s, i)) {
                     out.append(s.substr(i, n));
-                    i += n - 1;
-                    break;
+                    i += n;
+                    continue;
                 }
             }
-            if (u < 0x20 || u >= 0x7F) {
-                static const char hex[] = "0123456789abcdef";
-                out += "\\u00";
-                out.push_back(hex[u >> 4]);
-                out.push_back(hex[u & 15]);
-            } else {
-                out.push_back(c);
-            }
+            static const char hex[] = "0123456789abcdef";
+            out += "\\u00";
+            out.push_back(hex[u >> 4]);
+            out.push_back(hex[u & 15]);
         }
         }
+        ++i;
     }
     out.push_back('"');
 }
