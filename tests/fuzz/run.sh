@@ -4,11 +4,14 @@
 # executions, executions per second, coverage (libFuzzer's cov: edges, ft: features) and corpus
 # size; crashes are kept under build/fuzz/artifacts/ and make the script fail.
 #
-#   tests/fuzz/run.sh [--fast] [--merge] SECONDS [HARNESS...]      (default: every harness)
+#   tests/fuzz/run.sh [--fast] [--merge] [--runs N] SECONDS [HARNESS...]   (default: every one)
 #
 # --fast runs the fuzz-fast preset's binaries instead: the same harnesses with UBSan but without
 # AddressSanitizer, several times the executions per second (an out-of-bounds read that does not
 # crash goes unseen there: the ASan campaign covers that, the fast one covers more inputs).
+#
+# --runs N stops a harness after N executions, or after SECONDS if that comes first (0: no time
+# limit), so that a campaign can give each harness the same number of executions.
 #
 # New inputs go to a scratch folder, never straight into the committed corpus. With --merge,
 # those that reach new coverage are then merged into tests/fuzz/corpus/<harness>/ (libFuzzer
@@ -21,20 +24,22 @@ cd "$(dirname "$0")/../.."
 
 merge=0
 preset=fuzz
+runs=-1
 while [ $# -gt 0 ]; do
   case $1 in
     --merge) merge=1 ;;
     --fast) preset=fuzz-fast ;;
+    --runs) runs=${2:?--runs takes a number of executions}; shift ;;
     *) break ;;
   esac
   shift
 done
-seconds=${1:?usage: tests/fuzz/run.sh [--fast] [--merge] SECONDS [HARNESS...]}
+seconds=${1:?usage: tests/fuzz/run.sh [--fast] [--merge] [--runs N] SECONDS [HARNESS...]}
 shift
 harnesses=("$@")
 [ ${#harnesses[@]} -eq 0 ] && harnesses=(fuzz_stream_decoder fuzz_epochs_state
   fuzz_settings_roundtrip fuzz_profile_import fuzz_rtcm fuzz_log_scan fuzz_log_index
-  fuzz_ntrip_response fuzz_recording_index)
+  fuzz_ntrip_response fuzz_recording_index fuzz_caster_request fuzz_mixed_stream)
 
 build=build/$preset
 missing=0
@@ -63,12 +68,14 @@ for h in "${harnesses[@]}"; do
   [ -f "tests/fuzz/$h.dict" ] && dict=(-dict="tests/fuzz/$h.dict")
   # Longest input: 1 KB for the NMEA streams (a control bit repeats the payload into a stream
   # longer than a line may be, so long lines and logs are still reached), one whole RTCM frame
-  # and more for RTCM, a profile file for profiles; 4 KB for caster replies (a control bit
-  # repeats them past the longest head) and recordings, 8 KB for the log index (logs of a few
-  # dozen epochs; the harness cuts anything over 64 KB).
+  # and more for RTCM and for NMEA with RTCM, a profile file for profiles; 4 KB for caster
+  # replies (a control bit repeats them past the longest head) and recordings, past the caster's
+  # longest head (8 KB) for client requests, 8 KB for the log index (logs of a few dozen
+  # epochs; the harness cuts anything over 64 KB).
   case $h in
-    fuzz_rtcm) max_len=2100 ;;
+    fuzz_rtcm | fuzz_mixed_stream) max_len=2100 ;;
     fuzz_profile_import | fuzz_settings_roundtrip | fuzz_ntrip_response) max_len=4096 ;;
+    fuzz_caster_request) max_len=8400 ;;
     fuzz_recording_index) max_len=4096 ;;
     fuzz_log_index) max_len=8192 ;;
     *) max_len=1024 ;;
@@ -78,7 +85,7 @@ for h in "${harnesses[@]}"; do
   # blocks and a smaller quarantine (a quarter faster; use-after-free is still caught).
   ASAN_OPTIONS=${ASAN_OPTIONS:-max_malloc_fill_size=0:quarantine_size_mb=16} \
     nice -n 19 "$build/tests/fuzz/$h" "$scratch" "$corpus" "${dict[@]}" \
-    -max_total_time="$seconds" -max_len=$max_len -timeout=10 -rss_limit_mb=2048 \
+    -max_total_time="$seconds" -runs="$runs" -max_len=$max_len -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$artifacts/$h-" >"$log" 2>&1
   status=$?
   set -e
