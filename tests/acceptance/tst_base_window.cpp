@@ -1,10 +1,10 @@
 // The Base station dock in the real window at 1280x800, with two simulated NV08C-RTKs on
 // pseudo-terminals (baud "auto"), ten times faster than real time: one is made a base from a
-// survey-in by the workbench (until the mean is known to 0.3 m), its RTCM on its COM2, each
-// setting verified by reading it back; its COM2, opened as a third receiver, is served by the
-// Serve dock's caster; the other, a rover, takes that caster in its Corrections dock and
-// reaches RTK fixed. A GeoS-5 is said not to be able to be a base; a typed position 1 km away
-// is set with the threshold warning shown.
+// survey-in by the workbench (until the mean is known to 0.3 m) and saved as a site, its RTCM
+// on its COM2, each setting verified by reading it back; its COM2, opened as a third receiver,
+// is served by the Serve dock's caster; the other, a rover, takes that caster in its
+// Corrections dock and reaches RTK fixed. A GeoS-5 is said not to be able to be a base; a typed
+// position 1 km away is set with the threshold warning shown.
 #include "base/base_station_view.h"
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
@@ -20,9 +20,11 @@
 #include "sites/site_store.h"
 #include "window_children.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -33,6 +35,7 @@
 #include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 using namespace gnss;
 using gnss::link::SourceSpec;
@@ -48,6 +51,21 @@ QString verdicts(QListWidget *list) {
     QStringList lines;
     for (int i = 0; i < list->count(); ++i) lines << list->item(i)->text();
     return lines.join('\n');
+}
+
+// Types `text` into the next QInputDialog that opens and accepts it (the dialog runs its own
+// event loop, in which this timer fires).
+void answerNextInputDialog(const QString &text) {
+    auto *timer = new QTimer;
+    timer->setInterval(20);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, text] {
+        auto *dialog = qobject_cast<QInputDialog *>(QApplication::activeModalWidget());
+        if (!dialog) return;
+        dialog->setTextValue(text);
+        dialog->accept();
+        timer->deleteLater();
+    });
+    timer->start();
 }
 
 } // namespace
@@ -95,6 +113,18 @@ private slots:
         QVERIFY(std::abs((s.mean.latDeg - 55.7512) * 111320) < 3);
         QVERIFY(child<QLabel>(view, "surveyText")->text().contains("σ east"));
         QVERIFY(!view->survey().history().empty());
+
+        // Saved as a site: its name asked in a dialog; the survey's mean and accuracy kept.
+        answerNextInputDialog("Roof mast");
+        QTest::mouseClick(child<QPushButton>(view, "baseSaveSite"), Qt::LeftButton);
+        sites::SiteList saved;
+        QString why;
+        QVERIFY2(sites::SiteStore().load(saved, why), qPrintable(why));
+        const sites::Site *site = saved.find("roof MAST");
+        QVERIFY(site);
+        QCOMPARE(site->method, std::string("survey-in"));
+        QVERIFY(std::abs((site->latDeg - s.mean.latDeg) * 111320) < 0.001);
+        QVERIFY(site->accuracy && *site->accuracy <= 0.3);
 
         // Set: station 42, RTCM on COM2; every setting verified by reading it back.
         child<QSpinBox>(view, "baseStation")->setValue(42);
