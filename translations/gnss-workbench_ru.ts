@@ -5221,7 +5221,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::app::ServeController</name>
     <message>
-        <location filename="../app/gui/serve_controller.cpp" line="+70"/>
+        <location filename="../app/gui/serve_controller.cpp" line="+71"/>
         <source>RTCM of %1</source>
         <translation>RTCM от %1</translation>
     </message>
@@ -5267,7 +5267,12 @@ Serial number: %3</source>
         <translation>Нет приёмника для раздачи</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+29"/>
+        <source>Client %1 dropped</source>
+        <translation>Клиент %1 отключён</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Serving %1 on %2</source>
         <translation>Раздаётся %1 на %2</translation>
     </message>
@@ -5287,7 +5292,7 @@ Serial number: %3</source>
         <translation>Не раздаётся</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location filename="../app/gui/serve_controller.h" line="+72"/>
         <source>raw</source>
         <translation>TCP</translation>
     </message>
@@ -6056,7 +6061,7 @@ Serial number: %3</source>
 <context>
     <name>gnss::link::ReplayTransport</name>
     <message>
-        <location filename="../protocol/link/replay_transport.cpp" line="+83"/>
+        <location filename="../protocol/link/replay_transport.cpp" line="+92"/>
         <source>Cannot read %1: %2</source>
         <translation>Не удаётся прочитать %1: %2</translation>
     </message>
@@ -6071,12 +6076,12 @@ Serial number: %3</source>
         <translation>файл не найден</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+15"/>
         <source>%1 has no timestamp index (%2): replay it with sentence times instead</source>
         <translation>У %1 нет индекса времени (%2): воспроизводите его по времени в сообщениях</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+52"/>
         <source>replay of %1</source>
         <translation>воспроизведение %1</translation>
     </message>
@@ -6924,6 +6929,14 @@ Serial number: %3</source>
         <location line="+16"/>
         <source>the server stopped</source>
         <translation>сервер остановлен</translation>
+    </message>
+</context>
+<context>
+    <name>gnss::serve::StreamServer</name>
+    <message>
+        <location filename="../protocol/serve/stream_server.cpp" line="+39"/>
+        <source>dropped by the user</source>
+        <translation>отключён пользователем</translation>
     </message>
 </context>
 <context>
@@ -9805,12 +9818,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="-35"/>
-        <location line="+109"/>
+        <location line="+126"/>
         <source>Start caster</source>
         <translation>Запустить кастер</translation>
     </message>
     <message>
-        <location line="-102"/>
+        <location line="-119"/>
         <source>Share a receiver (raw TCP)</source>
         <translation>Раздать приёмник (TCP как есть)</translation>
     </message>
@@ -9821,12 +9834,12 @@ Serial number: %3</source>
     </message>
     <message>
         <location line="+11"/>
-        <location line="+95"/>
+        <location line="+112"/>
         <source>Start sharing</source>
         <translation>Начать раздачу</translation>
     </message>
     <message>
-        <location line="-86"/>
+        <location line="-103"/>
         <source>Clients</source>
         <translation>Клиенты</translation>
     </message>
@@ -9856,7 +9869,17 @@ Serial number: %3</source>
         <translation>Отправлено</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+5"/>
+        <source>Drop client</source>
+        <translation>Отключить клиента</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Disconnect the selected client now (it may connect again)</source>
+        <translation>Отключить выбранного клиента сейчас (он может подключиться снова)</translation>
+    </message>
+    <message>
+        <location line="+84"/>
         <source>Stop caster</source>
         <translation>Остановить кастер</translation>
     </message>

@@ -54,6 +54,7 @@ void ServeController::attach(ui::ServeView *view) {
                 if (!startRaw(address, port, receiver, &why)) view_->setRawState(false, why);
             });
     connect(view, &ui::ServeView::rawStopRequested, this, &ServeController::stopRaw);
+    connect(view, &ui::ServeView::dropClientRequested, this, &ServeController::dropClient);
     refresh();
     showState();
     showClients();
@@ -185,6 +186,22 @@ void ServeController::stopRaw() {
     showState();
 }
 
+bool ServeController::dropClient(const QString &server, quint64 id) {
+    serve::StreamServer *s = nullptr;
+    if (server == casterName())
+        s = caster_.get();
+    else if (server == rawName())
+        s = raw_.get();
+    if (!s) return false;
+    QString who;
+    for (const serve::ClientInfo &c : s->clients())
+        if (c.id == id) who = endpoint(c.address, c.port);
+    if (who.isEmpty() || !s->dropClient(id)) return false;
+    emit message(tr("Client %1 dropped").arg(who));
+    showClients();
+    return true;
+}
+
 void ServeController::showState() {
     if (!view_) return;
     QStringList mounts;
@@ -205,10 +222,9 @@ void ServeController::showClients() {
     if (!view_) return;
     QList<QPair<QString, serve::ClientInfo>> rows;
     if (caster_)
-        for (const serve::ClientInfo &c : caster_->clients())
-            rows.append({QStringLiteral("NTRIP"), c});
+        for (const serve::ClientInfo &c : caster_->clients()) rows.append({casterName(), c});
     if (raw_)
-        for (const serve::ClientInfo &c : raw_->clients()) rows.append({tr("raw"), c});
+        for (const serve::ClientInfo &c : raw_->clients()) rows.append({rawName(), c});
     view_->setClients(rows);
 }
 

@@ -43,6 +43,9 @@ public:
     void stopCaster();
     bool startRaw(const QString &address, int port, int receiver, QString *why);
     void stopRaw();
+    // Disconnects a client of the named server ("NTRIP" or the raw port's name in the view's
+    // client list); false when there is no such client (gone meanwhile).
+    bool dropClient(const QString &server, quint64 id);
 
     // The servers while they run (null otherwise).
     const serve::NtripCaster *caster() const { return caster_.get(); }
@@ -64,6 +67,9 @@ private:
     void onBytes(ui::ReceiverSession *s, bool corrections, const QByteArray &bytes);
     void showState();
     void showClients();
+    // The servers' names in the view's client list.
+    static QString casterName() { return QStringLiteral("NTRIP"); }
+    QString rawName() const { return tr("raw"); }
 
     Receivers receivers_;
     QPointer<ui::ServeView> view_;

@@ -142,6 +142,12 @@ void StreamClients::closeAll(const std::function<QByteArray(const ClientInfo &)>
     }
 }
 
+bool StreamClients::drop(quint64 id, const QString &why) {
+    if (clients_.find(id) == clients_.end()) return false;
+    remove(id, why);
+    return true;
+}
+
 void StreamClients::remove(quint64 id, const QString &why) {
     const auto it = clients_.find(id);
     if (it == clients_.end()) return;

@@ -57,6 +57,9 @@ public:
     void refuse(quint64 id, const QByteArray &reply, const QString &why);
     // Queues `bytes` for the client; false when that dropped it (its queue overflowed).
     bool send(quint64 id, const QByteArray &bytes);
+    // Closes the client at once (what it was sent is flushed, the rest dropped), `why` in the
+    // disconnected signal; false when there is no such client.
+    bool drop(quint64 id, const QString &why);
     // Closes every client, after `farewell(id)` (may be empty) is queued.
     void closeAll(const std::function<QByteArray(const ClientInfo &)> &farewell = {});
 

@@ -35,6 +35,10 @@ quint16 StreamServer::port() const {
     return server_->serverPort();
 }
 
+bool StreamServer::dropClient(quint64 id) {
+    return clients_.drop(id, tr("dropped by the user"));
+}
+
 void StreamServer::stopListening() {
     server_->close();
 }

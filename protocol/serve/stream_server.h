@@ -31,6 +31,8 @@ public:
 
     QList<ClientInfo> clients() const { return clients_.clients(); }
     quint64 droppedSlow() const { return clients_.droppedSlow(); }
+    // Disconnects a client the user chose ("dropped by the user"); false when it is gone.
+    bool dropClient(quint64 id);
     quint64 overCapacity() const { return clients_.overCapacity(); }
 
 signals:

@@ -215,7 +215,7 @@ private slots:
     }
 
     // The Serve dock's mistakes are said and nothing listens; a receiver shared on a raw port
-    // reaches a client byte for byte.
+    // reaches a client byte for byte; a client dropped from the list is disconnected.
     void theServeDockSharesAReceiver() {
         QSettings settings(dir_.filePath("window4.ini"), QSettings::IniFormat);
         app::MainWindow w(registry_, transports_, &settings);
@@ -254,6 +254,18 @@ private slots:
         auto *clients = child<QTableWidget>(view, "serveClients");
         QTRY_COMPARE(clients->rowCount(), 1);
         QCOMPARE(clients->item(0, 0)->text(), QString("raw"));
+        // Dropped from the list: the client is disconnected, the server goes on.
+        auto *drop = child<QPushButton>(view, "serveDropClient");
+        QVERIFY(!drop->isEnabled());
+        clients->selectRow(0);
+        QVERIFY(drop->isEnabled());
+        QTest::mouseClick(drop, Qt::LeftButton);
+        QTRY_COMPARE(client.state(), QAbstractSocket::UnconnectedState);
+        QTRY_COMPARE(clients->rowCount(), 0);
+        QVERIFY(w.serving()->rawRunning());
+        client.connectToHost(QHostAddress::LocalHost, w.serving()->raw()->port());
+        QVERIFY(client.waitForConnected(3000));
+        QTRY_COMPARE(clients->rowCount(), 1);
         QTest::mouseClick(child<QPushButton>(view, "serveRawStartStop"), Qt::LeftButton);
         QVERIFY(!w.serving()->rawRunning());
         QTRY_COMPARE(client.state(), QAbstractSocket::UnconnectedState);

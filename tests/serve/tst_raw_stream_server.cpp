@@ -1,6 +1,6 @@
 // RawStreamServer on 127.0.0.1:0: every client gets the same bytes, exactly (NMEA and RTCM
 // alike); what clients send is read and ignored; the client list; a client that does not read
-// is dropped while the other gets everything.
+// is dropped while the other gets everything; a client the user drops.
 #include "serve/raw_stream_server.h"
 #include "serve_test_client.h"
 
@@ -109,6 +109,39 @@ private slots:
         QVERIFY(away[0].address.isLoopback());
         QCOMPARE(server.overCapacity(), 1u);
         QCOMPARE(server.clients().size(), 2);
+    }
+
+    // A client the user drops is closed and said so; the other goes on being served.
+    void aClientTheUserDropsIsClosedAndTheOtherStays() {
+        RawStreamServer server;
+        QVERIFY(server.listen());
+        QList<QPair<ClientInfo, QString>> gone;
+        connect(&server, &RawStreamServer::clientDisconnected, this,
+                [&](const ClientInfo &c, const QString &why) {
+                    gone.append({c, why});
+                });
+        TestClient a(server.port()), b(server.port());
+        QTRY_COMPARE_WITH_TIMEOUT(server.clients().size(), 2, 3000);
+        const auto byPort = [&](quint16 port) {
+            for (const ClientInfo &c : server.clients())
+                if (c.port == port) return c.id;
+            return quint64(0);
+        };
+        const quint64 idA = byPort(a.socket.localPort());
+        QVERIFY(idA != 0);
+        server.publish("before\r\n");
+        QTRY_COMPARE_WITH_TIMEOUT(a.received, QByteArray("before\r\n"), 3000);
+        QVERIFY(server.dropClient(idA));
+        QCOMPARE(gone.size(), 1);
+        QCOMPARE(gone[0].first.id, idA);
+        QCOMPARE(gone[0].second, QStringLiteral("dropped by the user"));
+        QVERIFY(!server.dropClient(idA)); // gone already
+        QVERIFY(!server.dropClient(999));
+        QTRY_VERIFY_WITH_TIMEOUT(a.closed, 3000);
+        server.publish("after\r\n");
+        QTRY_COMPARE_WITH_TIMEOUT(b.received, QByteArray("before\r\nafter\r\n"), 3000);
+        QCOMPARE(a.received, QByteArray("before\r\n"));
+        QCOMPARE(server.clients().size(), 1);
     }
 };
 

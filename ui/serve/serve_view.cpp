@@ -131,10 +131,27 @@ ServeView::ServeView(QWidget *parent) : QWidget(parent) {
             {tr("Server"), tr("Address"), tr("User"), tr("Mountpoint"), tr("Since"), tr("Sent")});
     clients_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     clients_->horizontalHeader()->setStretchLastSection(true);
+    clients_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    clients_->setSelectionMode(QAbstractItemView::SingleSelection);
+    dropClient_ = new QPushButton(tr("Drop client"), clientsBox);
+    dropClient_->setObjectName("serveDropClient");
+    dropClient_->setToolTip(tr("Disconnect the selected client now (it may connect again)"));
+    dropClient_->setEnabled(false);
+    auto *clientButtons = new QHBoxLayout;
+    clientButtons->addStretch(1);
+    clientButtons->addWidget(dropClient_);
+    clientsLayout->addLayout(clientButtons); // above the list: in view however tall it is
     clientsLayout->addWidget(clients_);
     layout->addWidget(clientsBox, 1);
 
     connect(mounts_, &QTableWidget::itemChanged, this, [this] { userEdited_ = true; });
+    connect(clients_, &QTableWidget::itemSelectionChanged, this,
+            [this] { dropClient_->setEnabled(selectedClient(nullptr, nullptr)); });
+    connect(dropClient_, &QPushButton::clicked, this, [this] {
+        QString server;
+        quint64 id = 0;
+        if (selectedClient(&server, &id)) emit dropClientRequested(server, id);
+    });
     connect(casterButton_, &QPushButton::clicked, this, [this] {
         if (casterRunning_)
             emit casterStopRequested();
@@ -232,7 +249,19 @@ void ServeView::setClients(const QList<QPair<QString, serve::ClientInfo>> &clien
             if (!item) clients_->setItem(r, col, item = new QTableWidgetItem);
             item->setText(cells[col]);
         }
+        clients_->item(r, 0)->setData(Qt::UserRole, QVariant::fromValue(c.id));
     }
+    dropClient_->setEnabled(selectedClient(nullptr, nullptr));
+}
+
+bool ServeView::selectedClient(QString *server, quint64 *id) const {
+    const QList<QTableWidgetItem *> selected = clients_->selectedItems();
+    if (selected.isEmpty()) return false;
+    const QTableWidgetItem *first = clients_->item(selected.front()->row(), 0);
+    if (!first) return false;
+    if (server) *server = first->text();
+    if (id) *id = first->data(Qt::UserRole).value<quint64>();
+    return true;
 }
 
 } // namespace gnss::ui

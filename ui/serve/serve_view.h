@@ -5,7 +5,8 @@
 //     a mountpoint per stream ticked: a receiver's own RTCM (a base), or the corrections a
 //     receiver is fed (re-broadcast);
 //   - a raw TCP port that passes one receiver's bytes to other programs (read-only);
-//   - the clients of both: address, user, mountpoint, connected since, bytes sent.
+//   - the clients of both: address, user, mountpoint, connected since, bytes sent; the one
+//     selected can be dropped.
 // It knows no session: the controller gives it the streams and the clients and does what it asks.
 #include "serve/stream_clients.h"
 
@@ -46,6 +47,8 @@ public:
     void setRawState(bool running, const QString &text);
     // Every client of both servers ("NTRIP" or "raw" in the first column).
     void setClients(const QList<QPair<QString, serve::ClientInfo>> &clients);
+    // The client in the selected row (its server as setClients named it); false when none.
+    bool selectedClient(QString *server, quint64 *id) const;
 
     ServeCasterRequest casterRequest() const;
 
@@ -54,6 +57,8 @@ signals:
     void casterStopRequested();
     void rawStartRequested(const QString &address, int port, int receiver);
     void rawStopRequested();
+    // "Drop client": the server's name as setClients gave it, and the client's id.
+    void dropClientRequested(const QString &server, quint64 id);
 
 private:
     QLineEdit *address_;
@@ -68,6 +73,7 @@ private:
     QPushButton *rawButton_;
     QLabel *rawState_;
     QTableWidget *clients_;
+    QPushButton *dropClient_;
     bool casterRunning_ = false, rawRunning_ = false;
     bool userEdited_ = false; // the user ticked or renamed a stream: no more suggestions
 };
