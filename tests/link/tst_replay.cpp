@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
+
 using namespace gnss;
 using namespace gnss::link;
 
@@ -238,6 +240,31 @@ private slots:
         QCOMPARE(r.state(), Transport::State::Closed);
         QTest::qWait(50);
         QCOMPARE(r.state(), Transport::State::Closed); // a late result is not applied
+    }
+
+    // open() again before the first finished: the first worker is stopped and its result never
+    // applied, so the log plays once, whole.
+    void openingAgainWhileOpeningPlaysOnce() {
+        QTemporaryDir dir;
+        const QString path = makePlain(dir, 5);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray all = f.readAll();
+        ReplayTransport r(path, ReplayTransport::Timing::AsFast);
+        QSignalSpy finished(&r, &ReplayTransport::finished);
+        QSignalSpy progress(&r, &ReplayTransport::openingProgress);
+        Arrivals got;
+        got.attach(r);
+        QVERIFY(r.open());
+        QVERIFY(r.open());
+        QTRY_COMPARE(finished.count(), 1);
+        QCOMPARE(got.bytes, all);
+        const auto full = std::count_if(progress.begin(), progress.end(),
+                                        [](const QList<QVariant> &a) { return a[0] == 100; });
+        QCOMPARE(full, 1); // one open finished
+        QTest::qWait(50);
+        QCOMPARE(finished.count(), 1);
+        QCOMPARE(got.bytes, all);
     }
 };
 
