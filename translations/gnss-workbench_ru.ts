@@ -9861,7 +9861,7 @@ Serial number: %3</source>
     <message>
         <location line="+0"/>
         <source>Since</source>
-        <translation>С</translation>
+        <translation>Подключён в</translation>
     </message>
     <message>
         <location line="+0"/>
