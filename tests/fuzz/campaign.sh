@@ -74,15 +74,19 @@ deadline=0
 [ -n "$until" ] && deadline=$(date -d "$until" +%s)
 [ -n "$until" ] && [ "$deadline" -le "$(date +%s)" ] && deadline=$((deadline + 86400))
 
-# Under the ledger's lock: the harness furthest from the target, not running, not failed.
+# Under the ledger's lock: the harness furthest from the target, not running, not failed. A
+# harness is running while its busy file names a live campaign (one that was killed leaves a
+# file naming a process that is gone: the harness is free again).
 pick() {
-  local best="" least=-1 h e n s r
+  local best="" least=-1 h e n s r owner
   while IFS=$'\t' read -r h e n s r; do
     [[ " ${harnesses[*]} " == *" $h "* ]] || continue
-    [ "$r" = ok ] && [ "$e" -lt "$target" ] && [ ! -e "$work/busy/$h" ] || continue
+    [ "$r" = ok ] && [ "$e" -lt "$target" ] || continue
+    owner=$(cat "$work/busy/$h" 2>/dev/null || true)
+    [ -n "$owner" ] && kill -0 "$owner" 2>/dev/null && continue
     if [ $least -lt 0 ] || [ "$e" -lt $least ]; then best=$h least=$e; fi
   done < <(tail -n +2 "$ledger")
-  [ -n "$best" ] && touch "$work/busy/$best"
+  [ -n "$best" ] && echo "$campaign" >"$work/busy/$best"
   echo "$best"
 }
 
@@ -107,7 +111,7 @@ worker() {
       secs=$slice
     fi
     h=$(flock "$ledger.lock" bash -c "$(declare -f pick); harnesses=(${harnesses[*]}); \
-      target=$target; work='$work'; ledger='$ledger'; pick")
+      target=$target; work='$work'; ledger='$ledger'; campaign=$$; pick")
     [ -n "$h" ] || return 0
     done_=$(awk -F'\t' -v h="$h" '$1 == h { print $2 }' "$ledger")
     start=$(date +%s)
@@ -133,6 +137,5 @@ for ((w = 0; w < workers; ++w)); do
   sleep 2 # the first pick is made before the next worker picks
 done
 for p in "${pids[@]}"; do wait "$p"; done
-rm -f "$work/busy/"*
 print_ledger
 ! grep -q $'\tfinding' "$ledger"
