@@ -4,12 +4,14 @@
 // on its COM2, each setting verified by reading it back; its COM2, opened as a third receiver,
 // is served by the Serve dock's caster; the other, a rover, takes that caster in its
 // Corrections dock and reaches RTK fixed. A GeoS-5 is said not to be able to be a base; a typed
-// position 1 km away is set with the threshold warning shown.
+// position 1 km away is set with the threshold warning shown, pressed while another operation
+// on the receiver's settings runs (it waits for it).
 #include "base/base_station_view.h"
 #include "builtin/dialects.h"
 #include "builtin/simulators.h"
 #include "cli_run.h"
 #include "common/app_transports.h"
+#include "config/settings_engine.h"
 #include "gui/main_window.h"
 #include "gui/serve_controller.h"
 #include "models/receiver_session.h"
@@ -298,9 +300,16 @@ private slots:
         QTest::mouseClick(child<QPushButton>(view, "baseSet"), Qt::LeftButton);
         auto *list = child<QListWidget>(view, "baseVerdicts");
         QVERIFY2(verdicts(list).contains("beyond 90"), qPrintable(verdicts(list)));
-        // 1.1 km north of where it is (DMS): set, verified, and the warning shown.
+        // 1.1 km north of where it is (DMS): set, verified, and the warning shown. Pressed while
+        // the engine reads every setting (as the Settings dock does on connect): it waits for
+        // that read, then sets.
         position->setText("55°45'40.3\"N, 37°37'06.2\"E, 166.6");
+        config::SettingsEngine *engine = nvs->link()->settings();
+        QTRY_VERIFY_WITH_TIMEOUT(!engine->isBusy(), 15000);
+        QVERIFY(engine->read());
         QTest::mouseClick(child<QPushButton>(view, "baseSet"), Qt::LeftButton);
+        QVERIFY2(verdicts(list).contains("Waiting for the operation in progress"),
+                 qPrintable(verdicts(list)));
         QTRY_VERIFY2_WITH_TIMEOUT(verdicts(list).contains("rtk.BASEXYZ"),
                                   qPrintable(verdicts(list)), 15000);
         QTRY_VERIFY_WITH_TIMEOUT(child<QLabel>(view, "baseWarning")->isVisible(), 10000);

@@ -283,6 +283,8 @@ void BaseStationView::setDisplayPrefs(const DisplayPrefs &prefs) {
 void BaseStationView::onDialect() {
     const Dialect *d = engine_ ? engine_->dialect() : nullptr;
     roles_ = d ? base::baseRoles(*d) : std::nullopt;
+    // A Set waiting for the engine was for the receiver as it was.
+    setWhenFree_ = readWhenFree_ = false;
     unsupported_->setVisible(!roles_);
     body_->setEnabled(roles_.has_value());
     if (!d)
@@ -301,7 +303,7 @@ void BaseStationView::onDialect() {
         unsupported_->setText(engine_->sendRefusal());
         unsupported_->show();
         body_->setEnabled(false);
-    } else if (!engine_->isBusy()) {
+    } else {
         readBase();
     }
 }
@@ -331,8 +333,22 @@ void BaseStationView::fillChoices() {
 void BaseStationView::readBase() {
     if (!roles_ || !engine_) return;
     if (!engine_->canSend()) return emit message(engine_->sendRefusal());
-    if (engine_->isBusy()) return emit message(tr("The receiver's settings are busy: try again."));
+    if (engine_->isBusy()) {
+        readWhenFree_ = true; // read when the operation in progress ends
+        return;
+    }
+    readWhenFree_ = false;
     if (engine_->read(roles_->keys())) pending_ = Pending::Read;
+}
+
+void BaseStationView::runWhenFree() {
+    if (!engine_ || engine_->isBusy() || !roles_) return; // still busy: its end calls again
+    if (setWhenFree_) {
+        setWhenFree_ = false;
+        setBase();
+    } else if (readWhenFree_) {
+        readBase();
+    }
 }
 
 void BaseStationView::onFinished(const config::OperationReport &r) {
@@ -370,6 +386,9 @@ void BaseStationView::onFinished(const config::OperationReport &r) {
         }
     }
     showStatus();
+    // After the finished() handlers of whoever ran it (one may start the next operation).
+    if (setWhenFree_ || readWhenFree_)
+        QMetaObject::invokeMethod(this, &BaseStationView::runWhenFree, Qt::QueuedConnection);
 }
 
 void BaseStationView::onEpoch() {
@@ -540,8 +559,12 @@ void BaseStationView::setBase() {
     const base::BasePlan plan = planWithForm(q);
     if (!plan.ok()) return verdicts_->addItem(QString::fromStdString(plan.error));
     if (!engine_->canSend()) return verdicts_->addItem(engine_->sendRefusal());
-    if (engine_->isBusy())
-        return verdicts_->addItem(tr("The receiver's settings are busy: try again."));
+    if (engine_->isBusy()) {
+        setWhenFree_ = true;
+        return verdicts_->addItem(tr("Waiting for the operation in progress on the receiver's "
+                                     "settings to end; the base is set then."));
+    }
+    setWhenFree_ = false;
     saveAfterApply_ = saveFlash_->isChecked();
     if (engine_->apply(plan.values)) pending_ = Pending::Apply;
 }

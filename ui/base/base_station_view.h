@@ -101,6 +101,11 @@ private:
     base::ReceiverClock clock_;
     enum class Pending { None, Read, Apply, Save, ReadPosition } pending_ = Pending::None;
     bool saveAfterApply_ = false;
+    // Asked for while the engine ran another operation (the Settings dock's read on connect, a
+    // read-back): done when it ends, not refused.
+    bool readWhenFree_ = false;
+    bool setWhenFree_ = false;
+    void runWhenFree();
 
     QLabel *unsupported_;
     QWidget *body_;
