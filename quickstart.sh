@@ -8,7 +8,7 @@
 #                         suites of the threaded code (ctest label tsan). Fails when any stage
 #                         fails (a sanitizer finding fails its test); prints each stage's time.
 #                         With CI=true (.ci/run) the stages are "ci asan tsan": CI fails on any
-#                         sanitizer report. (On 2 cores the three took 36 minutes.)
+#                         sanitizer report (its budget: 45 minutes on 2 cores).
 #   ./quickstart.sh fuzz [--fast] SECONDS [HARNESS...]
 #                         install clang and libFuzzer too, run tests/fuzz/run.sh
 # Idempotent: packages already installed are not touched and the build is incremental.
