@@ -190,6 +190,18 @@ void TtffCampaign::tick() {
     switch (phase_) {
     case Phase::Settling:
         if (fixNow_ && fixHeld_.isValid() && fixHeld_.elapsed() >= plan_.holdMs) restartOrWait();
+        // No fix to hold within a run's limit: the run times out, its restart not sent (the
+        // campaign goes on rather than waiting for a receiver that may never fix).
+        else if (inPhase_.elapsed() >= plan_.timeoutMs)
+            endRun(RunOutcome::TimedOut);
+        break;
+    case Phase::Ready:
+        // The others did not become ready within a run's limit (one has no fix to hold): this
+        // one restarts alone rather than wait for them.
+        if (inPhase_.elapsed() >= plan_.timeoutMs) {
+            phase_ = Phase::Restarting;
+            restart();
+        }
         break;
     case Phase::Running:
         if (sinceCommand_.elapsed() >= plan_.timeoutMs) endRun(RunOutcome::TimedOut);

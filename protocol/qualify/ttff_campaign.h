@@ -4,8 +4,11 @@
 // record (its actions: never a sticky bit), and measures on the host's clock, from the moment the
 // command is written, the first position, 2D, 3D (the TTFF), DGNSS, RTK float and fixed
 // (qualify::RunTracker). Before a warm or hot start the receiver holds a 3D fix long enough to
-// have its ephemerides. A run that never fixes ends at its timeout and is counted; a link lost
-// mid-run marks the run lost, and the campaign goes on once the link is back. Nothing blocks.
+// have its ephemerides. A run that never fixes ends at its timeout and is counted, and so does a
+// warm or hot run whose receiver gives no fix to hold within the timeout (its restart not sent);
+// a link lost mid-run marks the run lost, and the campaign goes on once the link is back. With
+// several receivers (setBarrier), one that is ready waits for the others at most a run's timeout,
+// then restarts alone. Nothing blocks.
 #include "qualify/ttff.h"
 
 #include <QElapsedTimer>
@@ -49,7 +52,8 @@ public:
 
     // With several receivers the same restarts at the same time: each campaign, when it would
     // restart, waits (readyToRestart()) until go() is called — the caller calls it on all once
-    // all are ready. Off by default (restarts as soon as each is ready).
+    // all are ready — or a run's timeout has passed. Off by default (restarts as soon as each is
+    // ready).
     void setBarrier(bool on) { barrier_ = on; }
     bool readyToGo() const { return phase_ == Phase::Ready; }
     bool waitingForLink() const { return phase_ == Phase::WaitingForLink; }

@@ -202,6 +202,20 @@ private slots:
         QCOMPARE(r.out.count("cold 1: timeout") + r.out.count("cold 2: timeout"), 2);
         QVERIFY2(r.out.contains("cold      2     0        2"), why(r));
     }
+
+    // A warm start needs a fix held first: a receiver that gives none (its power-on fix never
+    // comes) times each run out at the limit, its restart not sent, and the campaign ends.
+    void aWarmStartWithNoFixToHoldTimesOut() {
+        SimProcess sim({"--dialect", "geostar", "--baud", "115200", "--ttff", "power=600"});
+        REQUIRE_SIM(sim);
+        const Run r = gnss::test::runCli({"ttff", "--port", sim.device, "--baud", "115200",
+                                          "--start", "warm", "--runs", "2", "--timeout", "1",
+                                          "--hold", "0.5", "--pause", "0.1"},
+                                         {}, 60000);
+        QVERIFY2(r.exitCode == 0, why(r));
+        QCOMPARE(r.out.count("warm 1: timeout") + r.out.count("warm 2: timeout"), 2);
+        QVERIFY2(r.out.contains("warm      2     0        2"), why(r));
+    }
 };
 
 QTEST_GUILESS_MAIN(TstTtffCli)
