@@ -14,8 +14,12 @@
 #include "qualify/report.h"
 #include "qualify/ttff_campaign.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
+#include <QElapsedTimer>
 #include <QEventLoop>
+#include <QLocale>
+#include <QTranslator>
 
 #include <cstdio>
 
@@ -153,6 +157,19 @@ int cmdTtff(const CliContext &ctx) {
                      reportPath->c_str());
         return 2;
     }
+    // The report's language (the system's by default, as the window's) and lengths.
+    const bool russianSystem = QLocale::system().language() == QLocale::Russian;
+    const std::string lang = args.option("lang").value_or(russianSystem ? "ru" : "en");
+    if (lang != "en" && lang != "ru") {
+        std::fprintf(stderr, "gnss-cli: --lang expects en or ru, got '%s'\n", lang.c_str());
+        return 2;
+    }
+    const std::string units = args.option("units").value_or("metric");
+    if (units != "metric" && units != "imperial") {
+        std::fprintf(stderr, "gnss-cli: --units expects metric or imperial, got '%s'\n",
+                     units.c_str());
+        return 2;
+    }
     std::string error;
     const auto spec = sourceFromArgs(args, {Kind::Serial, Kind::Tcp, Kind::Simulator}, error);
     if (!spec) {
@@ -212,11 +229,20 @@ int cmdTtff(const CliContext &ctx) {
         last = state;
         std::fprintf(stderr, "%s\n", utf8(text).c_str());
     });
-    QObject::connect(&campaign, &qualify::TtffCampaign::runFinished,
-                     [&](const qualify::TtffRun &r) {
-                         if (!json) std::printf("%s\n", runText(r).c_str());
-                         std::fflush(stdout);
-                     });
+    QElapsedTimer clock;
+    clock.start();
+    QObject::connect(
+            &campaign, &qualify::TtffCampaign::runFinished, [&](const qualify::TtffRun &r) {
+                if (!json) std::printf("%s\n", runText(r).c_str());
+                std::fflush(stdout);
+                // Where the campaign is, on standard error with the progress.
+                const int done = int(campaign.runs().size());
+                const int total = campaign.totalRuns();
+                const double s = double(clock.elapsed()) / 1000.0;
+                if (done < total)
+                    std::fprintf(stderr, "run %d of %d after %.0f s; about %.1f min left\n", done,
+                                 total, s, s / done * (total - done) / 60.0);
+            });
     QObject::connect(&campaign, &qualify::TtffCampaign::finished,
                      [](bool) { QCoreApplication::exit(0); });
     campaign.start();
@@ -244,7 +270,20 @@ int cmdTtff(const CliContext &ctx) {
     std::fwrite(out.data(), 1, out.size(), stdout);
     std::fflush(stdout);
     if (reportPath) {
+        // Its texts from the translations compiled in (the window's own), its numbers in the
+        // language's notation; what went to standard output stays English.
+        const QLocale locale(lang == "ru" ? QLocale::Russian : QLocale::English,
+                             lang == "ru" ? QLocale::Russia : QLocale::UnitedStates);
+        QLocale::setDefault(locale);
+        QTranslator translator;
+        if (lang != "en" && translator.load(locale, "gnss-workbench", "_", ":/i18n"))
+            QCoreApplication::installTranslator(&translator);
         qualify::ReportInput in;
+        // The symbols as the window writes them (context Units).
+        in.length =
+                units == "imperial"
+                        ? qualify::LengthUnit{QCoreApplication::translate("Units", "ft"), 3.28084}
+                        : qualify::LengthUnit{QCoreApplication::translate("Units", "m"), 1.0};
         in.started = started;
         in.ended = QDateTime::currentDateTimeUtc();
         in.reference = reference;

@@ -89,6 +89,8 @@ constexpr OptionSpec kTtffOptions[] = {
         {"report", "FILE",
          "write the report as PDF or HTML by FILE's extension, and the runs beside it as CSV "
          "and JSON"},
+        {"lang", "en|ru", "the report's language (default: the system's)"},
+        {"units", "metric|imperial", "the report's lengths in metres or feet (default metric)"},
         {"json", "", "one JSON object at the end instead of a line per run and a table"},
 };
 constexpr OptionSpec kSendOptions[] = {
@@ -407,7 +409,9 @@ constexpr CommandSpec kCommands[] = {
          "Before a warm or hot start the receiver holds a 3D fix --hold seconds (its "
          "ephemerides). A start the receiver does not have is refused before anything is "
          "sent, naming those it has. A run without a fix after --timeout is counted as a "
-         "timeout; a link lost during a run marks it lost, and the campaign goes on once the "
+         "timeout, and so is a warm or hot run whose receiver gives no fix to hold by then (its "
+         "restart not sent); a link lost during a run marks it lost, and the campaign goes on once "
+         "the "
          "link is back. Progress goes to standard error; a line per run, then per kind of "
          "start the runs, fixes, timeouts and the TTFF's mean, median, p90, p95, min and max. "
          "With --json one object: starts (cold/warm/hot: runs, fixed, timeouts, lost, ttff_s), "
@@ -416,7 +420,8 @@ constexpr CommandSpec kCommands[] = {
          "accuracy of the positions between runs). --report FILE "
          "writes the report (identity, settings as read back, conditions, tables, CDF plot, "
          "limits, accuracy, every run) as FILE.pdf or FILE.html, with or without a display, and "
-         "FILE's base name .csv and .json beside it.\n"
+         "FILE's base name .csv and .json beside it; --lang and --units choose its language "
+         "and lengths.\n"
          "Exit status: 0 done and every --limit met, 1 the receiver cannot be opened or "
          "identified, a limit was not met or the report could not be written, 2 usage error "
          "or a start it lacks, 130 interrupted (the runs so far are printed).\n"},

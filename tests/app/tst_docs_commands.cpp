@@ -198,7 +198,7 @@ QHash<QString, Treatment> table() {
             {"gnss-cli ttff --port P|--tcp HOST:PORT|--sim D --start cold|warm|hot [--start ...] "
              "[--runs N] [--timeout S] [--pause S] [--hold S] [--reference LAT,LON[,HEIGHT] | "
              "--reference-site NAME] [--limit START:STAT<=S ...] [--report FILE.pdf|FILE.html] "
-             "[--json]",
+             "[--lang en|ru] [--units metric|imperial] [--json]",
              synopsis()},
             // The site list (tests/sites/tst_sites_cli runs them in a data folder of its own).
             {"gnss-cli sites list [--json]", synopsis()},

@@ -86,6 +86,12 @@ private slots:
         QCOMPARE(o["receiver"].toString(), receiver);
         // The words: a line per run, then the table.
         QVERIFY(r.err.contains((starts.front() + " 1 of 3").toUtf8()));
+        // Where the whole campaign is after each run but the last.
+        const int total = 3 * int(starts.size());
+        QVERIFY2(r.err.contains(QString("run 1 of %1 after ").arg(total).toUtf8()) &&
+                         r.err.contains("min left"),
+                 why(r));
+        QVERIFY(!r.err.contains(QString("run %1 of %1").arg(total).toUtf8()));
     }
 
     // The NV08C-RTK has no hot start: said, and nothing sent (the simulator would have
@@ -165,6 +171,39 @@ private slots:
         QVERIFY2(text.contains("VT002") && text.contains(sim.device), qPrintable(text.left(1500)));
         QVERIFY(text.contains("Median") && text.contains("cold"));
         QVERIFY(text.contains("Limits"));
+    }
+
+    // The report in the language and units asked for (the window's translations, compiled into
+    // gnss-cli); a language or unit it has not is refused before anything is sent.
+    void theReportInRussianAndFeet() {
+        for (const QStringList &bad : {QStringList{"--lang", "de"}, {"--units", "furlongs"}}) {
+            const Run r = gnss::test::runCli(
+                    QStringList{"ttff", "--sim", "nvs", "--start", "cold", "--report", "r.html"} +
+                    bad);
+            QVERIFY2(r.exitCode == 2 && r.err.contains(bad[0].toUtf8() + " expects"), why(r));
+        }
+        SimProcess sim({"--dialect", "nemerix", "--baud", "115200", "--speed", "20", "--ttff",
+                        "cold=40:4"});
+        REQUIRE_SIM(sim);
+        QTemporaryDir dir;
+        const QString html = dir.filePath("vt002.html");
+        const Run r = gnss::test::runCli(
+                {"ttff",     "--port",  sim.device, "--baud",      "115200",
+                 "--start",  "cold",    "--runs",   "1",           "--timeout",
+                 "20",       "--pause", "0.5",      "--reference", "55.7512,37.6184,167.1",
+                 "--report", html,      "--lang",   "ru",          "--units",
+                 "imperial"},
+                {}, 120000);
+        QVERIFY2(r.exitCode == 0, why(r));
+        QVERIFY2(r.out.contains("cold 1: fixed"), why(r)); // standard output stays English
+        QFile f(html);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(f.readAll());
+        QVERIFY2(text.contains(QStringLiteral("Отчёт о квалификации приёмника")),
+                 qPrintable(text.left(600)));
+        QVERIFY(text.contains(QStringLiteral("Медиана")));
+        QVERIFY(text.contains(QStringLiteral("\u00a0фт")));
+        QVERIFY(!text.contains(QStringLiteral("Median")));
     }
 
     // Unplugged in the middle of the first run (the line drops 100 simulated seconds after the
