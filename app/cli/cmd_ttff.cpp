@@ -79,15 +79,51 @@ std::string limitsText(const std::vector<qualify::LimitResult> &results) {
     return o;
 }
 
+// The report's language: the window's translations (compiled into gnss-cli) and the language's
+// notation for numbers, in force only while a Scope lives (what goes to standard output, and the
+// progress, stay English).
+class ReportLanguage {
+public:
+    explicit ReportLanguage(const std::string &lang)
+        : locale_(lang == "ru" ? QLocale(QLocale::Russian, QLocale::Russia)
+                               : QLocale(QLocale::English, QLocale::UnitedStates)),
+          loaded_(lang != "en" && translator_.load(locale_, "gnss-workbench", "_", ":/i18n")) {}
+
+    class Scope {
+    public:
+        explicit Scope(ReportLanguage &l)
+            : l_(l), installed_(l.loaded_ && QCoreApplication::installTranslator(&l.translator_)) {
+            QLocale::setDefault(l.locale_);
+        }
+        ~Scope() {
+            if (installed_) QCoreApplication::removeTranslator(&l_.translator_);
+            QLocale::setDefault(previous_);
+        }
+        Scope(const Scope &) = delete;
+        Scope &operator=(const Scope &) = delete;
+
+    private:
+        ReportLanguage &l_;
+        QLocale previous_;
+        bool installed_;
+    };
+
+private:
+    QLocale locale_;
+    QTranslator translator_;
+    bool loaded_;
+};
+
 // The receiver's settings as read back, for the report (a receiver that answers nothing leaves
 // them empty; the campaign goes on).
-std::vector<std::pair<QString, QString>> readSettings(link::Connection &conn,
-                                                      const Dialect *dialect) {
+std::vector<std::pair<QString, QString>>
+readSettings(link::Connection &conn, const Dialect *dialect, ReportLanguage &language) {
     config::SettingsEngine engine;
     engine.attach(&conn, dialect);
     QEventLoop wait;
     QObject::connect(&engine, &config::SettingsEngine::finished, &wait, &QEventLoop::quit);
     if (engine.read()) wait.exec();
+    const ReportLanguage::Scope inLanguage(language); // labels and values in the report's
     return config::settingsSnapshot(engine);
 }
 
@@ -209,10 +245,11 @@ int cmdTtff(const CliContext &ctx) {
         return 2;
     }
     const bool json = args.flag("json");
+    ReportLanguage language(lang);
     qualify::ReportReceiver receiver;
     if (reportPath) {
         conn->commands()->setDialect(dialect);
-        receiver.settings = readSettings(*conn, dialect);
+        receiver.settings = readSettings(*conn, dialect, language);
     }
     const QDateTime started = QDateTime::currentDateTimeUtc();
     // The positions between runs: the accuracy against the reference (or, in the report, their
@@ -270,14 +307,7 @@ int cmdTtff(const CliContext &ctx) {
     std::fwrite(out.data(), 1, out.size(), stdout);
     std::fflush(stdout);
     if (reportPath) {
-        // Its texts from the translations compiled in (the window's own), its numbers in the
-        // language's notation; what went to standard output stays English.
-        const QLocale locale(lang == "ru" ? QLocale::Russian : QLocale::English,
-                             lang == "ru" ? QLocale::Russia : QLocale::UnitedStates);
-        QLocale::setDefault(locale);
-        QTranslator translator;
-        if (lang != "en" && translator.load(locale, "gnss-workbench", "_", ":/i18n"))
-            QCoreApplication::installTranslator(&translator);
+        const ReportLanguage::Scope inLanguage(language);
         qualify::ReportInput in;
         // The symbols as the window writes them (context Units).
         in.length =
@@ -305,10 +335,16 @@ int cmdTtff(const CliContext &ctx) {
             receiver.accuracy = a.report();
             receiver.horizontalErrors = a.horizontalErrors();
             receiver.verticalErrors = a.verticalErrors();
+            // In the language's notation, the height in the report's unit.
+            const QLocale here;
             in.location = QStringLiteral("%1°, %2°")
-                                  .arg(mean->latDeg, 0, 'f', 7)
-                                  .arg(mean->lonDeg, 0, 'f', 7);
-            if (mean->height) in.location += QStringLiteral(", %1 m").arg(*mean->height, 0, 'f', 1);
+                                  .arg(here.toString(mean->latDeg, 'f', 7),
+                                       here.toString(mean->lonDeg, 'f', 7));
+            if (mean->height)
+                in.location +=
+                        QStringLiteral(", %1\u00a0%2")
+                                .arg(here.toString(*mean->height * in.length.perMetre, 'f', 1),
+                                     in.length.symbol);
         }
         in.receivers.push_back(std::move(receiver));
         QString why;
