@@ -7610,8 +7610,8 @@ Serial number: %3</source>
     <message>
         <location line="+6"/>
         <location line="+210"/>
-        <source>The receiver&apos;s settings are busy: try again.</source>
-        <translation>Настройки приёмника заняты: повторите позже.</translation>
+        <source>Waiting for the operation in progress on the receiver&apos;s settings to end; the base is set then.</source>
+        <translation>Ждём окончания текущей операции с настройками приёмника; базовая станция будет задана после неё.</translation>
     </message>
     <message>
         <location line="-196"/>
