@@ -6099,6 +6099,31 @@ Serial number: %3</source>
         <translation>Возможно, порт открыт другой программой (терминалом, gpsd, ModemManager).</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>a program</source>
+        <translation>программа</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Its lock file %1 is left from process %2, which has ended: delete that file.</source>
+        <translation>Его файл блокировки %1 остался от процесса %2, который уже завершился: удалите этот файл.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Its lock file %1 names %2 (process %3), which does not have it open: try again, and if it stays, end that program.</source>
+        <translation>Его файл блокировки %1 указывает на %2 (процесс %3), у которого порт не открыт: попробуйте ещё раз, а если блокировка останется, завершите эту программу.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (process %2) has it open (lock file %3).</source>
+        <translation>Порт открыт программой %1 (процесс %2, файл блокировки %3).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Its lock file %1 names %2 (process %3).</source>
+        <translation>Его файл блокировки %1 указывает на %2 (процесс %3).</translation>
+    </message>
+    <message>
         <location line="+11"/>
         <source>You are in the &apos;%1&apos; group that may use it, but this session began before you were added: log out and back in.</source>
         <translation>Вы состоите в группе «%1», которой разрешён доступ, но текущий сеанс начат до вашего добавления в неё: выйдите из системы и войдите снова.</translation>

@@ -1,5 +1,7 @@
 #include "link/serial_transport.h"
 
+#include "link/port_lock.h"
+
 #include <QFile>
 #include <QFileInfo>
 
@@ -37,6 +39,36 @@ bool userListedInGroup(gid_t gid) {
 }
 #endif
 
+#ifdef Q_OS_UNIX
+// Who has the port, by its lock file: a program named is one the user can end or reconfigure.
+QString busyAdvice(const QString &path) {
+    const std::optional<PortLockHolder> h = portLockHolder(path);
+    if (!h)
+        return SerialTransport::tr("Another program may have it open (a terminal program, gpsd, "
+                                   "ModemManager).");
+    const QString program = h->program.isEmpty() ? SerialTransport::tr("a program") : h->program;
+    if (!h->alive)
+        return SerialTransport::tr("Its lock file %1 is left from process %2, which has ended: "
+                                   "delete that file.")
+                .arg(h->lockFile)
+                .arg(h->pid);
+    if (h->hasPortOpen == false)
+        return SerialTransport::tr("Its lock file %1 names %2 (process %3), which does not have "
+                                   "it open: try again, and if it stays, end that program.")
+                .arg(h->lockFile, program)
+                .arg(h->pid);
+    if (h->hasPortOpen == true)
+        return SerialTransport::tr("%1 (process %2) has it open (lock file %3).")
+                .arg(program)
+                .arg(h->pid)
+                .arg(h->lockFile);
+    // Another user's process: its open files are not ours to see.
+    return SerialTransport::tr("Its lock file %1 names %2 (process %3).")
+            .arg(h->lockFile, program)
+            .arg(h->pid);
+}
+#endif
+
 // What to do about a port that would not open, where we can tell: QSerialPort says
 // PermissionError both for a device this user may not open (EACCES) and for one another program
 // holds (its lock file, EBUSY), which call for opposite advice; an access check tells them apart.
@@ -48,8 +80,7 @@ QString openFailureAdvice(const QString &portName, QSerialPort::SerialPortError 
     const QByteArray native = QFile::encodeName(path);
     // With the effective user, as open() checks (plain access() asks about the real one).
     if (::faccessat(AT_FDCWD, native.constData(), R_OK | W_OK, AT_EACCESS) == 0)
-        return SerialTransport::tr("Another program may have it open (a terminal program, gpsd, "
-                                   "ModemManager).");
+        return busyAdvice(path);
     if (errno != EACCES && errno != EPERM) return {};
     // Debian and most distributions give serial devices to the group "dialout" (crw-rw----
     // root:dialout); name the device's own group when it is the one granting access.

@@ -1,6 +1,7 @@
 // A serial port refused for permission says why and what to do (join the dialout group, log out
 // and in), in the message SerialTransport gives: the GUI's status bar and gnss-cli both show it.
-// A port that is busy or absent gets no such advice.
+// A port that is busy gets no such advice: its lock file names the program that holds it. An
+// absent one gets none at all.
 //
 // The device is a pseudo-terminal made unopenable (chmod 000). Root opens anything whatever its
 // mode, so when the tests run as root the opening is done as the user "nobody": in this process
@@ -8,6 +9,7 @@
 // is started as nobody.
 #include "link/serial_transport.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QProcess>
 #include <QTest>
@@ -73,6 +75,34 @@ private:
     bool failed_ = false;
 };
 
+// LCK..pts_3 for /dev/pts/3, as QSerialPort names its lock files.
+QString lockName(const QString &device) {
+    return QStringLiteral("LCK..") + device.mid(5).replace('/', '_');
+}
+
+// A lock file in the format QLockFile writes (PID, program, host), in the first lock folder
+// QSerialPort uses (/var/lock, on Linux a link to /run/lock); removed at the end.
+class LockFile {
+public:
+    LockFile(const QString &device, qint64 pid, const char *program)
+        : path_(QStringLiteral("/var/lock/") + lockName(device)) {
+        QFile f(path_);
+        if (f.exists() || !f.open(QIODevice::WriteOnly)) {
+            path_.clear();
+            return;
+        }
+        f.write(QByteArray::number(pid) + '\n' + program + "\n\n");
+    }
+    ~LockFile() {
+        if (!path_.isEmpty()) QFile::remove(path_);
+    }
+    bool ok() const { return !path_.isEmpty(); }
+    const QString &path() const { return path_; }
+
+private:
+    QString path_;
+};
+
 QString openError(const QString &port) {
     SerialTransport t(SerialSettings{port, 9600});
     if (t.open()) return {};
@@ -132,9 +162,9 @@ private slots:
         QVERIFY2(cli.readAllStandardOutput().isEmpty(), "an error is not data");
     }
 
-    void aBusyPortIsNotBlamedOnTheGroup() {
+    void aBusyPortNamesItsHolderNotTheGroup() {
         // QSerialPort reports a port another program holds (its lock file) as a permission
-        // error too; joining a group would not help there.
+        // error too; joining a group would not help there. The lock file says who holds it.
         Pty pty;
         if (!pty.ok()) QSKIP("no pseudo-terminal");
         SerialTransport first(SerialSettings{pty.path(), 9600});
@@ -143,7 +173,63 @@ private slots:
         const QString why = openError(pty.path());
         if (why.isEmpty()) QSKIP("this system lets a port be opened twice (no lock files)");
         QVERIFY2(!why.contains("dialout"), qPrintable(why));
-        QVERIFY2(why.contains("Another program may have it open"), qPrintable(why));
+        const QString self = QFileInfo(QCoreApplication::applicationFilePath()).fileName();
+        QVERIFY2(why.contains(QStringLiteral("%1 (process %2) has it open (lock file ")
+                                      .arg(self.left(15))
+                                      .arg(QCoreApplication::applicationPid())),
+                 qPrintable(why));
+        QVERIFY2(why.contains(lockName(pty.path())), qPrintable(why));
+    }
+
+    // A lock whose process runs but has not the port open: between its closing the port and
+    // removing the lock, or a lock it leaked. Written here as a lock of `sleep`'s.
+    void aLockWhoseHolderHasNotThePortOpenSaysSo() {
+        Pty pty;
+        if (!pty.ok()) QSKIP("no pseudo-terminal");
+        QProcess sleeper;
+        sleeper.start(QStringLiteral("sleep"), {QStringLiteral("30")});
+        if (!sleeper.waitForStarted(5000)) QSKIP("no sleep(1) to hold the lock");
+        const qint64 pid = sleeper.processId();
+        const LockFile lock(pty.path(), pid, "sleep");
+        if (!lock.ok()) QSKIP("the lock folder is not writable here");
+        const QString why = openError(pty.path());
+        sleeper.kill();
+        sleeper.waitForFinished(5000);
+        QVERIFY2(why.contains(QStringLiteral("Its lock file %1 names sleep (process %2), which "
+                                             "does not have it open")
+                                      .arg(lock.path())
+                                      .arg(pid)),
+                 qPrintable(why));
+        QVERIFY2(!why.contains("dialout"), qPrintable(why));
+    }
+
+    // Another user's lock, left by a process that has ended: QSerialPort cannot remove it (the
+    // lock folder is sticky), so the port stays locked until the file goes.
+    void aLockLeftByAnEndedProcessIsNamed() {
+        if (::geteuid() != 0) QSKIP("needs root to leave a lock another user cannot remove");
+        Pty pty;
+        if (!pty.ok()) QSKIP("no pseudo-terminal");
+        QVERIFY(::chmod(QFile::encodeName(pty.path()).constData(), 0666) == 0);
+        QProcess ended;
+        ended.start(QStringLiteral("true"), {});
+        if (!ended.waitForStarted(5000)) QSKIP("no true(1) to take a process id from");
+        const qint64 pid = ended.processId();
+        QVERIFY(ended.waitForFinished(5000));
+        const LockFile lock(pty.path(), pid, "gnss-cli");
+        if (!lock.ok()) QSKIP("the lock folder is not writable here");
+        if (!QFileInfo(QFileInfo(lock.path()).path()).permissions().testFlag(QFile::WriteOther))
+            QSKIP("the lock folder is not shared by all users");
+        QString why;
+        {
+            WithoutRoot user;
+            if (user.failed()) QSKIP("running as root without the right to become nobody");
+            why = openError(pty.path());
+        }
+        QVERIFY2(why.contains(QStringLiteral("Its lock file %1 is left from process %2, which has "
+                                             "ended: delete that file.")
+                                      .arg(lock.path())
+                                      .arg(pid)),
+                 qPrintable(why));
     }
 
     void aMissingPortGetsNoAdvice() {
