@@ -3962,6 +3962,21 @@
 <context>
     <name>gnss::app::ConnectionBar</name>
     <message>
+        <location filename="../app/gui/connection_bar.cpp" line="+1"/>
+        <source>Serial port by path</source>
+        <translation>Последовательный порт по пути</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connection_bar.cpp" line="+1"/>
+        <source>Device path (/dev/serial/by-id/…, /dev/rfcomm0, /dev/pts/3):</source>
+        <translation>Путь к устройству (/dev/serial/by-id/…, /dev/rfcomm0, /dev/pts/3):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connection_bar.cpp" line="+1"/>
+        <source>Port by path…</source>
+        <translation>Порт по пути…</translation>
+    </message>
+    <message>
         <location filename="../app/gui/connection_bar.cpp" line="+20"/>
         <source>Connection</source>
         <translation>Подключение</translation>
@@ -4250,6 +4265,11 @@ Serial number: %3</source>
 </context>
 <context>
     <name>gnss::app::MainWindow</name>
+    <message>
+        <location filename="../app/gui/main_window_sessions.cpp" line="+1"/>
+        <source>%1 is receiver %2 already (%3): choose another port.</source>
+        <translation>%1 уже используется приёмником %2 (%3): выберите другой порт.</translation>
+    </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="+44"/>
         <location filename="../app/gui/main_window_log.cpp" line="+286"/>

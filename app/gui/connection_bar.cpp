@@ -11,9 +11,6 @@
 #include <QPushButton>
 
 namespace gnss::app {
-namespace {
-enum ItemRole { SpecRole = Qt::UserRole + 1 };
-} // namespace
 
 ConnectionBar::ConnectionBar(link::PortWatcher *ports, const DialectRegistry &registry,
                              QStringList simulated, QWidget *parent)
@@ -51,36 +48,60 @@ ConnectionBar::ConnectionBar(link::PortWatcher *ports, const DialectRegistry &re
             emit connectRequested(selection());
     });
     connect(source_, &QComboBox::activated, this, [this](int i) {
-        const QString action = source_->itemData(i, SpecRole).toString();
-        if (action == QLatin1String("tcp?")) {
-            bool ok = false;
-            const QString hp =
-                    QInputDialog::getText(this, tr("TCP source"), tr("Host and port (HOST:PORT):"),
-                                          QLineEdit::Normal, QStringLiteral("127.0.0.1:5000"), &ok);
-            if (ok && !hp.isEmpty()) extra_ = SourceSpec{SourceSpec::Kind::Tcp, hp};
-            rebuildSources();
-        } else if (action == QLatin1String("gpsd?")) {
-            // A receiver that gpsd holds: gpsd on this machine unless told otherwise.
-            bool ok = false;
-            const QString where = QInputDialog::getText(
-                    this, tr("gpsd source"),
-                    tr("gpsd's host, port and device (HOST[:PORT][/DEVICE]; port 2947 and every "
-                       "device when left out):"),
-                    QLineEdit::Normal, QStringLiteral("localhost"), &ok);
-            if (ok && !where.trimmed().isEmpty())
-                extra_ = SourceSpec{SourceSpec::Kind::Gpsd, where.trimmed()};
-            rebuildSources();
-        } else if (action == QLatin1String("replay?")) {
-            const QString f = QFileDialog::getOpenFileName(
-                    this, tr("Open Log"), {}, tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
-            if (!f.isEmpty()) extra_ = SourceSpec{SourceSpec::Kind::Replay, f};
-            rebuildSources();
+        const QString action = source_->itemData(i).toString();
+        if (!action.endsWith('?')) { // a source: what Connect and Add receiver take
+            last_ = selection();
+            baud_->setEnabled(last_.kind == SourceSpec::Kind::Serial);
+            return;
         }
-        baud_->setEnabled(selection().kind == SourceSpec::Kind::Serial);
+        // An item that asks for its source: the one given is chosen, a cancel goes back (with
+        // the baud shown now).
+        SourceSpec back = last_;
+        if (back.kind == SourceSpec::Kind::Serial) back.baud = baud_->currentData().toInt();
+        SourceSpec chosen = askForSource(action);
+        if (chosen.kind == SourceSpec::Kind::Serial) chosen.baud = back.baud;
+        if (chosen.valid()) extra_ = chosen;
+        rebuildSources();
+        select(chosen.valid() ? chosen : back);
     });
     if (ports_)
         connect(ports_, &link::PortWatcher::portsChanged, this, &ConnectionBar::rebuildSources);
     rebuildSources();
+}
+
+SourceSpec ConnectionBar::askForSource(const QString &action) {
+    bool ok = false;
+    if (action == QLatin1String("tcp?")) {
+        const QString hp =
+                QInputDialog::getText(this, tr("TCP source"), tr("Host and port (HOST:PORT):"),
+                                      QLineEdit::Normal, QStringLiteral("127.0.0.1:5000"), &ok)
+                        .trimmed();
+        if (ok && !hp.isEmpty()) return {SourceSpec::Kind::Tcp, hp};
+    } else if (action == QLatin1String("port?")) {
+        // A port the system does not list: a stable /dev/serial/by-id name, a Bluetooth rfcomm
+        // device, a pseudo-terminal (gnss-sim --pty, socat).
+        const QString path = QInputDialog::getText(this, tr("Serial port by path"),
+                                                   tr("Device path (/dev/serial/by-id/…, "
+                                                      "/dev/rfcomm0, /dev/pts/3):"),
+                                                   QLineEdit::Normal, QStringLiteral("/dev/"), &ok)
+                                     .trimmed();
+        if (ok && !path.isEmpty() && path != QLatin1String("/dev/"))
+            return {SourceSpec::Kind::Serial, path};
+    } else if (action == QLatin1String("gpsd?")) {
+        // A receiver that gpsd holds: gpsd on this machine unless told otherwise.
+        const QString where =
+                QInputDialog::getText(this, tr("gpsd source"),
+                                      tr("gpsd's host, port and device (HOST[:PORT][/DEVICE]; "
+                                         "port 2947 and every device when left out):"),
+                                      QLineEdit::Normal, QStringLiteral("localhost"), &ok)
+                        .trimmed();
+        if (ok && !where.isEmpty()) return {SourceSpec::Kind::Gpsd, where};
+    } else if (action == QLatin1String("replay?")) {
+        const QString f = QFileDialog::getOpenFileName(
+                this, tr("Open Log"), {}, tr("NMEA logs (*.nmea *.log *.txt);;All files (*)"));
+        if (!f.isEmpty()) return {SourceSpec::Kind::Replay, f};
+    }
+    return {};
 }
 
 void ConnectionBar::rebuildSources() {
@@ -108,6 +129,7 @@ void ConnectionBar::rebuildSources() {
                          SourceSpec{SourceSpec::Kind::Simulator, id}.toString());
     }
     if (extra_.valid()) source_->addItem(extra_.displayName(), extra_.toString());
+    source_->addItem(tr("Port by path…"), QStringLiteral("port?"));
     source_->addItem(tr("TCP…"), QStringLiteral("tcp?"));
     source_->addItem(tr("gpsd…"), QStringLiteral("gpsd?"));
     source_->addItem(tr("Open log…"), QStringLiteral("replay?"));
@@ -131,7 +153,10 @@ void ConnectionBar::select(const SourceSpec &spec) {
         source_->insertItem(0, spec.displayName(), key.toString());
         i = 0;
     }
-    if (i >= 0) source_->setCurrentIndex(i);
+    if (i >= 0) {
+        source_->setCurrentIndex(i);
+        last_ = spec;
+    }
     if (spec.kind == SourceSpec::Kind::Serial) {
         const int b = baud_->findData(spec.baud);
         baud_->setCurrentIndex(b >= 0 ? b : 0);

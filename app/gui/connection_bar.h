@@ -43,6 +43,9 @@ signals:
 
 private:
     void rebuildSources();
+    // Asks for the source of an item that stands for a dialog ("tcp?", "port?", "gpsd?",
+    // "replay?"); invalid when cancelled.
+    SourceSpec askForSource(const QString &action);
     link::PortWatcher *ports_;
     const DialectRegistry &registry_;
     QStringList simulated_;
@@ -52,7 +55,8 @@ private:
     QPushButton *button_;
     QPushButton *add_;
     bool connected_ = false;
-    SourceSpec extra_; // a TCP, gpsd or replay source chosen by the user
+    SourceSpec extra_; // a TCP, gpsd, replay or unlisted serial source chosen by the user
+    SourceSpec last_;  // the source chosen last: where a cancelled dialog goes back to
 };
 
 } // namespace gnss::app

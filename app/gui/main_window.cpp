@@ -100,12 +100,14 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::wireConnection() {
-    connect(bar_, &ConnectionBar::connectRequested, this,
-            [this](const SourceSpec &s) { connectReceiver(current_, s); });
+    connect(bar_, &ConnectionBar::connectRequested, this, [this](const SourceSpec &s) {
+        if (!portTakenByAnother(s, current_)) connectReceiver(current_, s);
+    });
     connect(bar_, &ConnectionBar::disconnectRequested, this,
             [this] { current_->link()->disconnectFromSource(); });
-    connect(bar_, &ConnectionBar::addRequested, this,
-            [this](const SourceSpec &s) { addReceiver(s); });
+    connect(bar_, &ConnectionBar::addRequested, this, [this](const SourceSpec &s) {
+        if (!portTakenByAnother(s, nullptr)) addReceiver(s);
+    });
     connect(strip_, &ReceiversStrip::selectRequested, this,
             [this](int i) { selectReceiver(sessions_.value(i)); });
     connect(strip_, &ReceiversStrip::renameRequested, this,
@@ -217,8 +219,10 @@ void MainWindow::createMenus() {
             ->setShortcut(QKeySequence(tr("Ctrl+Shift+K")));
     receiverMenu_->addSeparator();
     // Several receivers: another one on the source chosen in the connection bar.
-    QAction *add = receiverMenu_->addAction(tr("&Add Receiver"), this,
-                                            [this] { addReceiver(bar_->selection()); });
+    QAction *add = receiverMenu_->addAction(tr("&Add Receiver"), this, [this] {
+        const SourceSpec s = bar_->selection();
+        if (!portTakenByAnother(s, nullptr)) addReceiver(s);
+    });
     add->setObjectName("addReceiverAction");
     add->setShortcut(QKeySequence(tr("Ctrl+Shift+N")));
     receiverMenu_->addAction(tr("Re&name Receiver..."), this, [this] { renameReceiver(current_); });

@@ -176,6 +176,9 @@ private:
     ui::ReceiverSession *newSession();
     void wireSession(ui::ReceiverSession *s);
     void connectReceiver(ui::ReceiverSession *s, const SourceSpec &spec);
+    // The serial port asked for is another receiver's already (a second open would only meet
+    // its lock): that receiver is selected and the status bar says so; false when it is free.
+    bool portTakenByAnother(const SourceSpec &spec, const ui::ReceiverSession *asking);
     void refreshBar();
     void updateReceivers();
     void rebuildReceiverActions();

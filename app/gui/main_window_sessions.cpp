@@ -17,6 +17,7 @@
 #include <QAction>
 #include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QInputDialog>
 #include <QMenu>
 #include <QPixmap>
@@ -74,6 +75,33 @@ ui::ReceiverSession *MainWindow::addReceiver(const SourceSpec &spec) {
     if (spec.valid()) connectReceiver(s, spec);
     emit receiversChanged();
     return s;
+}
+
+bool MainWindow::portTakenByAnother(const SourceSpec &spec, const ui::ReceiverSession *asking) {
+    if (spec.kind != SourceSpec::Kind::Serial) return false; // TCP, gpsd, files and sims share
+    const auto device = [](const QString &name) {
+        const QString path = name.startsWith('/') ? name : QStringLiteral("/dev/") + name;
+        const QString real = QFileInfo(path).canonicalFilePath(); // by-id links, symlinks
+        return real.isEmpty() ? path : real;
+    };
+    const QString wanted = device(spec.name);
+    for (qsizetype i = 0; i < sessions_.size(); ++i) {
+        ui::ReceiverSession *other = sessions_[i];
+        const SourceSpec has = other->link()->source();
+        const auto state = other->link()->state();
+        if (other == asking || has.kind != SourceSpec::Kind::Serial ||
+            state == session::ReceiverLink::State::Disconnected ||
+            state == session::ReceiverLink::State::Failed || device(has.name) != wanted)
+            continue;
+        selectReceiver(other);
+        statusBar()->showMessage(tr("%1 is receiver %2 already (%3): choose another port.")
+                                         .arg(spec.name)
+                                         .arg(i + 1)
+                                         .arg(other->name()),
+                                 10000);
+        return true;
+    }
+    return false;
 }
 
 void MainWindow::connectReceiver(ui::ReceiverSession *s, const SourceSpec &spec) {

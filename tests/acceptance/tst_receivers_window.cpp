@@ -13,6 +13,7 @@
 #include "compare_json.h"
 #include "config/settings_engine.h"
 #include "corrections/correction_forwarder.h"
+#include "gui/connection_bar.h"
 #include "gui/corrections_controller.h"
 #include "gui/main_window.h"
 #include "gui/receivers_strip.h"
@@ -31,17 +32,23 @@
 #include "views/fix_view.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QFileDialog>
+#include <QInputDialog>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPointer>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTabBar>
 #include <QTableWidget>
 #include <QTcpServer>
@@ -102,15 +109,28 @@ private slots:
         w.resize(1280, 800);
         w.show();
         w.showDock("compare");
-        // Both given as --port A --port B would: baud "auto" each.
-        w.connectReceiversAtStart({{SourceSpec::Kind::Serial, nvs.device, 0},
-                                   {SourceSpec::Kind::Serial, geos.device, 0}});
+        // The first as --port A would (baud "auto"); the second as a user adds it: a port the
+        // system does not list (a pseudo-terminal), typed as a path, then Add receiver.
+        w.connectReceiversAtStart({{SourceSpec::Kind::Serial, nvs.device, 0}});
+        auto *bar = w.findChild<app::ConnectionBar *>();
+        auto *source = w.findChild<QComboBox *>("sourceCombo");
+        QTimer::singleShot(0, this, [&] {
+            auto *d = qobject_cast<QInputDialog *>(QApplication::activeModalWidget());
+            QVERIFY(d);
+            d->setTextValue(geos.device);
+            d->accept();
+        });
+        source->setCurrentIndex(source->findData("port?")); // as a click on it does
+        emit source->activated(source->currentIndex());
+        QCOMPARE(bar->selection().toString(),
+                 (SourceSpec{SourceSpec::Kind::Serial, geos.device, 0}.toString()));
+        w.findChild<QPushButton *>("addReceiverButton")->click();
         QCOMPARE(w.sessions().size(), 2);
         ui::ReceiverSession *a = w.sessions()[0], *b = w.sessions()[1];
         QTRY_VERIFY_WITH_TIMEOUT(connected(a) && connected(b), 40000);
         QCOMPARE(a->link()->detectedBaud(), 38400);
         QCOMPARE(b->link()->detectedBaud(), 57600);
-        // Named by model and port; the strip shows both, the first selected.
+        // Named by model and port; the strip shows both.
         QTRY_VERIFY_WITH_TIMEOUT(a->name().startsWith("NV08C") && a->name().endsWith(nvs.device),
                                  15000);
         QTRY_VERIFY_WITH_TIMEOUT(b->name().startsWith("GeoS") && b->name().endsWith(geos.device),
@@ -119,7 +139,19 @@ private slots:
         QTRY_VERIFY(strip->isVisible() && strip->chips().size() == 2);
         QTRY_VERIFY(strip->chips()[1]->name().contains(b->name()));
         QVERIFY(a->colour() != b->colour());
-        QCOMPARE(w.selectedSession(), a);
+        w.selectReceiver(a);
+
+        // The GeoS-5's port asked for again, as a third receiver: refused before it is opened,
+        // with the receiver that has it selected and named.
+        bar->select({SourceSpec::Kind::Serial, geos.device, 0});
+        w.findChild<QPushButton *>("addReceiverButton")->click();
+        QCOMPARE(w.sessions().size(), 2);
+        QCOMPARE(w.selectedSession(), b);
+        const QString said = w.statusBar()->currentMessage();
+        QVERIFY2(said.contains(geos.device + " is receiver 2 already") && said.contains(b->name()),
+                 qPrintable(said));
+        QVERIFY(connected(b));
+        w.selectReceiver(a);
 
         // The Compare dock: what the GeoS-5 was told, within 5 cm and 1 dB.
         ui::CompareModel *cmp = w.comparison();
@@ -463,6 +495,63 @@ private slots:
         status = w.dock("correctionsDock")->findChild<QLabel *>("correctionsStatus");
         QTRY_VERIFY2(status->text().contains("Receiving"), qPrintable(status->text()));
         w.corrections(a)->stop();
+    }
+
+    // The connection bar's items that ask for their source (a port by its path, TCP, gpsd, a
+    // log): what is given is the source chosen, for Connect and Add receiver; a cancel goes back
+    // to the source chosen before.
+    void anItemThatAsksForItsSourceChoosesIt_data() {
+        QTest::addColumn<QString>("action");
+        QTest::addColumn<QString>("given"); // empty: the dialog is cancelled
+        QTest::addColumn<QString>("chosen");
+        const QString log = dir_.filePath("yesterday.nmea");
+        QFile f(log);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("$GPGGA,,,,,,0,00,,,M,,M,,*66\r\n");
+        using K = SourceSpec::Kind;
+        QTest::newRow("a port by its path")
+                << "port?"
+                << "/dev/serial/by-id/usb-NVS-if00"
+                << SourceSpec{K::Serial, "/dev/serial/by-id/usb-NVS-if00", 0}.toString();
+        QTest::newRow("TCP") << "tcp?"
+                             << "192.0.2.7:5017" << SourceSpec{K::Tcp, "192.0.2.7:5017"}.toString();
+        QTest::newRow("gpsd") << "gpsd?"
+                              << "localhost:2948/dev/ttyUSB1"
+                              << SourceSpec{K::Gpsd, "localhost:2948/dev/ttyUSB1"}.toString();
+        QTest::newRow("a log") << "replay?" << log << SourceSpec{K::Replay, log}.toString();
+        QTest::newRow("cancelled")
+                << "port?" << QString() << SourceSpec{K::Simulator, "geostar"}.toString();
+    }
+    void anItemThatAsksForItsSourceChoosesIt() {
+        QFETCH(QString, action);
+        QFETCH(QString, given);
+        QFETCH(QString, chosen);
+        QSettings settings(dir_.filePath("ask.ini"), QSettings::IniFormat);
+        app::MainWindow w(registry_, transports_, &settings);
+        w.resize(1280, 800);
+        w.show();
+        auto *bar = w.findChild<app::ConnectionBar *>();
+        auto *source = w.findChild<QComboBox *>("sourceCombo");
+        bar->select({SourceSpec::Kind::Simulator, "geostar"});
+        bool asked = false;
+        QTimer::singleShot(0, this, [&] {
+            QWidget *modal = QApplication::activeModalWidget();
+            asked = modal != nullptr;
+            if (auto *d = qobject_cast<QInputDialog *>(modal)) {
+                d->setTextValue(given);
+                given.isEmpty() ? d->reject() : d->accept();
+            } else if (auto *d = qobject_cast<QFileDialog *>(modal)) {
+                d->selectFile(given);
+                static_cast<QDialog *>(d)->accept(); // QFileDialog's own is protected
+            } else if (modal) {
+                modal->close();
+            }
+        });
+        source->setCurrentIndex(source->findData(action)); // as a click on the item does
+        emit source->activated(source->currentIndex());
+        QVERIFY2(asked, "no dialog asked for the source");
+        QCOMPARE(bar->selection().toString(), chosen);
+        QVERIFY(!source->currentData().toString().endsWith('?'));
     }
 
     // The set of receivers comes back at the next start, with their names and pinned docks.
