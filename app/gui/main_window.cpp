@@ -234,8 +234,14 @@ void MainWindow::createMenus() {
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     viewMenu_->setObjectName("viewMenu");
-    for (const DockRow &row : dockRows())
-        viewMenu_->addAction(dock(dockObjectName(row))->toggleViewAction());
+    for (const DockRow &row : dockRows()) {
+        QDockWidget *d = dock(dockObjectName(row));
+        viewMenu_->addAction(d->toggleViewAction());
+        // A dock asked for comes to the front of its tab group, not behind the tab shown.
+        connect(d->toggleViewAction(), &QAction::triggered, d, [d](bool shown) {
+            if (shown) d->raise();
+        });
+    }
     // A second dock of a kind, pinned to the selected receiver (base and rover side by side).
     QMenu *more = viewMenu_->addMenu(tr("Another &dock for this receiver"));
     more->setObjectName("duplicateDockMenu");

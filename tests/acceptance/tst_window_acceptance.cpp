@@ -237,6 +237,19 @@ private slots:
         QVERIFY(w_->findChild<ui::DeviationView *>()->scatter().size() >= 3);
     }
 
+    // A dock put away at first (the Base station), chosen in the View menu, is in front of its
+    // tab group: not a new tab behind the one shown.
+    void aDockChosenInTheViewMenuComesToTheFront() {
+        QDockWidget *d = dock("baseDock");
+        QVERIFY(d);
+        QVERIFY(d->isHidden());
+        d->toggleViewAction()->trigger();
+        QTRY_VERIFY(d->widget()->isVisible());
+        QVERIFY(!w_->tabifiedDockWidgets(d).isEmpty()); // it did join a tab group
+        d->toggleViewAction()->trigger();
+        QTRY_VERIFY(d->isHidden());
+    }
+
     void tabTitlesAreWhole() {
         const QString cut = gnss::test::cutTabTitle(*w_);
         QVERIFY2(cut.isEmpty(), qPrintable(cut));
