@@ -33,6 +33,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
+#include <QStackedWidget>
 #include <QTableWidget>
 #include <QTcpSocket>
 #include <QTemporaryDir>
@@ -293,7 +294,14 @@ private slots:
         view = w.dock("baseDock")->findChild<ui::BaseStationView *>();
         QTRY_VERIFY(view && view->canBeBase());
         QTRY_VERIFY_WITH_TIMEOUT(nvs->state()->state().epoch.lat.has_value(), 20000);
+        auto *pages = view->findChild<QStackedWidget *>();
+        const int surveyHeight = pages->sizeHint().height();
         child<QComboBox>(view, "baseSource")->setCurrentIndex(2);
+        // The known position's page is a few lines: no room kept for the survey's plot.
+        QVERIFY2(pages->sizeHint().height() < surveyHeight / 2,
+                 qPrintable(QStringLiteral("%1 px, the survey %2")
+                                    .arg(pages->sizeHint().height())
+                                    .arg(surveyHeight)));
         auto *position = child<QLineEdit>(view, "knownPosition");
         // Malformed: said, nothing sent.
         position->setText("95,37,150");

@@ -225,8 +225,18 @@ BaseStationView::BaseStationView(config::SettingsEngine *engine, ReceiverStateMo
     layout->addStretch(1);
 
     connect(read, &QPushButton::clicked, this, &BaseStationView::readBase);
-    connect(source_, &QComboBox::currentIndexChanged, sourcePages_,
-            &QStackedWidget::setCurrentIndex);
+    // The group is as tall as the page shown (a known position is one line, not the survey's
+    // plot), so that Set base stays in sight on a laptop screen.
+    auto fitPage = [pages = sourcePages_](int index) {
+        pages->setCurrentIndex(index);
+        for (int i = 0; i < pages->count(); ++i) {
+            const auto height = i == index ? QSizePolicy::Preferred : QSizePolicy::Ignored;
+            pages->widget(i)->setSizePolicy(QSizePolicy::Preferred, height);
+        }
+        pages->updateGeometry();
+    };
+    fitPage(0);
+    connect(source_, &QComboBox::currentIndexChanged, sourcePages_, fitPage);
     connect(surveyButton_, &QPushButton::clicked, this,
             [this] { surveying_ ? stopSurvey() : startSurvey(); });
     connect(goal_, &QComboBox::currentIndexChanged, this,
