@@ -314,6 +314,18 @@ private slots:
         position->setText("55°45'40.3\"N, 37°37'06.2\"E, 166.6");
         config::SettingsEngine *engine = nvs->link()->settings();
         QTRY_VERIFY_WITH_TIMEOUT(!engine->isBusy(), 15000);
+        // While the settings are read again their values go (forget() clears them as a read
+        // does) and the status shrinks to a line: what is below it stays where it was, so that
+        // Set base does not move from under the pointer.
+        auto *status = child<QLabel>(view, "baseStatus");
+        QTRY_VERIFY2(status->text().contains("Position:"), qPrintable(status->text()));
+        auto *set = child<QPushButton>(view, "baseSet");
+        QTest::qWait(100); // laid out
+        const int setAt = set->mapTo(view, QPoint()).y();
+        engine->forget();
+        QVERIFY2(status->text().contains("not read yet"), qPrintable(status->text()));
+        QTest::qWait(100);
+        QCOMPARE(set->mapTo(view, QPoint()).y(), setAt);
         QVERIFY(engine->read());
         QTest::mouseClick(child<QPushButton>(view, "baseSet"), Qt::LeftButton);
         QVERIFY2(verdicts(list).contains("Waiting for the operation in progress"),

@@ -455,6 +455,11 @@ void BaseStationView::showStatus() {
     if (s.distance)
         lines << tr("From its own fix: %1").arg(fmt::length(*s.distance, 2, prefs_.units));
     status_->setText(lines.join('\n'));
+    // Its lines go while the settings are read again and come back: it keeps the height it had,
+    // so that what is below (Set base) does not move from under the pointer.
+    const int height = status_->width() > 0 ? status_->heightForWidth(status_->width())
+                                            : status_->sizeHint().height();
+    if (height > status_->minimumHeight()) status_->setMinimumHeight(height);
     warning_->setVisible(s.beyondThreshold);
     if (s.beyondThreshold)
         warning_->setText(tr("The base position is %1 from the receiver's own fix, past its "
