@@ -326,10 +326,23 @@ private slots:
         QVERIFY2(status->text().contains("not read yet"), qPrintable(status->text()));
         QTest::qWait(100);
         QCOMPARE(set->mapTo(view, QPoint()).y(), setAt);
+        list->setFixedWidth(240); // a narrow dock (or a Russian line, twice as long)
+        QTest::qWait(100);
         QVERIFY(engine->read());
         QTest::mouseClick(child<QPushButton>(view, "baseSet"), Qt::LeftButton);
         QVERIFY2(verdicts(list).contains("Waiting for the operation in progress"),
                  qPrintable(verdicts(list)));
+        // A line longer than the list is wide wraps: the whole line in sight.
+        list->doItemsLayout();
+        const QRect line = list->visualItemRect(list->item(list->count() - 1));
+        QVERIFY2(line.width() <= list->viewport()->width() &&
+                         line.height() > 2 * list->fontMetrics().lineSpacing(),
+                 qPrintable(QStringLiteral("%1 px wide, %2 high, in %3")
+                                    .arg(line.width())
+                                    .arg(line.height())
+                                    .arg(list->viewport()->width())));
+        list->setMinimumWidth(0);
+        list->setMaximumWidth(QWIDGETSIZE_MAX);
         QTRY_VERIFY2_WITH_TIMEOUT(verdicts(list).contains("rtk.BASEXYZ"),
                                   qPrintable(verdicts(list)), 15000);
         QTRY_VERIFY_WITH_TIMEOUT(child<QLabel>(view, "baseWarning")->isVisible(), 10000);

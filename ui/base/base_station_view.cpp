@@ -220,6 +220,10 @@ BaseStationView::BaseStationView(config::SettingsEngine *engine, ReceiverStateMo
     verdicts_ = new QListWidget(send);
     verdicts_->setObjectName("baseVerdicts");
     verdicts_->setMinimumHeight(60);
+    // A verdict is a sentence (twice as long in Russian): wrapped at the list's width.
+    verdicts_->setWordWrap(true);
+    verdicts_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    verdicts_->setResizeMode(QListView::Adjust);
     form->addRow(verdicts_);
     layout->addWidget(send);
     layout->addStretch(1);
