@@ -39,7 +39,9 @@ bool updateState(const Message &m, ReceiverState &st) {
     RtkState &rtk = st.rtk;
     if (const auto *v = message_cast<Ver>(m)) {
         st.identity.vendor = "NVS";
-        st.identity.model = "NV08C-" + std::string(v->device.value_or("RTK"));
+        // The device id is "RTK" or "RTA"; the product of the latter is the NV08C-RTK-A.
+        const std::string device(v->device.value_or("RTK"));
+        st.identity.model = device == "RTA" ? std::string("NV08C-RTK-A") : "NV08C-" + device;
         st.identity.firmware = std::string(v->rtkFw.value_or(""));
         // Appended, not `" " + std::string(…)`: GCC 12's Release build warned of an overlapping
         // memcpy (-Wrestrict) in that concatenation.

@@ -27,7 +27,7 @@ QByteArray why(const Run &r) {
     return "rc " + QByteArray::number(r.exitCode) + "\n" + r.out + "\n" + r.err;
 }
 
-QByteArray nvsProfile(const QByteArray &values, const QByteArray &model = "NV08C-RTA") {
+QByteArray nvsProfile(const QByteArray &values, const QByteArray &model = "NV08C-RTK-A") {
     return "{\"format\":\"gnss-workbench-settings\",\"version\":1,\"dialect\":\"nvs\","
            "\"model\":\"" +
            model + "\",\"values\":{" + values + "}}";
@@ -137,7 +137,7 @@ private slots:
         QTest::addColumn<QString>("words");
         QTest::newRow("another model")
                 << nvsProfile(R"("rtk.ELGPS":"33")", "NV08C-CSM") << 2
-                << "the profile is for the NV08C-CSM, the receiver is a NV08C-RTA";
+                << "the profile is for the NV08C-CSM, the receiver is a NV08C-RTK-A";
         QTest::newRow("a value out of range")
                 << nvsProfile(R"("rtk.ELGPS":"33","rtk.ELGLO":"91")") << 2
                 << "nothing was sent: rtk.ELGLO: 91 is out of range; accepted: 0..90";
@@ -253,7 +253,7 @@ private slots:
         const QJsonObject got = QJsonDocument::fromJson(r.out).object();
         QCOMPARE(got["write_only"].toArray(), QJsonArray{"port.COM1.baud"});
         QVERIFY(!got["values"].toObject()["rtk.PVTRATE"].toString().isEmpty());
-        QCOMPARE(got["model"].toString(), QString("NV08C-RTA"));
+        QCOMPARE(got["model"].toString(), QString("NV08C-RTK-A"));
         QVERIFY(!got["firmware"].toString().isEmpty());
     }
 };

@@ -74,6 +74,9 @@ private slots:
         QCOMPARE(QString::fromStdString(st.identity.firmware), QString("0029"));
         QCOMPARE(QString::fromStdString(st.identity.hardware), QString("CSM24 0101"));
         QVERIFY(st.reports.count("Version"));
+        // Device id RTA: the NV08C-RTK-A (the heading receiver), by its product's name.
+        st = track({buildSentence("PNVGVER,NVS,RTA,0029,CSM24,0101")});
+        QCOMPARE(QString::fromStdString(st.identity.model), QString("NV08C-RTK-A"));
 
         st = track({"$GPSGG,RQUERY,GEOS-5,V.5.102,100518,00083037,802DC097,F7FF8064*5C"});
         QCOMPARE(QString::fromStdString(st.identity.vendor), QString("GeoStar"));
