@@ -3963,6 +3963,11 @@
     <name>gnss::app::ConnectionBar</name>
     <message>
         <location filename="../app/gui/connection_bar.cpp" line="+1"/>
+        <source>&apos;%1&apos; is not HOST:PORT with a port from 1 to 65535.</source>
+        <translation>«%1» — не адрес вида ХОСТ:ПОРТ с портом от 1 до 65535.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connection_bar.cpp" line="+1"/>
         <source>Serial port by path</source>
         <translation>Последовательный порт по пути</translation>
     </message>

@@ -3,11 +3,13 @@
 #include "core/baud_rates.h"
 #include "core/dialect_registry.h"
 #include "link/port_watcher.h"
+#include "link/tcp_transport.h"
 
 #include <QComboBox>
 #include <QFileDialog>
 #include <QInputDialog>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 
 namespace gnss::app {
@@ -76,6 +78,14 @@ SourceSpec ConnectionBar::askForSource(const QString &action) {
                 QInputDialog::getText(this, tr("TCP source"), tr("Host and port (HOST:PORT):"),
                                       QLineEdit::Normal, QStringLiteral("127.0.0.1:5000"), &ok)
                         .trimmed();
+        QString host;
+        quint16 port = 0;
+        if (ok && !hp.isEmpty() && !link::TcpTransport::parseHostPort(hp, host, port)) {
+            // Said now, not as a failed connection later.
+            QMessageBox::warning(this, tr("TCP source"),
+                                 tr("'%1' is not HOST:PORT with a port from 1 to 65535.").arg(hp));
+            return {};
+        }
         if (ok && !hp.isEmpty()) return {SourceSpec::Kind::Tcp, hp};
     } else if (action == QLatin1String("port?")) {
         // A port the system does not list: a stable /dev/serial/by-id name, a Bluetooth rfcomm

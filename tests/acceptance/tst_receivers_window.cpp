@@ -44,6 +44,7 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
 #include <QSettings>
@@ -521,6 +522,10 @@ private slots:
         QTest::newRow("a log") << "replay?" << log << SourceSpec{K::Replay, log}.toString();
         QTest::newRow("cancelled")
                 << "port?" << QString() << SourceSpec{K::Simulator, "geostar"}.toString();
+        // Refused when given, with why, and the source before kept.
+        QTest::newRow("TCP without a port")
+                << "tcp?"
+                << "192.0.2.7" << SourceSpec{K::Simulator, "geostar"}.toString();
     }
     void anItemThatAsksForItsSourceChoosesIt() {
         QFETCH(QString, action);
@@ -534,22 +539,33 @@ private slots:
         auto *source = w.findChild<QComboBox *>("sourceCombo");
         bar->select({SourceSpec::Kind::Simulator, "geostar"});
         bool asked = false;
-        QTimer::singleShot(0, this, [&] {
+        QString warned; // what a message box after the dialog said
+        // Answers each dialog as it comes, while the bar's handler runs (it returns when the
+        // last one is closed).
+        QTimer answer;
+        answer.setInterval(20);
+        connect(&answer, &QTimer::timeout, this, [&] {
             QWidget *modal = QApplication::activeModalWidget();
-            asked = modal != nullptr;
-            if (auto *d = qobject_cast<QInputDialog *>(modal)) {
+            if (auto *box = qobject_cast<QMessageBox *>(modal)) {
+                warned = box->text();
+                box->accept();
+            } else if (auto *d = qobject_cast<QInputDialog *>(modal)) {
+                asked = true;
                 d->setTextValue(given);
                 given.isEmpty() ? d->reject() : d->accept();
             } else if (auto *d = qobject_cast<QFileDialog *>(modal)) {
+                asked = true;
                 d->selectFile(given);
                 static_cast<QDialog *>(d)->accept(); // QFileDialog's own is protected
-            } else if (modal) {
-                modal->close();
             }
         });
+        answer.start();
         source->setCurrentIndex(source->findData(action)); // as a click on the item does
         emit source->activated(source->currentIndex());
+        answer.stop();
         QVERIFY2(asked, "no dialog asked for the source");
+        const bool refused = QByteArray(QTest::currentDataTag()).contains("without");
+        QVERIFY2(refused == warned.contains("HOST:PORT"), qPrintable(warned));
         QCOMPARE(bar->selection().toString(), chosen);
         QVERIFY(!source->currentData().toString().endsWith('?'));
     }
