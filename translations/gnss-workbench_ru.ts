@@ -6126,7 +6126,7 @@ Serial number: %3</source>
     <message>
         <location line="+1"/>
         <source>a program</source>
-        <translation>программа</translation>
+        <translation>неизвестная программа</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6136,17 +6136,17 @@ Serial number: %3</source>
     <message>
         <location line="+1"/>
         <source>Its lock file %1 names %2 (process %3), which does not have it open: try again, and if it stays, end that program.</source>
-        <translation>Его файл блокировки %1 указывает на %2 (процесс %3), у которого порт не открыт: попробуйте ещё раз, а если блокировка останется, завершите эту программу.</translation>
+        <translation>Его файл блокировки %1 указывает на процесс %3 (%2), у которого порт не открыт: попробуйте ещё раз, а если блокировка останется, завершите эту программу.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 (process %2) has it open (lock file %3).</source>
-        <translation>Порт открыт программой %1 (процесс %2, файл блокировки %3).</translation>
+        <translation>Порт открыт: %1, процесс %2 (файл блокировки %3).</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Its lock file %1 names %2 (process %3).</source>
-        <translation>Его файл блокировки %1 указывает на %2 (процесс %3).</translation>
+        <translation>Его файл блокировки %1 указывает на процесс %3 (%2).</translation>
     </message>
     <message>
         <location line="+11"/>
