@@ -112,7 +112,11 @@ QString profileMismatch(const Profile &p, const Dialect *dialect, std::string_vi
     if (dialect && p.dialect != dialect->id)
         return QObject::tr("the profile is for dialect '%1', the receiver speaks '%2'")
                 .arg(qs(p.dialect), qs(dialect->id));
-    if (!p.model.empty() && !receiverModel.empty() && p.model != receiverModel)
+    std::string_view profileModel = p.model;
+    if (dialect)
+        for (const auto &[former, now] : dialect->formerModelNames)
+            if (profileModel == former) profileModel = now;
+    if (!profileModel.empty() && !receiverModel.empty() && profileModel != receiverModel)
         return QObject::tr("the profile is for the %1, the receiver is a %2: export a profile "
                            "from a %2, or edit the file's \"model\" if the settings suit it")
                 .arg(qs(p.model), qs(receiverModel));

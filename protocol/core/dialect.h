@@ -17,6 +17,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace gnss {
@@ -203,6 +204,9 @@ struct Dialect {
 
     // One line for command-line help: "NVS NV08C-RTK (PNVG...): RTK rover and base".
     std::string_view summary;
+    // Names an earlier version of the workbench gave a model, with the name it has now (a
+    // profile saved under the old one is still for that model).
+    std::span<const std::pair<std::string_view, std::string_view>> formerModelNames;
 };
 
 // The action of this kind a dialect offers, nullptr when it has none.

@@ -27,6 +27,10 @@ constexpr std::string_view kCommands[] = {
         "PNVGVER", "PNVGNME", "PNVGRST", "PNVGRZA", "PNVGRZB",
         "PNVGCFG", "PNVGPPS", "PNVGRTK", "PNVGIDL", "GPGPQ",
 };
+// Before 2026-12-07 the heading receiver (device id RTA) was called "NV08C-RTA".
+constexpr std::pair<std::string_view, std::string_view> kFormerModelNames[] = {
+        {"NV08C-RTA", "NV08C-RTK-A"},
+};
 } // namespace
 
 const Dialect &dialect() {
@@ -53,6 +57,7 @@ const Dialect &dialect() {
             .presets = kPresets,
             .linkSpeed = {"PNVGRZA,1,"}, // the host is on COM1
             .summary = "NVS NV08C-RTK (PNVG...): RTK rover, base and heading receiver",
+            .formerModelNames = kFormerModelNames,
     };
     return d;
 }

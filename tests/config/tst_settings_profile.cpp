@@ -29,6 +29,10 @@ constexpr ModelRow kModelRows[] = {
          "the profile is for the NV08C-CSM, the receiver is a NV08C-RTK"},
         {"a profile without a model", "nvs", "", "NV08C-RTK", ""},
         {"a receiver not identified", "nvs", "NV08C-CSM", "", ""},
+        // Saved when the workbench called the NV08C-RTK-A "NV08C-RTA".
+        {"the model's former name", "nvs", "NV08C-RTA", "NV08C-RTK-A", ""},
+        {"another model's former name", "nvs", "NV08C-RTA", "NV08C-RTK",
+         "the profile is for the NV08C-RTA, the receiver is a NV08C-RTK"},
         {"another dialect", "geostar", "NV08C-RTK", "NV08C-RTK",
          "the profile is for dialect 'geostar', the receiver speaks 'nvs'"},
 };
