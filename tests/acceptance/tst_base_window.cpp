@@ -284,6 +284,23 @@ private slots:
         ui::ReceiverSession *nvs = w.sessions()[0], *geos = w.sessions()[1];
         QTRY_VERIFY_WITH_TIMEOUT(connected(nvs) && connected(geos), 20000);
         QTRY_VERIFY_WITH_TIMEOUT(nvs->dialect() && geos->dialect(), 15000);
+        // The settings and epochs arrive while the dock is put away (as at every start): the
+        // status is not measured then (a label never laid out is narrow, its lines many), and
+        // has the height of its lines once shown.
+        QTRY_VERIFY_WITH_TIMEOUT(!nvs->link()->settings()->isBusy() &&
+                                         nvs->state()->state().epoch.lat.has_value(),
+                                 20000);
+        QTest::qWait(500); // epochs while hidden
+        QVERIFY(w.showDock("base"));
+        auto *shown =
+                child<QLabel>(w.dock("baseDock")->findChild<ui::BaseStationView *>(), "baseStatus");
+        QTRY_VERIFY2(shown->text().contains("Position:"), qPrintable(shown->text()));
+        QTest::qWait(100);
+        QVERIFY2(shown->height() <=
+                         shown->heightForWidth(shown->width()) + shown->fontMetrics().lineSpacing(),
+                 qPrintable(QStringLiteral("%1 px for %2 px of text")
+                                    .arg(shown->height())
+                                    .arg(shown->heightForWidth(shown->width()))));
         w.selectReceiver(geos);
         QVERIFY(w.showDock("base"));
         auto *view = w.dock("baseDock")->findChild<ui::BaseStationView *>();

@@ -297,8 +297,9 @@ void BaseStationView::setDisplayPrefs(const DisplayPrefs &prefs) {
 void BaseStationView::onDialect() {
     const Dialect *d = engine_ ? engine_->dialect() : nullptr;
     roles_ = d ? base::baseRoles(*d) : std::nullopt;
-    // A Set waiting for the engine was for the receiver as it was.
+    // A Set waiting for the engine was for the receiver as it was; its status starts afresh.
     setWhenFree_ = readWhenFree_ = false;
+    status_->setMinimumHeight(0);
     unsupported_->setVisible(!roles_);
     body_->setEnabled(roles_.has_value());
     if (!d)
@@ -459,11 +460,13 @@ void BaseStationView::showStatus() {
     if (s.distance)
         lines << tr("From its own fix: %1").arg(fmt::length(*s.distance, 2, prefs_.units));
     status_->setText(lines.join('\n'));
-    // Its lines go while the settings are read again and come back: it keeps the height it had,
-    // so that what is below (Set base) does not move from under the pointer.
-    const int height = status_->width() > 0 ? status_->heightForWidth(status_->width())
-                                            : status_->sizeHint().height();
-    if (height > status_->minimumHeight()) status_->setMinimumHeight(height);
+    // Its lines go while the settings are read again and come back: it keeps the height it had
+    // on screen, so that what is below (Set base) does not move from under the pointer. (Not
+    // measured while hidden: a label never laid out is 100 px wide, and ten lines tall there.)
+    if (status_->isVisible()) {
+        const int height = status_->heightForWidth(status_->width());
+        if (height > status_->minimumHeight()) status_->setMinimumHeight(height);
+    }
     warning_->setVisible(s.beyondThreshold);
     if (s.beyondThreshold)
         warning_->setText(tr("The base position is %1 from the receiver's own fix, past its "
