@@ -8,6 +8,7 @@
 #include <QComboBox>
 #include <QFileDialog>
 #include <QInputDialog>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
@@ -51,7 +52,7 @@ ConnectionBar::ConnectionBar(link::PortWatcher *ports, const DialectRegistry &re
     });
     connect(source_, &QComboBox::activated, this, [this](int i) {
         const QString action = source_->itemData(i).toString();
-        if (!action.endsWith('?')) { // a source: what Connect and Add receiver take
+        if (!isAskingItem(action)) { // a source: what Connect and Add receiver take
             last_ = selection();
             baud_->setEnabled(last_.kind == SourceSpec::Kind::Serial);
             return;
@@ -69,6 +70,38 @@ ConnectionBar::ConnectionBar(link::PortWatcher *ports, const DialectRegistry &re
     if (ports_)
         connect(ports_, &link::PortWatcher::portsChanged, this, &ConnectionBar::rebuildSources);
     rebuildSources();
+    last_ = selection();
+    // The wheel and the arrow keys step through the items: they would open a dialog on passing
+    // "Port by path…" (and change the source under a connected receiver's bar). The list is
+    // chosen from when opened.
+    source_->installEventFilter(this);
+}
+
+bool ConnectionBar::isAskingItem(const QString &data) {
+    for (const char *action : {"port?", "tcp?", "gpsd?", "replay?"})
+        if (data == QLatin1String(action)) return true;
+    return false;
+}
+
+bool ConnectionBar::eventFilter(QObject *watched, QEvent *e) {
+    if (watched == source_ && e->type() == QEvent::Wheel) return true;
+    if (watched == source_ && e->type() == QEvent::KeyPress) {
+        switch (static_cast<QKeyEvent *>(e)->key()) {
+        case Qt::Key_Up:
+        case Qt::Key_Down:
+        case Qt::Key_PageUp:
+        case Qt::Key_PageDown:
+        case Qt::Key_Home:
+        case Qt::Key_End:
+            if (!static_cast<QKeyEvent *>(e)->modifiers().testFlag(Qt::AltModifier)) {
+                source_->showPopup();
+                return true;
+            }
+            break;
+        default: break;
+        }
+    }
+    return QToolBar::eventFilter(watched, e);
 }
 
 SourceSpec ConnectionBar::askForSource(const QString &action) {

@@ -42,6 +42,8 @@ signals:
     void addRequested(const gnss::link::SourceSpec &spec);
 
 private:
+    bool eventFilter(QObject *watched, QEvent *e) override;
+    static bool isAskingItem(const QString &data);
     void rebuildSources();
     // Asks for the source of an item that stands for a dialog ("tcp?", "port?", "gpsd?",
     // "replay?"); invalid when cancelled.

@@ -95,9 +95,7 @@ bool MainWindow::portTakenByAnother(const SourceSpec &spec, const ui::ReceiverSe
             continue;
         selectReceiver(other);
         statusBar()->showMessage(tr("%1 is receiver %2 already (%3): choose another port.")
-                                         .arg(spec.name)
-                                         .arg(i + 1)
-                                         .arg(other->name()),
+                                         .arg(spec.name, QString::number(i + 1), other->name()),
                                  10000);
         return true;
     }

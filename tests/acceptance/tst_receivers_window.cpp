@@ -58,6 +58,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QTranslator>
+#include <QWheelEvent>
 
 #include <cmath>
 
@@ -116,10 +117,13 @@ private slots:
         auto *bar = w.findChild<app::ConnectionBar *>();
         auto *source = w.findChild<QComboBox *>("sourceCombo");
         QTimer::singleShot(0, this, [&] {
-            auto *d = qobject_cast<QInputDialog *>(QApplication::activeModalWidget());
-            QVERIFY(d);
-            d->setTextValue(geos.device);
-            d->accept();
+            QWidget *modal = QApplication::activeModalWidget();
+            if (auto *d = qobject_cast<QInputDialog *>(modal)) {
+                d->setTextValue(geos.device);
+                d->accept();
+            } else if (modal) {
+                modal->close(); // not the dialog expected: the comparison below fails
+            }
         });
         source->setCurrentIndex(source->findData("port?")); // as a click on it does
         emit source->activated(source->currentIndex());
@@ -568,6 +572,33 @@ private slots:
         QVERIFY2(refused == warned.contains("HOST:PORT"), qPrintable(warned));
         QCOMPARE(bar->selection().toString(), chosen);
         QVERIFY(!source->currentData().toString().endsWith('?'));
+    }
+
+    // The wheel and the arrow keys do not step through the source list (they would open a
+    // dialog on passing "Port by path…"): the wheel does nothing, an arrow opens the list.
+    void theSourceListIsChosenFromWhenOpened() {
+        QSettings settings(dir_.filePath("wheel.ini"), QSettings::IniFormat);
+        app::MainWindow w(registry_, transports_, &settings);
+        w.resize(1280, 800);
+        w.show();
+        auto *bar = w.findChild<app::ConnectionBar *>();
+        auto *source = w.findChild<QComboBox *>("sourceCombo");
+        bar->select({SourceSpec::Kind::Simulator, "nmea"}); // the last source before the items
+        const QString before = bar->selection().toString();
+        const QPointF at = QPointF(source->rect().center());
+        for (int i = 0; i < 6; ++i) {
+            QWheelEvent down(at, source->mapToGlobal(at), {}, {0, -120}, Qt::NoButton,
+                             Qt::NoModifier, Qt::NoScrollPhase, false);
+            QApplication::sendEvent(source, &down);
+        }
+        QCOMPARE(bar->selection().toString(), before);
+        QVERIFY(!QApplication::activeModalWidget());
+        source->setFocus();
+        QTest::keyClick(source, Qt::Key_Down);
+        QCOMPARE(bar->selection().toString(), before);
+        QVERIFY(!QApplication::activeModalWidget());
+        QTRY_VERIFY(source->view()->isVisible()); // the list, to choose from
+        source->hidePopup();
     }
 
     // The set of receivers comes back at the next start, with their names and pinned docks.
