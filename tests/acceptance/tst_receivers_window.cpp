@@ -90,6 +90,15 @@ bool connected(ui::ReceiverSession *s) {
     return s->link()->state() == ReceiverLink::State::Connected && s->state()->epochCount() > 0;
 }
 
+// The window at laptop size, its connection bar and source list, `spec` chosen.
+std::pair<app::ConnectionBar *, QComboBox *> sourceBar(app::MainWindow &w, const SourceSpec &spec) {
+    w.resize(1280, 800);
+    w.show();
+    auto *bar = w.findChild<app::ConnectionBar *>();
+    bar->select(spec);
+    return {bar, w.findChild<QComboBox *>("sourceCombo")};
+}
+
 } // namespace
 
 class TstReceiversWindow : public QObject {
@@ -537,11 +546,7 @@ private slots:
         QFETCH(QString, chosen);
         QSettings settings(dir_.filePath("ask.ini"), QSettings::IniFormat);
         app::MainWindow w(registry_, transports_, &settings);
-        w.resize(1280, 800);
-        w.show();
-        auto *bar = w.findChild<app::ConnectionBar *>();
-        auto *source = w.findChild<QComboBox *>("sourceCombo");
-        bar->select({SourceSpec::Kind::Simulator, "geostar"});
+        auto [bar, source] = sourceBar(w, {SourceSpec::Kind::Simulator, "geostar"});
         bool asked = false;
         QString warned; // what a message box after the dialog said
         // Answers each dialog as it comes, while the bar's handler runs (it returns when the
@@ -579,11 +584,8 @@ private slots:
     void theSourceListIsChosenFromWhenOpened() {
         QSettings settings(dir_.filePath("wheel.ini"), QSettings::IniFormat);
         app::MainWindow w(registry_, transports_, &settings);
-        w.resize(1280, 800);
-        w.show();
-        auto *bar = w.findChild<app::ConnectionBar *>();
-        auto *source = w.findChild<QComboBox *>("sourceCombo");
-        bar->select({SourceSpec::Kind::Simulator, "nmea"}); // the last source before the items
+        // The last source before the items.
+        auto [bar, source] = sourceBar(w, {SourceSpec::Kind::Simulator, "nmea"});
         const QString before = bar->selection().toString();
         const QPointF at = QPointF(source->rect().center());
         for (int i = 0; i < 6; ++i) {
