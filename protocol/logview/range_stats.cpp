@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace gnss::logview {
@@ -114,9 +115,15 @@ RangeStats rangeStats(std::span<const EpochRecord> records, std::uint64_t first,
                 s.dated = r.has(kDateKnown);
             }
             if (prevMs) {
-                const std::int64_t stepMs = r.utcMs - *prevMs;
+                // Times a log's dates make (a year 9999 beside 1980) do not overflow: the step
+                // and the elapsed time stop at the limits of the type.
+                std::int64_t stepMs = 0;
+                if (__builtin_sub_overflow(r.utcMs, *prevMs, &stepMs))
+                    stepMs = r.utcMs > *prevMs ? std::numeric_limits<std::int64_t>::max()
+                                               : std::numeric_limits<std::int64_t>::min();
                 const double step = static_cast<double>(stepMs) / 1000.0;
-                if (stepMs > 0) elapsedMs += stepMs;
+                if (stepMs > 0 && __builtin_add_overflow(elapsedMs, stepMs, &elapsedMs))
+                    elapsedMs = std::numeric_limits<std::int64_t>::max();
                 if (i > first && r.has(kGapBefore)) {
                     ++s.gaps;
                     if (step > s.longestGapS) {
