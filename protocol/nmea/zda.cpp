@@ -8,6 +8,11 @@ namespace gnss::nmea {
 
 const MessageType Zda::kType{"ZDA"};
 
+namespace {
+constexpr int kFirstYear = 1980;
+constexpr int kLastYear = 9999;
+} // namespace
+
 bool decodeZda(const Sentence &s, DecodeContext &ctx) {
     return decodeWith<Zda>(s, ctx, 4, [&](FieldReader &r, Zda &m) {
         m.time = r.time(0, "time");
@@ -18,6 +23,11 @@ bool decodeZda(const Sentence &s, DecodeContext &ctx) {
             if (*d < 1 || *d > 31) r.fail(1, "day", QT_TRANSLATE_NOOP("Refusal", "out of range"));
             if (*mo < 1 || *mo > 12)
                 r.fail(2, "month", QT_TRANSLATE_NOOP("Refusal", "out of range"));
+            // Four digits, and no satellite gave a date before GPS began (1980). A year of two
+            // digits or of nine is a broken receiver, and a date of such a year would put its
+            // epochs ages away from the rest of a log (time arithmetic overflowed on it).
+            if (*y < kFirstYear || *y > kLastYear)
+                r.fail(3, "year", QT_TRANSLATE_NOOP("Refusal", "out of range"));
             m.date = Date{*y, *mo, *d};
         }
         m.tzHours = r.integer(4, "zone hours");

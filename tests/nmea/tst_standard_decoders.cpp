@@ -246,6 +246,21 @@ private slots:
         QCOMPARE(t.data["text"].toString(), QString("u-blox ag - www.u-blox.com"));
     }
 
+    // The first and last years a ZDA may give (four digits, none before GPS).
+    void zdaTakesTheYearsOfFourDigitsSinceGps_data() {
+        QTest::addColumn<QString>("year");
+        QTest::newRow("1980") << "1980";
+        QTest::newRow("2026") << "2026";
+        QTest::newRow("9999") << "9999";
+    }
+    void zdaTakesTheYearsOfFourDigitsSinceGps() {
+        QFETCH(QString, year);
+        const auto d = decodeOne(QString::fromStdString(
+                gnss::buildSentence(("GPZDA,072836.00,06,01," + year + ",+00,00").toStdString())));
+        QVERIFY2(d.ok, qPrintable(d.error));
+        QCOMPARE(d.data["date"].toString(), year + "-01-06");
+    }
+
     void queryNamesRequesterListenerAndAddress() {
         const auto d = decodeOne("$GPGPQ,PNVGTST*21");
         QVERIFY2(d.ok, qPrintable(d.error));
@@ -274,6 +289,14 @@ private slots:
         QTest::newRow("RMC bad time")
                 << "GPRMC,2561xx,A,4807.038,N,01131.000,E,022.4,084.4,230394,,,"
                 << "time";
+        QTest::newRow("ZDA year of two digits") << "GPZDA,072836.00,31,05,18,+00,00"
+                                                << "year";
+        QTest::newRow("ZDA year before GPS") << "GPZDA,072836.00,31,05,1979,+00,00"
+                                             << "year";
+        QTest::newRow("ZDA year of nine digits") << "GPZDA,072836.00,31,05,200000000,+00,00"
+                                                 << "year";
+        QTest::newRow("ZDA negative year") << "GPZDA,072836.00,31,05,-2018,+00,00"
+                                           << "year";
         QTest::newRow("GSV index beyond total") << "GPGSV,2,3,08,01,40,083,46"
                                                 << "sentence number";
         QTest::newRow("GSV elevation") << "GPGSV,1,1,01,01,95,083,46"
