@@ -3,6 +3,7 @@
 // times of a recording's index when it has them, else the epochs' UTC times. The bytes sent are
 // exactly the file's.
 #include "cli/log_open.h"
+#include "link/serial_transport.h"
 #include "logview/play_schedule.h"
 #include "posix/termios_speed.h"
 
@@ -49,7 +50,7 @@ public:
     }
 
     bool openSerial(const std::string &port, int baud) {
-        const std::string path = port.find('/') == std::string::npos ? "/dev/" + port : port;
+        const std::string path = link::serialDevicePath(QString::fromStdString(port)).toStdString();
         fd_ = ::open(path.c_str(), O_RDWR | O_NOCTTY);
         if (fd_ < 0) return fail(path);
         termios t{};

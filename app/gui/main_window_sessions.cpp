@@ -7,6 +7,7 @@
 #include "gui/receivers_strip.h"
 #include "link/connection.h"
 #include "link/recording_name.h"
+#include "link/serial_transport.h"
 #include "models/receiver_session.h"
 #include "session/receiver_link.h"
 #include "settings/settings_view.h"
@@ -17,7 +18,6 @@
 #include <QAction>
 #include <QDir>
 #include <QDockWidget>
-#include <QFileInfo>
 #include <QInputDialog>
 #include <QMenu>
 #include <QPixmap>
@@ -79,19 +79,14 @@ ui::ReceiverSession *MainWindow::addReceiver(const SourceSpec &spec) {
 
 bool MainWindow::portTakenByAnother(const SourceSpec &spec, const ui::ReceiverSession *asking) {
     if (spec.kind != SourceSpec::Kind::Serial) return false; // TCP, gpsd, files and sims share
-    const auto device = [](const QString &name) {
-        const QString path = name.startsWith('/') ? name : QStringLiteral("/dev/") + name;
-        const QString real = QFileInfo(path).canonicalFilePath(); // by-id links, symlinks
-        return real.isEmpty() ? path : real;
-    };
-    const QString wanted = device(spec.name);
     for (qsizetype i = 0; i < sessions_.size(); ++i) {
         ui::ReceiverSession *other = sessions_[i];
         const SourceSpec has = other->link()->source();
         const auto state = other->link()->state();
         if (other == asking || has.kind != SourceSpec::Kind::Serial ||
             state == session::ReceiverLink::State::Disconnected ||
-            state == session::ReceiverLink::State::Failed || device(has.name) != wanted)
+            state == session::ReceiverLink::State::Failed ||
+            !link::sameSerialDevice(has.name, spec.name))
             continue;
         selectReceiver(other);
         statusBar()->showMessage(tr("%1 is receiver %2 already (%3): choose another port.")

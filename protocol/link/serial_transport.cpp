@@ -76,7 +76,7 @@ QString busyAdvice(const QString &path) {
 QString openFailureAdvice(const QString &portName, QSerialPort::SerialPortError error) {
 #ifdef Q_OS_UNIX
     if (error != QSerialPort::PermissionError) return {};
-    const QString path = portName.startsWith('/') ? portName : QStringLiteral("/dev/") + portName;
+    const QString path = serialDevicePath(portName);
     const QByteArray native = QFile::encodeName(path);
     // With the effective user, as open() checks (plain access() asks about the real one).
     if (::faccessat(AT_FDCWD, native.constData(), R_OK | W_OK, AT_EACCESS) == 0)
@@ -112,6 +112,23 @@ bool samePort(const PortInfo &p, const QString &name) {
 }
 
 } // namespace
+
+QString serialDevicePath(const QString &portName) {
+#ifdef Q_OS_UNIX
+    return portName.startsWith('/') ? portName : QStringLiteral("/dev/") + portName;
+#else
+    return portName;
+#endif
+}
+
+bool sameSerialDevice(const QString &a, const QString &b) {
+    const auto device = [](const QString &name) {
+        const QString path = serialDevicePath(name);
+        const QString real = QFileInfo(path).canonicalFilePath(); // by-id links, symlinks
+        return real.isEmpty() ? path : real;
+    };
+    return device(a) == device(b);
+}
 
 SerialTransport::SerialTransport(SerialSettings settings, PortEnumerator enumerate, QObject *parent)
     : Transport(parent), settings_(std::move(settings)),
@@ -202,11 +219,8 @@ void SerialTransport::onError(QSerialPort::SerialPortError error) {
     // still there and the link is fine, so it is not a loss.
     const bool ioError = error == QSerialPort::ReadError || error == QSerialPort::WriteError ||
                          error == QSerialPort::PermissionError;
-    const bool gone =
-            error == QSerialPort::ResourceError ||
-            (ioError && !QFileInfo::exists(port_.portName().startsWith('/')
-                                                   ? port_.portName()
-                                                   : QStringLiteral("/dev/") + port_.portName()));
+    const bool gone = error == QSerialPort::ResourceError ||
+                      (ioError && !QFileInfo::exists(serialDevicePath(port_.portName())));
     if (ioError && !gone) return;
     // Qt's words for a device that went away are the system's errno ("Invalid argument" for a
     // pseudo-terminal hung up): say what happened first, keep them after it.

@@ -12,6 +12,7 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QProcess>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <fcntl.h>
@@ -236,6 +237,38 @@ private slots:
         const QString why = openError(QStringLiteral("/dev/ttyGNSSWorkbenchNoSuchPort"));
         QVERIFY(!why.isEmpty());
         QVERIFY2(!why.contains("dialout") && !why.contains("Another program"), qPrintable(why));
+    }
+
+    // The names a port goes by: the window refuses a second receiver on a port one has open
+    // whichever of them each was given, and the messages above name the device by its path.
+    void aPortIsOneDeviceByAnyOfItsNames_data() {
+        QTest::addColumn<QString>("a");
+        QTest::addColumn<QString>("b");
+        QTest::addColumn<bool>("same");
+        QTest::newRow("name and path") << "ttyUSB0"
+                                       << "/dev/ttyUSB0" << true;
+        QTest::newRow("pseudo-terminal") << "pts/3"
+                                         << "/dev/pts/3" << true;
+        QTest::newRow("two ports") << "ttyUSB0"
+                                   << "ttyUSB1" << false;
+        QTest::newRow("link to a device") << "LINK"
+                                          << "/dev/null" << true;
+        QTest::newRow("link and another") << "LINK"
+                                          << "/dev/zero" << false;
+    }
+    void aPortIsOneDeviceByAnyOfItsNames() {
+        QFETCH(QString, a);
+        QFETCH(QString, b);
+        QFETCH(bool, same);
+        QTemporaryDir dir; // a /dev/serial/by-id/ name: a link to the device
+        QVERIFY(dir.isValid());
+        const QString link = dir.filePath("usb-NVS_NV08C-if00");
+        QVERIFY(QFile::link("/dev/null", link));
+        if (a == "LINK") a = link;
+        QCOMPARE(gnss::link::sameSerialDevice(a, b), same);
+        QCOMPARE(gnss::link::sameSerialDevice(b, a), same);
+        QCOMPARE(gnss::link::serialDevicePath("ttyACM0"), QStringLiteral("/dev/ttyACM0"));
+        QCOMPARE(gnss::link::serialDevicePath(link), link);
     }
 };
 
