@@ -7,9 +7,11 @@
 #                          [--until HH:MM] WORKDIR [HARNESS...]
 #   tests/fuzz/campaign.sh --report WORKDIR
 #
-# Each worker (default 1) takes the harness furthest from the target that no other worker runs,
-# gives it a slice (default 600 s, or the executions it still lacks if fewer), adds what it ran
-# to WORKDIR/ledger.tsv and takes the next. It stops when every harness has its TARGET (default
+# Each worker (default 1) takes the harness furthest from the target that no other worker runs
+# (or, when every harness left is running, shares the furthest of those: the last long harness
+# gets every core), gives it a slice (default 600 s, or the executions it still lacks if fewer;
+# workers sharing one may pass its target by a slice), adds what it ran to WORKDIR/ledger.tsv
+# and takes the next. It stops when every harness has its TARGET (default
 # 10 000 000), at --until (the local time after which no slice starts; a slice never runs past
 # it), or on a finding: a crash or a broken invariant stops that harness (its input under
 # build/<preset>/artifacts/, its row marked) and the campaign exits 1 at the end.
@@ -74,34 +76,46 @@ deadline=0
 [ -n "$until" ] && deadline=$(date -d "$until" +%s)
 [ -n "$until" ] && [ "$deadline" -le "$(date +%s)" ] && deadline=$((deadline + 86400))
 
-# Under the ledger's lock: the harness furthest from the target, not running, not failed. A
-# harness is running while its busy file names a live campaign (one that was killed leaves a
-# file naming a process that is gone: the harness is free again).
+# Under the ledger's lock: the harness furthest from the target, not failed, that no worker
+# runs; when every harness left is running (fewer harnesses than workers), the furthest of those,
+# shared: two libFuzzer processes on one corpus folder each add what they find to it, and the
+# core would otherwise stand idle. A worker is running a harness while its busy file
+# (busy/<harness>.<worker>) names a live campaign; one that was killed leaves a file naming a
+# process that is gone.
 pick() {
-  local best="" least=-1 h e n s r owner
+  local best="" least=-1 shared="" sleast=-1 h e n s r f owner busy
   while IFS=$'\t' read -r h e n s r; do
     [[ " ${harnesses[*]} " == *" $h "* ]] || continue
     [ "$r" = ok ] && [ "$e" -lt "$target" ] || continue
-    owner=$(cat "$work/busy/$h" 2>/dev/null || true)
-    [ -n "$owner" ] && kill -0 "$owner" 2>/dev/null && continue
-    if [ $least -lt 0 ] || [ "$e" -lt $least ]; then best=$h least=$e; fi
+    busy=0
+    for f in "$work/busy/$h".*; do
+      [ -f "$f" ] || continue
+      owner=$(cat "$f" 2>/dev/null || true)
+      if [ -n "$owner" ] && kill -0 "$owner" 2>/dev/null; then busy=1; else rm -f "$f"; fi
+    done
+    if [ $busy -eq 1 ]; then
+      if [ $sleast -lt 0 ] || [ "$e" -lt $sleast ]; then shared=$h sleast=$e; fi
+    elif [ $least -lt 0 ] || [ "$e" -lt $least ]; then
+      best=$h least=$e
+    fi
   done < <(tail -n +2 "$ledger")
-  [ -n "$best" ] && echo "$campaign" >"$work/busy/$best"
+  [ -n "$best" ] || best=$shared
+  [ -n "$best" ] && echo "$campaign" >"$work/busy/$best.$slot"
   echo "$best"
 }
 
 # Under the lock: adds a slice's executions and seconds to the harness's row.
 record() {
-  local h=$1 add=$2 secs=$3 result=$4
+  local h=$1 add=$2 secs=$3 result=$4 slot=$5
   awk -F'\t' -v OFS='\t' -v h="$h" -v a="$add" -v s="$secs" -v r="$result" \
     'NR > 1 && $1 == h { $2 += a; $3 += 1; $4 += s; if (r != "ok") $5 = r } { print }' \
     "$ledger" >"$ledger.new"
   mv "$ledger.new" "$ledger"
-  rm -f "$work/busy/$h"
+  rm -f "$work/busy/$h.$slot"
 }
 
 worker() {
-  local h done_ secs start left status row execs
+  local slot=$1 h done_ secs start left status row execs
   while :; do
     if [ $deadline -gt 0 ]; then
       left=$((deadline - $(date +%s)))
@@ -111,28 +125,28 @@ worker() {
       secs=$slice
     fi
     h=$(flock "$ledger.lock" bash -c "$(declare -f pick); harnesses=(${harnesses[*]}); \
-      target=$target; work='$work'; ledger='$ledger'; campaign=$$; pick")
+      target=$target; work='$work'; ledger='$ledger'; campaign=$$; slot=$slot; pick")
     [ -n "$h" ] || return 0
     done_=$(awk -F'\t' -v h="$h" '$1 == h { print $2 }' "$ledger")
     start=$(date +%s)
     set +e
-    row=$(GNSS_FUZZ_WORK="$work/corpus" tests/fuzz/run.sh "${fast[@]}" \
+    row=$(GNSS_FUZZ_WORK="$work/corpus" GNSS_FUZZ_LOG_TAG="w$slot" tests/fuzz/run.sh "${fast[@]}" \
       --runs $((target - done_)) "$secs" "$h" | tail -1)
     status=$?
     set -e
     execs=$(awk '{ print $2 }' <<<"$row")
     [[ $execs =~ ^[0-9]+$ ]] || execs=0
     local result=ok
-    [ $status -eq 0 ] || result="finding ($(date +%F) slice: see build/$preset/$h.log)"
+    [ $status -eq 0 ] || result="finding ($(date +%F) slice: see build/$preset/$h.w$slot.log)"
     flock "$ledger.lock" bash -c "$(declare -f record); ledger='$ledger'; work='$work'; \
-      record '$h' $execs $(($(date +%s) - start)) '$result'"
+      record '$h' $execs $(($(date +%s) - start)) '$result' $slot"
     echo "$(date +%T) $row"
   done
 }
 
 pids=()
 for ((w = 0; w < workers; ++w)); do
-  worker &
+  worker "$w" &
   pids+=($!)
   sleep 2 # the first pick is made before the next worker picks
 done

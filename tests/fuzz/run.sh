@@ -63,7 +63,8 @@ for h in "${harnesses[@]}"; do
   else
     scratch=$(mktemp -d)
   fi
-  log=$build/$h.log
+  # GNSS_FUZZ_LOG_TAG=T names the log <harness>.T.log, for runs of one harness side by side.
+  log=$build/$h${GNSS_FUZZ_LOG_TAG:+.$GNSS_FUZZ_LOG_TAG}.log
   dict=()
   [ -f "tests/fuzz/$h.dict" ] && dict=(-dict="tests/fuzz/$h.dict")
   # Longest input: 1 KB for the NMEA streams (a control bit repeats the payload into a stream
