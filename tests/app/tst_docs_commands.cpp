@@ -460,6 +460,43 @@ private slots:
                      qPrintable("the document shows \"" + line + "\"\n" + why));
         }
     }
+
+    // The README's list of the names --show-dock takes is the window's own (its --help).
+    void theReadmeNamesEveryDockTheWindowShows() {
+        const QString path = programPath("gnss-workbench");
+        if (path.isEmpty()) QSKIP("gnss-workbench is not built");
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("QT_QPA_PLATFORM", "offscreen");
+        const QString help = QString::fromUtf8(
+                gnss::test::runProgram(path, {"--help"}, {}, 30000, env).out.simplified());
+        const qsizetype from = help.indexOf("tab group:");
+        QVERIFY2(from >= 0, qPrintable(help));
+        const QString fromHelp = help.mid(from, help.indexOf(" --", from) - from);
+        QStringList inHelp;
+        static const QRegularExpression name(QStringLiteral("[:,;] (?:with a log open also )?"
+                                                            "([a-zA-Z]+)"));
+        for (auto m = name.globalMatch(fromHelp); m.hasNext();) inHelp << m.next().captured(1);
+
+        const QString readme =
+                QString::fromUtf8(readFile(QStringLiteral(GNSS_SOURCE_DIR "/README.md")))
+                        .simplified();
+        const qsizetype at = readme.indexOf("`--show-dock NAME` brings one to the front (");
+        QVERIFY(at >= 0);
+        const QString list = readme.mid(at, readme.indexOf(").", at) - at);
+        QStringList inReadme;
+        static const QRegularExpression quoted(QStringLiteral("`([a-zA-Z]+)`"));
+        for (auto m = quoted.globalMatch(list); m.hasNext();) inReadme << m.next().captured(1);
+
+        QVERIFY2(inHelp.size() > 10, qPrintable(fromHelp));
+        QStringList missing, extra;
+        for (const QString &n : inHelp)
+            if (!inReadme.contains(n)) missing << n;
+        for (const QString &n : inReadme)
+            if (!inHelp.contains(n)) extra << n;
+        QVERIFY2(missing.isEmpty() && extra.isEmpty(),
+                 qPrintable("README.md lacks: " + missing.join(", ") +
+                            "; names what is no dock: " + extra.join(", ")));
+    }
 };
 
 QTEST_GUILESS_MAIN(TstDocsCommands)
