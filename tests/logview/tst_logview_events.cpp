@@ -1,6 +1,7 @@
 // Events and range statistics of a generated log whose faults are known: fix changes, a gap, a
 // receiver reset, a checksum-error burst, junk, time marks, jamming on and off, base station
 // changes, with and without a date (across midnight).
+#include "logview/range_stats.h"
 #include "logview_files.h"
 #include "scenario_log.h"
 
@@ -148,6 +149,23 @@ private slots:
             QVERIFY2(digits.size() <= 9,
                      qPrintable(digits + QStringLiteral(" in ") + QString::fromStdString(json)));
         }
+    }
+
+    // Times at the ends of the type (no decoder makes them now: ZDA keeps to four-digit years,
+    // but an index is data) step and add up without overflowing: the steps stop at the limits,
+    // and so does the elapsed time (the fuzz finding of 2026-12-07; UBSan fails this otherwise).
+    void timesAtTheTypesEndsDoNotOverflowTheElapsedTime() {
+        constexpr std::int64_t lo = kNoTime + 1, hi = std::numeric_limits<std::int64_t>::max();
+        std::vector<EpochRecord> records(4);
+        for (std::size_t i = 0; i < records.size(); ++i) {
+            records[i].utcMs = (i % 2) ? hi : lo;
+            records[i].flags = kDateKnown;
+        }
+        const RangeStats s = rangeStats(records, 0, records.size() - 1, false);
+        QCOMPARE(s.epochs, std::uint64_t(4));
+        QCOMPARE(s.durationS, static_cast<double>(hi) / 1000.0);
+        QCOMPARE(*s.startMs, lo);
+        QCOMPARE(*s.endMs, hi);
     }
 
     // CEP of known positions: a square of side 2 m around a point has every point at 1.414 m.
