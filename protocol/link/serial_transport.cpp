@@ -115,7 +115,11 @@ bool samePort(const PortInfo &p, const QString &name) {
 
 QString serialDevicePath(const QString &portName) {
 #ifdef Q_OS_UNIX
-    return portName.startsWith('/') ? portName : QStringLiteral("/dev/") + portName;
+    // QSerialPort's own rule: a name that is a path (absolute, or from "./" or "../") is used
+    // as it is; any other is under /dev.
+    const bool path = portName.startsWith('/') || portName.startsWith(QLatin1String("./")) ||
+                      portName.startsWith(QLatin1String("../"));
+    return path ? portName : QStringLiteral("/dev/") + portName;
 #else
     return portName;
 #endif

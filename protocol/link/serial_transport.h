@@ -18,8 +18,9 @@ struct SerialSettings {
     QSerialPort::FlowControl flowControl = QSerialPort::NoFlowControl;
 };
 
-// Where a port name lives in the file system: "ttyUSB0" is /dev/ttyUSB0, a path stays itself
-// (on systems without /dev, the name as given).
+// Where a port name lives in the file system, as QSerialPort opens it: "ttyUSB0" and "pts/3"
+// are under /dev, a path ("/dev/ttyUSB0", "./rover", "../rover") stays itself (on systems
+// without /dev, the name as given).
 QString serialDevicePath(const QString &portName);
 // Whether two port names open the same device: "ttyUSB0", "/dev/ttyUSB0" and a
 // /dev/serial/by-id/ link to it are one port.

@@ -461,41 +461,52 @@ private slots:
         }
     }
 
-    // The README's list of the names --show-dock takes is the window's own (its --help).
+    // The README's list of the names --show-dock takes, and the window's --help, name the docks
+    // the window has (the list it gives for a name it does not know).
     void theReadmeNamesEveryDockTheWindowShows() {
         const QString path = programPath("gnss-workbench");
         if (path.isEmpty()) QSKIP("gnss-workbench is not built");
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("QT_QPA_PLATFORM", "offscreen");
-        const QString help = QString::fromUtf8(
-                gnss::test::runProgram(path, {"--help"}, {}, 30000, env).out.simplified());
-        const qsizetype from = help.indexOf("tab group:");
-        QVERIFY2(from >= 0, qPrintable(help));
-        const QString fromHelp = help.mid(from, help.indexOf(" --", from) - from);
-        QStringList inHelp;
-        static const QRegularExpression name(QStringLiteral("[:,;] (?:with a log open also )?"
-                                                            "([a-zA-Z]+)"));
-        for (auto m = name.globalMatch(fromHelp); m.hasNext();) inHelp << m.next().captured(1);
-
-        const QString readme =
-                QString::fromUtf8(readFile(QStringLiteral(GNSS_SOURCE_DIR "/README.md")))
-                        .simplified();
-        const qsizetype at = readme.indexOf("`--show-dock NAME` brings one to the front (");
-        QVERIFY(at >= 0);
-        const QString list = readme.mid(at, readme.indexOf(").", at) - at);
-        QStringList inReadme;
-        static const QRegularExpression quoted(QStringLiteral("`([a-zA-Z]+)`"));
-        for (auto m = quoted.globalMatch(list); m.hasNext();) inReadme << m.next().captured(1);
-
-        QVERIFY2(inHelp.size() > 10, qPrintable(fromHelp));
-        QStringList missing, extra;
-        for (const QString &n : inHelp)
-            if (!inReadme.contains(n)) missing << n;
-        for (const QString &n : inReadme)
-            if (!inHelp.contains(n)) extra << n;
-        QVERIFY2(missing.isEmpty() && extra.isEmpty(),
-                 qPrintable("README.md lacks: " + missing.join(", ") +
-                            "; names what is no dock: " + extra.join(", ")));
+        env.insert("LC_ALL", "C"); // the texts in English, whatever the user's language
+        env.insert("XDG_CONFIG_HOME", dir_.filePath("config"));
+        const auto run = [&](const QStringList &args) {
+            const Run r = gnss::test::runProgram(path, args, {}, 30000, env, dir_.path());
+            return QString::fromUtf8(r.out + r.err).simplified();
+        };
+        // The names between `from` and `to`: after the start, a ',' or a ';' (and "with a log
+        // open also"), backquoted or not.
+        const auto names = [](const QString &text, const QString &from, const QString &to) {
+            QStringList out;
+            const qsizetype at = text.indexOf(from);
+            if (at < 0) return out;
+            const qsizetype begin = at + from.size();
+            const QString list = text.mid(begin, text.indexOf(to, begin) - begin);
+            static const QRegularExpression name(
+                    QStringLiteral("(?:^|[,;]|`)\\s*(?:with a log open also\\s*)?`?([a-zA-Z]+)"));
+            for (auto m = name.globalMatch(list); m.hasNext();) out << m.next().captured(1);
+            out.removeDuplicates();
+            return out;
+        };
+        const QString unknown = run({"--show-dock", "nosuchdock"});
+        const QStringList docks = names(unknown, "(use", ")");
+        QVERIFY2(docks.size() > 10, qPrintable(unknown));
+        const QStringList inHelp = names(run({"--help"}), "tab group:", " --");
+        const QStringList inReadme =
+                names(QString::fromUtf8(readFile(QStringLiteral(GNSS_SOURCE_DIR "/README.md")))
+                              .simplified(),
+                      "`--show-dock NAME` brings one to the front (", ").");
+        for (const auto &[what, listed] :
+             {std::pair{"README.md", inReadme}, std::pair{"--help", inHelp}}) {
+            QStringList missing, extra;
+            for (const QString &n : docks)
+                if (!listed.contains(n)) missing << n;
+            for (const QString &n : listed)
+                if (!docks.contains(n)) extra << n;
+            QVERIFY2(missing.isEmpty() && extra.isEmpty(),
+                     qPrintable(QString(what) + " lacks: " + missing.join(", ") +
+                                "; names what is no dock: " + extra.join(", ")));
+        }
     }
 };
 

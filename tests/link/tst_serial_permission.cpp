@@ -10,8 +10,10 @@
 #include "link/serial_transport.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QFileInfo>
 #include <QProcess>
+#include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -255,6 +257,10 @@ private slots:
                                           << "/dev/null" << true;
         QTest::newRow("link and another") << "LINK"
                                           << "/dev/zero" << false;
+        QTest::newRow("link by ./") << "./LINK"
+                                    << "/dev/null" << true;
+        QTest::newRow("link by ../") << "../LINK"
+                                     << "/dev/null" << true;
     }
     void aPortIsOneDeviceByAnyOfItsNames() {
         QFETCH(QString, a);
@@ -264,11 +270,22 @@ private slots:
         QVERIFY(dir.isValid());
         const QString link = dir.filePath("usb-NVS_NV08C-if00");
         QVERIFY(QFile::link("/dev/null", link));
-        if (a == "LINK") a = link;
+        // "./LINK" and "../LINK": the link from the folder it is in, or from one below it.
+        QVERIFY(QDir(dir.path()).mkdir("below"));
+        const QString before = QDir::currentPath();
+        const auto back = qScopeGuard([&] { QDir::setCurrent(before); });
+        QVERIFY(QDir::setCurrent(a == "../LINK" ? dir.filePath("below") : dir.path()));
+        if (a == "LINK")
+            a = link;
+        else if (a.endsWith("LINK"))
+            a = a.chopped(4) + QFileInfo(link).fileName();
         QCOMPARE(gnss::link::sameSerialDevice(a, b), same);
         QCOMPARE(gnss::link::sameSerialDevice(b, a), same);
         QCOMPARE(gnss::link::serialDevicePath("ttyACM0"), QStringLiteral("/dev/ttyACM0"));
         QCOMPARE(gnss::link::serialDevicePath(link), link);
+        QCOMPARE(gnss::link::serialDevicePath("./rover"), QStringLiteral("./rover"));
+        QCOMPARE(gnss::link::serialDevicePath("../rover"), QStringLiteral("../rover"));
+        QCOMPARE(gnss::link::serialDevicePath("pts/3"), QStringLiteral("/dev/pts/3"));
     }
 };
 

@@ -290,13 +290,13 @@ private slots:
                 << "GPRMC,2561xx,A,4807.038,N,01131.000,E,022.4,084.4,230394,,,"
                 << "time";
         QTest::newRow("ZDA year of two digits") << "GPZDA,072836.00,31,05,18,+00,00"
-                                                << "year";
+                                                << "(year): out of range";
         QTest::newRow("ZDA year before GPS") << "GPZDA,072836.00,31,05,1979,+00,00"
-                                             << "year";
+                                             << "(year): out of range";
         QTest::newRow("ZDA year of nine digits") << "GPZDA,072836.00,31,05,200000000,+00,00"
-                                                 << "year";
+                                                 << "(year): out of range";
         QTest::newRow("ZDA negative year") << "GPZDA,072836.00,31,05,-2018,+00,00"
-                                           << "year";
+                                           << "(year): out of range";
         QTest::newRow("GSV index beyond total") << "GPGSV,2,3,08,01,40,083,46"
                                                 << "sentence number";
         QTest::newRow("GSV elevation") << "GPGSV,1,1,01,01,95,083,46"
