@@ -72,6 +72,13 @@ if [ $missing -eq 1 ]; then
   nice -n 10 cmake --build --preset "$preset" --parallel "$workers" --target "${harnesses[@]}"
 fi
 
+# Busy files of campaigns that are gone (killed, or of the one-file-per-harness format before).
+for f in "$work"/busy/*; do
+  [ -f "$f" ] || continue
+  owner=$(cat "$f" 2>/dev/null || true)
+  [ -n "$owner" ] && kill -0 "$owner" 2>/dev/null || rm -f "$f"
+done
+
 deadline=0
 [ -n "$until" ] && deadline=$(date -d "$until" +%s)
 [ -n "$until" ] && [ "$deadline" -le "$(date +%s)" ] && deadline=$((deadline + 86400))
@@ -80,8 +87,9 @@ deadline=0
 # runs; when every harness left is running (fewer harnesses than workers), the furthest of those,
 # shared: two libFuzzer processes on one corpus folder each add what they find to it, and the
 # core would otherwise stand idle. A worker is running a harness while its busy file
-# (busy/<harness>.<worker>) names a live campaign; one that was killed leaves a file naming a
-# process that is gone.
+# (busy/<harness>.<campaign>-<worker>: campaigns run side by side on one folder do not share
+# names) names a live campaign; one that was killed leaves a file naming a process that is gone,
+# removed here.
 pick() {
   local best="" least=-1 shared="" sleast=-1 h e n s r f owner busy
   while IFS=$'\t' read -r h e n s r; do
@@ -100,18 +108,18 @@ pick() {
     fi
   done < <(tail -n +2 "$ledger")
   [ -n "$best" ] || best=$shared
-  [ -n "$best" ] && echo "$campaign" >"$work/busy/$best.$slot"
+  [ -n "$best" ] && echo "$campaign" >"$work/busy/$best.$campaign-$slot"
   echo "$best"
 }
 
 # Under the lock: adds a slice's executions and seconds to the harness's row.
 record() {
-  local h=$1 add=$2 secs=$3 result=$4 slot=$5
+  local h=$1 add=$2 secs=$3 result=$4 me=$5
   awk -F'\t' -v OFS='\t' -v h="$h" -v a="$add" -v s="$secs" -v r="$result" \
     'NR > 1 && $1 == h { $2 += a; $3 += 1; $4 += s; if (r != "ok") $5 = r } { print }' \
     "$ledger" >"$ledger.new"
   mv "$ledger.new" "$ledger"
-  rm -f "$work/busy/$h.$slot"
+  rm -f "$work/busy/$h.$me"
 }
 
 worker() {
@@ -130,16 +138,16 @@ worker() {
     done_=$(awk -F'\t' -v h="$h" '$1 == h { print $2 }' "$ledger")
     start=$(date +%s)
     set +e
-    row=$(GNSS_FUZZ_WORK="$work/corpus" GNSS_FUZZ_LOG_TAG="w$slot" tests/fuzz/run.sh "${fast[@]}" \
+    row=$(GNSS_FUZZ_WORK="$work/corpus" GNSS_FUZZ_LOG_TAG="$$-$slot" tests/fuzz/run.sh "${fast[@]}" \
       --runs $((target - done_)) "$secs" "$h" | tail -1)
     status=$?
     set -e
     execs=$(awk '{ print $2 }' <<<"$row")
     [[ $execs =~ ^[0-9]+$ ]] || execs=0
     local result=ok
-    [ $status -eq 0 ] || result="finding ($(date +%F) slice: see build/$preset/$h.w$slot.log)"
+    [ $status -eq 0 ] || result="finding ($(date +%F) slice: see build/$preset/$h.$$-$slot.log)"
     flock "$ledger.lock" bash -c "$(declare -f record); ledger='$ledger'; work='$work'; \
-      record '$h' $execs $(($(date +%s) - start)) '$result' $slot"
+      record '$h' $execs $(($(date +%s) - start)) '$result' $$-$slot"
     echo "$(date +%T) $row"
   done
 }
