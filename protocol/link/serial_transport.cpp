@@ -105,10 +105,11 @@ QString openFailureAdvice(const QString &portName, QSerialPort::SerialPortError 
 #endif
 }
 
-// "/dev/ttyUSB0" and "ttyUSB0" name the same port.
+// The listed port `p` is the one opened as `name`: "ttyUSB0", "/dev/ttyUSB0", "pts/3" or a
+// /dev/serial/by-id/ link, by the rule QSerialPort opens them with.
 bool samePort(const PortInfo &p, const QString &name) {
-    return p.portName == name || p.systemLocation == name ||
-           (!name.isEmpty() && QFileInfo(name).canonicalFilePath() == p.systemLocation);
+    return p.portName == name ||
+           (!p.systemLocation.isEmpty() && sameSerialDevice(p.systemLocation, name));
 }
 
 } // namespace

@@ -287,6 +287,46 @@ private slots:
         QCOMPARE(gnss::link::serialDevicePath("../rover"), QStringLiteral("../rover"));
         QCOMPARE(gnss::link::serialDevicePath("pts/3"), QStringLiteral("/dev/pts/3"));
     }
+
+    // A receiver known by its USB serial number is opened again under the name it has after an
+    // unplug (ttyUSB0 → ttyUSB1), whichever name the user first opened it by. Two
+    // pseudo-terminals stand for the device before and after; the listing is the enumerator's.
+    void aPortIsFoundAgainUnderItsNewName_data() {
+        QTest::addColumn<QString>("given");
+        QTest::newRow("path") << "PATH";
+        QTest::newRow("name under /dev") << "UNDER-DEV";
+        QTest::newRow("by-id link") << "LINK";
+    }
+    void aPortIsFoundAgainUnderItsNewName() {
+        QFETCH(QString, given);
+        Pty before, after;
+        if (!before.ok() || !after.ok()) QSKIP("no pseudo-terminal");
+        QVERIFY(before.path().startsWith("/dev/"));
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString link = dir.filePath("usb-NVS_NV08C-if00");
+        QVERIFY(QFile::link(before.path(), link));
+        const QString name = given == "PATH"        ? before.path()
+                             : given == "UNDER-DEV" ? before.path().mid(5) // "pts/3"
+                                                    : link;
+        const auto usb = [](const QString &portName, const QString &location) {
+            gnss::link::PortInfo p;
+            p.portName = portName;
+            p.systemLocation = location;
+            p.serialNumber = QStringLiteral("NV08C-0042");
+            p.vendorId = 0x0403;
+            p.productId = 0x6001;
+            return p;
+        };
+        QList<gnss::link::PortInfo> listed{usb("ttyUSB0", before.path())};
+        SerialTransport port(SerialSettings{name, 9600}, [&] { return listed; });
+        QVERIFY2(port.open(), qPrintable(port.errorString()));
+        QVERIFY(port.description().startsWith(name + " "));
+        port.close();
+        listed = {usb("ttyUSB1", after.path())}; // unplugged and back under another name
+        QVERIFY2(port.open(), qPrintable(port.errorString()));
+        QVERIFY2(port.description().startsWith(after.path() + " "), qPrintable(port.description()));
+    }
 };
 
 QTEST_GUILESS_MAIN(TstSerialPermission)
